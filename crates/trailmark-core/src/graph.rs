@@ -1,0 +1,124 @@
+//! Graph traits: what a search algorithm needs to know about a graph, and nothing more.
+//!
+//! A graph is described by small traits, in the manner of petgraph's `visit` module, so an
+//! algorithm asks only for what it uses and works on any storage:
+//!
+//! - [`Graph`] names the node type and says which nodes belong to the graph;
+//! - [`Successors`] enumerates the out-edges of a node (forward search);
+//! - [`Predecessors`] enumerates the in-edges of a node (backward search, D* Lite);
+//! - [`IndexedGraph`] numbers the nodes densely, `0..node_bound()`, so an algorithm can keep its
+//!   state in `Vec`s instead of hash maps.
+//!
+//! Edges are reported through a callback rather than an iterator, so a graph whose edges are
+//! computed on the fly (a grid, a lattice) enumerates them without allocating.
+//!
+//! ```
+//! use trailmark_core::graph::{Graph, Successors};
+//!
+//! /// A ring of `n` nodes, each with an edge of cost 1 to the next.
+//! struct Ring(u32);
+//!
+//! impl Graph for Ring {
+//!     type Node = u32;
+//!     fn contains(&self, node: u32) -> bool {
+//!         node < self.0
+//!     }
+//! }
+//!
+//! impl Successors for Ring {
+//!     fn for_each_successor<F: FnMut(u32, f64)>(&self, node: u32, mut visit: F) {
+//!         visit((node + 1) % self.0, 1.0);
+//!     }
+//! }
+//!
+//! let mut next = Vec::new();
+//! Ring(5).for_each_successor(4, |n, c| next.push((n, c)));
+//! assert_eq!(next, [(0, 1.0)]);
+//! ```
+
+use std::fmt::Debug;
+use std::hash::Hash;
+
+use crate::cost::Cost;
+
+/// A graph: a type of node and a membership test.
+pub trait Graph {
+    /// A node: small, copyable, comparable and hashable (a cell, an index, a handle).
+    type Node: Copy + Eq + Hash + Debug;
+
+    /// Whether `node` is a node of this graph. Algorithms check their start and goal with it
+    /// before searching, so an invalid query is an error rather than a wrong answer.
+    fn contains(&self, node: Self::Node) -> bool;
+}
+
+/// A graph whose out-edges can be enumerated.
+pub trait Successors: Graph {
+    /// Calls `visit(successor, cost)` once for each edge leaving `node`.
+    ///
+    /// `node` must satisfy [`Graph::contains`]. Costs must be finite and non-negative; an edge
+    /// that does not exist is simply not reported (algorithms also skip a cost of
+    /// [`NO_EDGE`](crate::cost::NO_EDGE) and reject negative or NaN costs with an error).
+    fn for_each_successor<F: FnMut(Self::Node, Cost)>(&self, node: Self::Node, visit: F);
+}
+
+/// A graph whose in-edges can be enumerated, for algorithms that search backwards.
+pub trait Predecessors: Graph {
+    /// Calls `visit(predecessor, cost)` once for each edge `predecessor -> node`, where `cost` is
+    /// the cost of that edge (in its forward direction).
+    fn for_each_predecessor<F: FnMut(Self::Node, Cost)>(&self, node: Self::Node, visit: F);
+}
+
+/// A graph whose nodes are numbered densely, so algorithms can keep per-node state in `Vec`s.
+///
+/// Every node `n` with `contains(n)` has an index `to_index(n) < node_bound()`, and
+/// `from_index(to_index(n)) == n`. Indices need not all be used (a grid may skip its border).
+pub trait IndexedGraph: Graph {
+    /// An upper bound (exclusive) on node indices.
+    fn node_bound(&self) -> usize;
+
+    /// The index of `node`, which must satisfy [`Graph::contains`].
+    fn to_index(&self, node: Self::Node) -> usize;
+
+    /// The node with index `index`, which must be the index of a node of the graph.
+    fn from_index(&self, index: usize) -> Self::Node;
+}
+
+impl<G: Graph + ?Sized> Graph for &G {
+    type Node = G::Node;
+
+    #[inline]
+    fn contains(&self, node: Self::Node) -> bool {
+        (**self).contains(node)
+    }
+}
+
+impl<G: Successors + ?Sized> Successors for &G {
+    #[inline]
+    fn for_each_successor<F: FnMut(Self::Node, Cost)>(&self, node: Self::Node, visit: F) {
+        (**self).for_each_successor(node, visit)
+    }
+}
+
+impl<G: Predecessors + ?Sized> Predecessors for &G {
+    #[inline]
+    fn for_each_predecessor<F: FnMut(Self::Node, Cost)>(&self, node: Self::Node, visit: F) {
+        (**self).for_each_predecessor(node, visit)
+    }
+}
+
+impl<G: IndexedGraph + ?Sized> IndexedGraph for &G {
+    #[inline]
+    fn node_bound(&self) -> usize {
+        (**self).node_bound()
+    }
+
+    #[inline]
+    fn to_index(&self, node: Self::Node) -> usize {
+        (**self).to_index(node)
+    }
+
+    #[inline]
+    fn from_index(&self, index: usize) -> Self::Node {
+        (**self).from_index(index)
+    }
+}

@@ -1,0 +1,38 @@
+//! The vocabulary shared by every trailmark crate: geometry, costs, graph traits, grids,
+//! MovingAI benchmark files, problem/result documents and SVG pictures.
+//!
+//! Algorithms (`trailmark-search`) and graph builders (`trailmark-graph`) both depend on this
+//! crate and never on each other; a graph of your own that implements the traits of [`graph`]
+//! works with every algorithm.
+//!
+//! ```
+//! use trailmark_core::grid::{Cell, Grid};
+//! use trailmark_core::movingai::parse_map;
+//! use trailmark_core::svg::GridSvg;
+//!
+//! // A MovingAI map, read from text (CRLF line ends are fine).
+//! let grid = parse_map("type octile\r\nheight 3\r\nwidth 5\r\nmap\r\n.....\r\n.@@@.\r\n.....\r\n")?;
+//! assert!(grid.is_passable(Cell::new(0, 1)) && !grid.is_passable(Cell::new(2, 1)));
+//!
+//! // A picture of it with a path drawn through cell centres.
+//! let path = [Cell::new(0, 2), Cell::new(0, 1), Cell::new(1, 0), Cell::new(4, 0)];
+//! let svg = GridSvg::new(&grid).path(&path).to_svg();
+//! assert!(svg.contains("polyline"));
+//! # Ok::<(), trailmark_core::movingai::ParseError>(())
+//! ```
+
+#![deny(missing_docs)]
+
+pub mod cost;
+pub mod geometry;
+pub mod graph;
+pub mod grid;
+pub mod movingai;
+pub mod path;
+pub mod problem;
+pub mod svg;
+
+pub use cost::Cost;
+pub use graph::{Graph, IndexedGraph, Predecessors, Successors};
+pub use grid::{Cell, Connectivity, Grid, GridError, GridHeuristic};
+pub use path::Path;

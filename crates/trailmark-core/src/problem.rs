@@ -1,0 +1,227 @@
+//! The problem and result documents of `cargo xtask solve`, as serde types.
+//!
+//! A problem names a world, a start, a goal and a planner; a result gives the status, the cost,
+//! the path and statistics. Later planners extend these types with new variants and optional
+//! fields; existing documents keep their meaning.
+//!
+//! ```
+//! use trailmark_core::problem::{PlannerSpec, Problem, World};
+//!
+//! let json = r#"{
+//!     "world": {"grid": {"rows": ["....", ".@@.", "...."], "connectivity": 8}},
+//!     "start": [0, 0], "goal": [3, 2],
+//!     "planner": {"name": "weighted_astar", "weight": 1.5}
+//! }"#;
+//! let problem: Problem = serde_json::from_str(json).unwrap();
+//! assert_eq!(problem.planner, PlannerSpec::WeightedAStar { weight: 1.5, heuristic: None });
+//! let World::Grid(grid) = &problem.world;
+//! assert_eq!(grid.rows.as_ref().unwrap().len(), 3);
+//! ```
+
+use std::path::PathBuf;
+
+use serde::{Deserialize, Serialize};
+
+use crate::grid::{Cell, Connectivity, GridHeuristic};
+
+/// A planning problem: a world, a start, a goal, a planner and a seed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Problem {
+    /// The world to plan in.
+    pub world: World,
+    /// The start: `[x, y]` (a cell for grid worlds).
+    pub start: Vec<f64>,
+    /// The goal: `[x, y]` (a cell for grid worlds).
+    pub goal: Vec<f64>,
+    /// The planner and its parameters.
+    pub planner: PlannerSpec,
+    /// The seed of every random choice (planners that draw none ignore it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+}
+
+/// The world of a problem. In JSON, an object with one key naming the kind of world.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum World {
+    /// A grid: `{"grid": {...}}`.
+    Grid(GridWorld),
+}
+
+/// A grid world: a MovingAI map file or inline rows, with its connectivity and optional costs.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GridWorld {
+    /// A MovingAI `.map` file (relative paths are relative to the problem file). Exactly one of
+    /// `map` and `rows` is given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub map: Option<PathBuf>,
+    /// The rows of the grid in MovingAI characters (`.` passable, `@` blocked, ...).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rows: Option<Vec<String>>,
+    /// Optional per-cell costs, one row of numbers per grid row, each positive; a blocked cell
+    /// stays blocked whatever its cost.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub costs: Option<Vec<Vec<f64>>>,
+    /// 4 or 8 (default 8).
+    #[serde(default)]
+    pub connectivity: Connectivity,
+    /// Whether a diagonal move may pass a blocked orthogonal neighbour (default false, the
+    /// MovingAI rule).
+    #[serde(default)]
+    pub corner_cutting: bool,
+}
+
+/// A planner and its parameters. In JSON, an object whose `"name"` selects the planner.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "name", deny_unknown_fields)]
+pub enum PlannerSpec {
+    /// Breadth-first search: fewest moves, whatever their costs.
+    #[serde(rename = "bfs")]
+    Bfs {},
+    /// Depth-first search: some path, quickly found, not short.
+    #[serde(rename = "dfs")]
+    Dfs {},
+    /// Dijkstra's algorithm: least cost.
+    #[serde(rename = "dijkstra")]
+    Dijkstra {},
+    /// A*: least cost, guided by an admissible heuristic.
+    #[serde(rename = "astar")]
+    AStar {
+        /// The heuristic (default: octile for 8-connected grids, Manhattan for 4-connected).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
+    /// Weighted A*: A* with the heuristic inflated by `weight >= 1`; cost at most `weight` times
+    /// the least cost.
+    #[serde(rename = "weighted_astar")]
+    WeightedAStar {
+        /// The inflation factor, at least 1.
+        weight: f64,
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
+}
+
+/// Whether a planner found a path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    /// A path was found.
+    Solved,
+    /// The planner proved that no path exists.
+    NoPath,
+}
+
+/// A point of a result path: a cell `[x, y]` of a grid, or a point of a continuous space.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum Waypoint {
+    /// A grid cell, `[x, y]`.
+    Cell(Cell),
+    /// A point or state, `[x, y, ...]`.
+    Point(Vec<f64>),
+}
+
+/// Statistics of a result. Counters a planner does not keep are omitted.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct ResultStats {
+    /// Nodes expanded (taken from the open list and their successors generated).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub expansions: Option<u64>,
+    /// Nodes inserted into the open list.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pushes: Option<u64>,
+    /// Keys lowered in the open list (a shorter path to an open node).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub decreases: Option<u64>,
+    /// Closed nodes reopened (a shorter path to an expanded node).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reopenings: Option<u64>,
+    /// Wall-clock time of the search alone, in seconds (graph construction excluded).
+    pub time_s: f64,
+}
+
+/// The result of solving a problem.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SolveResult {
+    /// `"solved"` or `"no_path"`.
+    pub status: Status,
+    /// The path cost, `null` without a path.
+    pub cost: Option<f64>,
+    /// The path from start to goal, empty without one.
+    pub path: Vec<Waypoint>,
+    /// What the planner did.
+    pub stats: ResultStats,
+}
+
+/// The document printed instead of a result when the problem itself is wrong.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ErrorReport {
+    /// Always `"error"`.
+    pub status: String,
+    /// What was wrong and where.
+    pub error: String,
+}
+
+impl ErrorReport {
+    /// A report of `error`.
+    pub fn new(error: impl std::fmt::Display) -> Self {
+        ErrorReport { status: "error".into(), error: error.to_string() }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unknown_planner_and_fields_are_errors() {
+        let base = |planner: &str| {
+            format!(
+                r#"{{"world": {{"grid": {{"rows": [".."]}}}}, "start": [0,0], "goal": [1,0], "planner": {planner}}}"#
+            )
+        };
+        assert!(serde_json::from_str::<Problem>(&base(r#"{"name": "astar"}"#)).is_ok());
+        let err = serde_json::from_str::<Problem>(&base(r#"{"name": "teleport"}"#)).unwrap_err().to_string();
+        assert!(err.contains("unknown variant `teleport`"), "{err}");
+        let err = serde_json::from_str::<Problem>(&base(r#"{"name": "weighted_astar", "wieght": 2}"#))
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("wieght") || err.contains("weight"), "{err}");
+        let err = serde_json::from_str::<Problem>(&base(r#"{"name": "dijkstra", "weight": 2}"#));
+        assert!(err.is_err(), "a parameter the planner does not take is an error");
+        let err = serde_json::from_str::<Problem>(r#"{"world": {"grid": {}}, "start": [0,0]}"#);
+        assert!(err.unwrap_err().to_string().contains("missing field"));
+    }
+
+    #[test]
+    fn connectivity_is_4_or_8() {
+        let w: GridWorld = serde_json::from_str(r#"{"rows": ["."], "connectivity": 4}"#).unwrap();
+        assert_eq!(w.connectivity, Connectivity::Four);
+        assert!(serde_json::from_str::<GridWorld>(r#"{"connectivity": 6}"#).is_err());
+    }
+
+    #[test]
+    fn results_serialize_as_documented() {
+        let result = SolveResult {
+            status: Status::NoPath,
+            cost: None,
+            path: vec![],
+            stats: ResultStats { expansions: Some(3), time_s: 0.5, ..Default::default() },
+        };
+        let json = serde_json::to_string(&result).unwrap();
+        assert_eq!(
+            json,
+            r#"{"status":"no_path","cost":null,"path":[],"stats":{"expansions":3,"time_s":0.5}}"#
+        );
+        let cell = serde_json::to_string(&Waypoint::Cell(Cell::new(1, 2))).unwrap();
+        assert_eq!(cell, "[1,2]");
+        assert_eq!(
+            serde_json::to_string(&ErrorReport::new("bad")).unwrap(),
+            r#"{"status":"error","error":"bad"}"#
+        );
+    }
+}

@@ -1,0 +1,365 @@
+//! Grid graphs: the cells of a [`Grid`] as nodes, moves between neighbouring cells as edges.
+//!
+//! A move between neighbouring cells costs its length (1 orthogonally, `sqrt(2)` diagonally)
+//! times the mean of the two cells' costs, so on an occupancy grid (every cost 1) the costs are
+//! exactly 1 and `sqrt(2)`. The graph is symmetric: the cost of `a -> b` equals that of `b -> a`,
+//! so predecessors are the successors.
+//!
+//! The graph keeps its own copy of the cells, surrounded by a border of blocked cells, so that
+//! enumerating the neighbours of a cell needs no bounds checks and allocates nothing.
+//!
+//! ```
+//! use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic, Successors};
+//! use trailmark_graph::grid::{CornerCutting, GridGraph};
+//!
+//! let grid = Grid::from_rows(&["..", ".@"])?;
+//! let graph = GridGraph::new(&grid, Connectivity::Eight);
+//! let mut moves = Vec::new();
+//! graph.for_each_successor(Cell::new(0, 0), |cell, cost| moves.push((cell, cost)));
+//! // No corner cutting: the diagonal to (1, 1) is blocked anyway, and the two orthogonal moves cost 1.
+//! assert_eq!(moves, [(Cell::new(1, 0), 1.0), (Cell::new(0, 1), 1.0)]);
+//!
+//! let cut = GridGraph::new(&Grid::from_rows(&["..", "@."])?, Connectivity::Eight)
+//!     .with_corner_cutting(CornerCutting::Allowed);
+//! let h = cut.heuristic(GridHeuristic::Octile, Cell::new(1, 1));
+//! assert_eq!(h(Cell::new(0, 0)), std::f64::consts::SQRT_2);
+//! # Ok::<(), trailmark_core::GridError>(())
+//! ```
+
+use serde::{Deserialize, Serialize};
+
+use trailmark_core::cost::{Cost, SQRT_2};
+use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
+use trailmark_core::grid::{Cell, Connectivity, Grid, GridError, GridHeuristic, is_cell_cost};
+
+/// When a diagonal move between two cells is allowed, given their two common orthogonal
+/// neighbours (the "corners").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CornerCutting {
+    /// Both corners must be passable: the MovingAI benchmark rule, and the default.
+    #[default]
+    Forbidden,
+    /// At least one corner must be passable: the move may clip one blocked corner.
+    Allowed,
+    /// Only the target matters: the move may pass between two blocked corners.
+    Squeeze,
+}
+
+/// One of the eight moves: its offset in the padded array is `dy * stride + dx`.
+#[derive(Clone, Copy)]
+struct Move {
+    dx: i32,
+    dy: i32,
+    length: Cost,
+}
+
+/// Orthogonal moves first, so 4-connected graphs use the first four.
+const MOVES: [Move; 8] = [
+    Move { dx: 1, dy: 0, length: 1.0 },
+    Move { dx: 0, dy: 1, length: 1.0 },
+    Move { dx: -1, dy: 0, length: 1.0 },
+    Move { dx: 0, dy: -1, length: 1.0 },
+    Move { dx: 1, dy: 1, length: SQRT_2 },
+    Move { dx: -1, dy: 1, length: SQRT_2 },
+    Move { dx: -1, dy: -1, length: SQRT_2 },
+    Move { dx: 1, dy: -1, length: SQRT_2 },
+];
+
+/// The graph of a grid: passable cells are nodes, moves to passable neighbours are edges.
+#[derive(Debug, Clone)]
+pub struct GridGraph {
+    width: u32,
+    height: u32,
+    /// `width + 2`: the row length of the padded arrays.
+    stride: usize,
+    connectivity: Connectivity,
+    corner_cutting: CornerCutting,
+    /// Padded passability, border cells false.
+    open: Vec<bool>,
+    /// Padded cell costs, only when some passable cell does not cost 1.
+    costs: Option<Vec<Cost>>,
+    /// The smallest passable cell cost (1 when there is none), which scales heuristics.
+    min_cost: Cost,
+}
+
+impl GridGraph {
+    /// The graph of `grid` with the given connectivity, without corner cutting.
+    pub fn new(grid: &Grid, connectivity: Connectivity) -> Self {
+        let (w, h) = (grid.width() as usize, grid.height() as usize);
+        let stride = w + 2;
+        let mut open = vec![false; stride * (h + 2)];
+        let uniform = grid.is_uniform();
+        let mut costs = (!uniform).then(|| vec![f64::INFINITY; open.len()]);
+        for (y, row) in grid.costs().chunks(w).enumerate() {
+            let base = (y + 1) * stride + 1;
+            for (x, &c) in row.iter().enumerate() {
+                open[base + x] = c.is_finite();
+                if let Some(costs) = costs.as_mut() {
+                    costs[base + x] = c;
+                }
+            }
+        }
+        GridGraph {
+            width: grid.width(),
+            height: grid.height(),
+            stride,
+            connectivity,
+            corner_cutting: CornerCutting::Forbidden,
+            open,
+            costs,
+            min_cost: grid.min_cost().unwrap_or(1.0),
+        }
+    }
+
+    /// The same graph with another corner-cutting rule (only 8-connected graphs move diagonally).
+    pub fn with_corner_cutting(mut self, rule: CornerCutting) -> Self {
+        self.corner_cutting = rule;
+        self
+    }
+
+    /// The number of columns.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// The number of rows.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// 4- or 8-connected.
+    pub fn connectivity(&self) -> Connectivity {
+        self.connectivity
+    }
+
+    /// The corner-cutting rule for diagonal moves.
+    pub fn corner_cutting(&self) -> CornerCutting {
+        self.corner_cutting
+    }
+
+    /// The smallest cost of a passable cell: every move costs at least its length times this.
+    pub fn min_cost(&self) -> Cost {
+        self.min_cost
+    }
+
+    /// Whether `cell` is inside the grid and passable.
+    #[inline]
+    pub fn is_passable(&self, cell: Cell) -> bool {
+        self.contains(cell)
+    }
+
+    #[inline]
+    fn index(&self, cell: Cell) -> usize {
+        (cell.y as usize + 1) * self.stride + cell.x as usize + 1
+    }
+
+    /// The cost of `cell`: `None` outside the grid, `Some(f64::INFINITY)` when blocked.
+    pub fn cost(&self, cell: Cell) -> Option<Cost> {
+        if cell.x >= self.width || cell.y >= self.height {
+            return None;
+        }
+        let i = self.index(cell);
+        Some(match (&self.costs, self.open[i]) {
+            (_, false) => f64::INFINITY,
+            (Some(costs), true) => costs[i],
+            (None, true) => 1.0,
+        })
+    }
+
+    /// Changes the cost of a cell: positive and finite, or `f64::INFINITY` to block it.
+    ///
+    /// The heuristics made afterwards account for a new smallest cost; the ones made before keep
+    /// the smallest cost they were made with.
+    pub fn set_cost(&mut self, cell: Cell, cost: Cost) -> Result<(), GridError> {
+        if cell.x >= self.width || cell.y >= self.height {
+            return Err(GridError::OutOfBounds { cell, width: self.width, height: self.height });
+        }
+        if !is_cell_cost(cost) {
+            return Err(GridError::InvalidCost { cell, cost });
+        }
+        let i = self.index(cell);
+        if cost.is_finite() && cost != 1.0 && self.costs.is_none() {
+            let costs = self.open.iter().map(|&o| if o { 1.0 } else { f64::INFINITY }).collect();
+            self.costs = Some(costs);
+        }
+        if let Some(costs) = self.costs.as_mut() {
+            costs[i] = cost;
+        }
+        self.open[i] = cost.is_finite();
+        if cost.is_finite() {
+            self.min_cost = self.min_cost.min(cost);
+        }
+        Ok(())
+    }
+
+    /// The cost of the move `from -> to` between neighbouring cells, or `None` when it is not an
+    /// edge of the graph (not neighbours, a cell blocked, a corner rule forbids it).
+    pub fn edge_cost(&self, from: Cell, to: Cell) -> Option<Cost> {
+        let mut found = None;
+        if self.contains(from) {
+            self.for_each_successor(from, |n, c| {
+                if n == to {
+                    found = Some(c);
+                }
+            });
+        }
+        found
+    }
+
+    /// A heuristic toward `goal`: the grid distance of `kind`, scaled by the smallest cell cost so
+    /// that an admissible distance stays admissible with cell costs.
+    pub fn heuristic(&self, kind: GridHeuristic, goal: Cell) -> impl Fn(Cell) -> Cost + Copy + use<> {
+        let scale = self.min_cost;
+        move |cell: Cell| scale * kind.distance(cell.x.abs_diff(goal.x), cell.y.abs_diff(goal.y))
+    }
+
+    #[inline]
+    fn diagonal_allowed(&self, i: usize, m: Move) -> bool {
+        let a = self.open[(i as isize + m.dx as isize) as usize];
+        let b = self.open[(i as isize + m.dy as isize * self.stride as isize) as usize];
+        match self.corner_cutting {
+            CornerCutting::Forbidden => a && b,
+            CornerCutting::Allowed => a || b,
+            CornerCutting::Squeeze => true,
+        }
+    }
+}
+
+impl Graph for GridGraph {
+    type Node = Cell;
+
+    /// A cell is a node when it lies inside the grid and is passable.
+    #[inline]
+    fn contains(&self, cell: Cell) -> bool {
+        cell.x < self.width && cell.y < self.height && self.open[self.index(cell)]
+    }
+}
+
+impl Successors for GridGraph {
+    #[inline]
+    fn for_each_successor<F: FnMut(Cell, Cost)>(&self, cell: Cell, mut visit: F) {
+        let i = self.index(cell);
+        let stride = self.stride as isize;
+        let moves = match self.connectivity {
+            Connectivity::Four => &MOVES[..4],
+            Connectivity::Eight => &MOVES[..],
+        };
+        for &m in moves {
+            let j = (i as isize + m.dy as isize * stride + m.dx as isize) as usize;
+            if !self.open[j] {
+                continue;
+            }
+            if m.dx != 0 && m.dy != 0 && !self.diagonal_allowed(i, m) {
+                continue;
+            }
+            let next = Cell::new(cell.x.wrapping_add_signed(m.dx), cell.y.wrapping_add_signed(m.dy));
+            let cost = match &self.costs {
+                None => m.length,
+                Some(costs) => m.length * 0.5 * (costs[i] + costs[j]),
+            };
+            visit(next, cost);
+        }
+    }
+}
+
+impl Predecessors for GridGraph {
+    /// The grid graph is symmetric: the predecessors of a cell are its successors.
+    #[inline]
+    fn for_each_predecessor<F: FnMut(Cell, Cost)>(&self, cell: Cell, visit: F) {
+        self.for_each_successor(cell, visit)
+    }
+}
+
+impl IndexedGraph for GridGraph {
+    /// The padded cell count `(width + 2) x (height + 2)`.
+    #[inline]
+    fn node_bound(&self) -> usize {
+        self.open.len()
+    }
+
+    #[inline]
+    fn to_index(&self, cell: Cell) -> usize {
+        self.index(cell)
+    }
+
+    #[inline]
+    fn from_index(&self, index: usize) -> Cell {
+        Cell::new((index % self.stride) as u32 - 1, (index / self.stride) as u32 - 1)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn successors(g: &GridGraph, c: Cell) -> Vec<(Cell, Cost)> {
+        let mut v = Vec::new();
+        g.for_each_successor(c, |n, k| v.push((n, k)));
+        v.sort_by(|a, b| a.0.cmp(&b.0));
+        v
+    }
+
+    #[test]
+    fn corner_rules() {
+        // (0,0) -> (1,1) with corner (1,0) blocked and corner (0,1) open.
+        let grid = Grid::from_rows(&[".@", ".."]).unwrap();
+        let diag = Cell::new(1, 1);
+        let has = |rule| {
+            let g = GridGraph::new(&grid, Connectivity::Eight).with_corner_cutting(rule);
+            successors(&g, Cell::new(0, 0)).iter().any(|&(c, _)| c == diag)
+        };
+        assert!(!has(CornerCutting::Forbidden));
+        assert!(has(CornerCutting::Allowed));
+        assert!(has(CornerCutting::Squeeze));
+        // Both corners blocked: only Squeeze passes.
+        let grid = Grid::from_rows(&[".@", "@."]).unwrap();
+        let g = |rule| GridGraph::new(&grid, Connectivity::Eight).with_corner_cutting(rule);
+        assert!(successors(&g(CornerCutting::Allowed), Cell::new(0, 0)).is_empty());
+        assert_eq!(successors(&g(CornerCutting::Squeeze), Cell::new(0, 0)), [(diag, SQRT_2)]);
+    }
+
+    #[test]
+    fn four_and_eight_neighbours_with_costs() {
+        let mut grid = Grid::new(3, 3).unwrap();
+        grid.set_cost(Cell::new(2, 2), 3.0).unwrap();
+        let four = GridGraph::new(&grid, Connectivity::Four);
+        let eight = GridGraph::new(&grid, Connectivity::Eight);
+        let centre = Cell::new(1, 1);
+        assert_eq!(successors(&four, centre).len(), 4);
+        let s = successors(&eight, centre);
+        assert_eq!(s.len(), 8);
+        assert_eq!(s.iter().find(|(c, _)| *c == Cell::new(2, 2)).unwrap().1, SQRT_2 * 2.0);
+        assert_eq!(eight.edge_cost(Cell::new(2, 2), centre), Some(SQRT_2 * 2.0));
+        assert_eq!(eight.edge_cost(Cell::new(0, 0), Cell::new(2, 2)), None);
+        // Corner cells have 3 neighbours: no wrap-around through the border.
+        assert_eq!(successors(&eight, Cell::new(0, 0)).len(), 3);
+        assert_eq!(successors(&eight, Cell::new(2, 0)).len(), 3);
+    }
+
+    #[test]
+    fn indices_round_trip_and_stay_below_bound() {
+        let grid = Grid::new(5, 3).unwrap();
+        let g = GridGraph::new(&grid, Connectivity::Eight);
+        for c in grid.cells() {
+            let i = g.to_index(c);
+            assert!(i < g.node_bound());
+            assert_eq!(g.from_index(i), c);
+        }
+        assert!(!g.contains(Cell::new(5, 0)) && !g.contains(Cell::new(0, 3)));
+    }
+
+    #[test]
+    fn set_cost_validates_and_updates() {
+        let grid = Grid::new(2, 1).unwrap();
+        let mut g = GridGraph::new(&grid, Connectivity::Four);
+        assert!(g.set_cost(Cell::new(2, 0), 1.0).is_err());
+        assert!(g.set_cost(Cell::new(1, 0), f64::NAN).is_err());
+        g.set_cost(Cell::new(1, 0), 0.5).unwrap();
+        assert_eq!(g.edge_cost(Cell::new(0, 0), Cell::new(1, 0)), Some(0.75));
+        assert_eq!(g.min_cost(), 0.5);
+        g.set_cost(Cell::new(1, 0), f64::INFINITY).unwrap();
+        assert_eq!(g.edge_cost(Cell::new(0, 0), Cell::new(1, 0)), None);
+        assert_eq!(g.cost(Cell::new(1, 0)), Some(f64::INFINITY));
+    }
+}

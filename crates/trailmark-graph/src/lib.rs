@@ -1,0 +1,28 @@
+//! Graph builders: turn a world into a graph that every `trailmark-search` algorithm can search.
+//!
+//! This release builds grid graphs ([`grid::GridGraph`]): 4- or 8-connected, with per-cell costs
+//! and a choice of corner-cutting rule. The graphs implement the traits of
+//! [`trailmark_core::graph`], and nothing here depends on a search algorithm.
+//!
+//! ```
+//! use trailmark_core::{Cell, Connectivity, Grid, IndexedGraph, Successors};
+//! use trailmark_graph::GridGraph;
+//!
+//! let grid = Grid::from_rows(&["...", ".@.", "..."])?;
+//! let graph = GridGraph::new(&grid, Connectivity::Eight);
+//!
+//! // The centre is blocked, so the top-middle cell reaches its two side neighbours only.
+//! let mut next = Vec::new();
+//! graph.for_each_successor(Cell::new(1, 0), |cell, cost| next.push((cell, cost)));
+//! assert_eq!(next, [(Cell::new(2, 0), 1.0), (Cell::new(0, 0), 1.0)]);
+//!
+//! // Dense node indices let algorithms keep their state in vectors.
+//! assert_eq!(graph.from_index(graph.to_index(Cell::new(2, 2))), Cell::new(2, 2));
+//! # Ok::<(), trailmark_core::GridError>(())
+//! ```
+
+#![deny(missing_docs)]
+
+pub mod grid;
+
+pub use grid::{CornerCutting, GridGraph};

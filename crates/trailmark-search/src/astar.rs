@@ -1,0 +1,287 @@
+//! Best-first search: A*, weighted A* and Dijkstra's algorithm.
+//!
+//! All three expand nodes in order of `f = g + w h` from one open list, an
+//! [`IndexedHeap`](crate::queue::IndexedHeap) with decrease-key; ties on `f` go to the larger `g`.
+//! The goal test happens when a node is expanded, so the path returned is optimal for A* with an
+//! admissible heuristic and for Dijkstra, and within a factor `w` of optimal for weighted A* with
+//! a consistent heuristic.
+
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{IndexedGraph, Successors};
+
+use crate::error::SearchError;
+use crate::index::{Dense, NodeIndex};
+use crate::search::{EdgeCheck, FKey, Search, SearchResult};
+
+/// A* from `start` to `goal`: a least-cost path when `heuristic` is admissible (never more than
+/// the least cost to the goal). A node whose heuristic is `+inf` is treated as a dead end.
+///
+/// Closed nodes are reopened when a cheaper path to them appears, so an admissible but
+/// inconsistent heuristic still gives a least-cost path; with a consistent heuristic (such as
+/// [`GridGraph::heuristic`](https://docs.rs/trailmark-graph)) nothing is ever reopened.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::astar;
+///
+/// let grid = Grid::from_rows(&["....", ".@@.", "...."])?;
+/// let graph = GridGraph::new(&grid, Connectivity::Eight);
+/// let goal = Cell::new(3, 2);
+/// let found = astar(&graph, Cell::new(0, 0), goal, graph.heuristic(GridHeuristic::Octile, goal))?;
+/// let path = found.path.expect("reachable");
+/// assert_eq!(path.cost, 5.0); // around the wall: no diagonal move may clip its corners
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn astar<G, H>(
+    graph: &G,
+    start: G::Node,
+    goal: G::Node,
+    heuristic: H,
+) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+where
+    G: Successors + IndexedGraph + ?Sized,
+    H: FnMut(G::Node) -> Cost,
+{
+    Search::new().astar(graph, start, goal, heuristic)
+}
+
+/// Weighted A*: A* with the heuristic multiplied by `weight >= 1`. It expands fewer nodes than
+/// A*, and with a consistent heuristic its path costs at most `weight` times the least cost.
+/// Closed nodes are not reopened (that is what keeps it fast; the bound holds without).
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::{astar, weighted_astar};
+///
+/// let grid = Grid::new(64, 64)?;
+/// let graph = GridGraph::new(&grid, Connectivity::Eight);
+/// let (start, goal) = (Cell::new(0, 0), Cell::new(63, 40));
+/// let h = graph.heuristic(GridHeuristic::Octile, goal);
+/// let best = astar(&graph, start, goal, h)?;
+/// let fast = weighted_astar(&graph, start, goal, h, 2.0)?;
+/// assert!(fast.cost().unwrap() <= 2.0 * best.cost().unwrap());
+/// assert!(fast.stats.expansions <= best.stats.expansions);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn weighted_astar<G, H>(
+    graph: &G,
+    start: G::Node,
+    goal: G::Node,
+    heuristic: H,
+    weight: f64,
+) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+where
+    G: Successors + IndexedGraph + ?Sized,
+    H: FnMut(G::Node) -> Cost,
+{
+    Search::new().weighted_astar(graph, start, goal, heuristic, weight)
+}
+
+/// Dijkstra's algorithm from `start` to `goal`: a least-cost path, no heuristic.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::dijkstra;
+///
+/// let mut grid = Grid::new(3, 1)?;
+/// grid.set_cost(Cell::new(1, 0), 3.0)?; // moves cost their length x the mean of the two cell costs
+/// let graph = GridGraph::new(&grid, Connectivity::Four);
+/// let found = dijkstra(&graph, Cell::new(0, 0), Cell::new(2, 0))?;
+/// assert_eq!(found.cost(), Some(4.0));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn dijkstra<G>(
+    graph: &G,
+    start: G::Node,
+    goal: G::Node,
+) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+where
+    G: Successors + IndexedGraph + ?Sized,
+{
+    Search::<Dense>::new().dijkstra(graph, start, goal)
+}
+
+impl<I> Search<I> {
+    /// A* from `start` to `goal` with this workspace; see [`astar`](crate::astar()).
+    pub fn astar<G, H>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+        heuristic: H,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+        H: FnMut(G::Node) -> Cost,
+    {
+        self.best_first(graph, start, Some(goal), heuristic, 1.0, true)
+    }
+
+    /// Weighted A* from `start` to `goal` with this workspace; see [`weighted_astar`](crate::weighted_astar()).
+    pub fn weighted_astar<G, H>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+        heuristic: H,
+        weight: f64,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+        H: FnMut(G::Node) -> Cost,
+    {
+        if !(weight.is_finite() && weight >= 1.0) {
+            return Err(SearchError::InvalidWeight(weight));
+        }
+        self.best_first(graph, start, Some(goal), heuristic, weight, false)
+    }
+
+    /// Dijkstra's algorithm from `start` to `goal` with this workspace; see [`dijkstra`](crate::dijkstra()).
+    pub fn dijkstra<G>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+    {
+        self.best_first(graph, start, Some(goal), |_| 0.0, 1.0, true)
+    }
+
+    /// Dijkstra's algorithm from `start` to every reachable node. Afterwards
+    /// [`Search::cost_to`] and [`Search::path_to_node`] give the least cost and a least-cost path
+    /// to any node. The result has no path.
+    ///
+    /// ```
+    /// use trailmark_core::{Cell, Connectivity, Grid};
+    /// use trailmark_graph::GridGraph;
+    /// use trailmark_search::Search;
+    ///
+    /// let graph = GridGraph::new(&Grid::from_rows(&["...", "@@."])?, Connectivity::Four);
+    /// let mut search = Search::new();
+    /// search.dijkstra_all(&graph, Cell::new(0, 0))?;
+    /// assert_eq!(search.cost_to(&graph, Cell::new(2, 1)), Some(3.0));
+    /// assert_eq!(search.cost_to(&graph, Cell::new(0, 1)), None); // blocked
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn dijkstra_all<G>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+    {
+        self.best_first(graph, start, None, |_| 0.0, 1.0, true)
+    }
+
+    fn best_first<G, H>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: Option<G::Node>,
+        mut heuristic: H,
+        weight: f64,
+        reopen: bool,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+        H: FnMut(G::Node) -> Cost,
+    {
+        let clock = std::time::Instant::now();
+        let (s, t) = self.begin(graph, start, goal.unwrap_or(start))?;
+        let goal_slot = if goal.is_some() { t } else { usize::MAX };
+        let mut stats = crate::stats::SearchStats::default();
+        let mut bad_h = None;
+        let open = self.open_stamp();
+        let closed = self.closed_stamp();
+        self.g[s] = 0.0;
+        self.parent[s] = s as u32;
+        self.stamp[s] = open;
+        match estimate(&mut heuristic, start, weight, &mut bad_h) {
+            Some(h) if h.is_finite() => {
+                self.heap.push(s, FKey { f: h, g: 0.0 });
+                stats.pushes += 1;
+            }
+            _ => {}
+        }
+        let mut edges = EdgeCheck::new();
+        let mut found = None;
+        while let Some((u, _)) = self.heap.pop() {
+            self.stamp[u] = closed;
+            if u == goal_slot {
+                found = Some(u);
+                break;
+            }
+            stats.expansions += 1;
+            let node = self.index.node(graph, u);
+            let gu = self.g[u];
+            graph.for_each_successor(node, |next, cost| {
+                if !edges.accept(node, next, cost) {
+                    return;
+                }
+                let v = self.slot(graph, next);
+                let gv = gu + cost;
+                let st = self.stamp[v];
+                let seen = st >= open;
+                if seen && (gv >= self.g[v] || (st == closed && !reopen)) {
+                    return;
+                }
+                let Some(h) = estimate(&mut heuristic, next, weight, &mut bad_h) else { return };
+                self.g[v] = gv;
+                self.parent[v] = u as u32;
+                self.stamp[v] = open;
+                if h.is_finite() {
+                    self.heap.push(v, FKey { f: gv + h, g: gv });
+                    match (seen, st == closed) {
+                        (false, _) => stats.pushes += 1,
+                        (true, true) => stats.reopenings += 1,
+                        (true, false) => stats.decreases += 1,
+                    }
+                }
+            });
+            edges.check()?;
+            if let Some((node, value)) = bad_h {
+                return Err(SearchError::InvalidHeuristic { node, value });
+            }
+        }
+        if let Some((node, value)) = bad_h {
+            return Err(SearchError::InvalidHeuristic { node, value });
+        }
+        let path = found.map(|t| self.path_to(graph, t));
+        stats.elapsed = clock.elapsed();
+        Ok(SearchResult { path, stats })
+    }
+}
+
+/// The weighted heuristic of `node`, or `None` (remembering the first culprit) when the
+/// heuristic returned a negative or NaN value.
+#[inline]
+fn estimate<N, H: FnMut(N) -> Cost>(
+    heuristic: &mut H,
+    node: N,
+    weight: f64,
+    bad: &mut Option<(N, Cost)>,
+) -> Option<Cost>
+where
+    N: Copy,
+{
+    let h = heuristic(node);
+    if h >= 0.0 {
+        Some(weight * h)
+    } else {
+        if bad.is_none() {
+            *bad = Some((node, h));
+        }
+        None
+    }
+}

@@ -1,0 +1,84 @@
+//! Breadth-first search: the path with the fewest moves, whatever the edge costs.
+
+use trailmark_core::graph::{IndexedGraph, Successors};
+
+use crate::error::SearchError;
+use crate::index::{Dense, NodeIndex};
+use crate::search::{EdgeCheck, Search, SearchResult};
+use crate::stats::SearchStats;
+
+/// Breadth-first search from `start` to `goal`: a path with the fewest edges. Its reported cost
+/// is the sum of the edge costs along it, which need not be the least cost.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::bfs;
+///
+/// let graph = GridGraph::new(&Grid::new(5, 5)?, Connectivity::Eight);
+/// let found = bfs(&graph, Cell::new(0, 0), Cell::new(4, 2))?;
+/// assert_eq!(found.path.unwrap().moves(), 4); // Chebyshev distance
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn bfs<G>(graph: &G, start: G::Node, goal: G::Node) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+where
+    G: Successors + IndexedGraph + ?Sized,
+{
+    Search::<Dense>::new().bfs(graph, start, goal)
+}
+
+impl<I> Search<I> {
+    /// Breadth-first search with this workspace; see [`bfs`](crate::bfs()).
+    pub fn bfs<G>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let clock = std::time::Instant::now();
+        let (s, t) = self.begin(graph, start, goal)?;
+        let open = self.open_stamp();
+        let closed = self.closed_stamp();
+        let mut stats = SearchStats { pushes: 1, ..SearchStats::default() };
+        self.g[s] = 0.0;
+        self.parent[s] = s as u32;
+        self.stamp[s] = open;
+        self.fifo.push_back(s as u32);
+        let mut edges = EdgeCheck::new();
+        // The goal is recognised when it is reached: the first path to reach it is a shortest one.
+        let mut found = (s == t).then_some(t);
+        while found.is_none() {
+            let Some(u) = self.fifo.pop_front() else { break };
+            let u = u as usize;
+            self.stamp[u] = closed;
+            stats.expansions += 1;
+            let node = self.index.node(graph, u);
+            let gu = self.g[u];
+            graph.for_each_successor(node, |next, cost| {
+                if found.is_some() || !edges.accept(node, next, cost) {
+                    return;
+                }
+                let v = self.slot(graph, next);
+                if self.stamp[v] >= open {
+                    return;
+                }
+                self.g[v] = gu + cost;
+                self.parent[v] = u as u32;
+                self.stamp[v] = open;
+                self.fifo.push_back(v as u32);
+                stats.pushes += 1;
+                if v == t {
+                    found = Some(v);
+                }
+            });
+            edges.check()?;
+        }
+        let path = found.map(|t| self.path_to(graph, t));
+        stats.elapsed = clock.elapsed();
+        Ok(SearchResult { path, stats })
+    }
+}

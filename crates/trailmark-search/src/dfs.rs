@@ -1,0 +1,89 @@
+//! Depth-first search: some path, found by always extending the most recently reached node.
+
+use trailmark_core::graph::{IndexedGraph, Successors};
+
+use crate::error::SearchError;
+use crate::index::{Dense, NodeIndex};
+use crate::search::{EdgeCheck, Search, SearchResult};
+use crate::stats::SearchStats;
+
+/// Depth-first search from `start` to `goal`: a path if one exists, usually far from the
+/// shortest. Uses an explicit stack, so deep graphs cannot overflow the call stack.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::dfs;
+///
+/// let graph = GridGraph::new(&Grid::from_rows(&["...", "@@.", "..."])?, Connectivity::Four);
+/// let path = dfs(&graph, Cell::new(0, 0), Cell::new(0, 2))?.path.unwrap();
+/// assert_eq!(path.start(), Some(Cell::new(0, 0)));
+/// assert_eq!(path.goal(), Some(Cell::new(0, 2)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn dfs<G>(graph: &G, start: G::Node, goal: G::Node) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+where
+    G: Successors + IndexedGraph + ?Sized,
+{
+    Search::<Dense>::new().dfs(graph, start, goal)
+}
+
+impl<I> Search<I> {
+    /// Depth-first search with this workspace; see [`dfs`](crate::dfs()).
+    pub fn dfs<G>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let clock = std::time::Instant::now();
+        let (s, t) = self.begin(graph, start, goal)?;
+        let open = self.open_stamp();
+        let closed = self.closed_stamp();
+        let mut stats = SearchStats { pushes: 1, ..SearchStats::default() };
+        self.g[s] = 0.0;
+        self.parent[s] = s as u32;
+        self.stamp[s] = open;
+        self.stack.push(s as u32);
+        let mut edges = EdgeCheck::new();
+        let mut found = None;
+        // A node may be on the stack several times; its parent is the one that pushed it last,
+        // which is the entry popped first. Later entries for a closed node are skipped.
+        while let Some(u) = self.stack.pop() {
+            let u = u as usize;
+            if self.stamp[u] == closed {
+                continue;
+            }
+            self.stamp[u] = closed;
+            if u == t {
+                found = Some(u);
+                break;
+            }
+            stats.expansions += 1;
+            let node = self.index.node(graph, u);
+            let gu = self.g[u];
+            graph.for_each_successor(node, |next, cost| {
+                if !edges.accept(node, next, cost) {
+                    return;
+                }
+                let v = self.slot(graph, next);
+                if self.stamp[v] == closed {
+                    return;
+                }
+                self.g[v] = gu + cost;
+                self.parent[v] = u as u32;
+                self.stamp[v] = open;
+                self.stack.push(v as u32);
+                stats.pushes += 1;
+            });
+            edges.check()?;
+        }
+        let path = found.map(|t| self.path_to(graph, t));
+        stats.elapsed = clock.elapsed();
+        Ok(SearchResult { path, stats })
+    }
+}

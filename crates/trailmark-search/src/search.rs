@@ -1,0 +1,334 @@
+//! The reusable search workspace shared by every algorithm of this crate.
+//!
+//! A [`Search`] owns the per-node state (cost from the start, parent, a generation stamp) in
+//! dense `Vec`s, and the open list. Running many queries through one `Search` reuses that memory:
+//! a query only touches the nodes it visits, because a node's state counts only when its stamp
+//! matches the current query.
+//!
+//! State per node slot: 8 bytes of cost, 4 of parent, 4 of stamp, and 4 in the open list's
+//! position table: 20 bytes, plus 24 per node currently in the open list.
+
+use std::collections::VecDeque;
+use std::fmt::Debug;
+
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::Graph;
+use trailmark_core::path::Path;
+
+use crate::error::SearchError;
+use crate::index::{Dense, Hashed, NodeIndex};
+use crate::queue::IndexedHeap;
+use crate::stats::SearchStats;
+
+/// The most node slots a search supports.
+pub const MAX_NODES: usize = u32::MAX as usize - 2;
+
+/// The outcome of a search: a path (or `None` when the goal is unreachable) and statistics.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SearchResult<N> {
+    /// The path found, start first; `None` when no path exists.
+    pub path: Option<Path<N>>,
+    /// What the search did.
+    pub stats: SearchStats,
+}
+
+impl<N> SearchResult<N> {
+    /// The cost of the path, if one was found.
+    pub fn cost(&self) -> Option<Cost> {
+        self.path.as_ref().map(|p| p.cost)
+    }
+}
+
+/// The key of a node in a best-first open list: `f = g + w h`, ties broken toward larger `g`
+/// (deeper nodes first, which on grids reaches the goal after fewer expansions).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct FKey {
+    pub f: Cost,
+    pub g: Cost,
+}
+
+impl PartialOrd for FKey {
+    #[inline]
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(match self.f.partial_cmp(&other.f)? {
+            std::cmp::Ordering::Equal => other.g.partial_cmp(&self.g)?,
+            o => o,
+        })
+    }
+
+    #[inline]
+    fn lt(&self, other: &Self) -> bool {
+        self.f < other.f || (self.f == other.f && self.g > other.g)
+    }
+}
+
+/// A reusable search workspace: per-node state in dense vectors, and the open list.
+///
+/// `I` decides how nodes get their slot in the vectors: [`Dense`] (the default) uses the
+/// graph's own indices and needs an [`IndexedGraph`](trailmark_core::graph::IndexedGraph);
+/// [`Hashed`] works on any graph.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::Search;
+///
+/// let grid = Grid::from_rows(&["....", ".@@.", "...."])?;
+/// let graph = GridGraph::new(&grid, Connectivity::Eight);
+/// let mut search = Search::new();
+/// for goal in [Cell::new(3, 0), Cell::new(3, 2)] {
+///     let h = graph.heuristic(GridHeuristic::Octile, goal);
+///     let found = search.astar(&graph, Cell::new(0, 0), goal, h)?;
+///     assert!(found.path.is_some());
+/// }
+/// // The nodes the last query expanded, e.g. to draw them.
+/// assert!(search.expanded(&graph).count() > 0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Search<I = Dense> {
+    pub(crate) index: I,
+    /// Cost from the start, valid when `stamp >= open_stamp()`.
+    pub(crate) g: Vec<Cost>,
+    /// Parent slot on the best known path.
+    pub(crate) parent: Vec<u32>,
+    /// `2 x generation` when the node was reached by the current query, `+ 1` once expanded.
+    pub(crate) stamp: Vec<u32>,
+    pub(crate) generation: u32,
+    pub(crate) heap: IndexedHeap<FKey>,
+    pub(crate) fifo: VecDeque<u32>,
+    pub(crate) stack: Vec<u32>,
+    /// The slot of the last query's start, or `None` before the first query.
+    pub(crate) start: Option<u32>,
+}
+
+impl Default for Search<Dense> {
+    fn default() -> Self {
+        Search::with_index(Dense)
+    }
+}
+
+impl Search<Dense> {
+    /// A workspace for graphs with dense indices ([`IndexedGraph`](trailmark_core::graph::IndexedGraph)).
+    pub fn new() -> Self {
+        Self::default()
+    }
+}
+
+impl<N> Search<Hashed<N>> {
+    /// A workspace for any graph: nodes get their slots through a hash map.
+    pub fn hashed() -> Self {
+        Search::with_index(Hashed::default())
+    }
+}
+
+impl<I> Search<I> {
+    /// A workspace that numbers nodes with `index`.
+    pub fn with_index(index: I) -> Self {
+        Search {
+            index,
+            g: Vec::new(),
+            parent: Vec::new(),
+            stamp: Vec::new(),
+            generation: 0,
+            heap: IndexedHeap::new(),
+            fifo: VecDeque::new(),
+            stack: Vec::new(),
+            start: None,
+        }
+    }
+
+    /// Bytes held by the per-node state and the open list (allocated capacity). The hash map of
+    /// a [`Hashed`] workspace is not included.
+    pub fn memory_bytes(&self) -> usize {
+        self.g.capacity() * 8
+            + self.parent.capacity() * 4
+            + self.stamp.capacity() * 4
+            + self.heap.memory_bytes()
+            + self.fifo.capacity() * 4
+            + self.stack.capacity() * 4
+    }
+
+    #[inline]
+    pub(crate) fn open_stamp(&self) -> u32 {
+        2 * self.generation
+    }
+
+    #[inline]
+    pub(crate) fn closed_stamp(&self) -> u32 {
+        2 * self.generation + 1
+    }
+
+    /// Starts a query: validates the endpoints, sizes the state, clears the open lists and
+    /// moves to a new generation so that older state is ignored. Returns the start and goal slots.
+    pub(crate) fn begin<G>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+    ) -> Result<(usize, usize), SearchError<G::Node>>
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        if !graph.contains(start) {
+            return Err(SearchError::StartNotInGraph(start));
+        }
+        if !graph.contains(goal) {
+            return Err(SearchError::GoalNotInGraph(goal));
+        }
+        let bound = self.index.begin(graph);
+        if bound > MAX_NODES {
+            return Err(SearchError::TooManyNodes(bound));
+        }
+        if self.stamp.len() < bound {
+            self.g.resize(bound, 0.0);
+            self.parent.resize(bound, 0);
+            self.stamp.resize(bound, 0);
+        }
+        self.heap.clear();
+        self.fifo.clear();
+        self.stack.clear();
+        if self.generation >= u32::MAX / 2 - 1 {
+            self.stamp.fill(0);
+            self.generation = 0;
+        }
+        self.generation += 1;
+        let s = self.slot(graph, start);
+        let t = self.slot(graph, goal);
+        self.start = Some(s as u32);
+        Ok((s, t))
+    }
+
+    /// The slot of `node`, with state vectors long enough to hold it.
+    #[inline]
+    pub(crate) fn slot<G>(&mut self, graph: &G, node: G::Node) -> usize
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let s = self.index.slot(graph, node);
+        if s >= self.stamp.len() {
+            self.grow(s + 1);
+        }
+        s
+    }
+
+    #[cold]
+    fn grow(&mut self, len: usize) {
+        let len = len.max(self.stamp.len() * 2).max(64);
+        self.g.resize(len, 0.0);
+        self.parent.resize(len, 0);
+        self.stamp.resize(len, 0);
+    }
+
+    /// The path from the start to `slot` along parent links.
+    pub(crate) fn path_to<G>(&self, graph: &G, slot: usize) -> Path<G::Node>
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let mut nodes = Vec::new();
+        let mut s = slot;
+        loop {
+            nodes.push(self.index.node(graph, s));
+            let p = self.parent[s] as usize;
+            if p == s {
+                break;
+            }
+            s = p;
+        }
+        nodes.reverse();
+        Path { nodes, cost: self.g[slot] }
+    }
+
+    /// The nodes the last query expanded (closed), in slot order.
+    pub fn expanded<'a, G>(&'a self, graph: &'a G) -> impl Iterator<Item = G::Node> + 'a
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let closed = self.closed_stamp();
+        self.stamp
+            .iter()
+            .enumerate()
+            .filter(move |&(_, &st)| st == closed && self.generation > 0)
+            .map(move |(s, _)| self.index.node(graph, s))
+    }
+
+    /// The nodes the last query reached, expanded or not, in slot order.
+    pub fn reached<'a, G>(&'a self, graph: &'a G) -> impl Iterator<Item = G::Node> + 'a
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let open = self.open_stamp();
+        self.stamp
+            .iter()
+            .enumerate()
+            .filter(move |&(_, &st)| st >= open && self.generation > 0)
+            .map(move |(s, _)| self.index.node(graph, s))
+    }
+
+    /// The cost of the best path the last query found from its start to `node`, if it reached
+    /// `node`. After [`Search::dijkstra_all`] this is the least cost to every reachable node.
+    pub fn cost_to<G>(&mut self, graph: &G, node: G::Node) -> Option<Cost>
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        self.reached_slot(graph, node).map(|s| self.g[s])
+    }
+
+    /// The best path the last query found from its start to `node`, if it reached `node`.
+    pub fn path_to_node<G>(&mut self, graph: &G, node: G::Node) -> Option<Path<G::Node>>
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        self.reached_slot(graph, node).map(|s| self.path_to(graph, s))
+    }
+
+    fn reached_slot<G>(&mut self, graph: &G, node: G::Node) -> Option<usize>
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        if self.start.is_none() || !graph.contains(node) {
+            return None;
+        }
+        let s = self.slot(graph, node);
+        (self.stamp[s] >= self.open_stamp()).then_some(s)
+    }
+}
+
+/// Keeps the first invalid edge cost met inside a successor callback.
+pub(crate) struct EdgeCheck<N> {
+    pub bad: Option<(N, N, Cost)>,
+}
+
+impl<N: Copy + Debug> EdgeCheck<N> {
+    pub fn new() -> Self {
+        EdgeCheck { bad: None }
+    }
+
+    /// Whether the edge should be followed: false for `NO_EDGE`, and for invalid costs (which are
+    /// remembered).
+    #[inline]
+    pub fn accept(&mut self, from: N, to: N, cost: Cost) -> bool {
+        if cost >= 0.0 && cost < f64::INFINITY {
+            return true;
+        }
+        if cost != f64::INFINITY && self.bad.is_none() {
+            self.bad = Some((from, to, cost));
+        }
+        false
+    }
+
+    pub fn check(&self) -> Result<(), SearchError<N>> {
+        match self.bad {
+            None => Ok(()),
+            Some((from, to, cost)) => Err(SearchError::InvalidEdgeCost { from, to, cost }),
+        }
+    }
+}

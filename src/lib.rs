@@ -1,0 +1,51 @@
+//! trailmark: motion planning in Rust. Grid, roadmap and sampling planners that share one
+//! vocabulary, and a benchmark harness that measures them all.
+//!
+//! This facade re-exports every trailmark crate; depend on the crates one by one to take only
+//! what you use:
+//!
+//! | module | crate | what it holds |
+//! |---|---|---|
+//! | [`core`] | `trailmark-core` | geometry, costs, graph traits, grids, MovingAI files, JSON, SVG |
+//! | [`graph`] | `trailmark-graph` | builders from a world to a graph (grid graphs) |
+//! | [`search`] | `trailmark-search` | BFS, DFS, Dijkstra, A*, weighted A*, indexed priority queue |
+//! | [`sample`] | `trailmark-sample` | sampling planners (planned) |
+//!
+//! ```
+//! use trailmark::prelude::*;
+//!
+//! let grid = Grid::from_rows(&[
+//!     ".....",
+//!     ".@@@.",
+//!     ".....",
+//! ])?;
+//! let graph = GridGraph::new(&grid, Connectivity::Eight);
+//! let (start, goal) = (Cell::new(0, 1), Cell::new(4, 1));
+//! let found = astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal))?;
+//! let path = found.path.expect("reachable");
+//! assert_eq!(path.cost, 6.0); // over the wall: no diagonal move may clip a blocked corner
+//! println!("{} moves, cost {:.3}, {} expansions", path.moves(), path.cost, found.stats.expansions);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+#![deny(missing_docs)]
+
+pub mod solve;
+
+pub use trailmark_core as core;
+pub use trailmark_graph as graph;
+pub use trailmark_sample as sample;
+pub use trailmark_search as search;
+
+pub use trailmark_core::{movingai, problem, svg};
+
+/// The names most programs need: `use trailmark::prelude::*;`.
+pub mod prelude {
+    pub use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
+    pub use trailmark_core::grid::{Cell, Connectivity, Grid, GridHeuristic};
+    pub use trailmark_core::{Cost, Path};
+    pub use trailmark_graph::{CornerCutting, GridGraph};
+    pub use trailmark_search::{
+        Search, SearchError, SearchResult, astar, bfs, dfs, dijkstra, weighted_astar,
+    };
+}

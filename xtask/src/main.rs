@@ -1,1 +1,80 @@
-fn main() {}
+//! `cargo xtask`: the trailmark harness and driver.
+//!
+//! - `cargo xtask bench` runs the planners on a built-in generated suite (and the MovingAI maps
+//!   in `../shared/movingai` when present) beside peer libraries, and writes a report.
+//! - `cargo xtask verify movingai DIR` checks every scenario of a MovingAI benchmark folder
+//!   against its published optimal length.
+//! - `cargo xtask solve PROBLEM.json` solves one problem document and prints the result JSON.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+mod bench;
+mod solve;
+mod verify;
+
+#[derive(Parser)]
+#[command(name = "cargo xtask", about = "The trailmark harness: bench, verify, solve")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Runs the planners on the benchmark suite and writes a report to target/bench/.
+    Bench(bench::Args),
+    /// Checks planners against published benchmark optima.
+    Verify {
+        #[command(subcommand)]
+        set: VerifySet,
+    },
+    /// Solves a problem document (a file, or - for standard input) and prints the result JSON.
+    Solve {
+        /// The problem JSON file.
+        problem: PathBuf,
+    },
+}
+
+#[derive(Subcommand)]
+enum VerifySet {
+    /// Every DIR/scenarios/<set>/<map>.map.scen on DIR/maps/<set>/<map>.map.
+    Movingai {
+        /// The MovingAI folder (with maps/ and scenarios/).
+        dir: PathBuf,
+        /// The algorithms to check (comma-separated or repeated).
+        #[arg(long, value_enum, value_delimiter = ',', default_value = "astar")]
+        algo: Vec<VerifyAlgo>,
+        /// Check every K-th scenario of each file only.
+        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+        every: u64,
+    },
+}
+
+/// An optimal algorithm that `verify` checks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum VerifyAlgo {
+    /// A* with the octile heuristic.
+    Astar,
+    /// Dijkstra's algorithm.
+    Dijkstra,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Bench(args) => bench::run(&args),
+        Command::Verify { set: VerifySet::Movingai { dir, algo, every } } => {
+            verify::movingai(&dir, &algo, every)
+        }
+        Command::Solve { problem } => solve::run(&problem),
+    }
+}
+
+/// The workspace root (the parent of this package's folder).
+pub fn workspace_root() -> PathBuf {
+    let here = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    here.parent().map(PathBuf::from).unwrap_or(here)
+}

@@ -24,6 +24,7 @@
 #![deny(missing_docs)]
 
 pub mod cost;
+pub mod generate;
 pub mod geometry;
 pub mod graph;
 pub mod grid;

@@ -1,0 +1,238 @@
+//! Seeded grid generators: random obstacles, mazes and rooms, in the styles of the MovingAI
+//! `random`, `mazes` and `rooms` sets. The same arguments give the same grid on every machine.
+//!
+//! ```
+//! use trailmark_core::generate;
+//!
+//! let maze = generate::maze(64, 48, 3, 7)?;
+//! assert_eq!((maze.width(), maze.height()), (64, 48));
+//! assert_eq!(maze, generate::maze(64, 48, 3, 7)?); // reproducible
+//! # Ok::<(), trailmark_core::generate::GenerateError>(())
+//! ```
+
+use rand::seq::SliceRandom;
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use thiserror::Error;
+
+use crate::grid::{Cell, Grid, GridError};
+
+/// What was wrong with a generator's arguments.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum GenerateError {
+    /// The size is not a valid grid.
+    #[error(transparent)]
+    Grid(#[from] GridError),
+    /// The obstacle fraction is not within `[0, 1]`.
+    #[error("the obstacle fraction {0} is not within [0, 1]")]
+    Fraction(f64),
+    /// A corridor or room size of zero, or too large for the grid.
+    #[error("a {what} of {size} does not fit a {width} x {height} grid")]
+    Size {
+        /// `"corridor width"` or `"room size"`.
+        what: &'static str,
+        /// The size given.
+        size: u32,
+        /// The grid width.
+        width: usize,
+        /// The grid height.
+        height: usize,
+    },
+}
+
+fn rng(seed: u64) -> ChaCha8Rng {
+    ChaCha8Rng::seed_from_u64(seed)
+}
+
+/// A grid whose cells are blocked independently with probability `obstacle_fraction`.
+pub fn random(width: usize, height: usize, obstacle_fraction: f64, seed: u64) -> Result<Grid, GenerateError> {
+    if !(0.0..=1.0).contains(&obstacle_fraction) {
+        return Err(GenerateError::Fraction(obstacle_fraction));
+    }
+    let mut rng = rng(seed);
+    let costs = (0..width * height)
+        .map(|_| if rng.random_bool(obstacle_fraction) { f64::INFINITY } else { 1.0 })
+        .collect();
+    Ok(Grid::from_costs(width, height, costs)?)
+}
+
+/// A perfect maze (one route between any two places) with corridors `corridor` cells wide and
+/// walls one cell thick, carved by a seeded depth-first backtracker. Cells beyond the last
+/// whole corridor on the right and bottom stay blocked.
+pub fn maze(width: usize, height: usize, corridor: u32, seed: u64) -> Result<Grid, GenerateError> {
+    let mut grid = Grid::from_costs(width, height, vec![f64::INFINITY; width * height])?;
+    let pitch = corridor as usize + 1;
+    let (cols, rows) = (width.saturating_sub(1) / pitch.max(1), height.saturating_sub(1) / pitch.max(1));
+    if corridor == 0 || cols == 0 || rows == 0 {
+        return Err(GenerateError::Size { what: "corridor width", size: corridor, width, height });
+    }
+    let mut rng = rng(seed);
+    let open = |grid: &mut Grid, x0: usize, y0: usize, w: usize, h: usize| {
+        for y in y0..y0 + h {
+            for x in x0..x0 + w {
+                let _ = grid.set_blocked(Cell::new(x as u32, y as u32), false);
+            }
+        }
+    };
+    let c = corridor as usize;
+    let mut visited = vec![false; cols * rows];
+    let mut stack = vec![(0usize, 0usize)];
+    visited[0] = true;
+    open(&mut grid, 1, 1, c, c);
+    while let Some(&(cx, cy)) = stack.last() {
+        let mut next = Vec::with_capacity(4);
+        if cx > 0 && !visited[cy * cols + cx - 1] {
+            next.push((cx - 1, cy));
+        }
+        if cx + 1 < cols && !visited[cy * cols + cx + 1] {
+            next.push((cx + 1, cy));
+        }
+        if cy > 0 && !visited[(cy - 1) * cols + cx] {
+            next.push((cx, cy - 1));
+        }
+        if cy + 1 < rows && !visited[(cy + 1) * cols + cx] {
+            next.push((cx, cy + 1));
+        }
+        if next.is_empty() {
+            stack.pop();
+            continue;
+        }
+        let (nx, ny) = next[rng.random_range(0..next.len())];
+        visited[ny * cols + nx] = true;
+        open(&mut grid, 1 + nx * pitch, 1 + ny * pitch, c, c);
+        // Knock down the wall between the two maze cells.
+        let (x0, y0) = (1 + cx.min(nx) * pitch, 1 + cy.min(ny) * pitch);
+        if nx != cx {
+            open(&mut grid, x0 + c, y0, 1, c);
+        } else {
+            open(&mut grid, x0, y0 + c, c, 1);
+        }
+        stack.push((nx, ny));
+    }
+    Ok(grid)
+}
+
+/// Square rooms of `room` x `room` cells separated by one-cell walls. Every room is reachable:
+/// the doors of a random spanning tree are always open, and each other wall gets a door with
+/// probability one half. Doors are a random stretch of a quarter to a half of the wall.
+pub fn rooms(width: usize, height: usize, room: u32, seed: u64) -> Result<Grid, GenerateError> {
+    let mut grid = Grid::new(width, height)?;
+    let pitch = room as usize + 1;
+    let (cols, rows) = (width.div_ceil(pitch), height.div_ceil(pitch));
+    if room < 2 || room as usize >= width.max(height) {
+        return Err(GenerateError::Size { what: "room size", size: room, width, height });
+    }
+    let mut rng = rng(seed);
+    let block = |grid: &mut Grid, x: usize, y: usize, blocked: bool| {
+        if x < width && y < height {
+            let _ = grid.set_blocked(Cell::new(x as u32, y as u32), blocked);
+        }
+    };
+    // Walls on every multiple of the pitch (offset so that rooms start at 0).
+    for y in 0..height {
+        for x in 0..width {
+            if x % pitch == room as usize || y % pitch == room as usize {
+                block(&mut grid, x, y, true);
+            }
+        }
+    }
+    // Walls between rooms: (room index, vertical?) in a random order; a union-find spanning tree.
+    let mut walls = Vec::new();
+    for ry in 0..rows {
+        for rx in 0..cols {
+            if rx + 1 < cols {
+                walls.push((rx, ry, true));
+            }
+            if ry + 1 < rows {
+                walls.push((rx, ry, false));
+            }
+        }
+    }
+    walls.shuffle(&mut rng);
+    let mut parent: Vec<usize> = (0..cols * rows).collect();
+    fn find(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for (rx, ry, vertical) in walls {
+        let a = find(&mut parent, ry * cols + rx);
+        let b = find(&mut parent, if vertical { ry * cols + rx + 1 } else { (ry + 1) * cols + rx });
+        let tree = a != b;
+        if tree {
+            parent[a] = b;
+        }
+        if !tree && !rng.random_bool(0.5) {
+            continue;
+        }
+        let r = room as usize;
+        // The door runs along the part of the wall inside the grid (rooms on the far edges may
+        // be cut short).
+        let extent = if vertical { r.min(height - ry * pitch) } else { r.min(width - rx * pitch) };
+        let len = rng.random_range((r / 4).max(1)..=(r / 2).max(1)).min(extent);
+        let at = rng.random_range(0..=extent - len);
+        for k in at..at + len {
+            if vertical {
+                block(&mut grid, rx * pitch + r, ry * pitch + k, false);
+            } else {
+                block(&mut grid, rx * pitch + k, ry * pitch + r, false);
+            }
+        }
+    }
+    Ok(grid)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The passable cells reachable from `from`, 4-connected, by flood fill.
+    fn reachable(grid: &Grid, from: Cell) -> usize {
+        let mut seen = vec![false; grid.len()];
+        let mut stack = vec![from];
+        let w = grid.width() as usize;
+        let mut n = 0;
+        while let Some(c) = stack.pop() {
+            if !grid.is_passable(c) || std::mem::replace(&mut seen[c.y as usize * w + c.x as usize], true) {
+                continue;
+            }
+            n += 1;
+            for (dx, dy) in [(1i32, 0i32), (-1, 0), (0, 1), (0, -1)] {
+                stack.push(Cell::new(c.x.wrapping_add_signed(dx), c.y.wrapping_add_signed(dy)));
+            }
+        }
+        n
+    }
+
+    #[test]
+    fn mazes_and_rooms_are_connected() {
+        for seed in 0..5 {
+            let m = maze(61, 40, 2, seed).unwrap();
+            assert_eq!(reachable(&m, Cell::new(1, 1)), m.passable_count(), "maze seed {seed}");
+            for (w, h) in [(70, 45), (72, 72), (73, 19), (9, 100)] {
+                let r = rooms(w, h, 8, seed).unwrap();
+                assert_eq!(reachable(&r, Cell::new(0, 0)), r.passable_count(), "rooms {w}x{h} seed {seed}");
+            }
+        }
+    }
+
+    #[test]
+    fn same_seed_same_grid() {
+        assert_eq!(random(30, 20, 0.3, 9).unwrap(), random(30, 20, 0.3, 9).unwrap());
+        assert_ne!(random(30, 20, 0.3, 9).unwrap(), random(30, 20, 0.3, 10).unwrap());
+        let density = random(200, 200, 0.25, 1).unwrap().passable_count() as f64 / 40000.0;
+        assert!((density - 0.75).abs() < 0.02, "{density}");
+    }
+
+    #[test]
+    fn bad_arguments_are_errors() {
+        assert_eq!(random(3, 3, 1.5, 0), Err(GenerateError::Fraction(1.5)));
+        assert!(random(3, 3, f64::NAN, 0).is_err());
+        assert!(matches!(maze(10, 10, 0, 0), Err(GenerateError::Size { .. })));
+        assert!(matches!(maze(3, 3, 4, 0), Err(GenerateError::Size { .. })));
+        assert!(matches!(rooms(10, 10, 1, 0), Err(GenerateError::Size { .. })));
+        assert!(matches!(random(0, 3, 0.1, 0), Err(GenerateError::Grid(_))));
+    }
+}

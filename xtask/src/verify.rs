@@ -1,0 +1,174 @@
+//! `cargo xtask verify movingai DIR`: every scenario against its published optimal length.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use trailmark::movingai::{self, Scenario};
+use trailmark::prelude::*;
+
+use crate::VerifyAlgo;
+
+/// The tolerance on a published length: they are rounded (to 6 significant digits in most sets,
+/// to 2 decimals in bg512).
+pub fn tolerance(optimal: f64) -> f64 {
+    1e-4 * optimal.max(1.0) + 0.006
+}
+
+/// One map and its scenario file.
+struct Job {
+    name: String,
+    map: PathBuf,
+    scen: PathBuf,
+}
+
+/// What checking one map gave.
+struct Outcome {
+    name: String,
+    passed: u64,
+    failed: u64,
+    messages: Vec<String>,
+    seconds: f64,
+}
+
+/// Lists `DIR/scenarios/<set>/<name>.map.scen` with their maps `DIR/maps/<set>/<name>.map`.
+fn jobs(dir: &Path) -> Result<Vec<Job>, String> {
+    let scenarios = dir.join("scenarios");
+    let read = |d: &Path| std::fs::read_dir(d).map_err(|e| format!("cannot list {}: {e}", d.display()));
+    let mut jobs = Vec::new();
+    for set in read(&scenarios)? {
+        let set = set.map_err(|e| e.to_string())?.path();
+        if !set.is_dir() {
+            continue;
+        }
+        let set_name = set.file_name().unwrap_or_default().to_string_lossy().into_owned();
+        for file in read(&set)? {
+            let scen = file.map_err(|e| e.to_string())?.path();
+            let file_name = scen.file_name().unwrap_or_default().to_string_lossy().into_owned();
+            let Some(map_name) = file_name.strip_suffix(".scen").filter(|m| m.ends_with(".map")) else {
+                continue;
+            };
+            let map = dir.join("maps").join(&set_name).join(map_name);
+            let name = format!("{set_name}/{}", map_name.trim_end_matches(".map"));
+            jobs.push(Job { name, map, scen });
+        }
+    }
+    jobs.sort_by(|a, b| a.name.cmp(&b.name));
+    if jobs.is_empty() {
+        return Err(format!("no scenario files (*.map.scen) under {}", scenarios.display()));
+    }
+    Ok(jobs)
+}
+
+fn check(job: &Job, algos: &[VerifyAlgo], every: u64) -> Outcome {
+    let clock = Instant::now();
+    let mut out =
+        Outcome { name: job.name.clone(), passed: 0, failed: 0, messages: Vec::new(), seconds: 0.0 };
+    let loaded = movingai::read_map(&job.map)
+        .map_err(|e| e.to_string())
+        .and_then(|g| movingai::read_scenarios(&job.scen).map(|s| (g, s)).map_err(|e| e.to_string()));
+    let (grid, scenarios) = match loaded {
+        Ok(x) => x,
+        Err(e) => {
+            out.failed += 1;
+            out.messages.push(e);
+            return out;
+        }
+    };
+    let graph = GridGraph::new(&grid, Connectivity::Eight);
+    let mut search = Search::new();
+    for (i, scenario) in scenarios.iter().enumerate().filter(|(i, _)| *i as u64 % every == 0) {
+        for &algo in algos {
+            match solve_one(&graph, &grid, &mut search, scenario, algo) {
+                Ok(()) => out.passed += 1,
+                Err(why) => {
+                    out.failed += 1;
+                    out.messages.push(format!("scenario {} ({algo:?}): {why}", i + 1));
+                }
+            }
+        }
+    }
+    out.seconds = clock.elapsed().as_secs_f64();
+    out
+}
+
+fn solve_one(
+    graph: &GridGraph,
+    grid: &Grid,
+    search: &mut Search,
+    s: &Scenario,
+    algo: VerifyAlgo,
+) -> Result<(), String> {
+    if (s.map_width, s.map_height) != (grid.width(), grid.height()) {
+        return Err(format!(
+            "made for a {} x {} map, but the map is {} x {}",
+            s.map_width,
+            s.map_height,
+            grid.width(),
+            grid.height()
+        ));
+    }
+    let found = match algo {
+        VerifyAlgo::Astar => {
+            search.astar(graph, s.start, s.goal, graph.heuristic(GridHeuristic::Octile, s.goal))
+        }
+        VerifyAlgo::Dijkstra => search.dijkstra(graph, s.start, s.goal),
+    }
+    .map_err(|e| e.to_string())?;
+    let cost = found.cost().ok_or_else(|| format!("{} -> {}: no path found", s.start, s.goal))?;
+    let diff = (cost - s.optimal_length).abs();
+    if diff > tolerance(s.optimal_length) {
+        return Err(format!("{} -> {}: cost {cost:.6}, published {}", s.start, s.goal, s.optimal_length));
+    }
+    Ok(())
+}
+
+/// Runs the check over every scenario file of `dir`, maps in parallel, and prints one line per
+/// map and the total.
+pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
+    let jobs = match jobs(dir) {
+        Ok(j) => j,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let clock = Instant::now();
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(jobs.len());
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let mut outcomes: Vec<Option<Outcome>> = (0..jobs.len()).map(|_| None).collect();
+    let done = std::sync::Mutex::new(&mut outcomes);
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    let Some(job) = jobs.get(i) else { break };
+                    let outcome = check(job, algos, every);
+                    done.lock().expect("no thread panics holding the lock")[i] = Some(outcome);
+                }
+            });
+        }
+    });
+    let (mut passed, mut failed) = (0, 0);
+    for o in outcomes.into_iter().flatten() {
+        println!("{:<24} {:>6} passed {:>4} failed  {:>7.2}s", o.name, o.passed, o.failed, o.seconds);
+        for m in o.messages.iter().take(10) {
+            println!("    {m}");
+        }
+        if o.messages.len() > 10 {
+            println!("    ... and {} more", o.messages.len() - 10);
+        }
+        passed += o.passed;
+        failed += o.failed;
+    }
+    let algos: Vec<String> = algos.iter().map(|a| format!("{a:?}").to_lowercase()).collect();
+    println!(
+        "checked every {} scenario(s) with {} in {:.1}s",
+        if every == 1 { "1".to_string() } else { format!("{every}th") },
+        algos.join(" and "),
+        clock.elapsed().as_secs_f64()
+    );
+    println!("{passed} passed, {failed} failed");
+    if failed > 0 { ExitCode::from(1) } else { ExitCode::SUCCESS }
+}

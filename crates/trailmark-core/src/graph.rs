@@ -59,6 +59,20 @@ pub trait Successors: Graph {
     /// that does not exist is simply not reported (algorithms also skip a cost of
     /// [`NO_EDGE`](crate::cost::NO_EDGE) and reject negative or NaN costs with an error).
     fn for_each_successor<F: FnMut(Self::Node, Cost)>(&self, node: Self::Node, visit: F);
+
+    /// For an [`IndexedGraph`]: calls `visit(successor index, successor, cost)` once for each
+    /// edge leaving the node with index `index`.
+    ///
+    /// The provided version converts between nodes and indices; a graph that can enumerate its
+    /// edges by index directly (a grid, a compressed adjacency array) overrides it, and searches
+    /// over dense indices then never convert at all.
+    #[inline]
+    fn for_each_successor_index<F: FnMut(usize, Self::Node, Cost)>(&self, index: usize, mut visit: F)
+    where
+        Self: IndexedGraph,
+    {
+        self.for_each_successor(self.from_index(index), |n, c| visit(self.to_index(n), n, c))
+    }
 }
 
 /// A graph whose in-edges can be enumerated, for algorithms that search backwards.

@@ -77,6 +77,12 @@ pub struct GridGraph {
     corner_cutting: CornerCutting,
     /// Padded passability, border cells false.
     open: Vec<bool>,
+    /// Padded move masks: bit `k` is set when `MOVES[k]` from the cell is an edge (target
+    /// passable, corners as the rule demands, within the connectivity). Precomputed so that
+    /// enumerating successors tests nothing but these bits.
+    moves: Vec<u8>,
+    /// `MOVES[k]` as an offset in the padded arrays.
+    offsets: [isize; 8],
     /// Padded cell costs, only when some passable cell does not cost 1.
     costs: Option<Vec<Cost>>,
     /// The smallest passable cell cost (1 when there is none), which scales heuristics.
@@ -100,22 +106,48 @@ impl GridGraph {
                 }
             }
         }
-        GridGraph {
+        let offsets = MOVES.map(|m| m.dy as isize * stride as isize + m.dx as isize);
+        let mut graph = GridGraph {
             width: grid.width(),
             height: grid.height(),
             stride,
             connectivity,
             corner_cutting: CornerCutting::Forbidden,
+            moves: vec![0; open.len()],
             open,
+            offsets,
             costs,
             min_cost: grid.min_cost().unwrap_or(1.0),
-        }
+        };
+        graph.update_moves(0..graph.open.len());
+        graph
     }
 
     /// The same graph with another corner-cutting rule (only 8-connected graphs move diagonally).
     pub fn with_corner_cutting(mut self, rule: CornerCutting) -> Self {
         self.corner_cutting = rule;
+        self.update_moves(0..self.open.len());
         self
+    }
+
+    /// Recomputes the move masks of the padded cells in `range`.
+    fn update_moves(&mut self, range: std::ops::Range<usize>) {
+        let count = match self.connectivity {
+            Connectivity::Four => 4,
+            Connectivity::Eight => 8,
+        };
+        for i in range {
+            let mut mask = 0u8;
+            if self.open[i] {
+                for (k, &m) in MOVES.iter().enumerate().take(count) {
+                    let target = self.open[(i as isize + self.offsets[k]) as usize];
+                    if target && (m.dx == 0 || m.dy == 0 || self.diagonal_allowed(i, m)) {
+                        mask |= 1 << k;
+                    }
+                }
+            }
+            self.moves[i] = mask;
+        }
     }
 
     /// The number of columns.
@@ -187,6 +219,10 @@ impl GridGraph {
             costs[i] = cost;
         }
         self.open[i] = cost.is_finite();
+        // The moves that start, end or cut a corner at this cell start within one cell of it.
+        for row in [i - self.stride, i, i + self.stride] {
+            self.update_moves(row - 1..row + 2);
+        }
         if cost.is_finite() {
             self.min_cost = self.min_cost.min(cost);
         }
@@ -239,26 +275,31 @@ impl Graph for GridGraph {
 impl Successors for GridGraph {
     #[inline]
     fn for_each_successor<F: FnMut(Cell, Cost)>(&self, cell: Cell, mut visit: F) {
-        let i = self.index(cell);
-        let stride = self.stride as isize;
-        let moves = match self.connectivity {
-            Connectivity::Four => &MOVES[..4],
-            Connectivity::Eight => &MOVES[..],
-        };
-        for &m in moves {
-            let j = (i as isize + m.dy as isize * stride + m.dx as isize) as usize;
-            if !self.open[j] {
-                continue;
-            }
-            if m.dx != 0 && m.dy != 0 && !self.diagonal_allowed(i, m) {
-                continue;
-            }
+        self.visit_moves(self.index(cell), cell, |_, next, cost| visit(next, cost));
+    }
+
+    #[inline]
+    fn for_each_successor_index<F: FnMut(usize, Cell, Cost)>(&self, index: usize, visit: F) {
+        self.visit_moves(index, self.from_index(index), visit);
+    }
+}
+
+impl GridGraph {
+    /// The successors of the cell at padded index `i`, as `(index, cell, cost)`.
+    #[inline]
+    fn visit_moves<F: FnMut(usize, Cell, Cost)>(&self, i: usize, cell: Cell, mut visit: F) {
+        let mut mask = self.moves[i];
+        while mask != 0 {
+            let k = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            let m = MOVES[k];
+            let j = (i as isize + self.offsets[k]) as usize;
             let next = Cell::new(cell.x.wrapping_add_signed(m.dx), cell.y.wrapping_add_signed(m.dy));
             let cost = match &self.costs {
                 None => m.length,
                 Some(costs) => m.length * 0.5 * (costs[i] + costs[j]),
             };
-            visit(next, cost);
+            visit(j, next, cost);
         }
     }
 }
@@ -285,7 +326,9 @@ impl IndexedGraph for GridGraph {
 
     #[inline]
     fn from_index(&self, index: usize) -> Cell {
-        Cell::new((index % self.stride) as u32 - 1, (index / self.stride) as u32 - 1)
+        // Indices fit in u32 (the grid checks its size), and 32-bit division is the faster one.
+        let (i, stride) = (index as u32, self.stride as u32);
+        Cell::new(i % stride - 1, i / stride - 1)
     }
 }
 

@@ -11,7 +11,7 @@ use trailmark_core::graph::{IndexedGraph, Successors};
 
 use crate::error::SearchError;
 use crate::index::{Dense, NodeIndex};
-use crate::search::{EdgeCheck, FKey, Search, SearchResult};
+use crate::search::{EdgeCheck, FKey, Search, SearchResult, ensure};
 
 /// A* from `start` to `goal`: a least-cost path when `heuristic` is admissible (never more than
 /// the least cost to the goal). A node whose heuristic is `+inf` is treated as a dead end.
@@ -204,52 +204,89 @@ impl<I> Search<I> {
         let mut bad_h = None;
         let open = self.open_stamp();
         let closed = self.closed_stamp();
-        self.g[s] = 0.0;
-        self.parent[s] = s as u32;
-        self.stamp[s] = open;
+        self.nodes.g[s] = 0.0;
+        self.nodes.parent[s] = s as u32;
+        self.nodes.stamp[s] = open;
         match estimate(&mut heuristic, start, weight, &mut bad_h) {
             Some(h) if h.is_finite() => {
-                self.heap.push(s, FKey { f: h, g: 0.0 });
+                self.heap.push(s, FKey::new(h, 0.0));
                 stats.pushes += 1;
             }
             _ => {}
         }
         let mut edges = EdgeCheck::new();
         let mut found = None;
-        while let Some((u, _)) = self.heap.pop() {
-            self.stamp[u] = closed;
+        // The open list is the heap plus at most one `held` node: the least-key node generated
+        // by the last expansion. It is expanded next without passing through the heap when no
+        // heap entry has a smaller key, which on grids is most of the time (moves straight
+        // toward the goal keep f constant and raise g). The expansion order is exactly that of
+        // the heap alone; only pushes and pops are saved.
+        let mut held: Option<(FKey, usize)> = None;
+        loop {
+            let u = match held.take() {
+                Some((key, v)) => match self.heap.peek() {
+                    Some((_, top)) if top < key => {
+                        self.heap.push(v, key);
+                        self.heap.pop().map_or(v, |(u, _)| u)
+                    }
+                    _ => v,
+                },
+                None => match self.heap.pop() {
+                    Some((u, _)) => u,
+                    None => break,
+                },
+            };
+            self.nodes.stamp[u] = closed;
             if u == goal_slot {
                 found = Some(u);
                 break;
             }
             stats.expansions += 1;
-            let node = self.index.node(graph, u);
-            let gu = self.g[u];
-            graph.for_each_successor(node, |next, cost| {
-                if !edges.accept(node, next, cost) {
+            let gu = self.nodes.g[u];
+            let (nodes, heap) = (&mut self.nodes, &mut self.heap);
+            self.index.for_each_successor(graph, u, |v, next, cost| {
+                if !edges.accept(next, cost) {
                     return;
                 }
-                let v = self.slot(graph, next);
+                ensure(nodes, v);
                 let gv = gu + cost;
-                let st = self.stamp[v];
+                let st = nodes.stamp[v];
                 let seen = st >= open;
-                if seen && (gv >= self.g[v] || (st == closed && !reopen)) {
+                if seen && (gv >= nodes.g[v] || (st == closed && !reopen)) {
                     return;
                 }
                 let Some(h) = estimate(&mut heuristic, next, weight, &mut bad_h) else { return };
-                self.g[v] = gv;
-                self.parent[v] = u as u32;
-                self.stamp[v] = open;
-                if h.is_finite() {
-                    self.heap.push(v, FKey { f: gv + h, g: gv });
-                    match (seen, st == closed) {
-                        (false, _) => stats.pushes += 1,
-                        (true, true) => stats.reopenings += 1,
-                        (true, false) => stats.decreases += 1,
+                nodes.g[v] = gv;
+                nodes.parent[v] = u as u32;
+                nodes.stamp[v] = open;
+                if !h.is_finite() {
+                    return;
+                }
+                match (seen, st == closed) {
+                    (false, _) => stats.pushes += 1,
+                    (true, true) => stats.reopenings += 1,
+                    (true, false) => stats.decreases += 1,
+                }
+                let key = FKey::new(gv + h, gv);
+                match held {
+                    // The held node again (a parallel edge): keep the better key.
+                    Some((_, w)) if w == v => held = Some((key, v)),
+                    // An open node is in the heap (or, with an infinite heuristic, nowhere, and
+                    // `push` then inserts it): its key is lowered there.
+                    _ if st == open => {
+                        heap.push(v, key);
+                    }
+                    None => held = Some((key, v)),
+                    Some((k, w)) if key < k => {
+                        heap.push(w, k);
+                        held = Some((key, v));
+                    }
+                    Some(_) => {
+                        heap.push(v, key);
                     }
                 }
             });
-            edges.check()?;
+            edges.check(|| self.index.node(graph, u))?;
             if let Some((node, value)) = bad_h {
                 return Err(SearchError::InvalidHeuristic { node, value });
             }
@@ -276,7 +313,8 @@ where
     N: Copy,
 {
     let h = heuristic(node);
-    if h >= 0.0 {
+    // Non-negative numbers and +inf (see `EdgeCheck::accept`); `-0.0` counts as 0.
+    if h.to_bits() <= f64::INFINITY.to_bits() || h == 0.0 {
         Some(weight * h)
     } else {
         if bad.is_none() {

@@ -4,7 +4,7 @@ use trailmark_core::graph::{IndexedGraph, Successors};
 
 use crate::error::SearchError;
 use crate::index::{Dense, NodeIndex};
-use crate::search::{EdgeCheck, Search, SearchResult};
+use crate::search::{EdgeCheck, Search, SearchResult, ensure};
 use crate::stats::SearchStats;
 
 /// Breadth-first search from `start` to `goal`: a path with the fewest edges. Its reported cost
@@ -44,9 +44,9 @@ impl<I> Search<I> {
         let open = self.open_stamp();
         let closed = self.closed_stamp();
         let mut stats = SearchStats { pushes: 1, ..SearchStats::default() };
-        self.g[s] = 0.0;
-        self.parent[s] = s as u32;
-        self.stamp[s] = open;
+        self.nodes.g[s] = 0.0;
+        self.nodes.parent[s] = s as u32;
+        self.nodes.stamp[s] = open;
         self.fifo.push_back(s as u32);
         let mut edges = EdgeCheck::new();
         // The goal is recognised when it is reached: the first path to reach it is a shortest one.
@@ -54,28 +54,28 @@ impl<I> Search<I> {
         while found.is_none() {
             let Some(u) = self.fifo.pop_front() else { break };
             let u = u as usize;
-            self.stamp[u] = closed;
+            self.nodes.stamp[u] = closed;
             stats.expansions += 1;
-            let node = self.index.node(graph, u);
-            let gu = self.g[u];
-            graph.for_each_successor(node, |next, cost| {
-                if found.is_some() || !edges.accept(node, next, cost) {
+            let gu = self.nodes.g[u];
+            let (nodes, fifo) = (&mut self.nodes, &mut self.fifo);
+            self.index.for_each_successor(graph, u, |v, next, cost| {
+                if found.is_some() || !edges.accept(next, cost) {
                     return;
                 }
-                let v = self.slot(graph, next);
-                if self.stamp[v] >= open {
+                ensure(nodes, v);
+                if nodes.stamp[v] >= open {
                     return;
                 }
-                self.g[v] = gu + cost;
-                self.parent[v] = u as u32;
-                self.stamp[v] = open;
-                self.fifo.push_back(v as u32);
+                nodes.g[v] = gu + cost;
+                nodes.parent[v] = u as u32;
+                nodes.stamp[v] = open;
+                fifo.push_back(v as u32);
                 stats.pushes += 1;
                 if v == t {
                     found = Some(v);
                 }
             });
-            edges.check()?;
+            edges.check(|| self.index.node(graph, u))?;
         }
         let path = found.map(|t| self.path_to(graph, t));
         stats.elapsed = clock.elapsed();

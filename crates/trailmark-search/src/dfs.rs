@@ -4,7 +4,7 @@ use trailmark_core::graph::{IndexedGraph, Successors};
 
 use crate::error::SearchError;
 use crate::index::{Dense, NodeIndex};
-use crate::search::{EdgeCheck, Search, SearchResult};
+use crate::search::{EdgeCheck, Search, SearchResult, ensure};
 use crate::stats::SearchStats;
 
 /// Depth-first search from `start` to `goal`: a path if one exists, usually far from the
@@ -45,9 +45,9 @@ impl<I> Search<I> {
         let open = self.open_stamp();
         let closed = self.closed_stamp();
         let mut stats = SearchStats { pushes: 1, ..SearchStats::default() };
-        self.g[s] = 0.0;
-        self.parent[s] = s as u32;
-        self.stamp[s] = open;
+        self.nodes.g[s] = 0.0;
+        self.nodes.parent[s] = s as u32;
+        self.nodes.stamp[s] = open;
         self.stack.push(s as u32);
         let mut edges = EdgeCheck::new();
         let mut found = None;
@@ -55,32 +55,32 @@ impl<I> Search<I> {
         // which is the entry popped first. Later entries for a closed node are skipped.
         while let Some(u) = self.stack.pop() {
             let u = u as usize;
-            if self.stamp[u] == closed {
+            if self.nodes.stamp[u] == closed {
                 continue;
             }
-            self.stamp[u] = closed;
+            self.nodes.stamp[u] = closed;
             if u == t {
                 found = Some(u);
                 break;
             }
             stats.expansions += 1;
-            let node = self.index.node(graph, u);
-            let gu = self.g[u];
-            graph.for_each_successor(node, |next, cost| {
-                if !edges.accept(node, next, cost) {
+            let gu = self.nodes.g[u];
+            let (nodes, stack) = (&mut self.nodes, &mut self.stack);
+            self.index.for_each_successor(graph, u, |v, next, cost| {
+                if !edges.accept(next, cost) {
                     return;
                 }
-                let v = self.slot(graph, next);
-                if self.stamp[v] == closed {
+                ensure(nodes, v);
+                if nodes.stamp[v] == closed {
                     return;
                 }
-                self.g[v] = gu + cost;
-                self.parent[v] = u as u32;
-                self.stamp[v] = open;
-                self.stack.push(v as u32);
+                nodes.g[v] = gu + cost;
+                nodes.parent[v] = u as u32;
+                nodes.stamp[v] = open;
+                stack.push(v as u32);
                 stats.pushes += 1;
             });
-            edges.check()?;
+            edges.check(|| self.index.node(graph, u))?;
         }
         let path = found.map(|t| self.path_to(graph, t));
         stats.elapsed = clock.elapsed();

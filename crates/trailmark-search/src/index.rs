@@ -7,7 +7,8 @@
 use std::collections::HashMap;
 use std::hash::Hash;
 
-use trailmark_core::graph::{Graph, IndexedGraph};
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{Graph, IndexedGraph, Successors};
 
 /// A way to give the nodes of `G` dense slots during one search.
 pub trait NodeIndex<G: Graph + ?Sized> {
@@ -19,6 +20,12 @@ pub trait NodeIndex<G: Graph + ?Sized> {
 
     /// The node in `slot`, which this search assigned.
     fn node(&self, graph: &G, slot: usize) -> G::Node;
+
+    /// Calls `visit(slot, successor, cost)` for each edge leaving the node in `slot`.
+    fn for_each_successor<F>(&mut self, graph: &G, slot: usize, visit: F)
+    where
+        G: Successors,
+        F: FnMut(usize, G::Node, Cost);
 }
 
 /// Slots are the graph's own indices ([`IndexedGraph`]): no hashing at all.
@@ -39,6 +46,15 @@ impl<G: IndexedGraph + ?Sized> NodeIndex<G> for Dense {
     #[inline]
     fn node(&self, graph: &G, slot: usize) -> G::Node {
         graph.from_index(slot)
+    }
+
+    #[inline]
+    fn for_each_successor<F>(&mut self, graph: &G, slot: usize, visit: F)
+    where
+        G: Successors,
+        F: FnMut(usize, G::Node, Cost),
+    {
+        graph.for_each_successor_index(slot, visit)
     }
 }
 
@@ -79,5 +95,18 @@ where
     #[inline]
     fn node(&self, _graph: &G, slot: usize) -> G::Node {
         self.nodes[slot]
+    }
+
+    #[inline]
+    fn for_each_successor<F>(&mut self, graph: &G, slot: usize, mut visit: F)
+    where
+        G: Successors,
+        F: FnMut(usize, G::Node, Cost),
+    {
+        let node = self.nodes[slot];
+        graph.for_each_successor(node, |next, cost| {
+            let s = <Self as NodeIndex<G>>::slot(self, graph, next);
+            visit(s, next, cost)
+        })
     }
 }

@@ -107,9 +107,8 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
     /// If `item > Self::MAX_ITEM`.
     #[inline]
     pub fn push(&mut self, item: usize, key: K) -> Option<K> {
-        assert!(item <= Self::MAX_ITEM, "IndexedHeap item {item} exceeds {}", Self::MAX_ITEM);
         if item >= self.pos.len() {
-            self.pos.resize(item + 1, ABSENT);
+            self.grow(item);
         }
         match self.pos[item] {
             ABSENT => {
@@ -130,6 +129,20 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
                 }
                 Some(old)
             }
+        }
+    }
+
+    /// Makes room in the position table for `item`.
+    #[cold]
+    fn grow(&mut self, item: usize) {
+        assert!(item <= Self::MAX_ITEM, "IndexedHeap item {item} exceeds {}", Self::MAX_ITEM);
+        self.pos.resize((item + 1).max(2 * self.pos.len()), ABSENT);
+    }
+
+    /// Prepares the position table for items `0..items`, so that pushing them never reallocates.
+    pub fn reserve_items(&mut self, items: usize) {
+        if items > self.pos.len() {
+            self.pos.resize(items, ABSENT);
         }
     }
 
@@ -212,13 +225,24 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
             if first >= n {
                 break;
             }
-            let mut best = first;
-            for c in first + 1..(first + ARITY).min(n) {
-                if self.heap[c].key < self.heap[best].key {
-                    best = c;
+            let (best, best_key) = if first + ARITY <= n {
+                // A tournament between the four children, with keys kept in registers: two
+                // independent comparisons, then one; selected by conditional moves, since which
+                // child is least is unpredictable.
+                let h = &self.heap[first..first + ARITY];
+                let (ab, kab) = if h[1].key < h[0].key { (1, h[1].key) } else { (0, h[0].key) };
+                let (cd, kcd) = if h[3].key < h[2].key { (3, h[3].key) } else { (2, h[2].key) };
+                if kcd < kab { (first + cd, kcd) } else { (first + ab, kab) }
+            } else {
+                let mut best = first;
+                for c in first + 1..n {
+                    if self.heap[c].key < self.heap[best].key {
+                        best = c;
+                    }
                 }
-            }
-            if !(self.heap[best].key < moving.key) {
+                (best, self.heap[best].key)
+            };
+            if !(best_key < moving.key) {
                 break;
             }
             self.heap[p] = self.heap[best];

@@ -40,7 +40,7 @@ enum Command {
 
 #[derive(Subcommand)]
 enum VerifySet {
-    /// Every DIR/scenarios/<set>/<map>.map.scen on DIR/maps/<set>/<map>.map.
+    /// Every DIR/scenarios/SET/NAME.map.scen, solved on its map DIR/maps/SET/NAME.map.
     Movingai {
         /// The MovingAI folder (with maps/ and scenarios/).
         dir: PathBuf,

@@ -71,7 +71,7 @@ pub trait Successors: Graph {
     where
         Self: IndexedGraph,
     {
-        self.for_each_successor(self.from_index(index), |n, c| visit(self.to_index(n), n, c))
+        self.for_each_successor(self.node_at(index), |n, c| visit(self.index_of(n), n, c))
     }
 }
 
@@ -84,17 +84,17 @@ pub trait Predecessors: Graph {
 
 /// A graph whose nodes are numbered densely, so algorithms can keep per-node state in `Vec`s.
 ///
-/// Every node `n` with `contains(n)` has an index `to_index(n) < node_bound()`, and
-/// `from_index(to_index(n)) == n`. Indices need not all be used (a grid may skip its border).
+/// Every node `n` with `contains(n)` has an index `index_of(n) < node_bound()`, and
+/// `node_at(index_of(n)) == n`. Indices need not all be used (a grid may skip its border).
 pub trait IndexedGraph: Graph {
     /// An upper bound (exclusive) on node indices.
     fn node_bound(&self) -> usize;
 
     /// The index of `node`, which must satisfy [`Graph::contains`].
-    fn to_index(&self, node: Self::Node) -> usize;
+    fn index_of(&self, node: Self::Node) -> usize;
 
     /// The node with index `index`, which must be the index of a node of the graph.
-    fn from_index(&self, index: usize) -> Self::Node;
+    fn node_at(&self, index: usize) -> Self::Node;
 }
 
 impl<G: Graph + ?Sized> Graph for &G {
@@ -127,12 +127,12 @@ impl<G: IndexedGraph + ?Sized> IndexedGraph for &G {
     }
 
     #[inline]
-    fn to_index(&self, node: Self::Node) -> usize {
-        (**self).to_index(node)
+    fn index_of(&self, node: Self::Node) -> usize {
+        (**self).index_of(node)
     }
 
     #[inline]
-    fn from_index(&self, index: usize) -> Self::Node {
-        (**self).from_index(index)
+    fn node_at(&self, index: usize) -> Self::Node {
+        (**self).node_at(index)
     }
 }

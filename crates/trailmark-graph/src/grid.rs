@@ -280,7 +280,7 @@ impl Successors for GridGraph {
 
     #[inline]
     fn for_each_successor_index<F: FnMut(usize, Cell, Cost)>(&self, index: usize, visit: F) {
-        self.visit_moves(index, self.from_index(index), visit);
+        self.visit_moves(index, self.node_at(index), visit);
     }
 }
 
@@ -320,12 +320,12 @@ impl IndexedGraph for GridGraph {
     }
 
     #[inline]
-    fn to_index(&self, cell: Cell) -> usize {
+    fn index_of(&self, cell: Cell) -> usize {
         self.index(cell)
     }
 
     #[inline]
-    fn from_index(&self, index: usize) -> Cell {
+    fn node_at(&self, index: usize) -> Cell {
         // Indices fit in u32 (the grid checks its size), and 32-bit division is the faster one.
         let (i, stride) = (index as u32, self.stride as u32);
         Cell::new(i % stride - 1, i / stride - 1)
@@ -339,7 +339,7 @@ mod tests {
     fn successors(g: &GridGraph, c: Cell) -> Vec<(Cell, Cost)> {
         let mut v = Vec::new();
         g.for_each_successor(c, |n, k| v.push((n, k)));
-        v.sort_by(|a, b| a.0.cmp(&b.0));
+        v.sort_by_key(|a| a.0);
         v
     }
 
@@ -385,9 +385,9 @@ mod tests {
         let grid = Grid::new(5, 3).unwrap();
         let g = GridGraph::new(&grid, Connectivity::Eight);
         for c in grid.cells() {
-            let i = g.to_index(c);
+            let i = g.index_of(c);
             assert!(i < g.node_bound());
-            assert_eq!(g.from_index(i), c);
+            assert_eq!(g.node_at(i), c);
         }
         assert!(!g.contains(Cell::new(5, 0)) && !g.contains(Cell::new(0, 3)));
     }

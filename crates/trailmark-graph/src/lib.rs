@@ -17,7 +17,7 @@
 //! assert_eq!(next, [(Cell::new(2, 0), 1.0), (Cell::new(0, 0), 1.0)]);
 //!
 //! // Dense node indices let algorithms keep their state in vectors.
-//! assert_eq!(graph.from_index(graph.to_index(Cell::new(2, 2))), Cell::new(2, 2));
+//! assert_eq!(graph.node_at(graph.index_of(Cell::new(2, 2))), Cell::new(2, 2));
 //! # Ok::<(), trailmark_core::GridError>(())
 //! ```
 

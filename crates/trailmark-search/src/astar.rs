@@ -236,11 +236,11 @@ impl<I> Search<I> {
                     None => break,
                 },
             };
-            self.nodes.stamp[u] = closed;
             if u == goal_slot {
                 found = Some(u);
                 break;
             }
+            self.nodes.stamp[u] = closed;
             stats.expansions += 1;
             let gu = self.nodes.g[u];
             let (nodes, heap) = (&mut self.nodes, &mut self.heap);

@@ -58,11 +58,11 @@ impl<I> Search<I> {
             if self.nodes.stamp[u] == closed {
                 continue;
             }
-            self.nodes.stamp[u] = closed;
             if u == t {
                 found = Some(u);
                 break;
             }
+            self.nodes.stamp[u] = closed;
             stats.expansions += 1;
             let gu = self.nodes.g[u];
             let (nodes, stack) = (&mut self.nodes, &mut self.stack);

@@ -1,7 +1,7 @@
 //! How a search numbers the nodes it meets: by the graph's own dense indices, or by hashing.
 //!
 //! Search state lives in `Vec`s indexed by a *slot* per node. [`Dense`] takes the slot from
-//! [`IndexedGraph::to_index`] (no hashing, state sized once to `node_bound`); [`Hashed`] gives
+//! [`IndexedGraph::index_of`] (no hashing, state sized once to `node_bound`); [`Hashed`] gives
 //! nodes slots in the order the search meets them, for graphs that cannot number their nodes.
 
 use std::collections::HashMap;
@@ -40,12 +40,12 @@ impl<G: IndexedGraph + ?Sized> NodeIndex<G> for Dense {
 
     #[inline]
     fn slot(&mut self, graph: &G, node: G::Node) -> usize {
-        graph.to_index(node)
+        graph.index_of(node)
     }
 
     #[inline]
     fn node(&self, graph: &G, slot: usize) -> G::Node {
-        graph.from_index(slot)
+        graph.node_at(slot)
     }
 
     #[inline]

@@ -205,7 +205,7 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
         while p > 0 {
             let parent = (p - 1) / ARITY;
             let above = self.heap[parent];
-            if !(moving.key < above.key) {
+            if moving.key >= above.key {
                 break;
             }
             self.heap[p] = above;
@@ -242,7 +242,7 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
                 }
                 (best, self.heap[best].key)
             };
-            if !(best_key < moving.key) {
+            if best_key >= moving.key {
                 break;
             }
             self.heap[p] = self.heap[best];

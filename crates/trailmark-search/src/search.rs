@@ -249,7 +249,8 @@ impl<I> Search<I> {
         Path { nodes, cost: self.nodes.g[slot] }
     }
 
-    /// The nodes the last query expanded (closed), in slot order.
+    /// The nodes the last query expanded (closed), in slot order. The goal, where the search
+    /// stopped on reaching it, is not among them.
     pub fn expanded<'a, G>(&'a self, graph: &'a G) -> impl Iterator<Item = G::Node> + 'a
     where
         G: Graph + ?Sized,

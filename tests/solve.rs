@@ -1,0 +1,153 @@
+//! Solving problem documents: every planner on a known grid, and every kind of bad input giving
+//! its typed error; random documents never panic.
+
+use proptest::prelude::*;
+use trailmark::problem::{GridWorld, PlannerSpec, Problem, Status, Waypoint, World};
+use trailmark::solve::{SolveError, solve};
+
+fn problem(rows: &[&str], start: Vec<f64>, goal: Vec<f64>, planner: PlannerSpec) -> Problem {
+    Problem {
+        world: World::Grid(GridWorld {
+            rows: Some(rows.iter().map(|r| r.to_string()).collect()),
+            ..Default::default()
+        }),
+        start,
+        goal,
+        planner,
+        seed: None,
+    }
+}
+
+const ROWS: [&str; 3] = ["....", ".@@.", "...."];
+
+fn planners() -> Vec<PlannerSpec> {
+    vec![
+        PlannerSpec::Bfs {},
+        PlannerSpec::Dfs {},
+        PlannerSpec::Dijkstra {},
+        PlannerSpec::AStar { heuristic: None },
+        PlannerSpec::WeightedAStar { weight: 2.0, heuristic: None },
+    ]
+}
+
+#[test]
+fn every_planner_solves_the_wall() {
+    for planner in planners() {
+        let result = solve(&problem(&ROWS, vec![0.0, 0.0], vec![3.0, 2.0], planner.clone()), ".").unwrap();
+        assert_eq!(result.status, Status::Solved, "{planner:?}");
+        assert_eq!(result.path.first(), Some(&Waypoint::Cell([0, 0].into())));
+        assert_eq!(result.path.last(), Some(&Waypoint::Cell([3, 2].into())));
+        assert!(result.stats.expansions.is_some());
+        if !matches!(planner, PlannerSpec::Dfs {}) {
+            // Around the wall without clipping its corners: 5 moves of length 1.
+            assert_eq!(result.cost, Some(5.0), "{planner:?}");
+        }
+    }
+}
+
+#[test]
+fn no_path_is_a_result_not_an_error() {
+    let rows = [".@.", ".@.", ".@."];
+    for planner in planners() {
+        let result = solve(&problem(&rows, vec![0.0, 0.0], vec![2.0, 2.0], planner), ".").unwrap();
+        assert_eq!((result.status, result.cost, result.path.len()), (Status::NoPath, None, 0));
+    }
+}
+
+#[test]
+fn bad_input_gives_typed_errors() {
+    let astar = PlannerSpec::AStar { heuristic: None };
+    let err = |p: Problem| solve(&p, ".").unwrap_err();
+    assert!(matches!(
+        err(problem(&ROWS, vec![1.0, 1.0], vec![0.0, 0.0], astar.clone())),
+        SolveError::Blocked { which: "start", .. }
+    ));
+    assert!(matches!(
+        err(problem(&ROWS, vec![0.0, 0.0], vec![9.0, 0.0], astar.clone())),
+        SolveError::Outside { which: "goal", .. }
+    ));
+    for bad in [vec![0.5, 0.0], vec![-1.0, 0.0], vec![0.0], vec![0.0, 0.0, 0.0], vec![f64::NAN, 0.0]] {
+        assert!(matches!(
+            err(problem(&ROWS, bad, vec![0.0, 0.0], astar.clone())),
+            SolveError::NotACell { .. }
+        ));
+    }
+    let weight = PlannerSpec::WeightedAStar { weight: 0.5, heuristic: None };
+    assert!(matches!(err(problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], weight)), SolveError::Search(_)));
+    let manhattan = PlannerSpec::AStar { heuristic: Some(trailmark::prelude::GridHeuristic::Manhattan) };
+    assert!(matches!(
+        err(problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], manhattan)),
+        SolveError::Inadmissible { .. }
+    ));
+    assert!(matches!(
+        err(problem(&["..", "."], vec![0.0, 0.0], vec![1.0, 0.0], astar.clone())),
+        SolveError::Grid(_)
+    ));
+
+    let with = |edit: &dyn Fn(&mut GridWorld)| {
+        let mut p = problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], PlannerSpec::AStar { heuristic: None });
+        let World::Grid(world) = &mut p.world;
+        edit(world);
+        p
+    };
+    let both = with(&|w| w.map = Some("missing.map".into()));
+    assert!(matches!(err(both), SolveError::GridSource), "map and rows together");
+    let missing = with(&|w| {
+        w.map = Some("missing.map".into());
+        w.rows = None;
+    });
+    let message = err(missing).to_string();
+    assert!(message.contains("missing.map"), "{message}");
+    let short = with(&|w| w.costs = Some(vec![vec![1.0; 4], vec![1.0; 4]]));
+    assert!(matches!(err(short), SolveError::CostsShape { row: 2, .. }));
+    let negative = with(&|w| w.costs = Some(vec![vec![1.0; 4], vec![1.0; 4], vec![1.0, -2.0, 1.0, 1.0]]));
+    assert!(matches!(err(negative), SolveError::Grid(_)));
+}
+
+#[test]
+fn costs_change_the_route() {
+    // The bottom route is cheaper unless its cells cost 10.
+    let rows = ["...", ".@.", "..."];
+    let mut p = problem(&rows, vec![0.0, 1.0], vec![2.0, 1.0], PlannerSpec::Dijkstra {});
+    let World::Grid(world) = &mut p.world;
+    world.costs = Some(vec![vec![1.0; 3], vec![1.0; 3], vec![10.0; 3]]);
+    let result = solve(&p, ".").unwrap();
+    assert!(result.path.contains(&Waypoint::Cell([1, 0].into())), "{:?}", result.path);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    /// Random rows, costs, endpoints and planners: a result or a typed error, never a panic.
+    #[test]
+    fn random_documents_never_panic(
+        rows in prop::collection::vec("[.@GSTWOx]{0,6}", 0..6),
+        costs in prop::option::of(prop::collection::vec(prop::collection::vec(
+            prop_oneof![Just(f64::NAN), Just(-1.0), Just(0.0), 0.1f64..5.0], 0..6), 0..6)),
+        start in prop::collection::vec(prop_oneof![Just(f64::NAN), -2.0f64..8.0, 0.0f64..8.0], 0..4),
+        goal in prop::collection::vec(0u32..8, 2).prop_map(|v| v.iter().map(|&x| f64::from(x)).collect::<Vec<_>>()),
+        which in 0usize..5,
+        weight in prop_oneof![Just(f64::NAN), -1.0f64..4.0],
+        eight in any::<bool>(),
+        cut in any::<bool>(),
+    ) {
+        let planner = match which {
+            0 => PlannerSpec::Bfs {},
+            1 => PlannerSpec::Dfs {},
+            2 => PlannerSpec::Dijkstra {},
+            3 => PlannerSpec::AStar { heuristic: None },
+            _ => PlannerSpec::WeightedAStar { weight, heuristic: None },
+        };
+        let world = GridWorld {
+            rows: Some(rows),
+            costs,
+            connectivity: if eight { trailmark::prelude::Connectivity::Eight } else { trailmark::prelude::Connectivity::Four },
+            corner_cutting: cut,
+            ..Default::default()
+        };
+        let p = Problem { world: World::Grid(world), start, goal, planner, seed: None };
+        if let Ok(result) = solve(&p, ".") {
+            prop_assert_eq!(result.cost.is_some(), result.status == Status::Solved);
+        }
+    }
+}

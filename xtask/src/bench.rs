@@ -1,9 +1,569 @@
-//! `cargo xtask bench` (first version lands next).
+//! `cargo xtask bench`: the grid planners on generated and MovingAI maps, beside the
+//! `pathfinding` crate, with a report in `target/bench/<suite>-<date>/`.
+//!
+//! Every planner solves the same queries on the same graph semantics (8-connected, no corner
+//! cutting, costs 1 and sqrt(2)). Optimal planners are checked against the reference cost (the
+//! published optimum on MovingAI maps, trailmark's Dijkstra on generated ones) and any
+//! disagreement fails the run: a benchmark of wrong answers measures nothing.
+
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Instant;
 
+use ordered_float::OrderedFloat;
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
+use trailmark::core::generate;
+use trailmark::movingai;
+use trailmark::prelude::*;
+
+use crate::verify::tolerance;
+
+/// Options of `cargo xtask bench`.
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// `quick` (the default, a few minutes) or `full` (more queries per map).
+    #[arg(long, value_enum, default_value = "quick")]
+    suite: Suite,
+    /// The seed of the generated maps and their queries.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Rounds over each map's queries; each query's time is its median over the rounds.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..))]
+    runs: u32,
+    /// The MovingAI folder (default: ../shared/movingai beside the project, when it exists).
+    #[arg(long)]
+    movingai: Option<PathBuf>,
+    /// Skip the MovingAI maps even when the folder exists.
+    #[arg(long)]
+    no_movingai: bool,
+    /// Run only these planners (comma-separated names from the report).
+    #[arg(long, value_delimiter = ',')]
+    only: Vec<String>,
+    /// Print the results as JSON on standard output instead of the table.
+    #[arg(long)]
+    json: bool,
+}
 
-pub fn run(_args: &Args) -> ExitCode {
+/// A benchmark suite.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, Serialize)]
+#[serde(rename_all = "snake_case")]
+enum Suite {
+    /// Generated maps with 100 queries each; MovingAI maps with 20 queries each.
+    Quick,
+    /// Generated maps with 400 queries each; MovingAI maps with 100 queries each.
+    Full,
+}
+
+impl Suite {
+    fn name(self) -> &'static str {
+        match self {
+            Suite::Quick => "quick",
+            Suite::Full => "full",
+        }
+    }
+
+    /// Queries per generated map, queries per MovingAI map.
+    fn queries(self) -> (usize, usize) {
+        match self {
+            Suite::Quick => (100, 20),
+            Suite::Full => (400, 100),
+        }
+    }
+}
+
+/// A planner of the benchmark.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Planner {
+    Astar,
+    WeightedAstar,
+    Dijkstra,
+    Bfs,
+    Dfs,
+    PathfindingAstar,
+    PathfindingDijkstra,
+    PathfindingFringe,
+}
+
+/// The weight of the benchmarked weighted A*.
+const WEIGHT: f64 = 2.0;
+
+impl Planner {
+    const ALL: [Planner; 8] = [
+        Planner::Astar,
+        Planner::PathfindingAstar,
+        Planner::PathfindingFringe,
+        Planner::WeightedAstar,
+        Planner::Dijkstra,
+        Planner::PathfindingDijkstra,
+        Planner::Bfs,
+        Planner::Dfs,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Planner::Astar => "astar",
+            Planner::WeightedAstar => "weighted_astar",
+            Planner::Dijkstra => "dijkstra",
+            Planner::Bfs => "bfs",
+            Planner::Dfs => "dfs",
+            Planner::PathfindingAstar => "pathfinding_astar",
+            Planner::PathfindingDijkstra => "pathfinding_dijkstra",
+            Planner::PathfindingFringe => "pathfinding_fringe",
+        }
+    }
+
+    fn library(self) -> &'static str {
+        match self {
+            Planner::PathfindingAstar | Planner::PathfindingDijkstra | Planner::PathfindingFringe => "pathfinding 4",
+            _ => "trailmark",
+        }
+    }
+
+    /// The factor the cost may exceed the optimum by (`None`: no bound, BFS and DFS).
+    fn bound(self) -> Option<f64> {
+        match self {
+            Planner::WeightedAstar => Some(WEIGHT),
+            Planner::Bfs | Planner::Dfs => None,
+            _ => Some(1.0),
+        }
+    }
+
+    /// The planner this one is compared with in the report.
+    fn peer(self) -> Option<Planner> {
+        match self {
+            Planner::Astar => Some(Planner::PathfindingAstar),
+            Planner::Dijkstra => Some(Planner::PathfindingDijkstra),
+            _ => None,
+        }
+    }
+}
+
+/// A query with its reference cost.
+struct Query {
+    start: Cell,
+    goal: Cell,
+    optimal: f64,
+}
+
+/// A map and its queries.
+struct Map {
+    name: String,
+    source: &'static str,
+    grid: Grid,
+    queries: Vec<Query>,
+}
+
+/// The results of one planner on one map.
+#[derive(Debug, Clone, Serialize)]
+struct Row {
+    map: String,
+    planner: &'static str,
+    library: &'static str,
+    queries: usize,
+    solved: usize,
+    /// Median over queries of the per-query time (itself a median over the rounds), µs.
+    median_us: f64,
+    mean_us: f64,
+    p90_us: f64,
+    /// Expansions summed over the queries (trailmark planners only).
+    expansions: Option<u64>,
+    /// Millions of expansions per second of search time.
+    mexp_per_s: Option<f64>,
+    /// Mean of cost / reference cost over solved queries.
+    mean_cost_ratio: f64,
+    /// Queries whose cost broke the planner's bound (must be 0).
+    cost_errors: usize,
+    /// Bytes held by the search workspace after the map (trailmark planners only).
+    workspace_bytes: Option<usize>,
+}
+
+/// The speed of a trailmark planner against its peer on one map.
+#[derive(Debug, Clone, Serialize)]
+struct Ratio {
+    map: String,
+    planner: &'static str,
+    peer: &'static str,
+    /// Peer median time per query / trailmark median time per query.
+    speedup: f64,
+}
+
+#[derive(Serialize)]
+struct Report {
+    suite: Suite,
+    date: String,
+    seed: u64,
+    runs: u32,
+    cores: usize,
+    maps: Vec<MapInfo>,
+    results: Vec<Row>,
+    ratios: Vec<Ratio>,
+}
+
+#[derive(Serialize)]
+struct MapInfo {
+    name: String,
+    source: &'static str,
+    width: u32,
+    height: u32,
+    passable: usize,
+    queries: usize,
+}
+
+/// Seeded queries between cells of the largest reachable region, with Dijkstra's cost.
+fn generated_queries(grid: &Grid, n: usize, rng: &mut ChaCha8Rng) -> Vec<Query> {
+    let graph = GridGraph::new(grid, Connectivity::Eight);
+    let passable: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
+    let mut search = Search::new();
+    // The region reached from a few random cells: keep the largest.
+    let mut region: Vec<Cell> = Vec::new();
+    for _ in 0..5 {
+        let from = passable[rng.random_range(0..passable.len())];
+        search.dijkstra_all(&graph, from).expect("a passable cell");
+        let reached: Vec<Cell> = search.reached(&graph).collect();
+        if reached.len() > region.len() {
+            region = reached;
+        }
+    }
+    (0..n)
+        .map(|_| {
+            let start = region[rng.random_range(0..region.len())];
+            let goal = region[rng.random_range(0..region.len())];
+            let optimal = search.dijkstra(&graph, start, goal).expect("valid").cost().expect("one region");
+            Query { start, goal, optimal }
+        })
+        .collect()
+}
+
+fn generated_maps(seed: u64, n: usize) -> Vec<Map> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let grids = [
+        ("random512-25", generate::random(512, 512, 0.25, seed)),
+        ("maze512-4", generate::maze(512, 512, 4, seed)),
+        ("rooms512-31", generate::rooms(512, 512, 31, seed)),
+    ];
+    grids
+        .into_iter()
+        .map(|(name, grid)| {
+            let grid = grid.expect("valid generator arguments");
+            let queries = generated_queries(&grid, n, &mut rng);
+            Map { name: format!("{name}-s{seed}"), source: "generated", grid, queries }
+        })
+        .collect()
+}
+
+/// `n` scenarios of each map of a MovingAI folder, spread over each file.
+fn movingai_maps(dir: &Path, n: usize) -> Result<Vec<Map>, String> {
+    let mut maps = Vec::new();
+    let scenarios = dir.join("scenarios");
+    let mut sets: Vec<PathBuf> = std::fs::read_dir(&scenarios)
+        .map_err(|e| format!("cannot list {}: {e}", scenarios.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_dir())
+        .collect();
+    sets.sort();
+    for set in sets {
+        let mut files: Vec<PathBuf> =
+            std::fs::read_dir(&set).map_err(|e| e.to_string())?.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        files.sort();
+        for scen in files {
+            let file = scen.file_name().unwrap_or_default().to_string_lossy().into_owned();
+            let Some(map_file) = file.strip_suffix(".scen") else { continue };
+            let map = dir.join("maps").join(set.file_name().unwrap_or_default()).join(map_file);
+            let grid = movingai::read_map(&map).map_err(|e| e.to_string())?;
+            let all = movingai::read_scenarios(&scen).map_err(|e| e.to_string())?;
+            let step = (all.len() / n).max(1);
+            let queries = all
+                .iter()
+                .step_by(step)
+                .take(n)
+                .map(|s| Query { start: s.start, goal: s.goal, optimal: s.optimal_length })
+                .collect();
+            let name = map_file.trim_end_matches(".map").to_string();
+            maps.push(Map { name, source: "movingai", grid, queries });
+        }
+    }
+    Ok(maps)
+}
+
+/// The graph's successors in a fixed array, so the `pathfinding` calls allocate nothing for them.
+fn neighbours(graph: &GridGraph, c: Cell) -> impl Iterator<Item = (Cell, OrderedFloat<f64>)> {
+    let mut buf = [(Cell::default(), OrderedFloat(0.0)); 8];
+    let mut n = 0;
+    graph.for_each_successor(c, |next, cost| {
+        buf[n] = (next, OrderedFloat(cost));
+        n += 1;
+    });
+    buf.into_iter().take(n)
+}
+
+/// Solves one query: the cost and, for trailmark, the expansions.
+fn solve(planner: Planner, graph: &GridGraph, search: &mut Search, q: &Query) -> (Option<f64>, Option<u64>) {
+    let (s, t) = (q.start, q.goal);
+    let octile = |p: &Cell| OrderedFloat(trailmark::core::cost::octile(p.x.abs_diff(t.x), p.y.abs_diff(t.y)));
+    let ours = |r: Result<SearchResult<Cell>, SearchError<Cell>>| {
+        let r = r.expect("benchmark queries are valid");
+        (r.cost(), Some(r.stats.expansions))
+    };
+    let h = graph.heuristic(GridHeuristic::Octile, t);
+    match planner {
+        Planner::Astar => ours(search.astar(graph, s, t, h)),
+        Planner::WeightedAstar => ours(search.weighted_astar(graph, s, t, h, WEIGHT)),
+        Planner::Dijkstra => ours(search.dijkstra(graph, s, t)),
+        Planner::Bfs => ours(search.bfs(graph, s, t)),
+        Planner::Dfs => ours(search.dfs(graph, s, t)),
+        Planner::PathfindingAstar => {
+            let r = pathfinding::prelude::astar(&s, |&p| neighbours(graph, p), octile, |&p| p == t);
+            (r.map(|(_, c)| c.0), None)
+        }
+        Planner::PathfindingDijkstra => {
+            let r = pathfinding::prelude::dijkstra(&s, |&p| neighbours(graph, p), |&p| p == t);
+            (r.map(|(_, c)| c.0), None)
+        }
+        Planner::PathfindingFringe => {
+            let r = pathfinding::prelude::fringe(&s, |&p| neighbours(graph, p), octile, |&p| p == t);
+            (r.map(|(_, c)| c.0), None)
+        }
+    }
+}
+
+fn median(sorted: &[f64]) -> f64 {
+    match sorted.len() {
+        0 => f64::NAN,
+        n if n % 2 == 1 => sorted[n / 2],
+        n => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
+    }
+}
+
+/// Runs every planner on `map`: `runs` rounds, planners alternating within each round.
+fn bench_map(map: &Map, planners: &[Planner], runs: u32) -> Vec<Row> {
+    let graph = GridGraph::new(&map.grid, Connectivity::Eight);
+    let n = map.queries.len();
+    let mut times = vec![vec![Vec::with_capacity(runs as usize); n]; planners.len()];
+    let mut outcomes = vec![vec![(None, None); n]; planners.len()];
+    let mut searches: Vec<Search> = planners.iter().map(|_| Search::new()).collect();
+    for _ in 0..runs {
+        for (k, &planner) in planners.iter().enumerate() {
+            for (i, q) in map.queries.iter().enumerate() {
+                let clock = Instant::now();
+                let outcome = solve(planner, &graph, &mut searches[k], q);
+                times[k][i].push(clock.elapsed().as_secs_f64());
+                outcomes[k][i] = outcome;
+            }
+        }
+    }
+    planners
+        .iter()
+        .enumerate()
+        .map(|(k, &planner)| {
+            let mut per_query: Vec<f64> = times[k]
+                .iter_mut()
+                .map(|t| {
+                    t.sort_by(f64::total_cmp);
+                    median(t)
+                })
+                .collect();
+            let total: f64 = per_query.iter().sum();
+            per_query.sort_by(f64::total_cmp);
+            let mut solved = 0;
+            let mut ratio_sum = 0.0;
+            let mut cost_errors = 0;
+            let mut expansions = Some(0u64);
+            for (q, &(cost, exp)) in map.queries.iter().zip(&outcomes[k]) {
+                expansions = expansions.zip(exp).map(|(a, b)| a + b);
+                let Some(cost) = cost else {
+                    cost_errors += 1; // every query is solvable
+                    continue;
+                };
+                solved += 1;
+                ratio_sum += if q.optimal > 0.0 { cost / q.optimal } else { 1.0 };
+                if let Some(bound) = planner.bound() {
+                    if cost > bound * q.optimal + tolerance(q.optimal) || cost < q.optimal - tolerance(q.optimal) {
+                        cost_errors += 1;
+                    }
+                }
+            }
+            let tm = planner.library() == "trailmark";
+            Row {
+                map: map.name.clone(),
+                planner: planner.name(),
+                library: planner.library(),
+                queries: n,
+                solved,
+                median_us: median(&per_query) * 1e6,
+                mean_us: total / n as f64 * 1e6,
+                p90_us: per_query.get(n * 9 / 10).copied().unwrap_or(f64::NAN) * 1e6,
+                mexp_per_s: expansions.map(|e| e as f64 / total / 1e6),
+                expansions,
+                mean_cost_ratio: ratio_sum / solved.max(1) as f64,
+                cost_errors,
+                workspace_bytes: tm.then(|| searches[k].memory_bytes()),
+            }
+        })
+        .collect()
+}
+
+/// Today's date (UTC) as YYYY-MM-DD, from the days since 1970 (Hinnant's civil-from-days).
+fn today() -> String {
+    let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+    let z = (secs / 86_400) as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!("{y:04}-{m:02}-{d:02}")
+}
+
+fn ratios(rows: &[Row]) -> Vec<Ratio> {
+    let mut out = Vec::new();
+    for row in rows {
+        let Some(planner) = Planner::ALL.iter().find(|p| p.name() == row.planner) else { continue };
+        let Some(peer) = planner.peer() else { continue };
+        if let Some(other) = rows.iter().find(|r| r.map == row.map && r.planner == peer.name()) {
+            out.push(Ratio {
+                map: row.map.clone(),
+                planner: row.planner,
+                peer: other.planner,
+                speedup: other.median_us / row.median_us,
+            });
+        }
+    }
+    out
+}
+
+fn geometric_mean(values: impl Iterator<Item = f64>) -> f64 {
+    let (sum, n) = values.fold((0.0, 0), |(s, n), v| (s + v.ln(), n + 1));
+    (sum / n.max(1) as f64).exp()
+}
+
+fn markdown(report: &Report) -> String {
+    let mut out = format!(
+        "# trailmark grid benchmark: suite `{}`, {}\n\nSeed {}, {} round(s) per query (each query's time is its median over rounds), {} core(s). \
+         8-connected grids, no corner cutting, octile heuristic; weighted A* with w = {WEIGHT}.\n\n",
+        report.suite.name(),
+        report.date,
+        report.seed,
+        report.runs,
+        report.cores
+    );
+    out.push_str("## Speed against `pathfinding`\n\n| map | planner | peer | speedup (peer median / trailmark median) |\n|---|---|---|---:|\n");
+    for r in &report.ratios {
+        out.push_str(&format!("| {} | {} | {} | {:.2}x |\n", r.map, r.planner, r.peer, r.speedup));
+    }
+    for planner in ["astar", "dijkstra"] {
+        let speedups: Vec<f64> = report.ratios.iter().filter(|r| r.planner == planner).map(|r| r.speedup).collect();
+        if !speedups.is_empty() {
+            let worst = speedups.iter().copied().fold(f64::INFINITY, f64::min);
+            out.push_str(&format!(
+                "\n**{planner}**: geometric mean speedup {:.2}x over {} maps (lowest {:.2}x).",
+                geometric_mean(speedups.iter().copied()),
+                speedups.len(),
+                worst
+            ));
+        }
+    }
+    out.push_str("\n\n## All results\n\n| map | planner | solved | median µs | mean µs | p90 µs | Mexp/s | cost / optimal | cost errors |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for r in &report.results {
+        out.push_str(&format!(
+            "| {} | {} | {}/{} | {:.1} | {:.1} | {:.1} | {} | {:.4} | {} |\n",
+            r.map,
+            r.planner,
+            r.solved,
+            r.queries,
+            r.median_us,
+            r.mean_us,
+            r.p90_us,
+            r.mexp_per_s.map_or("-".into(), |m| format!("{m:.1}")),
+            r.mean_cost_ratio,
+            r.cost_errors
+        ));
+    }
+    out.push_str("\n## Maps\n\n| map | source | size | passable | queries |\n|---|---|---|---:|---:|\n");
+    for m in &report.maps {
+        out.push_str(&format!("| {} | {} | {}x{} | {} | {} |\n", m.name, m.source, m.width, m.height, m.passable, m.queries));
+    }
+    out
+}
+
+/// Runs the benchmark and writes its report; exit 1 when a planner broke its cost bound.
+pub fn run(args: &Args) -> ExitCode {
+    let planners: Vec<Planner> =
+        Planner::ALL.iter().copied().filter(|p| args.only.is_empty() || args.only.iter().any(|o| o == p.name())).collect();
+    if planners.is_empty() {
+        let names: Vec<&str> = Planner::ALL.iter().map(|p| p.name()).collect();
+        eprintln!("error: no planner matches --only {:?}; planners: {}", args.only, names.join(", "));
+        return ExitCode::from(2);
+    }
+    let (generated_n, movingai_n) = args.suite.queries();
+    let clock = Instant::now();
+    eprintln!("generating maps and reference costs (seed {})...", args.seed);
+    let mut maps = generated_maps(args.seed, generated_n);
+    let default_dir = crate::workspace_root().join("../shared/movingai");
+    let dir = args.movingai.clone().unwrap_or(default_dir);
+    if args.no_movingai {
+        eprintln!("MovingAI maps skipped (--no-movingai)");
+    } else if dir.is_dir() {
+        match movingai_maps(&dir, movingai_n) {
+            Ok(m) => maps.extend(m),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        eprintln!("MovingAI maps skipped: {} not found", dir.display());
+    }
+    let mut rows = Vec::new();
+    for (i, map) in maps.iter().enumerate() {
+        eprintln!("[{}/{}] {} ({} queries)", i + 1, maps.len(), map.name, map.queries.len());
+        rows.extend(bench_map(map, &planners, args.runs));
+    }
+    let report = Report {
+        suite: args.suite,
+        date: today(),
+        seed: args.seed,
+        runs: args.runs,
+        cores: std::thread::available_parallelism().map_or(1, |n| n.get()),
+        maps: maps
+            .iter()
+            .map(|m| MapInfo {
+                name: m.name.clone(),
+                source: m.source,
+                width: m.grid.width(),
+                height: m.grid.height(),
+                passable: m.grid.passable_count(),
+                queries: m.queries.len(),
+            })
+            .collect(),
+        ratios: ratios(&rows),
+        results: rows,
+    };
+    let text = markdown(&report);
+    let folder = crate::workspace_root().join("target/bench").join(format!("{}-{}", args.suite.name(), report.date));
+    let written = std::fs::create_dir_all(&folder)
+        .and_then(|()| std::fs::write(folder.join("report.md"), &text))
+        .and_then(|()| std::fs::write(folder.join("results.json"), serde_json::to_string_pretty(&report).expect("serializable")));
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&report).expect("serializable"));
+    } else {
+        println!("{text}");
+    }
+    match written {
+        Ok(()) => eprintln!("report written to {} ({:.0} s)", folder.display(), clock.elapsed().as_secs_f64()),
+        Err(e) => {
+            eprintln!("error: cannot write the report to {}: {e}", folder.display());
+            return ExitCode::from(2);
+        }
+    }
+    let errors: usize = report.results.iter().map(|r| r.cost_errors).sum();
+    if errors > 0 {
+        eprintln!("error: {errors} queries broke their planner's cost bound (see the cost errors column)");
+        return ExitCode::from(1);
+    }
     ExitCode::SUCCESS
 }

@@ -1,0 +1,114 @@
+//! The xtask commands as a user runs them: exit codes and outputs of `solve` and `verify`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn xtask(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_xtask")).args(args).current_dir(dir).output().expect("xtask runs")
+}
+
+/// A fresh folder under the target directory's temporary space.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("trailmark-xtask-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn json(out: &Output) -> serde_json::Value {
+    serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("stdout is not JSON ({e}): {}", String::from_utf8_lossy(&out.stdout)))
+}
+
+const MAP: &str = "type octile\nheight 3\nwidth 4\nmap\n....\n.@@.\n....\n";
+
+#[test]
+fn solve_prints_a_result() {
+    let dir = scratch("solve");
+    std::fs::write(dir.join("wall.map"), MAP).unwrap();
+    let problems = [
+        r#"{"world": {"grid": {"map": "wall.map"}}, "start": [0, 0], "goal": [3, 2], "planner": {"name": "astar"}, "seed": 1}"#,
+        r#"{"world": {"grid": {"rows": ["....", ".@@.", "...."], "connectivity": 8, "corner_cutting": false}},
+            "start": [0, 0], "goal": [3, 2], "planner": {"name": "dijkstra"}}"#,
+    ];
+    for text in problems {
+        std::fs::write(dir.join("p.json"), text).unwrap();
+        let out = xtask(&["solve", "p.json"], &dir);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let v = json(&out);
+        assert_eq!(v["status"], "solved");
+        assert_eq!(v["cost"], 5.0);
+        assert_eq!(v["path"][0], serde_json::json!([0, 0]));
+        assert_eq!(v["path"].as_array().unwrap().len(), 6);
+        assert!(v["stats"]["expansions"].as_u64().is_some() && v["stats"]["time_s"].as_f64().is_some());
+    }
+    // No path is a result too.
+    std::fs::write(dir.join("p.json"), r#"{"world": {"grid": {"rows": [".@."]}}, "start": [0, 0], "goal": [2, 0], "planner": {"name": "bfs"}}"#).unwrap();
+    let out = xtask(&["solve", "p.json"], &dir);
+    assert!(out.status.success());
+    assert_eq!(
+        json(&out),
+        serde_json::json!({"status": "no_path", "cost": null, "path": [], "stats": json(&out)["stats"]})
+    );
+}
+
+#[test]
+fn bad_problems_exit_2_with_an_error_document() {
+    let dir = scratch("bad");
+    std::fs::write(dir.join("wall.map"), MAP).unwrap();
+    std::fs::write(dir.join("broken.map"), "type octile\nheight 2\nwidth 2\nmap\n..\n.x\n").unwrap();
+    let grid = r#"{"grid": {"rows": ["....", ".@@.", "...."]}}"#;
+    let cases = [
+        (format!(r#"{{"world": {grid}, "start": [0, 0], "goal": [3, 2], "planner": {{"name": "teleport"}}}}"#), "unknown variant"),
+        (format!(r#"{{"world": {grid}, "start": [1, 1], "goal": [3, 2], "planner": {{"name": "astar"}}}}"#), "blocked"),
+        (format!(r#"{{"world": {grid}, "start": [0, 0], "goal": [30, 2], "planner": {{"name": "astar"}}}}"#), "outside"),
+        (format!(r#"{{"world": {grid}, "goal": [3, 2], "planner": {{"name": "astar"}}}}"#), "missing field `start`"),
+        (r#"{"world": {"grid": {"map": "broken.map"}}, "start": [0, 0], "goal": [1, 0], "planner": {"name": "astar"}}"#.into(), "line 6"),
+        (r#"{"world": {"grid": {"map": "nowhere.map"}}, "start": [0, 0], "goal": [1, 0], "planner": {"name": "astar"}}"#.into(), "nowhere.map"),
+        ("{ not json".into(), "invalid problem"),
+    ];
+    for (text, expected) in cases {
+        std::fs::write(dir.join("p.json"), &text).unwrap();
+        let out = xtask(&["solve", "p.json"], &dir);
+        assert_eq!(out.status.code(), Some(2), "{text}");
+        let v = json(&out);
+        assert_eq!(v["status"], "error", "{text}");
+        let error = v["error"].as_str().unwrap();
+        assert!(error.contains(expected), "{text}: {error}");
+        assert!(out.stderr.is_empty() || !String::from_utf8_lossy(&out.stderr).contains("panicked"));
+    }
+    let out = xtask(&["solve", "absent.json"], &dir);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(json(&out)["error"].as_str().unwrap().contains("absent.json"));
+}
+
+/// A MovingAI-shaped folder with one map and a scenario file.
+fn benchmark_folder(name: &str, scen: &str) -> PathBuf {
+    let dir = scratch(name);
+    std::fs::create_dir_all(dir.join("maps/tiny")).unwrap();
+    std::fs::create_dir_all(dir.join("scenarios/tiny")).unwrap();
+    std::fs::write(dir.join("maps/tiny/wall.map"), MAP).unwrap();
+    std::fs::write(dir.join("scenarios/tiny/wall.map.scen"), scen).unwrap();
+    dir
+}
+
+#[test]
+fn verify_counts_and_fails_on_a_wrong_optimum() {
+    let good = "version 1\n0\tmaps/tiny/wall.map\t4\t3\t0\t0\t3\t2\t5\n0\tmaps/tiny/wall.map\t4\t3\t0\t1\t3\t1\t5.0\n";
+    let dir = benchmark_folder("verify-good", good);
+    let out = xtask(&["verify", "movingai", dir.to_str().unwrap(), "--algo", "astar,dijkstra"], &dir);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    assert!(stdout.trim_end().ends_with("4 passed, 0 failed"), "{stdout}");
+
+    let wrong = "version 1\n0\tmaps/tiny/wall.map\t4\t3\t0\t0\t3\t2\t4.9\n";
+    let dir = benchmark_folder("verify-wrong", wrong);
+    let out = xtask(&["verify", "movingai", dir.to_str().unwrap()], &dir);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{stdout}");
+    assert!(stdout.trim_end().ends_with("0 passed, 1 failed"), "{stdout}");
+    assert!(stdout.contains("published 4.9"), "{stdout}");
+
+    let out = xtask(&["verify", "movingai", "/nonexistent/folder"], &dir);
+    assert_eq!(out.status.code(), Some(2));
+}

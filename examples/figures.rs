@@ -1,0 +1,73 @@
+//! Draws the figures of the guide (`docs/img/*.svg`) from seeded, generated worlds, so they can
+//! be remade on any machine: `cargo run --release --example figures`.
+
+use std::path::Path;
+
+use trailmark::core::generate;
+use trailmark::prelude::*;
+use trailmark::svg::GridSvg;
+
+fn write(name: &str, svg: String) -> std::io::Result<()> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/img");
+    std::fs::create_dir_all(&dir)?;
+    std::fs::write(dir.join(name), svg)?;
+    println!("wrote docs/img/{name}");
+    Ok(())
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    // trailmark-core: a cost grid (a costly band across rooms) with blocked walls.
+    let mut grid = generate::rooms(64, 40, 9, 4)?;
+    for y in 0..40 {
+        for x in 26..38 {
+            let cell = Cell::new(x, y);
+            if grid.is_passable(cell) {
+                grid.set_cost(cell, 1.0 + f64::from(12 - (x as i32 - 32).unsigned_abs().min(6) * 2) / 3.0)?;
+            }
+        }
+    }
+    let graph = GridGraph::new(&grid, Connectivity::Eight);
+    let (start, goal) = (Cell::new(1, 20), Cell::new(62, 18));
+    let path = astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal))?.path.ok_or("no path")?;
+    write(
+        "core-cost-grid.svg",
+        GridSvg::new(&grid).cell_size(10.0).title("A cost grid: walls, a costly band, a least-cost path").path(&path.nodes).to_svg(),
+    )?;
+
+    // trailmark-graph: the same query under 4-connectivity, 8 without and with corner cutting.
+    let grid = generate::random(40, 24, 0.22, 11)?;
+    let (start, goal) = (Cell::new(0, 3), Cell::new(39, 20));
+    let mut picture = GridSvg::new(&grid).cell_size(14.0).title("4-connected, 8-connected, 8-connected squeezing between corners");
+    for (connectivity, rule) in [
+        (Connectivity::Four, CornerCutting::Forbidden),
+        (Connectivity::Eight, CornerCutting::Forbidden),
+        (Connectivity::Eight, CornerCutting::Squeeze),
+    ] {
+        let graph = GridGraph::new(&grid, connectivity).with_corner_cutting(rule);
+        if let Some(path) = dijkstra(&graph, start, goal)?.path {
+            println!("{connectivity:?} {rule:?}: cost {:.3}, {} moves", path.cost, path.moves());
+            picture = picture.path(&path.nodes);
+        }
+    }
+    write("graph-connectivity.svg", picture.to_svg())?;
+
+    // trailmark-search: what Dijkstra, A* and weighted A* expand for the same query.
+    let grid = generate::rooms(96, 64, 11, 2)?;
+    let graph = GridGraph::new(&grid, Connectivity::Eight);
+    let (start, goal) = (Cell::new(2, 60), Cell::new(93, 3));
+    let h = graph.heuristic(GridHeuristic::Octile, goal);
+    let mut search = Search::new();
+    for (name, label) in [("dijkstra", "Dijkstra"), ("astar", "A*"), ("weighted-astar", "weighted A* (w = 2)")] {
+        let found = match name {
+            "dijkstra" => search.dijkstra(&graph, start, goal)?,
+            "astar" => search.astar(&graph, start, goal, h)?,
+            _ => search.weighted_astar(&graph, start, goal, h, 2.0)?,
+        };
+        let path = found.path.ok_or("no path")?;
+        let title = format!("{label}: {} expansions, cost {:.2}", found.stats.expansions, path.cost);
+        println!("{title}");
+        let svg = GridSvg::new(&grid).cell_size(5.0).title(title).explored(search.expanded(&graph)).path(&path.nodes);
+        write(&format!("search-{name}.svg"), svg.to_svg())?;
+    }
+    Ok(())
+}

@@ -39,6 +39,11 @@ pub use trailmark_search as search;
 
 pub use trailmark_core::{movingai, problem, svg};
 
+/// The README's example, run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+
 /// The names most programs need: `use trailmark::prelude::*;`.
 pub mod prelude {
     pub use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};

@@ -32,15 +32,9 @@ fn sample(scenarios: Vec<Scenario>, n: usize) -> Vec<Scenario> {
     scenarios.into_iter().step_by(step).take(n).collect()
 }
 
-/// The graph's successors of `c` in a fixed array, so the peers pay no allocation for them.
-fn neighbours(graph: &GridGraph, c: Cell) -> impl Iterator<Item = (Cell, OrderedFloat<f64>)> {
-    let mut buf = [(Cell::default(), OrderedFloat(0.0)); 8];
-    let mut n = 0;
-    graph.for_each_successor(c, |next, cost| {
-        buf[n] = (next, OrderedFloat(cost));
-        n += 1;
-    });
-    buf.into_iter().take(n)
+/// The graph's moves out of `c`, as the `pathfinding` crate takes them (no allocation).
+fn neighbours(graph: &GridGraph, c: Cell) -> impl Iterator<Item = (Cell, OrderedFloat<f64>)> + '_ {
+    graph.neighbours(c).map(|(next, cost)| (next, OrderedFloat(cost)))
 }
 
 fn octile(a: Cell, b: Cell) -> f64 {

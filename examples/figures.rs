@@ -28,16 +28,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let graph = GridGraph::new(&grid, Connectivity::Eight);
     let (start, goal) = (Cell::new(1, 20), Cell::new(62, 18));
-    let path = astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal))?.path.ok_or("no path")?;
+    let path =
+        astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal))?.path.ok_or("no path")?;
     write(
         "core-cost-grid.svg",
-        GridSvg::new(&grid).cell_size(10.0).title("A cost grid: walls, a costly band, a least-cost path").path(&path.nodes).to_svg(),
+        GridSvg::new(&grid)
+            .cell_size(10.0)
+            .title("A cost grid: walls, a costly band, a least-cost path")
+            .path(&path.nodes)
+            .to_svg(),
     )?;
 
     // trailmark-graph: the same query under 4-connectivity, 8 without and with corner cutting.
     let grid = generate::random(40, 24, 0.22, 11)?;
     let (start, goal) = (Cell::new(0, 3), Cell::new(39, 20));
-    let mut picture = GridSvg::new(&grid).cell_size(14.0).title("4-connected, 8-connected, 8-connected squeezing between corners");
+    let mut picture = GridSvg::new(&grid)
+        .cell_size(14.0)
+        .title("4-connected, 8-connected, 8-connected squeezing between corners");
     for (connectivity, rule) in [
         (Connectivity::Four, CornerCutting::Forbidden),
         (Connectivity::Eight, CornerCutting::Forbidden),
@@ -57,7 +64,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (start, goal) = (Cell::new(2, 60), Cell::new(93, 3));
     let h = graph.heuristic(GridHeuristic::Octile, goal);
     let mut search = Search::new();
-    for (name, label) in [("dijkstra", "Dijkstra"), ("astar", "A*"), ("weighted-astar", "weighted A* (w = 2)")] {
+    for (name, label) in
+        [("dijkstra", "Dijkstra"), ("astar", "A*"), ("weighted-astar", "weighted A* (w = 2)")]
+    {
         let found = match name {
             "dijkstra" => search.dijkstra(&graph, start, goal)?,
             "astar" => search.astar(&graph, start, goal, h)?,
@@ -66,7 +75,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let path = found.path.ok_or("no path")?;
         let title = format!("{label}: {} expansions, cost {:.2}", found.stats.expansions, path.cost);
         println!("{title}");
-        let svg = GridSvg::new(&grid).cell_size(5.0).title(title).explored(search.expanded(&graph)).path(&path.nodes);
+        let svg = GridSvg::new(&grid)
+            .cell_size(5.0)
+            .title(title)
+            .explored(search.expanded(&graph))
+            .path(&path.nodes);
         write(&format!("search-{name}.svg"), svg.to_svg())?;
     }
     Ok(())

@@ -16,7 +16,10 @@ use trailmark::svg::GridSvg;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let map = std::env::args().nth(1).map(PathBuf::from).unwrap_or(root.join("../shared/movingai/maps/dao/den312d.map"));
+    let map = std::env::args()
+        .nth(1)
+        .map(PathBuf::from)
+        .unwrap_or(root.join("../shared/movingai/maps/dao/den312d.map"));
     let (grid, queries) = if map.is_file() {
         let grid = movingai::read_map(&map)?;
         // The scenarios: beside the map, or in the MovingAI layout's scenarios/ folder.
@@ -24,11 +27,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let set = map.parent().and_then(|p| p.file_name()).unwrap_or_default();
         let candidates = [
             map.with_file_name(format!("{name}.scen")),
-            map.parent().and_then(|p| p.parent()).unwrap_or(&root).join("../scenarios").join(set).join(format!("{name}.scen")),
+            map.parent()
+                .and_then(|p| p.parent())
+                .unwrap_or(&root)
+                .join("../scenarios")
+                .join(set)
+                .join(format!("{name}.scen")),
         ];
         let scen = candidates.iter().find(|p| p.is_file());
         let queries = match scen {
-            Some(p) => movingai::read_scenarios(p)?.into_iter().map(|s| (s.start, s.goal, Some(s.optimal_length))).collect(),
+            Some(p) => movingai::read_scenarios(p)?
+                .into_iter()
+                .map(|s| (s.start, s.goal, Some(s.optimal_length)))
+                .collect(),
             None => Vec::new(),
         };
         println!("{}: {} x {}, {} scenarios", map.display(), grid.width(), grid.height(), queries.len());
@@ -63,7 +74,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if let Some(&(start, goal, _)) = queries.last() {
         let found = search.astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal))?;
         let path = found.path.ok_or("the last query has no path")?;
-        let svg = GridSvg::new(&grid).cell_size(4.0).explored(search.expanded(&graph)).path(&path.nodes).to_svg();
+        let svg =
+            GridSvg::new(&grid).cell_size(4.0).explored(search.expanded(&graph)).path(&path.nodes).to_svg();
         let out = root.join("target/grid_astar.svg");
         std::fs::create_dir_all(root.join("target"))?;
         std::fs::write(&out, svg)?;

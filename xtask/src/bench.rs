@@ -291,15 +291,9 @@ fn movingai_maps(dir: &Path, n: usize) -> Result<Vec<Map>, String> {
     Ok(maps)
 }
 
-/// The graph's successors in a fixed array, so the `pathfinding` calls allocate nothing for them.
-fn neighbours(graph: &GridGraph, c: Cell) -> impl Iterator<Item = (Cell, OrderedFloat<f64>)> {
-    let mut buf = [(Cell::default(), OrderedFloat(0.0)); 8];
-    let mut n = 0;
-    graph.for_each_successor(c, |next, cost| {
-        buf[n] = (next, OrderedFloat(cost));
-        n += 1;
-    });
-    buf.into_iter().take(n)
+/// The graph's moves out of `c`, as the `pathfinding` crate takes them (no allocation).
+fn neighbours(graph: &GridGraph, c: Cell) -> impl Iterator<Item = (Cell, OrderedFloat<f64>)> + '_ {
+    graph.neighbours(c).map(|(next, cost)| (next, OrderedFloat(cost)))
 }
 
 /// Solves one query: the cost and, for trailmark, the expansions.

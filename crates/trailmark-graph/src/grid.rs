@@ -284,7 +284,72 @@ impl Successors for GridGraph {
     }
 }
 
+/// The moves out of a cell, as an iterator of `(neighbour, cost)`; see [`GridGraph::neighbours`].
+#[derive(Debug, Clone)]
+pub struct Neighbours<'a> {
+    graph: &'a GridGraph,
+    cell: Cell,
+    index: usize,
+    mask: u8,
+}
+
+impl Iterator for Neighbours<'_> {
+    type Item = (Cell, Cost);
+
+    #[inline]
+    fn next(&mut self) -> Option<(Cell, Cost)> {
+        if self.mask == 0 {
+            return None;
+        }
+        let k = self.mask.trailing_zeros() as usize;
+        self.mask &= self.mask - 1;
+        let (_, next, cost) = self.graph.step(self.index, self.cell, k);
+        Some((next, cost))
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        let n = self.mask.count_ones() as usize;
+        (n, Some(n))
+    }
+}
+
 impl GridGraph {
+    /// The moves out of `cell` as an iterator of `(neighbour, cost)`, allocating nothing: the
+    /// same edges as [`Successors::for_each_successor`], for code that wants an iterator (the
+    /// `pathfinding` crate's successor functions, for instance). Empty when `cell` is not a node.
+    ///
+    /// ```
+    /// use trailmark_core::{Cell, Connectivity, Grid};
+    /// use trailmark_graph::GridGraph;
+    ///
+    /// let graph = GridGraph::new(&Grid::from_rows(&["..", ".."])?, Connectivity::Eight);
+    /// assert_eq!(graph.neighbours(Cell::new(0, 0)).count(), 3);
+    /// assert_eq!(graph.neighbours(Cell::new(7, 7)).count(), 0);
+    /// # Ok::<(), trailmark_core::GridError>(())
+    /// ```
+    pub fn neighbours(&self, cell: Cell) -> Neighbours<'_> {
+        let (index, mask) = if self.contains(cell) {
+            let i = self.index(cell);
+            (i, self.moves[i])
+        } else {
+            (0, 0)
+        };
+        Neighbours { graph: self, cell, index, mask }
+    }
+
+    /// Move `k` from the cell at padded index `i`: the target's index, the target, the cost.
+    #[inline]
+    fn step(&self, i: usize, cell: Cell, k: usize) -> (usize, Cell, Cost) {
+        let m = MOVES[k];
+        let j = (i as isize + self.offsets[k]) as usize;
+        let next = Cell::new(cell.x.wrapping_add_signed(m.dx), cell.y.wrapping_add_signed(m.dy));
+        let cost = match &self.costs {
+            None => m.length,
+            Some(costs) => m.length * 0.5 * (costs[i] + costs[j]),
+        };
+        (j, next, cost)
+    }
+
     /// The successors of the cell at padded index `i`, as `(index, cell, cost)`.
     #[inline]
     fn visit_moves<F: FnMut(usize, Cell, Cost)>(&self, i: usize, cell: Cell, mut visit: F) {
@@ -292,13 +357,7 @@ impl GridGraph {
         while mask != 0 {
             let k = mask.trailing_zeros() as usize;
             mask &= mask - 1;
-            let m = MOVES[k];
-            let j = (i as isize + self.offsets[k]) as usize;
-            let next = Cell::new(cell.x.wrapping_add_signed(m.dx), cell.y.wrapping_add_signed(m.dy));
-            let cost = match &self.costs {
-                None => m.length,
-                Some(costs) => m.length * 0.5 * (costs[i] + costs[j]),
-            };
+            let (j, next, cost) = self.step(i, cell, k);
             visit(j, next, cost);
         }
     }
@@ -378,6 +437,33 @@ mod tests {
         // Corner cells have 3 neighbours: no wrap-around through the border.
         assert_eq!(successors(&eight, Cell::new(0, 0)).len(), 3);
         assert_eq!(successors(&eight, Cell::new(2, 0)).len(), 3);
+    }
+
+    #[test]
+    fn the_three_ways_to_enumerate_moves_agree() {
+        let mut grid = Grid::from_rows(&[".@..", "...@", "@...", "..@."]).unwrap();
+        grid.set_cost(Cell::new(2, 2), 2.0).unwrap();
+        for connectivity in [Connectivity::Four, Connectivity::Eight] {
+            for rule in [CornerCutting::Forbidden, CornerCutting::Allowed, CornerCutting::Squeeze] {
+                let g = GridGraph::new(&grid, connectivity).with_corner_cutting(rule);
+                for c in grid.cells() {
+                    let mut by_node = Vec::new();
+                    if g.contains(c) {
+                        g.for_each_successor(c, |n, k| by_node.push((n, k)));
+                    }
+                    let mut by_index = Vec::new();
+                    if g.contains(c) {
+                        g.for_each_successor_index(g.index_of(c), |i, n, k| {
+                            assert_eq!(g.index_of(n), i);
+                            by_index.push((n, k));
+                        });
+                    }
+                    let iterated: Vec<_> = g.neighbours(c).collect();
+                    assert_eq!(by_node, by_index);
+                    assert_eq!(by_node, iterated);
+                }
+            }
+        }
     }
 
     #[test]

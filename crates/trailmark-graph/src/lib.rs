@@ -25,4 +25,4 @@
 
 pub mod grid;
 
-pub use grid::{CornerCutting, GridGraph};
+pub use grid::{CornerCutting, GridGraph, Neighbours};

@@ -197,16 +197,11 @@ impl<I> Search<I> {
         I: NodeIndex<G>,
         H: FnMut(G::Node) -> Cost,
     {
-        let clock = std::time::Instant::now();
-        let (s, t) = self.begin(graph, start, goal.unwrap_or(start))?;
+        let query = self.begin(graph, start, goal.unwrap_or(start))?;
+        let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
         let goal_slot = if goal.is_some() { t } else { usize::MAX };
         let mut stats = crate::stats::SearchStats::default();
         let mut bad_h = None;
-        let open = self.open_stamp();
-        let closed = self.closed_stamp();
-        self.nodes.g[s] = 0.0;
-        self.nodes.parent[s] = s as u32;
-        self.nodes.stamp[s] = open;
         match estimate(&mut heuristic, start, weight, &mut bad_h) {
             Some(h) if h.is_finite() => {
                 self.heap.push(s, FKey::new(h, 0.0));
@@ -256,9 +251,7 @@ impl<I> Search<I> {
                     return;
                 }
                 let Some(h) = estimate(&mut heuristic, next, weight, &mut bad_h) else { return };
-                nodes.g[v] = gv;
-                nodes.parent[v] = u as u32;
-                nodes.stamp[v] = open;
+                nodes.reach(v, gv, u, open);
                 if !h.is_finite() {
                     return;
                 }
@@ -294,9 +287,7 @@ impl<I> Search<I> {
         if let Some((node, value)) = bad_h {
             return Err(SearchError::InvalidHeuristic { node, value });
         }
-        let path = found.map(|t| self.path_to(graph, t));
-        stats.elapsed = clock.elapsed();
-        Ok(SearchResult { path, stats })
+        Ok(self.finish(graph, &query, found, stats))
     }
 }
 

@@ -40,14 +40,9 @@ impl<I> Search<I> {
         G: Successors + ?Sized,
         I: NodeIndex<G>,
     {
-        let clock = std::time::Instant::now();
-        let (s, t) = self.begin(graph, start, goal)?;
-        let open = self.open_stamp();
-        let closed = self.closed_stamp();
+        let query = self.begin(graph, start, goal)?;
+        let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
         let mut stats = SearchStats { pushes: 1, ..SearchStats::default() };
-        self.nodes.g[s] = 0.0;
-        self.nodes.parent[s] = s as u32;
-        self.nodes.stamp[s] = open;
         self.stack.push(s as u32);
         let mut edges = EdgeCheck::new();
         let mut found = None;
@@ -74,16 +69,12 @@ impl<I> Search<I> {
                 if nodes.stamp[v] == closed {
                     return;
                 }
-                nodes.g[v] = gu + cost;
-                nodes.parent[v] = u as u32;
-                nodes.stamp[v] = open;
+                nodes.reach(v, gu + cost, u, open);
                 stack.push(v as u32);
                 stats.pushes += 1;
             });
             edges.check(|| self.index.node(graph, u))?;
         }
-        let path = found.map(|t| self.path_to(graph, t));
-        stats.elapsed = clock.elapsed();
-        Ok(SearchResult { path, stats })
+        Ok(self.finish(graph, &query, found, stats))
     }
 }

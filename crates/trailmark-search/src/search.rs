@@ -58,6 +58,17 @@ impl FKey {
     }
 }
 
+/// A query in progress: its start and goal slots, the current generation's stamps, its clock.
+pub(crate) struct Query {
+    pub start: usize,
+    pub goal: usize,
+    /// The stamp of a node reached by this query and not expanded.
+    pub open: u32,
+    /// The stamp of a node this query expanded.
+    pub closed: u32,
+    clock: std::time::Instant,
+}
+
 /// Per-slot search state, as parallel arrays: the stamp test that rejects most successors
 /// reads 4 bytes a node, so the stamps of a node's neighbourhood share few cache lines
 /// (measured 20% faster than one 16-byte record per node on 512 x 512 mazes).
@@ -72,6 +83,14 @@ pub(crate) struct Nodes {
 }
 
 impl Nodes {
+    /// Records that `slot` is reached at cost `g` from `parent`, with `stamp`.
+    #[inline]
+    pub fn reach(&mut self, slot: usize, g: Cost, parent: usize, stamp: u32) {
+        self.g[slot] = g;
+        self.parent[slot] = parent as u32;
+        self.stamp[slot] = stamp;
+    }
+
     #[inline]
     pub fn len(&self) -> usize {
         self.stamp.len()
@@ -177,18 +196,19 @@ impl<I> Search<I> {
         2 * self.generation + 1
     }
 
-    /// Starts a query: validates the endpoints, sizes the state, clears the open lists and
-    /// moves to a new generation so that older state is ignored. Returns the start and goal slots.
+    /// Starts a query: validates the endpoints, sizes the state, clears the open lists, moves
+    /// to a new generation so that older state is ignored, and reaches the start at cost 0.
     pub(crate) fn begin<G>(
         &mut self,
         graph: &G,
         start: G::Node,
         goal: G::Node,
-    ) -> Result<(usize, usize), SearchError<G::Node>>
+    ) -> Result<Query, SearchError<G::Node>>
     where
         G: Graph + ?Sized,
         I: NodeIndex<G>,
     {
+        let clock = std::time::Instant::now();
         if !graph.contains(start) {
             return Err(SearchError::StartNotInGraph(start));
         }
@@ -214,7 +234,26 @@ impl<I> Search<I> {
         let s = self.slot(graph, start);
         let t = self.slot(graph, goal);
         self.start = Some(s as u32);
-        Ok((s, t))
+        let (open, closed) = (self.open_stamp(), self.closed_stamp());
+        self.nodes.reach(s, 0.0, s, open);
+        Ok(Query { start: s, goal: t, open, closed, clock })
+    }
+
+    /// Ends a query: the path to `found`, if any, and the statistics with the elapsed time.
+    pub(crate) fn finish<G>(
+        &self,
+        graph: &G,
+        query: &Query,
+        found: Option<usize>,
+        mut stats: SearchStats,
+    ) -> SearchResult<G::Node>
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let path = found.map(|t| self.path_to(graph, t));
+        stats.elapsed = query.clock.elapsed();
+        SearchResult { path, stats }
     }
 
     /// The slot of `node`, with state vectors long enough to hold it.
@@ -257,12 +296,7 @@ impl<I> Search<I> {
         I: NodeIndex<G>,
     {
         let closed = self.closed_stamp();
-        self.nodes
-            .stamp
-            .iter()
-            .enumerate()
-            .filter(move |&(_, &st)| st == closed && self.generation > 0)
-            .map(move |(s, _)| self.index.node(graph, s))
+        self.nodes_with(graph, move |stamp| stamp == closed)
     }
 
     /// The nodes the last query reached, expanded or not, in slot order.
@@ -272,11 +306,25 @@ impl<I> Search<I> {
         I: NodeIndex<G>,
     {
         let open = self.open_stamp();
+        self.nodes_with(graph, move |stamp| stamp >= open)
+    }
+
+    /// The nodes whose stamp passes `test`, none before the first query.
+    fn nodes_with<'a, G>(
+        &'a self,
+        graph: &'a G,
+        test: impl Fn(u32) -> bool + 'a,
+    ) -> impl Iterator<Item = G::Node> + 'a
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let started = self.generation > 0;
         self.nodes
             .stamp
             .iter()
             .enumerate()
-            .filter(move |&(_, &st)| st >= open && self.generation > 0)
+            .filter(move |&(_, &stamp)| started && test(stamp))
             .map(move |(s, _)| self.index.node(graph, s))
     }
 

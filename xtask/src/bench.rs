@@ -194,6 +194,8 @@ struct Ratio {
 #[derive(Serialize)]
 struct Report {
     suite: Suite,
+    /// The versions of the libraries measured, as locked in Cargo.lock.
+    versions: Vec<(String, String)>,
     date: String,
     seed: u64,
     runs: u32,
@@ -403,6 +405,22 @@ fn bench_map(map: &Map, planners: &[Planner], runs: u32) -> Vec<Row> {
         .collect()
 }
 
+/// The locked versions of `names`, read from the workspace's Cargo.lock.
+fn locked_versions(names: &[&str]) -> Vec<(String, String)> {
+    let lock = std::fs::read_to_string(crate::workspace_root().join("Cargo.lock")).unwrap_or_default();
+    let mut lines = lock.lines();
+    let mut out = Vec::new();
+    while let Some(line) = lines.next() {
+        let Some(name) = line.strip_prefix("name = \"").and_then(|l| l.strip_suffix('"')) else { continue };
+        if names.contains(&name) {
+            let version =
+                lines.next().and_then(|l| l.strip_prefix("version = \"")).map(|v| v.trim_end_matches('"'));
+            out.push((name.to_string(), version.unwrap_or("?").to_string()));
+        }
+    }
+    out
+}
+
 /// Today's date (UTC) as YYYY-MM-DD, from the days since 1970 (Hinnant's civil-from-days).
 fn today() -> String {
     let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
@@ -450,6 +468,8 @@ fn markdown(report: &Report) -> String {
         report.runs,
         report.cores
     );
+    let versions: Vec<String> = report.versions.iter().map(|(n, v)| format!("{n} {v}")).collect();
+    out.push_str(&format!("Versions: {}.\n\n", versions.join(", ")));
     out.push_str("## Speed against `pathfinding`\n\n| map | planner | peer | speedup (peer median / trailmark median) |\n|---|---|---|---:|\n");
     for r in &report.ratios {
         out.push_str(&format!("| {} | {} | {} | {:.2}x |\n", r.map, r.planner, r.peer, r.speedup));
@@ -531,6 +551,7 @@ pub fn run(args: &Args) -> ExitCode {
     }
     let report = Report {
         suite: args.suite,
+        versions: locked_versions(&["trailmark", "pathfinding"]),
         date: today(),
         seed: args.seed,
         runs: args.runs,

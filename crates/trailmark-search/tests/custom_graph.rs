@@ -129,3 +129,19 @@ fn a_search_workspace_survives_many_queries_and_graphs() {
         assert_eq!(search.expanded(&large).count(), t, "only this query's nodes count as expanded");
     }
 }
+
+/// Stamps are counted per query and cleared when the count runs out: queries on either side of
+/// the reset (and many after it) see none of the earlier queries' state.
+#[test]
+fn state_survives_the_stamp_reset() {
+    // A path 0 -> 1 -> 2 -> 3 with unit costs, and a shortcut 0 -> 3 of cost 5.
+    let graph = Adjacency(vec![vec![(1, 1.0), (3, 5.0)], vec![(2, 1.0)], vec![(3, 1.0)], vec![]]);
+    let mut search = Search::new();
+    for query in 0..70_000u32 {
+        // Alternate goals so that every query leaves different nodes stamped.
+        let (goal, cost) = if query % 3 == 0 { (3, 3.0) } else { (2, 2.0) };
+        let found = search.dijkstra(&graph, 0, goal).expect("valid query");
+        assert_eq!(found.cost(), Some(cost), "query {query}");
+        assert_eq!(found.stats.expansions, goal as u64, "query {query}");
+    }
+}

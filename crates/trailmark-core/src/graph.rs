@@ -80,6 +80,17 @@ pub trait Predecessors: Graph {
     /// Calls `visit(predecessor, cost)` once for each edge `predecessor -> node`, where `cost` is
     /// the cost of that edge (in its forward direction).
     fn for_each_predecessor<F: FnMut(Self::Node, Cost)>(&self, node: Self::Node, visit: F);
+
+    /// For an [`IndexedGraph`]: calls `visit(predecessor index, predecessor, cost)` once for each
+    /// edge entering the node with index `index`. Provided by conversion, like
+    /// [`Successors::for_each_successor_index`].
+    #[inline]
+    fn for_each_predecessor_index<F: FnMut(usize, Self::Node, Cost)>(&self, index: usize, mut visit: F)
+    where
+        Self: IndexedGraph,
+    {
+        self.for_each_predecessor(self.node_at(index), |n, c| visit(self.index_of(n), n, c))
+    }
 }
 
 /// A graph whose nodes are numbered densely, so algorithms can keep per-node state in `Vec`s.
@@ -95,6 +106,18 @@ pub trait IndexedGraph: Graph {
 
     /// The node with index `index`, which must be the index of a node of the graph.
     fn node_at(&self, index: usize) -> Self::Node;
+
+    /// The index of `node` if it names a node this graph has or can have after a change, `None`
+    /// if it names nothing: a blocked cell of a grid has an index (it may open again), a cell
+    /// outside the grid has none. Incremental planners check the nodes of a change
+    /// notification with it.
+    ///
+    /// The provided version accepts the nodes the graph contains now; graphs whose nodes come
+    /// and go (a grid whose cells are blocked and freed) override it.
+    #[inline]
+    fn checked_index(&self, node: Self::Node) -> Option<usize> {
+        self.contains(node).then(|| self.index_of(node))
+    }
 }
 
 impl<G: Graph + ?Sized> Graph for &G {
@@ -134,5 +157,10 @@ impl<G: IndexedGraph + ?Sized> IndexedGraph for &G {
     #[inline]
     fn node_at(&self, index: usize) -> Self::Node {
         (**self).node_at(index)
+    }
+
+    #[inline]
+    fn checked_index(&self, node: Self::Node) -> Option<usize> {
+        (**self).checked_index(node)
     }
 }

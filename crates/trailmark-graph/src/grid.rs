@@ -229,6 +229,29 @@ impl GridGraph {
         Ok(())
     }
 
+    /// The cells whose edges a change of `cell`'s cost can change: `cell` and its neighbours
+    /// inside the grid (a diagonal move between two neighbours of `cell` cuts its corner). An
+    /// incremental planner told of these cells after [`set_cost`](Self::set_cost) repairs
+    /// every edge the change touched.
+    ///
+    /// ```
+    /// use trailmark_core::{Cell, Connectivity, Grid};
+    /// use trailmark_graph::GridGraph;
+    ///
+    /// let graph = GridGraph::new(&Grid::new(4, 4)?, Connectivity::Eight);
+    /// assert_eq!(graph.cells_affected_by(Cell::new(0, 0)).count(), 4);
+    /// assert_eq!(graph.cells_affected_by(Cell::new(1, 1)).count(), 9);
+    /// assert_eq!(graph.cells_affected_by(Cell::new(9, 9)).count(), 0);
+    /// # Ok::<(), trailmark_core::GridError>(())
+    /// ```
+    pub fn cells_affected_by(&self, cell: Cell) -> impl Iterator<Item = Cell> + use<> {
+        let (w, h) = (self.width, self.height);
+        let inside = cell.x < w && cell.y < h;
+        let xs = cell.x.saturating_sub(1)..=(cell.x + 1).min(w.saturating_sub(1));
+        let ys = cell.y.saturating_sub(1)..=(cell.y + 1).min(h.saturating_sub(1));
+        ys.filter(move |_| inside).flat_map(move |y| xs.clone().map(move |x| Cell::new(x, y)))
+    }
+
     /// The cost of the move `from -> to` between neighbouring cells, or `None` when it is not an
     /// edge of the graph (not neighbours, a cell blocked, a corner rule forbids it).
     pub fn edge_cost(&self, from: Cell, to: Cell) -> Option<Cost> {
@@ -369,6 +392,11 @@ impl Predecessors for GridGraph {
     fn for_each_predecessor<F: FnMut(Cell, Cost)>(&self, cell: Cell, visit: F) {
         self.for_each_successor(cell, visit)
     }
+
+    #[inline]
+    fn for_each_predecessor_index<F: FnMut(usize, Cell, Cost)>(&self, index: usize, visit: F) {
+        self.visit_moves(index, self.node_at(index), visit);
+    }
 }
 
 impl IndexedGraph for GridGraph {
@@ -388,6 +416,12 @@ impl IndexedGraph for GridGraph {
         // Indices fit in u32 (the grid checks its size), and 32-bit division is the faster one.
         let (i, stride) = (index as u32, self.stride as u32);
         Cell::new(i % stride - 1, i / stride - 1)
+    }
+
+    /// Every cell inside the grid, passable or blocked, has an index: a blocked cell may open.
+    #[inline]
+    fn checked_index(&self, cell: Cell) -> Option<usize> {
+        (cell.x < self.width && cell.y < self.height).then(|| self.index(cell))
     }
 }
 

@@ -273,6 +273,14 @@ impl GridGraph {
         move |cell: Cell| scale * kind.distance(cell.x.abs_diff(goal.x), cell.y.abs_diff(goal.y))
     }
 
+    /// A heuristic between any two cells, `h(a, b)`: the grid distance of `kind` scaled by the
+    /// smallest cell cost, as [`heuristic`](Self::heuristic) but with both ends free. The
+    /// incremental planners take this form (D* Lite estimates from the moving robot).
+    pub fn heuristic_between(&self, kind: GridHeuristic) -> impl Fn(Cell, Cell) -> Cost + Copy + use<> {
+        let scale = self.min_cost;
+        move |a: Cell, b: Cell| scale * kind.distance(a.x.abs_diff(b.x), a.y.abs_diff(b.y))
+    }
+
     #[inline]
     fn diagonal_allowed(&self, i: usize, m: Move) -> bool {
         let a = self.open[(i as isize + m.dx as isize) as usize];

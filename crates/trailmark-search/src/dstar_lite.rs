@@ -1,0 +1,209 @@
+//! D* Lite: replanning for a robot that moves while the graph changes.
+
+use std::fmt::Debug;
+use std::hash::Hash;
+
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
+use trailmark_core::path::Path;
+
+use crate::error::SearchError;
+use crate::lifelong::{Direction, EdgeChange, Expansion, Key, Planner};
+use crate::stats::SearchStats;
+
+/// D* Lite (Koenig and Likhachev, 2002), the optimized version: a search from the goal back to
+/// the robot that repairs only what a change of edge costs or a move of the robot invalidates.
+///
+/// Keys are `[min(g, rhs) + h(start, s) + k_m; min(g, rhs)]`, where `g` and `rhs` are costs *to
+/// the goal*; `k_m` grows by `h(last, start)` when the graph changes after the robot moved, so
+/// queued keys stay valid lower bounds without being recomputed. The heuristic `h(a, b)` must
+/// be a consistent lower bound on the cost from `a` to `b` (on grids,
+/// `GridGraph::heuristic_between`).
+///
+/// The planner holds no reference to the graph: each call takes the graph as it is now. After
+/// changing the graph, tell the planner which edges changed ([`DStarLite::update_edges`], with
+/// their old costs) or which nodes had edges change ([`DStarLite::update_nodes`]), then call
+/// [`DStarLite::compute_shortest_path`] again. Search state is dense, one slot per node index.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::DStarLite;
+///
+/// let grid = Grid::from_rows(&["......", "......", "......"])?;
+/// let mut graph = GridGraph::new(&grid, Connectivity::Four);
+/// let (start, goal) = (Cell::new(0, 1), Cell::new(5, 1));
+/// let h = graph.heuristic_between(GridHeuristic::Manhattan);
+/// let mut planner = DStarLite::new(&graph, start, goal, h)?;
+/// planner.compute_shortest_path(&graph)?;
+/// assert_eq!(planner.cost(), Some(5.0));
+///
+/// // The robot steps right, then sees a wall ahead in rows 0 and 1.
+/// let next = planner.next_step(&graph).expect("a path exists");
+/// planner.move_start(&graph, next)?;
+/// for y in 0..2 {
+///     graph.set_cost(Cell::new(3, y), f64::INFINITY)?;
+///     planner.update_nodes(&graph, graph.cells_affected_by(Cell::new(3, y)))?;
+/// }
+/// let stats = planner.compute_shortest_path(&graph)?;
+/// assert_eq!(planner.cost(), Some(6.0)); // down to row 2, along it, and back up
+/// assert!(stats.expansions > 0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct DStarLite<N: Debug, H> {
+    planner: Planner<N, H>,
+}
+
+impl<N, H> DStarLite<N, H>
+where
+    N: Copy + Eq + Hash + Debug,
+    H: FnMut(N, N) -> Cost,
+{
+    /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent lower bound on the
+    /// cost from `a` to `b`. Nothing is searched until
+    /// [`compute_shortest_path`](Self::compute_shortest_path).
+    ///
+    /// Errors when the start or the goal is not a node of the graph.
+    pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        Ok(DStarLite { planner: Planner::new(Direction::Backward, graph, start, goal, heuristic)? })
+    }
+
+    /// Expands nodes until the cost from the start is known: the first search, or the repair
+    /// after changes and moves. Returns this call's statistics (expansions, queue insertions,
+    /// key updates, time).
+    ///
+    /// Errors when the start or the goal is no longer a node (it was blocked), or when an edge
+    /// cost or a heuristic value met was negative or NaN; the search then treated that edge as
+    /// absent (that value as 0), and it stays usable: fix the graph, tell the planner, call again.
+    pub fn compute_shortest_path<G>(&mut self, graph: &G) -> Result<SearchStats, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.compute(graph, |_| {})
+    }
+
+    /// [`compute_shortest_path`](Self::compute_shortest_path), calling `trace` with each node
+    /// expanded and its key, in order.
+    pub fn compute_shortest_path_traced<G>(
+        &mut self,
+        graph: &G,
+        trace: impl FnMut(Expansion<N>),
+    ) -> Result<SearchStats, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.compute(graph, trace)
+    }
+
+    /// Moves the robot to `to` (usually [`next_step`](Self::next_step)). Cheap: the keys are
+    /// adjusted when the graph next changes. Errors when `to` is not a node of the graph.
+    pub fn move_start<G>(&mut self, graph: &G, to: N) -> Result<(), SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.move_start(graph, to)
+    }
+
+    /// Tells the planner that these edges changed cost (the graph already has the new costs).
+    /// All are checked before any is applied: a node that names nothing, or an old cost that is
+    /// negative or NaN, is an error and the planner is left as it was.
+    pub fn update_edges<G>(&mut self, graph: &G, changes: &[EdgeChange<N>]) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.update_edges(graph, changes)
+    }
+
+    /// Tells the planner that edges leaving these nodes changed, in whatever way: each node's
+    /// `rhs` is recomputed from its current out-edges. Name every node with an out-edge that
+    /// changed (after `GridGraph::set_cost(cell, ..)`, the cells of
+    /// `GridGraph::cells_affected_by(cell)`). Nodes are checked first, as in
+    /// [`update_edges`](Self::update_edges).
+    pub fn update_nodes<G>(
+        &mut self,
+        graph: &G,
+        nodes: impl IntoIterator<Item = N>,
+    ) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.update_nodes(graph, nodes)
+    }
+
+    /// The cost of a shortest path from the start to the goal as of the last
+    /// [`compute_shortest_path`](Self::compute_shortest_path); `None` when the goal is
+    /// unreachable or nothing was computed yet.
+    pub fn cost(&self) -> Option<Cost> {
+        self.planner.cost()
+    }
+
+    /// A shortest path from the start to the goal, following the best successor from each node.
+    pub fn path<G>(&self, graph: &G) -> Option<Path<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.path(graph)
+    }
+
+    /// The node the robot should move to next; `None` at the goal or when it is unreachable.
+    pub fn next_step<G>(&self, graph: &G) -> Option<N>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.next_step(graph)
+    }
+
+    /// The robot's current node.
+    pub fn start(&self) -> N {
+        self.planner.start
+    }
+
+    /// The goal.
+    pub fn goal(&self) -> N {
+        self.planner.goal
+    }
+
+    /// The key modifier `k_m`: the heuristic distances the robot covered, added up at each
+    /// change of the graph.
+    pub fn key_modifier(&self) -> Cost {
+        self.planner.k_m
+    }
+
+    /// `g` of `node`: its cost to the goal when last expanded (`+inf` if never).
+    pub fn g<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.g(graph, node)
+    }
+
+    /// `rhs` of `node`: `min over successors s of c(node, s) + g(s)` (0 at the goal).
+    pub fn rhs<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.rhs(graph, node)
+    }
+
+    /// The queued (inconsistent) nodes with their keys, least key first.
+    pub fn queue<G>(&self, graph: &G) -> Vec<(N, Key)>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.queue(graph)
+    }
+
+    /// Counters summed over every call since the planner was made.
+    pub fn totals(&self) -> SearchStats {
+        self.planner.search.totals
+    }
+
+    /// Bytes held by the planner's state and queue.
+    pub fn memory_bytes(&self) -> usize {
+        self.planner.search.memory_bytes()
+    }
+}

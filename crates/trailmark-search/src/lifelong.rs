@@ -1,0 +1,737 @@
+//! The machinery LPA* and D* Lite share: `g` and `rhs` values, the two-part keys, vertex
+//! updates and the repair loop, written once for both directions.
+//!
+//! LPA* searches forward from its start: `rhs(v) = min over predecessors u of g(u) + c(u, v)`,
+//! and an expanded node updates its successors. D* Lite searches backward from its goal:
+//! `rhs(u) = min over successors v of c(u, v) + g(v)`, and an expanded node updates its
+//! predecessors. Everything else, the keys, the queue and the loop (the optimized version of
+//! Koenig and Likhachev's "D* Lite", AAAI 2002, figure 4), is the same, so it lives here with a
+//! [`Direction`] flag. The node whose `rhs` is fixed at 0 is the *source* (LPA*'s start, D*
+//! Lite's goal); the node whose value the loop computes is the *target* (LPA*'s goal, D* Lite's
+//! current start).
+
+use std::collections::HashSet;
+use std::fmt::Debug;
+
+use serde::{Deserialize, Serialize};
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
+use trailmark_core::path::Path;
+
+use crate::error::SearchError;
+use crate::queue::IndexedHeap;
+use crate::search::MAX_NODES;
+use crate::stats::SearchStats;
+
+/// The priority of a node in the queue of LPA* and D* Lite: `[min(g, rhs) + h (+ k_m);
+/// min(g, rhs)]`, compared lexicographically (smaller first).
+#[derive(Debug, Clone, Copy, PartialEq, PartialOrd, Serialize, Deserialize)]
+pub struct Key {
+    /// `min(g, rhs) + h`, plus the key modifier `k_m` in D* Lite.
+    pub primary: Cost,
+    /// `min(g, rhs)`, which breaks ties of the primary part.
+    pub secondary: Cost,
+}
+
+impl Key {
+    /// A key from its two parts.
+    pub fn new(primary: Cost, secondary: Cost) -> Self {
+        Key { primary, secondary }
+    }
+}
+
+/// A [`Key`] as one integer: the bits of the primary part above those of the secondary one.
+/// Both parts are non-negative (or +inf), whose bit patterns order like the numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) struct QKey(u128);
+
+impl QKey {
+    #[inline]
+    fn new(key: Key) -> Self {
+        QKey((u128::from((key.primary + 0.0).to_bits()) << 64) | u128::from((key.secondary + 0.0).to_bits()))
+    }
+
+    #[inline]
+    fn key(self) -> Key {
+        Key::new(f64::from_bits((self.0 >> 64) as u64), f64::from_bits(self.0 as u64))
+    }
+}
+
+/// What an expansion did to a node's `g`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Consistency {
+    /// `g > rhs`: `g` was lowered to `rhs` (the node is now consistent).
+    Overconsistent,
+    /// `g < rhs`: `g` was raised to infinity (the node will be expanded again if it can still be
+    /// reached).
+    Underconsistent,
+}
+
+/// One expansion of an incremental search, as reported to a trace callback.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Expansion<N> {
+    /// The node expanded.
+    pub node: N,
+    /// Its key when it left the queue.
+    pub key: Key,
+    /// Whether it was over- or underconsistent.
+    pub kind: Consistency,
+}
+
+/// A change of one directed edge, told to an incremental planner after the graph changed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct EdgeChange<N> {
+    /// The tail of the edge.
+    pub from: N,
+    /// The head of the edge.
+    pub to: N,
+    /// The cost before the change (`f64::INFINITY` if the edge did not exist). The new cost is
+    /// read from the graph.
+    pub old_cost: Cost,
+}
+
+/// Which way the values flow: from the start (LPA*) or from the goal (D* Lite).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Direction {
+    Forward,
+    Backward,
+}
+
+/// `g`, `rhs`, the queue, and counters, for nodes numbered by an [`IndexedGraph`].
+#[derive(Debug, Clone)]
+pub(crate) struct Lifelong<N: Debug> {
+    pub dir: Direction,
+    g: Vec<Cost>,
+    rhs: Vec<Cost>,
+    queue: IndexedHeap<QKey>,
+    /// The slot whose `rhs` is 0.
+    pub source: usize,
+    /// Counters of the current call.
+    pub stats: SearchStats,
+    /// Counters since creation.
+    pub totals: SearchStats,
+    /// The first invalid edge cost met since the last report.
+    fault: Option<SearchError<N>>,
+}
+
+/// Whether `cost` is a valid edge cost for lifelong planning: positive, possibly infinite (no
+/// edge). Zero is not: around a cycle of zero-cost edges, nodes can keep supporting each other's
+/// stale values after the way out is cut, and the repair never notices (the algorithms' proofs
+/// assume positive costs).
+#[inline]
+fn valid_cost(cost: Cost) -> bool {
+    cost > 0.0
+}
+
+/// The error for an invalid edge cost.
+fn cost_error<N: Debug>(from: N, to: N, cost: Cost) -> SearchError<N> {
+    if cost == 0.0 {
+        SearchError::ZeroCostEdge { from, to }
+    } else {
+        SearchError::InvalidEdgeCost { from, to, cost }
+    }
+}
+
+/// Whether `value` is a valid heuristic value: non-negative, possibly infinite (dead end).
+#[inline]
+pub(crate) fn valid_estimate(value: Cost) -> bool {
+    value >= 0.0
+}
+
+impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
+    /// An empty search with `source` (already checked to be a node) at `rhs = 0`; the caller
+    /// queues it with [`Lifelong::update_vertex`].
+    pub fn new<G>(dir: Direction, graph: &G, source: N) -> Result<Self, SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        let mut search = Lifelong {
+            dir,
+            g: Vec::new(),
+            rhs: Vec::new(),
+            queue: IndexedHeap::new(),
+            source: 0,
+            stats: SearchStats::default(),
+            totals: SearchStats::default(),
+            fault: None,
+        };
+        search.fit(graph)?;
+        search.source = graph.index_of(source);
+        search.rhs[search.source] = 0.0;
+        Ok(search)
+    }
+
+    /// Sizes the state to the graph's node bound (graphs may grow between calls).
+    pub fn fit<G>(&mut self, graph: &G) -> Result<(), SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        let bound = graph.node_bound();
+        if bound > MAX_NODES {
+            return Err(SearchError::TooManyNodes(bound));
+        }
+        if self.g.len() < bound {
+            self.g.resize(bound, f64::INFINITY);
+            self.rhs.resize(bound, f64::INFINITY);
+            self.queue.reserve_items(bound);
+        }
+        Ok(())
+    }
+
+    /// The slot of a node named by the user, or an error if it names nothing.
+    pub fn slot_of<G>(&self, graph: &G, node: N) -> Result<usize, SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        match graph.checked_index(node) {
+            Some(i) if i < self.g.len() => Ok(i),
+            _ => Err(SearchError::UnknownNode(node)),
+        }
+    }
+
+    #[inline]
+    pub fn g(&self, slot: usize) -> Cost {
+        self.g[slot]
+    }
+
+    #[inline]
+    pub fn rhs(&self, slot: usize) -> Cost {
+        self.rhs[slot]
+    }
+
+    /// The queued nodes and their keys, least first.
+    pub fn queue(&self) -> Vec<(usize, Key)> {
+        let mut items: Vec<(usize, QKey)> = self.queue.iter().collect();
+        items.sort_by_key(|&(s, k)| (k, s));
+        items.into_iter().map(|(s, k)| (s, k.key())).collect()
+    }
+
+    /// Bytes held by the state and the queue.
+    pub fn memory_bytes(&self) -> usize {
+        (self.g.capacity() + self.rhs.capacity()) * 8 + self.queue.memory_bytes()
+    }
+
+    /// Takes the first fault met since the last call.
+    pub fn take_fault(&mut self) -> Option<SearchError<N>> {
+        self.fault.take()
+    }
+
+    /// Remembers an invalid edge (the first one only).
+    #[cold]
+    fn bad_edge(&mut self, from: N, to: N, cost: Cost) {
+        if self.fault.is_none() {
+            self.fault = Some(cost_error(from, to, cost));
+        }
+    }
+
+    /// The key of `slot`, with `h` the heuristic part (and `k_m`) of the node.
+    #[inline]
+    fn key<G>(&self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost) -> Key
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        let m = self.g[slot].min(self.rhs[slot]);
+        if m == f64::INFINITY {
+            return Key::new(m, m);
+        }
+        Key::new(m + h(graph.node_at(slot)), m)
+    }
+
+    /// Queues `slot` with its current key when it is inconsistent, takes it out otherwise.
+    #[inline]
+    pub fn update_vertex<G>(&mut self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost)
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        if self.g[slot] != self.rhs[slot] {
+            let key = QKey::new(self.key(graph, slot, h));
+            match self.queue.push(slot, key) {
+                None => self.stats.pushes += 1,
+                Some(_) => self.stats.decreases += 1,
+            }
+        } else {
+            self.queue.remove(slot);
+        }
+    }
+
+    /// Calls `visit(self, neighbour, cost)` for each edge along which `slot`'s `g` flows: its
+    /// predecessors (backward) or successors (forward). Invalid costs are remembered and
+    /// skipped, self-loops skipped.
+    #[inline]
+    fn each_dependent<G>(&mut self, graph: &G, slot: usize, mut visit: impl FnMut(&mut Self, usize, Cost))
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        match self.dir {
+            Direction::Backward => graph.for_each_predecessor_index(slot, |s, node, c| {
+                if s == slot {
+                    return;
+                }
+                if !valid_cost(c) {
+                    return self.bad_edge(node, graph.node_at(slot), c);
+                }
+                visit(self, s, c)
+            }),
+            Direction::Forward => graph.for_each_successor_index(slot, |s, node, c| {
+                if s == slot {
+                    return;
+                }
+                if !valid_cost(c) {
+                    return self.bad_edge(graph.node_at(slot), node, c);
+                }
+                visit(self, s, c)
+            }),
+        }
+    }
+
+    /// Calls `visit(self, neighbour, cost)` for each edge `slot`'s `rhs` is computed over: its
+    /// successors (backward) or predecessors (forward), with the same checks.
+    #[inline]
+    fn each_support<G>(&mut self, graph: &G, slot: usize, mut visit: impl FnMut(&mut Self, usize, Cost))
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        match self.dir {
+            Direction::Backward => graph.for_each_successor_index(slot, |s, node, c| {
+                if s == slot {
+                    return;
+                }
+                if !valid_cost(c) {
+                    return self.bad_edge(graph.node_at(slot), node, c);
+                }
+                visit(self, s, c)
+            }),
+            Direction::Forward => graph.for_each_predecessor_index(slot, |s, node, c| {
+                if s == slot {
+                    return;
+                }
+                if !valid_cost(c) {
+                    return self.bad_edge(node, graph.node_at(slot), c);
+                }
+                visit(self, s, c)
+            }),
+        }
+    }
+
+    /// `rhs` of `slot` computed afresh from its neighbours' `g`.
+    fn rhs_from_scratch<G>(&mut self, graph: &G, slot: usize) -> Cost
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let mut best = f64::INFINITY;
+        self.each_support(graph, slot, |this, s, c| best = best.min(c + this.g[s]));
+        best
+    }
+
+    /// Recomputes `rhs` of `slot` from scratch (unless it is the source) and requeues it: the
+    /// response to a change of any of its edges.
+    pub fn refresh<G>(&mut self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost)
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        if slot != self.source {
+            self.rhs[slot] = self.rhs_from_scratch(graph, slot);
+        }
+        self.update_vertex(graph, slot, h);
+    }
+
+    /// The response to the change of one edge whose old cost was `old`: the edge joins
+    /// `dependent` (whose `rhs` it enters) and `support` (whose `g` it carries). Only the
+    /// dependent's `rhs` can change; it is recomputed from scratch only when the edge was its
+    /// best and got dearer.
+    pub fn edge_changed<G>(
+        &mut self,
+        graph: &G,
+        dependent: usize,
+        support: usize,
+        old: Cost,
+        new: Cost,
+        h: &mut impl FnMut(N) -> Cost,
+    ) where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        if dependent != self.source && dependent != support {
+            let through = self.g[support];
+            if old > new {
+                self.rhs[dependent] = self.rhs[dependent].min(new + through);
+            } else if self.rhs[dependent] == old + through {
+                self.rhs[dependent] = self.rhs_from_scratch(graph, dependent);
+            }
+        }
+        self.update_vertex(graph, dependent, h);
+    }
+
+    /// The repair loop: expands inconsistent nodes in key order until `target` is consistent and
+    /// no queued key is below its key. `h` gives the heuristic part of a node's key.
+    pub fn compute<G>(
+        &mut self,
+        graph: &G,
+        target: usize,
+        h: &mut impl FnMut(N) -> Cost,
+        trace: &mut impl FnMut(Expansion<N>),
+    ) where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        while let Some((u, k_old)) = self.queue.peek() {
+            let target_key = QKey::new(self.key(graph, target, h));
+            if k_old >= target_key && self.rhs[target] == self.g[target] {
+                break;
+            }
+            let k_new = QKey::new(self.key(graph, u, h));
+            if k_old < k_new {
+                // The key was computed with an older `k_m` or start: requeue, expand later.
+                self.queue.push(u, k_new);
+                self.stats.decreases += 1;
+                continue;
+            }
+            self.queue.pop();
+            self.stats.expansions += 1;
+            let kind = if self.g[u] > self.rhs[u] {
+                Consistency::Overconsistent
+            } else {
+                Consistency::Underconsistent
+            };
+            trace(Expansion { node: graph.node_at(u), key: k_old.key(), kind });
+            match kind {
+                Consistency::Overconsistent => {
+                    let gu = self.rhs[u];
+                    self.g[u] = gu;
+                    self.each_dependent(graph, u, |this, s, c| {
+                        if s != this.source && c + gu < this.rhs[s] {
+                            this.rhs[s] = c + gu;
+                        }
+                        this.update_vertex(graph, s, h);
+                    });
+                }
+                Consistency::Underconsistent => {
+                    let g_old = self.g[u];
+                    self.g[u] = f64::INFINITY;
+                    self.each_dependent(graph, u, |this, s, c| {
+                        if s != this.source && this.rhs[s] == c + g_old {
+                            this.rhs[s] = this.rhs_from_scratch(graph, s);
+                        }
+                        this.update_vertex(graph, s, h);
+                    });
+                    self.update_vertex(graph, u, h);
+                }
+            }
+        }
+    }
+
+    /// The path from `target` to the source along the best supports (`argmin c + g`), in the
+    /// order walked; `None` when the target's value is infinite. Ties prefer the smaller `g`, and
+    /// a node already on the path is never taken again (zero-cost cycles).
+    pub fn walk<G>(&self, graph: &G, target: usize) -> Option<Vec<usize>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        if self.g[target].min(self.rhs[target]) == f64::INFINITY {
+            return None;
+        }
+        let mut slots = vec![target];
+        let mut seen = HashSet::from([target]);
+        let mut at = target;
+        while at != self.source {
+            let mut best: Option<(Cost, Cost, usize)> = None;
+            let mut consider = |s: usize, c: Cost| {
+                let via = (c + self.g[s], self.g[s], s);
+                // `via.0 < inf` also rejects invalid (NaN) costs; negative ones never come
+                // this far, since the search refused them.
+                if via.0 < f64::INFINITY
+                    && s != at
+                    && !seen.contains(&s)
+                    && best.is_none_or(|b| (via.0, via.1) < (b.0, b.1))
+                {
+                    best = Some(via);
+                }
+            };
+            match self.dir {
+                Direction::Backward => graph.for_each_successor_index(at, |s, _, c| consider(s, c)),
+                Direction::Forward => graph.for_each_predecessor_index(at, |s, _, c| consider(s, c)),
+            }
+            let (_, _, next) = best?;
+            seen.insert(next);
+            slots.push(next);
+            at = next;
+        }
+        Some(slots)
+    }
+
+    /// The walk as a path of nodes from the start to the goal, with `cost`.
+    pub fn path<G>(&self, graph: &G, target: usize, cost: Cost) -> Option<Path<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let mut nodes: Vec<N> = self.walk(graph, target)?.into_iter().map(|s| graph.node_at(s)).collect();
+        if self.dir == Direction::Forward {
+            nodes.reverse();
+        }
+        Some(Path { nodes, cost })
+    }
+
+    /// Folds the current call's counters into the totals and returns them with `elapsed`.
+    pub fn close_call(&mut self, elapsed: std::time::Duration) -> SearchStats {
+        let mut stats = std::mem::take(&mut self.stats);
+        stats.elapsed = elapsed;
+        self.totals.expansions += stats.expansions;
+        self.totals.pushes += stats.pushes;
+        self.totals.decreases += stats.decreases;
+        self.totals.elapsed += elapsed;
+        stats
+    }
+}
+
+/// The cost of the edge `from -> to` in `graph` now (the least of parallel edges), `+inf` when
+/// there is none; an invalid cost is returned as it is, for the caller to reject.
+pub(crate) fn edge_cost<G>(graph: &G, from: G::Node, to: G::Node) -> Cost
+where
+    G: Successors + ?Sized,
+{
+    let mut cost = f64::INFINITY;
+    if graph.contains(from) {
+        graph.for_each_successor(from, |n, c| {
+            // NaN replaces anything, so that the caller sees (and rejects) it.
+            if n == to && (c < cost || c.is_nan()) {
+                cost = c;
+            }
+        });
+    }
+    cost
+}
+
+/// A lifelong planner between a start and a goal: the search, the heuristic, the endpoints and
+/// D* Lite's key modifier. [`LpaStar`](crate::LpaStar) and [`DStarLite`](crate::DStarLite) are
+/// this, forward and backward.
+#[derive(Debug, Clone)]
+pub(crate) struct Planner<N: Debug, H> {
+    pub search: Lifelong<N>,
+    heuristic: H,
+    pub start: N,
+    start_slot: usize,
+    pub goal: N,
+    goal_slot: usize,
+    /// The start when `k_m` was last brought up to date (backward only).
+    last: N,
+    pub k_m: Cost,
+    /// The first invalid heuristic value met since the last report.
+    bad_h: Option<(N, Cost)>,
+}
+
+impl<N, H> Planner<N, H>
+where
+    N: Copy + Eq + std::hash::Hash + Debug,
+    H: FnMut(N, N) -> Cost,
+{
+    pub fn new<G>(dir: Direction, graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        check_endpoints(graph, start, goal)?;
+        let source = if dir == Direction::Backward { goal } else { start };
+        let search = Lifelong::new(dir, graph, source)?;
+        let (start_slot, goal_slot) = (graph.index_of(start), graph.index_of(goal));
+        let mut planner = Planner {
+            search,
+            heuristic,
+            start,
+            start_slot,
+            goal,
+            goal_slot,
+            last: start,
+            k_m: 0.0,
+            bad_h: None,
+        };
+        let source = planner.search.source;
+        {
+            let (search, mut h) = planner.keyed();
+            search.update_vertex(graph, source, &mut h);
+        }
+        planner.search.close_call(std::time::Duration::ZERO);
+        Ok(planner)
+    }
+
+    /// The node whose value the search computes: the goal (forward) or the start (backward).
+    fn target(&self) -> usize {
+        match self.search.dir {
+            Direction::Forward => self.goal_slot,
+            Direction::Backward => self.start_slot,
+        }
+    }
+
+    /// The search, with the heuristic part of keys: `h(s, goal)` forward, `h(start, s) + k_m`
+    /// backward (bringing `k_m` up to date first if the robot moved). Invalid heuristic values
+    /// count as 0 and are remembered.
+    fn keyed(&mut self) -> (&mut Lifelong<N>, impl FnMut(N) -> Cost + '_) {
+        let Planner { search, heuristic, start, goal, last, k_m, bad_h, .. } = self;
+        let backward = search.dir == Direction::Backward;
+        let mut estimate = move |a: N, b: N| {
+            let v = heuristic(a, b);
+            if valid_estimate(v) {
+                v
+            } else {
+                bad_h.get_or_insert((if backward { b } else { a }, v));
+                0.0
+            }
+        };
+        if backward && *last != *start {
+            *k_m += estimate(*last, *start);
+            *last = *start;
+        }
+        let (start, goal, k_m) = (*start, *goal, *k_m);
+        let h = move |s: N| if backward { estimate(start, s) + k_m } else { estimate(s, goal) };
+        (search, h)
+    }
+
+    pub fn compute<G>(
+        &mut self,
+        graph: &G,
+        mut trace: impl FnMut(Expansion<N>),
+    ) -> Result<SearchStats, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let clock = std::time::Instant::now();
+        check_endpoints(graph, self.start, self.goal)?;
+        self.search.fit(graph)?;
+        let target = self.target();
+        {
+            let (search, mut h) = self.keyed();
+            search.compute(graph, target, &mut h, &mut trace);
+        }
+        let stats = self.search.close_call(clock.elapsed());
+        self.report()?;
+        Ok(stats)
+    }
+
+    /// The first fault since the last report, as an error.
+    fn report(&mut self) -> Result<(), SearchError<N>> {
+        if let Some(e) = self.search.take_fault() {
+            self.bad_h = None;
+            return Err(e);
+        }
+        match self.bad_h.take() {
+            Some((node, value)) => Err(SearchError::InvalidHeuristic { node, value }),
+            None => Ok(()),
+        }
+    }
+
+    pub fn move_start<G>(&mut self, graph: &G, to: N) -> Result<(), SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        if !graph.contains(to) {
+            return Err(SearchError::StartNotInGraph(to));
+        }
+        self.start_slot = self.search.slot_of(graph, to)?;
+        self.start = to;
+        Ok(())
+    }
+
+    pub fn update_edges<G>(&mut self, graph: &G, changes: &[EdgeChange<N>]) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.search.fit(graph)?;
+        let slots = changes
+            .iter()
+            .map(|c| {
+                let slots = (self.search.slot_of(graph, c.from)?, self.search.slot_of(graph, c.to)?);
+                let new = edge_cost(graph, c.from, c.to);
+                for cost in [c.old_cost, new] {
+                    if !valid_cost(cost) {
+                        return Err(cost_error(c.from, c.to, cost));
+                    }
+                }
+                Ok((slots, new))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let backward = self.search.dir == Direction::Backward;
+        {
+            let (search, mut h) = self.keyed();
+            for (change, ((from, to), new)) in changes.iter().zip(slots) {
+                let (dependent, support) = if backward { (from, to) } else { (to, from) };
+                search.edge_changed(graph, dependent, support, change.old_cost, new, &mut h);
+            }
+        }
+        self.search.close_call(std::time::Duration::ZERO);
+        self.report()
+    }
+
+    pub fn update_nodes<G>(
+        &mut self,
+        graph: &G,
+        nodes: impl IntoIterator<Item = N>,
+    ) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.search.fit(graph)?;
+        let slots =
+            nodes.into_iter().map(|n| self.search.slot_of(graph, n)).collect::<Result<Vec<_>, _>>()?;
+        {
+            let (search, mut h) = self.keyed();
+            for slot in slots {
+                search.refresh(graph, slot, &mut h);
+            }
+        }
+        self.search.close_call(std::time::Duration::ZERO);
+        self.report()
+    }
+
+    pub fn cost(&self) -> Option<Cost> {
+        let g = self.search.g(self.target());
+        g.is_finite().then_some(g)
+    }
+
+    pub fn path<G>(&self, graph: &G) -> Option<Path<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.search.path(graph, self.target(), self.cost()?)
+    }
+
+    /// The second node of the path (backward: the robot's next move).
+    pub fn next_step<G>(&self, graph: &G) -> Option<N>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.cost()?;
+        self.search.walk(graph, self.target())?.get(1).map(|&s| graph.node_at(s))
+    }
+
+    pub fn g<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        Ok(self.search.g(self.search.slot_of(graph, node)?))
+    }
+
+    pub fn rhs<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        Ok(self.search.rhs(self.search.slot_of(graph, node)?))
+    }
+
+    pub fn queue<G>(&self, graph: &G) -> Vec<(N, Key)>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.search.queue().into_iter().map(|(s, k)| (graph.node_at(s), k)).collect()
+    }
+}
+
+/// Errors unless both endpoints are nodes of the graph.
+pub(crate) fn check_endpoints<G>(graph: &G, start: G::Node, goal: G::Node) -> Result<(), SearchError<G::Node>>
+where
+    G: IndexedGraph + ?Sized,
+{
+    if !graph.contains(start) {
+        return Err(SearchError::StartNotInGraph(start));
+    }
+    if !graph.contains(goal) {
+        return Err(SearchError::GoalNotInGraph(goal));
+    }
+    Ok(())
+}

@@ -1,0 +1,336 @@
+//! LPA* and D* Lite against A* from scratch: after every batch of random changes (and, for D*
+//! Lite, moves of the start), the incremental planners must report the cost A* finds on the
+//! graph as it is now, with a path that exists in that graph and costs what they say.
+
+use proptest::prelude::*;
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
+use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+use trailmark_graph::GridGraph;
+use trailmark_search::{DStarLite, EdgeChange, LpaStar, SearchError, astar, dijkstra};
+
+/// Relative tolerance between costs summed in different orders (forward by A*, backward by D*
+/// Lite): the same path, the same edges, rounding may differ in the last bits.
+fn same_cost(a: Option<Cost>, b: Option<Cost>) -> bool {
+    match (a, b) {
+        (Some(a), Some(b)) => (a - b).abs() <= 1e-9 * a.abs().max(1.0),
+        (None, None) => true,
+        _ => false,
+    }
+}
+
+/// The cost of `nodes` walked in `graph`, `None` if a step is not an edge.
+fn walk_cost<G: Successors>(graph: &G, nodes: &[G::Node]) -> Option<Cost> {
+    let mut total = 0.0;
+    for pair in nodes.windows(2) {
+        let mut best = f64::INFINITY;
+        graph.for_each_successor(pair[0], |n, c| {
+            if n == pair[1] {
+                best = best.min(c);
+            }
+        });
+        if !best.is_finite() {
+            return None;
+        }
+        total += best;
+    }
+    Some(total)
+}
+
+/// Octile distance without scaling: admissible and consistent while every cell costs >= 1.
+fn octile(a: Cell, b: Cell) -> Cost {
+    GridHeuristic::Octile.distance(a.x.abs_diff(b.x), a.y.abs_diff(b.y))
+}
+
+#[derive(Debug, Clone)]
+enum Change {
+    /// Set the cost of cell (x, y): a finite cost in [1, 4], or blocked.
+    Cell { x: u32, y: u32, cost: Option<f64> },
+    /// Move the robot to a random neighbour (index among the neighbours), D* Lite only.
+    Step(usize),
+}
+
+fn change(w: u32, h: u32) -> impl Strategy<Value = Change> {
+    prop_oneof![
+        4 => (0..w, 0..h, prop::option::weighted(0.6, 1.0f64..4.0)).prop_map(|(x, y, cost)| Change::Cell { x, y, cost }),
+        1 => (0usize..8).prop_map(Change::Step),
+    ]
+}
+
+fn world() -> impl Strategy<Value = (Grid, Connectivity, Cell, Cell, Vec<Vec<Change>>)> {
+    (3u32..12, 3u32..12, any::<bool>()).prop_flat_map(|(w, h, eight)| {
+        let n = (w * h) as usize;
+        (
+            prop::collection::vec(prop::option::weighted(0.8, 1.0f64..3.0), n),
+            (0..w, 0..h),
+            (0..w, 0..h),
+            prop::collection::vec(prop::collection::vec(change(w, h), 1..6), 1..8),
+        )
+            .prop_map(move |(costs, s, t, batches)| {
+                let costs = costs.into_iter().map(|c| c.unwrap_or(f64::INFINITY)).collect();
+                let mut grid = Grid::from_costs(w as usize, h as usize, costs).expect("valid costs");
+                let (start, goal) = (Cell::new(s.0, s.1), Cell::new(t.0, t.1));
+                grid.set_cost(start, 1.0).expect("inside");
+                grid.set_cost(goal, 1.0).expect("inside");
+                let connectivity = if eight { Connectivity::Eight } else { Connectivity::Four };
+                (grid, connectivity, start, goal, batches)
+            })
+    })
+}
+
+/// A* from scratch: the cost, or an error when an endpoint is blocked.
+fn reference(graph: &GridGraph, start: Cell, goal: Cell) -> Result<Option<Cost>, SearchError<Cell>> {
+    astar(graph, start, goal, |c| octile(c, goal)).map(|r| r.cost())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1500))]
+
+    #[test]
+    fn dstar_lite_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
+        let mut graph = GridGraph::new(&grid, connectivity);
+        let mut planner = DStarLite::new(&graph, start, goal, octile).unwrap();
+        let mut robot = start;
+        for batch in std::iter::once(&vec![]).chain(&batches) {
+            for change in batch {
+                match *change {
+                    Change::Cell { x, y, cost } => {
+                        let cell = Cell::new(x, y);
+                        graph.set_cost(cell, cost.unwrap_or(f64::INFINITY)).unwrap();
+                        planner.update_nodes(&graph, graph.cells_affected_by(cell)).unwrap();
+                    }
+                    Change::Step(k) => {
+                        let next: Vec<Cell> = graph.neighbours(robot).map(|(c, _)| c).collect();
+                        if let Some(&to) = next.get(k % next.len().max(1)) {
+                            planner.move_start(&graph, to).unwrap();
+                            robot = to;
+                        }
+                    }
+                }
+            }
+            let expected = reference(&graph, robot, goal);
+            let got = planner.compute_shortest_path(&graph);
+            match expected {
+                Err(e) => prop_assert_eq!(got.unwrap_err(), e),
+                Ok(cost) => {
+                    got.unwrap();
+                    prop_assert!(same_cost(planner.cost(), cost), "D* Lite {:?}, A* {:?}", planner.cost(), cost);
+                    if let Some(path) = planner.path(&graph) {
+                        prop_assert_eq!(path.start(), Some(robot));
+                        prop_assert_eq!(path.goal(), Some(goal));
+                        prop_assert!(same_cost(walk_cost(&graph, &path.nodes), cost));
+                    } else {
+                        prop_assert!(cost.is_none());
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn lpa_star_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
+        let mut graph = GridGraph::new(&grid, connectivity);
+        let mut planner = LpaStar::new(&graph, start, goal, octile).unwrap();
+        for batch in std::iter::once(&vec![]).chain(&batches) {
+            for change in batch {
+                if let Change::Cell { x, y, cost } = *change {
+                    let cell = Cell::new(x, y);
+                    graph.set_cost(cell, cost.unwrap_or(f64::INFINITY)).unwrap();
+                    planner.update_nodes(&graph, graph.cells_affected_by(cell)).unwrap();
+                }
+            }
+            let expected = reference(&graph, start, goal);
+            let got = planner.compute_shortest_path(&graph);
+            match expected {
+                Err(e) => prop_assert_eq!(got.unwrap_err(), e),
+                Ok(cost) => {
+                    got.unwrap();
+                    prop_assert!(same_cost(planner.cost(), cost), "LPA* {:?}, A* {:?}", planner.cost(), cost);
+                    match planner.path(&graph) {
+                        Some(path) => {
+                            prop_assert_eq!((path.start(), path.goal()), (Some(start), Some(goal)));
+                            prop_assert!(same_cost(walk_cost(&graph, &path.nodes), cost));
+                        }
+                        None => prop_assert!(cost.is_none()),
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A directed graph of nodes `0..n` with at most one edge per ordered pair, whose costs change.
+#[derive(Debug, Clone)]
+struct Digraph {
+    /// `cost[a][b]`: the cost of `a -> b`, `+inf` for no edge.
+    cost: Vec<Vec<Cost>>,
+}
+
+impl Graph for Digraph {
+    type Node = usize;
+    fn contains(&self, node: usize) -> bool {
+        node < self.cost.len()
+    }
+}
+
+impl Successors for Digraph {
+    fn for_each_successor<F: FnMut(usize, Cost)>(&self, node: usize, mut visit: F) {
+        for (b, &c) in self.cost[node].iter().enumerate() {
+            if c != f64::INFINITY {
+                visit(b, c);
+            }
+        }
+    }
+}
+
+impl Predecessors for Digraph {
+    fn for_each_predecessor<F: FnMut(usize, Cost)>(&self, node: usize, mut visit: F) {
+        for (a, row) in self.cost.iter().enumerate() {
+            if row[node] != f64::INFINITY {
+                visit(a, row[node]);
+            }
+        }
+    }
+}
+
+impl IndexedGraph for Digraph {
+    fn node_bound(&self) -> usize {
+        self.cost.len()
+    }
+    fn index_of(&self, node: usize) -> usize {
+        node
+    }
+    fn node_at(&self, index: usize) -> usize {
+        index
+    }
+}
+
+/// Edge costs: none, or positive (tiny ones included, and repeated values for ties).
+fn edge_cost() -> impl Strategy<Value = Cost> {
+    prop_oneof![3 => Just(f64::INFINITY), 1 => Just(1e-9), 1 => Just(1.0), 4 => 0.5f64..10.0]
+}
+
+/// Batches of changes: (from, to, new cost, where the robot may jump).
+type Batches = Vec<Vec<(usize, usize, Cost, usize)>>;
+
+fn digraph_world() -> impl Strategy<Value = (Digraph, usize, usize, Batches)> {
+    (2usize..12).prop_flat_map(|n| {
+        (
+            prop::collection::vec(prop::collection::vec(edge_cost(), n), n),
+            0..n,
+            0..n,
+            // Batches of (from, to, new cost, robot move target).
+            prop::collection::vec(prop::collection::vec((0..n, 0..n, edge_cost(), 0..n), 1..5), 1..8),
+        )
+            .prop_map(|(cost, s, t, batches)| (Digraph { cost }, s, t, batches))
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1500))]
+
+    /// Edge changes told with their old costs, cycles, arbitrary robot jumps
+    /// (the heuristic is 0, which stays consistent for any jump).
+    #[test]
+    fn edge_changes_on_digraphs_match_dijkstra((mut graph, start, goal, batches) in digraph_world()) {
+        let zero = |_: usize, _: usize| 0.0;
+        let mut dstar = DStarLite::new(&graph, start, goal, zero).unwrap();
+        let mut lpa = LpaStar::new(&graph, start, goal, zero).unwrap();
+        let mut robot = start;
+        for batch in std::iter::once(&vec![]).chain(&batches) {
+            let mut changes = Vec::new();
+            for &(a, b, c, jump) in batch {
+                if a == b {
+                    continue;
+                }
+                changes.push(EdgeChange { from: a, to: b, old_cost: graph.cost[a][b] });
+                graph.cost[a][b] = c;
+                robot = if jump % 3 == 0 { jump } else { robot };
+            }
+            dstar.update_edges(&graph, &changes).unwrap();
+            lpa.update_edges(&graph, &changes).unwrap();
+            dstar.move_start(&graph, robot).unwrap();
+            dstar.compute_shortest_path(&graph).unwrap();
+            lpa.compute_shortest_path(&graph).unwrap();
+            let from_robot = dijkstra(&graph, robot, goal).unwrap().cost();
+            let from_start = dijkstra(&graph, start, goal).unwrap().cost();
+            prop_assert!(same_cost(dstar.cost(), from_robot), "D* Lite {:?}, Dijkstra {:?}", dstar.cost(), from_robot);
+            prop_assert!(same_cost(lpa.cost(), from_start), "LPA* {:?}, Dijkstra {:?}", lpa.cost(), from_start);
+            for path in [dstar.path(&graph), lpa.path(&graph)].into_iter().flatten() {
+                prop_assert!(same_cost(walk_cost(&graph, &path.nodes), Some(path.cost)));
+            }
+        }
+    }
+}
+
+/// Notifications naming nothing, or invalid costs, are errors that change nothing.
+#[test]
+fn bad_notifications_are_rejected_and_the_planner_stays_usable() {
+    let grid = Grid::from_rows(&["....", "....", "...."]).unwrap();
+    let mut graph = GridGraph::new(&grid, Connectivity::Eight);
+    let (start, goal) = (Cell::new(0, 0), Cell::new(3, 2));
+    let h = graph.heuristic_between(GridHeuristic::Octile);
+    let mut planner = DStarLite::new(&graph, start, goal, h).unwrap();
+    planner.compute_shortest_path(&graph).unwrap();
+    let cost = planner.cost();
+
+    let outside = Cell::new(4, 0);
+    assert_eq!(
+        planner.update_nodes(&graph, [Cell::new(1, 1), outside]),
+        Err(SearchError::UnknownNode(outside))
+    );
+    let bad = EdgeChange { from: Cell::new(0, 0), to: Cell::new(1, 0), old_cost: f64::NAN };
+    assert!(matches!(planner.update_edges(&graph, &[bad]), Err(SearchError::InvalidEdgeCost { .. })));
+    assert_eq!(planner.move_start(&graph, outside), Err(SearchError::StartNotInGraph(outside)));
+    assert_eq!(planner.compute_shortest_path(&graph).unwrap().expansions, 0);
+    assert_eq!(planner.cost(), cost);
+
+    // The goal blocked: an error, and once it opens again the planner answers as before.
+    graph.set_cost(goal, f64::INFINITY).unwrap();
+    planner.update_nodes(&graph, graph.cells_affected_by(goal)).unwrap();
+    assert_eq!(planner.compute_shortest_path(&graph), Err(SearchError::GoalNotInGraph(goal)));
+    graph.set_cost(goal, 1.0).unwrap();
+    planner.update_nodes(&graph, graph.cells_affected_by(goal)).unwrap();
+    planner.compute_shortest_path(&graph).unwrap();
+    assert_eq!(planner.cost(), cost);
+
+    // Start and goal blocked at creation.
+    graph.set_cost(start, f64::INFINITY).unwrap();
+    assert_eq!(LpaStar::new(&graph, start, goal, h).err(), Some(SearchError::StartNotInGraph(start)));
+}
+
+/// A graph that reports a NaN edge: the error names it, and the planner recovers once the graph
+/// is fixed and the change told.
+#[test]
+fn invalid_edge_costs_are_reported_then_repaired() {
+    let mut graph = Digraph { cost: vec![vec![f64::INFINITY; 3]; 3] };
+    graph.cost[0][1] = 1.0;
+    graph.cost[1][2] = f64::NAN;
+    graph.cost[0][2] = 5.0;
+    let zero = |_: usize, _: usize| 0.0;
+    let mut planner = LpaStar::new(&graph, 0, 2, zero).unwrap();
+    let err = planner.compute_shortest_path(&graph).unwrap_err();
+    assert!(matches!(err, SearchError::InvalidEdgeCost { from: 1, to: 2, .. }), "{err:?}");
+    assert_eq!(planner.cost(), Some(5.0)); // the NaN edge counted as absent
+    graph.cost[1][2] = 1.0;
+    planner.update_edges(&graph, &[EdgeChange { from: 1, to: 2, old_cost: f64::INFINITY }]).unwrap();
+    planner.compute_shortest_path(&graph).unwrap();
+    assert_eq!(planner.cost(), Some(2.0));
+    assert_eq!(planner.path(&graph).unwrap().nodes, [0, 1, 2]);
+}
+
+/// Zero-cost edges are refused with their own error (they would break the repair, see
+/// `valid_cost` in the source), both when met in the search and in a notification.
+#[test]
+fn zero_cost_edges_are_refused() {
+    let mut graph = Digraph { cost: vec![vec![f64::INFINITY; 2]; 2] };
+    graph.cost[0][1] = 1.0;
+    let zero = |_: usize, _: usize| 0.0;
+    let mut planner = DStarLite::new(&graph, 0, 1, zero).unwrap();
+    planner.compute_shortest_path(&graph).unwrap();
+    graph.cost[0][1] = 0.0;
+    let change = EdgeChange { from: 0, to: 1, old_cost: 1.0 };
+    assert_eq!(planner.update_edges(&graph, &[change]), Err(SearchError::ZeroCostEdge { from: 0, to: 1 }));
+    let mut fresh = LpaStar::new(&graph, 0, 1, zero).unwrap();
+    assert_eq!(fresh.compute_shortest_path(&graph), Err(SearchError::ZeroCostEdge { from: 0, to: 1 }));
+}

@@ -59,6 +59,7 @@
 
 #![deny(missing_docs)]
 
+mod ara_star;
 mod astar;
 mod bfs;
 mod dfs;
@@ -71,6 +72,7 @@ pub mod queue;
 pub mod search;
 pub mod stats;
 
+pub use ara_star::{AnytimeResult, Budget, EpsilonSchedule, Iteration, MAX_ITERATIONS, Stop, ara_star};
 pub use astar::{astar, dijkstra, weighted_astar};
 pub use bfs::bfs;
 pub use dfs::dfs;

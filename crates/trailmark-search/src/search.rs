@@ -73,6 +73,13 @@ pub(crate) struct Query {
     clock: std::time::Instant,
 }
 
+impl Query {
+    /// Time since the query began.
+    pub fn elapsed(&self) -> std::time::Duration {
+        self.clock.elapsed()
+    }
+}
+
 /// Per-slot search state, as parallel arrays: the stamp test that rejects most successors
 /// reads 4 bytes a node, so the stamps of a node's neighbourhood share few cache lines
 /// (measured 20% faster than one 16-byte record per node on 512 x 512 mazes).
@@ -243,6 +250,20 @@ impl<I> Search<I> {
         let (open, closed) = (self.open_stamp(), self.closed_stamp());
         self.nodes.reach(s, 0.0, s, open);
         Ok(Query { start: s, goal: t, open, closed, clock })
+    }
+
+    /// Makes room for a query that will use `generations` generations (one per iteration of an
+    /// anytime search): clears the stamps now if they would run out during the query.
+    pub(crate) fn reserve_generations(&mut self, generations: usize) {
+        if usize::from(self.generation) + generations >= usize::from(Stamp::MAX / 2 - 1) {
+            self.nodes.stamp.fill(0);
+            self.generation = 0;
+        }
+    }
+
+    /// Moves to the next generation within a query (see [`Search::reserve_generations`]).
+    pub(crate) fn next_generation(&mut self) {
+        self.generation += 1;
     }
 
     /// Ends a query: the path to `found`, if any, and the statistics with the elapsed time.

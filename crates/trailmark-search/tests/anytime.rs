@@ -1,0 +1,157 @@
+//! ARA* against A*: on random grids with cell costs, every iteration's path costs at most ε
+//! (and at most its proven bound) times the optimum, costs never rise, and the last iteration
+//! at ε = 1 finds the optimum; unreachable goals and budgets end the search cleanly.
+
+use std::ops::ControlFlow;
+
+use proptest::prelude::*;
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::Successors;
+use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+use trailmark_graph::GridGraph;
+use trailmark_search::{Budget, EpsilonSchedule, Search, SearchError, Stop, ara_star, astar};
+
+fn grid_world() -> impl Strategy<Value = (Grid, Connectivity, Cell, Cell)> {
+    (2u32..16, 2u32..16, any::<bool>()).prop_flat_map(|(w, h, eight)| {
+        let n = (w * h) as usize;
+        (prop::collection::vec(prop::option::weighted(0.75, 1.0f64..5.0), n), (0..w, 0..h), (0..w, 0..h))
+            .prop_map(move |(costs, s, t)| {
+                let costs = costs.into_iter().map(|c| c.unwrap_or(f64::INFINITY)).collect();
+                let mut grid = Grid::from_costs(w as usize, h as usize, costs).expect("valid costs");
+                let (start, goal) = (Cell::new(s.0, s.1), Cell::new(t.0, t.1));
+                grid.set_cost(start, 1.0).expect("inside");
+                grid.set_cost(goal, 1.0).expect("inside");
+                (grid, if eight { Connectivity::Eight } else { Connectivity::Four }, start, goal)
+            })
+    })
+}
+
+fn walk_cost(graph: &GridGraph, nodes: &[Cell]) -> Option<Cost> {
+    let mut total = 0.0;
+    for pair in nodes.windows(2) {
+        let mut best = f64::INFINITY;
+        graph.for_each_successor(pair[0], |n, c| {
+            if n == pair[1] {
+                best = best.min(c);
+            }
+        });
+        total += best;
+    }
+    total.is_finite().then_some(total)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn ara_star_iterations_stay_within_epsilon_and_end_optimal(
+        (grid, connectivity, start, goal) in grid_world(),
+        initial in 1.0f64..5.0,
+        step in 0.1f64..2.0,
+    ) {
+        let graph = GridGraph::new(&grid, connectivity);
+        let h = graph.heuristic(GridHeuristic::for_connectivity(connectivity), goal);
+        let optimum = astar(&graph, start, goal, h).unwrap().cost();
+        let schedule = EpsilonSchedule::new(initial, step);
+        let found = ara_star(&graph, start, goal, h, schedule, Budget::unlimited()).unwrap();
+        match optimum {
+            None => {
+                prop_assert_eq!(found.stop, Stop::Unreachable);
+                prop_assert!(found.path.is_none());
+                prop_assert_eq!(found.iterations.len(), 1);
+            }
+            Some(opt) => {
+                prop_assert_eq!(found.stop, Stop::Optimal);
+                let tol = 1e-9 * opt.max(1.0);
+                let mut last = f64::INFINITY;
+                for it in &found.iterations {
+                    let cost = it.cost.unwrap();
+                    prop_assert!(cost <= it.epsilon * opt + tol, "cost {} at epsilon {} > {} x optimum", cost, it.epsilon, it.epsilon);
+                    prop_assert!(cost <= it.bound * opt + tol, "cost {} above bound {} x {}", cost, it.bound, opt);
+                    prop_assert!(it.bound <= it.epsilon && it.bound >= 1.0);
+                    prop_assert!(cost <= last + tol);
+                    last = cost;
+                }
+                prop_assert!((found.cost().unwrap() - opt).abs() <= tol, "final {:?} optimum {}", found.cost(), opt);
+                let path = found.path.unwrap();
+                prop_assert_eq!((path.start(), path.goal()), (Some(start), Some(goal)));
+                prop_assert!((walk_cost(&graph, &path.nodes).unwrap() - path.cost).abs() <= tol);
+            }
+        }
+    }
+}
+
+/// The first solution comes from the most inflated search and takes the fewest expansions; the
+/// search reuses its open list, so the iterations together expand less than separate weighted
+/// searches would.
+#[test]
+fn iterations_reuse_effort_on_an_open_map() {
+    let grid = trailmark_core::generate::random(200, 200, 0.25, 7).unwrap();
+    let graph = GridGraph::new(&grid, Connectivity::Eight);
+    let cells: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
+    let (start, goal) = (cells[0], cells[cells.len() - 1]);
+    let h = graph.heuristic(GridHeuristic::Octile, goal);
+    let schedule = EpsilonSchedule::new(3.0, 0.5);
+    let found = ara_star(&graph, start, goal, h, schedule, Budget::unlimited()).unwrap();
+    let first = &found.iterations[0];
+    let optimal = astar(&graph, start, goal, h).unwrap();
+    assert!(
+        first.expansions * 5 < optimal.stats.expansions,
+        "{} vs {}",
+        first.expansions,
+        optimal.stats.expansions
+    );
+    let separate: u64 = found
+        .iterations
+        .iter()
+        .map(|it| {
+            trailmark_search::weighted_astar(&graph, start, goal, h, it.epsilon).unwrap().stats.expansions
+        })
+        .sum();
+    assert!(found.stats.expansions < separate, "{} vs {}", found.stats.expansions, separate);
+    assert_eq!(found.cost(), optimal.cost());
+}
+
+#[test]
+fn budgets_and_callers_stop_the_search() {
+    let grid = trailmark_core::generate::random(80, 80, 0.3, 11).unwrap();
+    let graph = GridGraph::new(&grid, Connectivity::Eight);
+    let cells: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
+    let (start, goal) = (cells[0], cells[cells.len() - 1]);
+    let h = graph.heuristic(GridHeuristic::Octile, goal);
+    let schedule = EpsilonSchedule::default();
+    let unlimited = ara_star(&graph, start, goal, h, schedule, Budget::unlimited()).unwrap();
+    assert!(unlimited.iterations.len() >= 2, "this map needs more than one iteration");
+
+    let tight = Budget { time: None, expansions: Some(1) };
+    let found = ara_star(&graph, start, goal, h, schedule, tight).unwrap();
+    assert_eq!(found.stop, Stop::ExpansionLimit);
+    assert!(found.path.is_none() && found.iterations.is_empty());
+
+    let mut seen = Vec::new();
+    let found = Search::new()
+        .ara_star(&graph, start, goal, h, schedule, Budget::unlimited(), |it| {
+            seen.push(it.epsilon);
+            ControlFlow::Break(())
+        })
+        .unwrap();
+    assert_eq!((found.stop, seen), (Stop::Caller, vec![3.0]));
+    assert!(found.cost().is_some() && found.bound() == Some(found.iterations[0].bound));
+
+    let zero_time = Budget { time: Some(std::time::Duration::ZERO), expansions: None };
+    assert_eq!(ara_star(&graph, start, goal, h, schedule, zero_time).unwrap().stop, Stop::TimeLimit);
+}
+
+#[test]
+fn invalid_schedules_are_errors() {
+    let graph = GridGraph::new(&Grid::new(3, 3).unwrap(), Connectivity::Four);
+    let h = |_: Cell| 0.0;
+    let (s, t) = (Cell::new(0, 0), Cell::new(2, 2));
+    for (initial, step) in
+        [(0.5, 0.5), (f64::NAN, 0.5), (3.0, 0.0), (3.0, -1.0), (f64::INFINITY, 1.0), (3.0, 1e-9)]
+    {
+        let schedule = EpsilonSchedule::new(initial, step);
+        let err = ara_star(&graph, s, t, h, schedule, Budget::unlimited()).unwrap_err();
+        assert!(matches!(err, SearchError::InvalidEpsilon { .. }), "{initial} {step}: {err:?}");
+    }
+}

@@ -237,7 +237,7 @@ impl<I> Search<I> {
                     break;
                 }
                 // The expansion count is checked every time, the clock every 256 expansions.
-                let clock = if stats.expansions % 256 == 0 { query.elapsed() } else { Duration::ZERO };
+                let clock = if stats.expansions.is_multiple_of(256) { query.elapsed() } else { Duration::ZERO };
                 if let Some(why) = budget.spent(clock, stats.expansions) {
                     out_of_budget = Some(why);
                     break;

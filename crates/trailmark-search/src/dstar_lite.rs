@@ -69,7 +69,7 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        Ok(DStarLite { planner: Planner::new(Direction::Backward, graph, start, goal, heuristic)? })
+        Ok(DStarLite { planner: Planner::new(Direction::Backward, graph, start, goal, heuristic, None)? })
     }
 
     /// Expands nodes until the cost from the start is known: the first search, or the repair

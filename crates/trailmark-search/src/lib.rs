@@ -59,6 +59,7 @@
 
 #![deny(missing_docs)]
 
+mod ad_star;
 mod ara_star;
 mod astar;
 mod bfs;
@@ -72,6 +73,7 @@ pub mod queue;
 pub mod search;
 pub mod stats;
 
+pub use ad_star::{AdStar, DEFAULT_RAISE_THRESHOLD};
 pub use ara_star::{AnytimeResult, Budget, EpsilonSchedule, Iteration, MAX_ITERATIONS, Stop, ara_star};
 pub use astar::{astar, dijkstra, weighted_astar};
 pub use bfs::bfs;

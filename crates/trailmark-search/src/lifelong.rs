@@ -113,6 +113,16 @@ pub(crate) struct Lifelong<N: Debug> {
     pub totals: SearchStats,
     /// The first invalid edge cost met since the last report.
     fault: Option<SearchError<N>>,
+    /// The heuristic inflation of overconsistent keys (AD*); 1 for LPA* and D* Lite.
+    pub epsilon: f64,
+    /// Whether nodes expanded in an iteration are closed until the next (AD*): an inconsistent
+    /// closed node waits in `incons` instead of the queue.
+    anytime: bool,
+    /// `closed[s] == iteration` when `s` was expanded (overconsistent) in this iteration.
+    closed: Vec<u32>,
+    iteration: u32,
+    /// Closed nodes made inconsistent in this iteration (may repeat).
+    incons: Vec<u32>,
 }
 
 /// Whether `cost` is a valid edge cost for lifelong planning: positive, possibly infinite (no
@@ -155,6 +165,11 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             stats: SearchStats::default(),
             totals: SearchStats::default(),
             fault: None,
+            epsilon: 1.0,
+            anytime: false,
+            closed: Vec::new(),
+            iteration: 1,
+            incons: Vec::new(),
         };
         search.fit(graph)?;
         search.source = graph.index_of(source);
@@ -176,7 +191,36 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             self.rhs.resize(bound, f64::INFINITY);
             self.queue.reserve_items(bound);
         }
+        if self.anytime && self.closed.len() < bound {
+            self.closed.resize(bound, 0);
+        }
         Ok(())
+    }
+
+    /// Turns on the anytime behaviour of AD* (closed lists per iteration, inflated keys).
+    pub fn make_anytime(&mut self, epsilon: f64) {
+        self.anytime = true;
+        self.epsilon = epsilon;
+        self.closed.resize(self.g.len(), 0);
+    }
+
+    /// Starts a new iteration (AD*): nothing is closed any more, the inconsistent nodes held
+    /// back join the queue, and every queued key is recomputed (the inflation or the start may
+    /// have changed).
+    pub fn next_iteration<G>(&mut self, graph: &G, h: &mut impl FnMut(N) -> Cost)
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.iteration += 1;
+        let mut slots: Vec<usize> = self.queue.iter().map(|(s, _)| s).collect();
+        slots.extend(self.incons.drain(..).map(|s| s as usize));
+        self.queue.clear();
+        for s in slots {
+            if self.g[s] != self.rhs[s] {
+                let key = QKey::new(self.key(graph, s, h));
+                self.queue.push(s, key);
+            }
+        }
     }
 
     /// The slot of a node named by the user, or an error if it names nothing.
@@ -209,7 +253,9 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
 
     /// Bytes held by the state and the queue.
     pub fn memory_bytes(&self) -> usize {
-        (self.g.capacity() + self.rhs.capacity()) * 8 + self.queue.memory_bytes()
+        (self.g.capacity() + self.rhs.capacity()) * 8
+            + (self.closed.capacity() + self.incons.capacity()) * 4
+            + self.queue.memory_bytes()
     }
 
     /// Takes the first fault met since the last call.
@@ -231,11 +277,15 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        let m = self.g[slot].min(self.rhs[slot]);
+        // `[min(g, rhs) + h; min(g, rhs)]`, with AD*'s inflation of overconsistent nodes
+        // (`[rhs + epsilon h; rhs]`), which is the same key when epsilon is 1.
+        let (g, rhs) = (self.g[slot], self.rhs[slot]);
+        let m = g.min(rhs);
         if m == f64::INFINITY {
             return Key::new(m, m);
         }
-        Key::new(m + h(graph.node_at(slot)), m)
+        let h = h(graph.node_at(slot));
+        if g > rhs { Key::new(rhs + self.epsilon * h, rhs) } else { Key::new(g + h, g) }
     }
 
     /// Queues `slot` with its current key when it is inconsistent, takes it out otherwise.
@@ -244,7 +294,11 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        if self.g[slot] != self.rhs[slot] {
+        if self.anytime && self.closed[slot] == self.iteration {
+            if self.g[slot] != self.rhs[slot] {
+                self.incons.push(slot as u32);
+            }
+        } else if self.g[slot] != self.rhs[slot] {
             let key = QKey::new(self.key(graph, slot, h));
             match self.queue.push(slot, key) {
                 None => self.stats.pushes += 1,
@@ -363,14 +417,18 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     }
 
     /// The repair loop: expands inconsistent nodes in key order until `target` is consistent and
-    /// no queued key is below its key. `h` gives the heuristic part of a node's key.
+    /// no queued key is below its key. `h` gives the heuristic part of a node's key. Before each
+    /// expansion `interrupt(expansions so far in this call)` may stop the loop early, leaving a
+    /// valid state to continue from; returns whether the loop ran to its end.
     pub fn compute<G>(
         &mut self,
         graph: &G,
         target: usize,
         h: &mut impl FnMut(N) -> Cost,
         trace: &mut impl FnMut(Expansion<N>),
-    ) where
+        interrupt: &mut impl FnMut(u64) -> bool,
+    ) -> bool
+    where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         while let Some((u, k_old)) = self.queue.peek() {
@@ -385,6 +443,9 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
                 self.stats.decreases += 1;
                 continue;
             }
+            if interrupt(self.stats.expansions) {
+                return false;
+            }
             self.queue.pop();
             self.stats.expansions += 1;
             let kind = if self.g[u] > self.rhs[u] {
@@ -397,6 +458,9 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
                 Consistency::Overconsistent => {
                     let gu = self.rhs[u];
                     self.g[u] = gu;
+                    if self.anytime {
+                        self.closed[u] = self.iteration;
+                    }
                     self.each_dependent(graph, u, |this, s, c| {
                         if s != this.source && c + gu < this.rhs[s] {
                             this.rhs[s] = c + gu;
@@ -417,6 +481,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
                 }
             }
         }
+        true
     }
 
     /// The path from `target` to the source along the best supports (`argmin c + g`), in the
@@ -523,13 +588,24 @@ where
     N: Copy + Eq + std::hash::Hash + Debug,
     H: FnMut(N, N) -> Cost,
 {
-    pub fn new<G>(dir: Direction, graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
+    /// A planner; `anytime` is AD*'s initial inflation (`None` for LPA* and D* Lite).
+    pub fn new<G>(
+        dir: Direction,
+        graph: &G,
+        start: N,
+        goal: N,
+        heuristic: H,
+        anytime: Option<f64>,
+    ) -> Result<Self, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         check_endpoints(graph, start, goal)?;
         let source = if dir == Direction::Backward { goal } else { start };
-        let search = Lifelong::new(dir, graph, source)?;
+        let mut search = Lifelong::new(dir, graph, source)?;
+        if let Some(epsilon) = anytime {
+            search.make_anytime(epsilon);
+        }
         let (start_slot, goal_slot) = (graph.index_of(start), graph.index_of(goal));
         let mut planner = Planner {
             search,
@@ -574,7 +650,7 @@ where
                 0.0
             }
         };
-        if backward && *last != *start {
+        if backward && !search.anytime && *last != *start {
             *k_m += estimate(*last, *start);
             *last = *start;
         }
@@ -597,11 +673,45 @@ where
         let target = self.target();
         {
             let (search, mut h) = self.keyed();
-            search.compute(graph, target, &mut h, &mut trace);
+            search.compute(graph, target, &mut h, &mut trace, &mut |_| false);
         }
         let stats = self.search.close_call(clock.elapsed());
         self.report()?;
         Ok(stats)
+    }
+
+    /// AD*: one pass of the repair loop at the current inflation, from the current start,
+    /// stopped early when `interrupt(expansions)` says so. Returns whether the pass completed,
+    /// and the pass's statistics.
+    pub fn compute_interruptible<G>(
+        &mut self,
+        graph: &G,
+        interrupt: &mut impl FnMut(u64) -> bool,
+    ) -> Result<(bool, SearchStats), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let clock = std::time::Instant::now();
+        check_endpoints(graph, self.start, self.goal)?;
+        self.search.fit(graph)?;
+        let target = self.target();
+        let complete = {
+            let (search, mut h) = self.keyed();
+            search.compute(graph, target, &mut h, &mut |_| {}, interrupt)
+        };
+        let stats = self.search.close_call(clock.elapsed());
+        self.report()?;
+        Ok((complete, stats))
+    }
+
+    /// AD*: starts a new iteration at inflation `epsilon` (see [`Lifelong::next_iteration`]).
+    pub fn next_iteration<G>(&mut self, graph: &G, epsilon: f64)
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.search.epsilon = epsilon;
+        let (search, mut h) = self.keyed();
+        search.next_iteration(graph, &mut h);
     }
 
     /// The first fault since the last report, as an error.

@@ -63,7 +63,7 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        Ok(LpaStar { planner: Planner::new(Direction::Forward, graph, start, goal, heuristic)? })
+        Ok(LpaStar { planner: Planner::new(Direction::Forward, graph, start, goal, heuristic, None)? })
     }
 
     /// Expands nodes until the cost to the goal is known: the first search, or the repair

@@ -7,7 +7,7 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
-use trailmark_search::{DStarLite, EdgeChange, LpaStar, SearchError, astar, dijkstra};
+use trailmark_search::{AdStar, Budget, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, SearchError, Stop, astar, dijkstra};
 
 /// Relative tolerance between costs summed in different orders (forward by A*, backward by D*
 /// Lite): the same path, the same edges, rounding may differ in the last bits.
@@ -153,6 +153,68 @@ proptest! {
                         }
                         None => prop_assert!(cost.is_none()),
                     }
+                }
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
+
+    /// AD* after every batch of changes and moves: each iteration's path costs at most epsilon
+    /// times the optimum of the current graph, and the last (epsilon = 1) is optimal. Thresholds
+    /// 0, 5 and never exercise raising epsilon again after changes.
+    #[test]
+    fn ad_star_iterations_are_bounded_and_end_optimal(
+        (grid, connectivity, start, goal, batches) in world(),
+        initial in 1.0f64..4.0,
+        step in 0.25f64..1.5,
+        threshold in prop_oneof![Just(0usize), Just(5), Just(usize::MAX)],
+    ) {
+        let mut graph = GridGraph::new(&grid, connectivity);
+        let schedule = EpsilonSchedule::new(initial, step);
+        let mut planner = AdStar::new(&graph, start, goal, octile, schedule).unwrap().with_raise_threshold(threshold);
+        let mut robot = start;
+        for batch in std::iter::once(&vec![]).chain(&batches) {
+            for change in batch {
+                match *change {
+                    Change::Cell { x, y, cost } => {
+                        let cell = Cell::new(x, y);
+                        graph.set_cost(cell, cost.unwrap_or(f64::INFINITY)).unwrap();
+                        planner.update_nodes(&graph, graph.cells_affected_by(cell)).unwrap();
+                    }
+                    Change::Step(k) => {
+                        let next: Vec<Cell> = graph.neighbours(robot).map(|(c, _)| c).collect();
+                        if let Some(&to) = next.get(k % next.len().max(1)) {
+                            planner.move_start(&graph, to).unwrap();
+                            robot = to;
+                        }
+                    }
+                }
+            }
+            let expected = reference(&graph, robot, goal);
+            let got = planner.improve(&graph, Budget::unlimited());
+            match expected {
+                Err(e) => prop_assert_eq!(got.unwrap_err(), e),
+                Ok(None) => {
+                    let found = got.unwrap();
+                    prop_assert_eq!(found.stop, Stop::Unreachable);
+                    prop_assert!(found.path.is_none());
+                }
+                Ok(Some(opt)) => {
+                    let found = got.unwrap();
+                    prop_assert_eq!(found.stop, Stop::Optimal);
+                    prop_assert!(!found.iterations.is_empty());
+                    for it in &found.iterations {
+                        let cost = it.cost.unwrap();
+                        prop_assert!(cost <= it.epsilon * opt * (1.0 + 1e-9), "cost {} at epsilon {}, optimum {}", cost, it.epsilon, opt);
+                        prop_assert!(cost >= opt * (1.0 - 1e-9));
+                    }
+                    prop_assert!(same_cost(found.cost(), Some(opt)), "AD* {:?}, A* {}", found.cost(), opt);
+                    let path = found.path.unwrap();
+                    prop_assert_eq!((path.start(), path.goal()), (Some(robot), Some(goal)));
+                    prop_assert!(same_cost(walk_cost(&graph, &path.nodes), Some(opt)));
                 }
             }
         }

@@ -1,0 +1,273 @@
+//! AD*: anytime D*, inflated solutions first, improved while time allows, repaired when the
+//! graph changes or the robot moves.
+
+use std::fmt::Debug;
+use std::hash::Hash;
+use std::time::Instant;
+
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
+use trailmark_core::path::Path;
+
+use crate::ara_star::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
+use crate::error::SearchError;
+use crate::lifelong::{Direction, EdgeChange, Planner};
+use crate::stats::SearchStats;
+
+/// Changes (nodes or edges told) from which AD* treats a batch as significant and searches
+/// again from the initial inflation.
+pub const DEFAULT_RAISE_THRESHOLD: usize = 100;
+
+/// Anytime D* (Likhachev, Ferguson, Gordon, Stentz and Thrun, 2005): D* Lite's backward repair
+/// with ARA*'s inflation. Each iteration searches with inflation ε (keys `[rhs + ε h(start, s);
+/// rhs]` for overconsistent nodes, `[g + h; g]` otherwise) and yields a path costing at most ε
+/// times the optimum; the next iteration lowers ε and reuses everything. When the graph changes
+/// the search is repaired; after a significant batch of changes (at least
+/// [`raise_threshold`](Self::with_raise_threshold) nodes or edges) ε goes back up to its initial
+/// value, so a new path comes quickly again.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::{AdStar, Budget, EpsilonSchedule, Stop};
+///
+/// let grid = Grid::from_rows(&["........", ".@@@@@@.", "......@.", ".@@@@.@.", "........"])?;
+/// let mut graph = GridGraph::new(&grid, Connectivity::Eight);
+/// let (start, goal) = (Cell::new(2, 2), Cell::new(7, 4));
+/// let h = graph.heuristic_between(GridHeuristic::Octile);
+/// let mut planner = AdStar::new(&graph, start, goal, h, EpsilonSchedule::new(3.0, 1.0))?;
+/// let found = planner.improve(&graph, Budget::unlimited())?;
+/// assert_eq!(found.stop, Stop::Optimal);
+/// assert_eq!(found.iterations[0].epsilon, 3.0);
+/// let optimal = found.cost().unwrap();
+///
+/// // A wall closes the way the path took; the repair starts again at epsilon = 3.
+/// let wall = Cell::new(5, 3);
+/// graph.set_cost(wall, f64::INFINITY)?;
+/// planner.raise_epsilon();
+/// planner.update_nodes(&graph, graph.cells_affected_by(wall))?;
+/// let repaired = planner.improve(&graph, Budget::unlimited())?;
+/// assert_eq!(repaired.iterations[0].epsilon, 3.0);
+/// assert!(repaired.cost().unwrap() > optimal);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct AdStar<N: Debug, H> {
+    planner: Planner<N, H>,
+    schedule: EpsilonSchedule,
+    /// The inflation of the current (or last) iteration.
+    epsilon: f64,
+    /// An iteration was interrupted by the budget and continues at the next call.
+    in_progress: bool,
+    /// Iterations completed so far.
+    completed: u64,
+    /// Nodes and edges told changed since the last completed iteration.
+    changes: usize,
+    /// The robot moved or the graph changed since the last completed iteration.
+    dirty: bool,
+    /// `changes` from which ε goes back to its initial value.
+    raise_threshold: usize,
+    /// Raise ε at the next iteration whatever the changes.
+    raise: bool,
+}
+
+impl<N, H> AdStar<N, H>
+where
+    N: Copy + Eq + Hash + Debug,
+    H: FnMut(N, N) -> Cost,
+{
+    /// A planner from `start` to `goal` with `heuristic(a, b)` a consistent lower bound on the
+    /// cost from `a` to `b`, and the inflation `schedule`. Errors when an endpoint is not a node
+    /// or the schedule is invalid.
+    pub fn new<G>(
+        graph: &G,
+        start: N,
+        goal: N,
+        heuristic: H,
+        schedule: EpsilonSchedule,
+    ) -> Result<Self, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        schedule.check()?;
+        let planner =
+            Planner::new(Direction::Backward, graph, start, goal, heuristic, Some(schedule.initial))?;
+        Ok(AdStar {
+            planner,
+            schedule,
+            epsilon: schedule.initial,
+            in_progress: false,
+            completed: 0,
+            changes: 0,
+            dirty: true,
+            raise_threshold: DEFAULT_RAISE_THRESHOLD,
+            raise: false,
+        })
+    }
+
+    /// The same planner with another significance threshold: a batch of at least `changes`
+    /// changed nodes or edges (between two completed iterations) restarts from the initial ε.
+    /// `usize::MAX` never restarts on its own.
+    pub fn with_raise_threshold(mut self, changes: usize) -> Self {
+        self.raise_threshold = changes;
+        self
+    }
+
+    /// Makes the next iteration start again from the initial ε, whatever changed.
+    pub fn raise_epsilon(&mut self) {
+        self.raise = true;
+    }
+
+    /// The inflation of the current or last iteration.
+    pub fn epsilon(&self) -> f64 {
+        self.epsilon
+    }
+
+    /// Runs iterations, lowering ε after each, until ε = 1 (the path is optimal), the goal
+    /// proves unreachable, or `budget` (for this call) is spent. An iteration interrupted by the
+    /// budget continues at the next call. Returns the iterations completed in this call and the
+    /// path of the last one, if nothing changed since.
+    pub fn improve<G>(&mut self, graph: &G, budget: Budget) -> Result<AnytimeResult<N>, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let clock = Instant::now();
+        let mut iterations = Vec::new();
+        let mut stats = SearchStats::default();
+        let stop = loop {
+            if !self.in_progress {
+                let significant = self.raise || self.changes >= self.raise_threshold;
+                if self.completed == 0 || (self.dirty && significant) {
+                    self.epsilon = self.schedule.initial;
+                } else if !self.dirty && self.epsilon <= 1.0 {
+                    break Stop::Optimal;
+                } else {
+                    self.epsilon = self.schedule.next(self.epsilon);
+                }
+                self.raise = false;
+                self.planner.next_iteration(graph, self.epsilon);
+                self.in_progress = true;
+            }
+            let spent = stats.expansions;
+            let mut interrupt = |e: u64| {
+                let clock = if e.is_multiple_of(256) { clock.elapsed() } else { std::time::Duration::ZERO };
+                budget.spent(clock, spent + e).is_some()
+            };
+            let (complete, pass) = self.planner.compute_interruptible(graph, &mut interrupt)?;
+            stats.expansions += pass.expansions;
+            stats.pushes += pass.pushes;
+            stats.decreases += pass.decreases;
+            if !complete {
+                break budget.spent(clock.elapsed(), stats.expansions).unwrap_or(Stop::TimeLimit);
+            }
+            self.in_progress = false;
+            self.completed += 1;
+            self.changes = 0;
+            self.dirty = false;
+            let cost = self.planner.cost();
+            iterations.push(Iteration {
+                epsilon: self.epsilon,
+                cost,
+                bound: self.epsilon,
+                expansions: pass.expansions,
+                elapsed: clock.elapsed(),
+            });
+            if cost.is_none() {
+                break Stop::Unreachable;
+            }
+            if self.epsilon <= 1.0 {
+                break Stop::Optimal;
+            }
+            if let Some(why) = budget.spent(clock.elapsed(), stats.expansions) {
+                break why;
+            }
+        };
+        stats.elapsed = clock.elapsed();
+        Ok(AnytimeResult { path: self.path(graph), iterations, stop, stats })
+    }
+
+    /// The cost of the last completed iteration's path, if nothing changed since and the goal is
+    /// reachable. It is at most [`epsilon`](Self::epsilon) times the optimum.
+    pub fn cost(&self) -> Option<Cost> {
+        if self.dirty || self.in_progress {
+            return None;
+        }
+        self.planner.cost()
+    }
+
+    /// The last completed iteration's path from the start to the goal, if nothing changed since.
+    pub fn path<G>(&self, graph: &G) -> Option<Path<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.cost()?;
+        self.planner.path(graph)
+    }
+
+    /// The node the robot should move to next along [`path`](Self::path).
+    pub fn next_step<G>(&self, graph: &G) -> Option<N>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.cost()?;
+        self.planner.next_step(graph)
+    }
+
+    /// Moves the robot to `to`. The next iteration searches from there.
+    pub fn move_start<G>(&mut self, graph: &G, to: N) -> Result<(), SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.move_start(graph, to)?;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Tells the planner that these edges changed cost; see [`DStarLite::update_edges`](crate::DStarLite::update_edges).
+    pub fn update_edges<G>(&mut self, graph: &G, changes: &[EdgeChange<N>]) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.update_edges(graph, changes)?;
+        self.changes += changes.len();
+        self.dirty |= !changes.is_empty();
+        Ok(())
+    }
+
+    /// Tells the planner that edges leaving these nodes changed; see
+    /// [`DStarLite::update_nodes`](crate::DStarLite::update_nodes).
+    pub fn update_nodes<G>(
+        &mut self,
+        graph: &G,
+        nodes: impl IntoIterator<Item = N>,
+    ) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let nodes: Vec<N> = nodes.into_iter().collect();
+        self.planner.update_nodes(graph, nodes.iter().copied())?;
+        self.changes += nodes.len();
+        self.dirty |= !nodes.is_empty();
+        Ok(())
+    }
+
+    /// The robot's current node.
+    pub fn start(&self) -> N {
+        self.planner.start
+    }
+
+    /// The goal.
+    pub fn goal(&self) -> N {
+        self.planner.goal
+    }
+
+    /// Counters summed over every call since the planner was made.
+    pub fn totals(&self) -> SearchStats {
+        self.planner.search.totals
+    }
+
+    /// Bytes held by the planner's state and queue.
+    pub fn memory_bytes(&self) -> usize {
+        self.planner.search.memory_bytes()
+    }
+}

@@ -8,7 +8,7 @@
 //! |---|---|---|
 //! | [`core`] | `trailmark-core` | geometry, costs, graph traits, grids, MovingAI files, JSON, SVG |
 //! | [`graph`] | `trailmark-graph` | builders from a world to a graph (grid graphs) |
-//! | [`search`] | `trailmark-search` | BFS, DFS, Dijkstra, A*, weighted A*, indexed priority queue |
+//! | [`search`] | `trailmark-search` | BFS, DFS, Dijkstra, A*, weighted A*, ARA*; LPA*, D* Lite, AD*; indexed priority queue |
 //! | [`sample`] | `trailmark-sample` | sampling planners (planned) |
 //!
 //! ```
@@ -30,6 +30,7 @@
 
 #![deny(missing_docs)]
 
+pub mod navigate;
 pub mod solve;
 
 pub use trailmark_core as core;
@@ -51,6 +52,7 @@ pub mod prelude {
     pub use trailmark_core::{Cost, Path};
     pub use trailmark_graph::{CornerCutting, GridGraph};
     pub use trailmark_search::{
-        Search, SearchError, SearchResult, astar, bfs, dfs, dijkstra, weighted_astar,
+        AdStar, Budget, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult,
+        ara_star, astar, bfs, dfs, dijkstra, weighted_astar,
     };
 }

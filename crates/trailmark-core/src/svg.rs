@@ -24,6 +24,8 @@ use crate::grid::{Cell, Grid};
 
 /// The colour of blocked cells.
 const BLOCKED: &str = "#2f3640";
+/// The colour of blocked cells the viewer does not know about.
+const UNKNOWN_BLOCKED: &str = "#b8bec6";
 /// The colour of explored cells.
 const EXPLORED: &str = "#9fd3f5";
 /// The colours of successive paths.
@@ -35,6 +37,7 @@ pub struct GridSvg<'a> {
     grid: &'a Grid,
     cell_size: f64,
     explored: Vec<bool>,
+    unknown: Vec<bool>,
     paths: Vec<Vec<Cell>>,
     start: Option<Cell>,
     goal: Option<Cell>,
@@ -48,6 +51,7 @@ impl<'a> GridSvg<'a> {
             grid,
             cell_size: 4.0,
             explored: Vec::new(),
+            unknown: Vec::new(),
             paths: Vec::new(),
             start: None,
             goal: None,
@@ -98,6 +102,19 @@ impl<'a> GridSvg<'a> {
         self
     }
 
+    /// Marks cells as unknown to whoever moved on the grid (a robot that never sensed them):
+    /// blocked ones are drawn pale instead of dark. Cells outside the grid are ignored.
+    pub fn unknown(mut self, cells: impl IntoIterator<Item = Cell>) -> Self {
+        let w = self.grid.width() as usize;
+        self.unknown.resize(self.grid.len(), false);
+        for c in cells {
+            if self.grid.contains(c) {
+                self.unknown[c.y as usize * w + c.x as usize] = true;
+            }
+        }
+        self
+    }
+
     /// A title, shown as a tooltip and read by screen readers.
     pub fn title(mut self, title: impl Into<String>) -> Self {
         self.title = Some(title.into());
@@ -134,7 +151,10 @@ impl<'a> GridSvg<'a> {
         if !self.explored.is_empty() {
             self.runs(&mut out, |i| self.explored[i].then(|| EXPLORED.to_string()));
         }
-        self.runs(&mut out, |i| (!costs[i].is_finite()).then(|| BLOCKED.to_string()));
+        let unknown = |i: usize| self.unknown.get(i).copied().unwrap_or(false);
+        self.runs(&mut out, |i| {
+            (!costs[i].is_finite()).then(|| if unknown(i) { UNKNOWN_BLOCKED } else { BLOCKED }.to_string())
+        });
         let stroke = (f64::from(w.max(h)) / 150.0).clamp(0.25, 2.0);
         for (k, path) in self.paths.iter().enumerate() {
             let points: Vec<String> =

@@ -140,7 +140,8 @@ where
                 if self.completed == 0 || (self.dirty && significant) {
                     self.epsilon = self.schedule.initial;
                 } else if !self.dirty && self.epsilon <= 1.0 {
-                    break Stop::Optimal;
+                    // Nothing changed since the last, optimal, iteration.
+                    break if self.planner.cost().is_some() { Stop::Optimal } else { Stop::Unreachable };
                 } else {
                     self.epsilon = self.schedule.next(self.epsilon);
                 }
@@ -219,7 +220,7 @@ where
         G: IndexedGraph<Node = N> + ?Sized,
     {
         self.planner.move_start(graph, to)?;
-        self.dirty = true;
+        self.changed();
         Ok(())
     }
 
@@ -230,7 +231,9 @@ where
     {
         self.planner.update_edges(graph, changes)?;
         self.changes += changes.len();
-        self.dirty |= !changes.is_empty();
+        if !changes.is_empty() {
+            self.changed();
+        }
         Ok(())
     }
 
@@ -247,8 +250,18 @@ where
         let nodes: Vec<N> = nodes.into_iter().collect();
         self.planner.update_nodes(graph, nodes.iter().copied())?;
         self.changes += nodes.len();
-        self.dirty |= !nodes.is_empty();
+        if !nodes.is_empty() {
+            self.changed();
+        }
         Ok(())
+    }
+
+    /// After a move or a change: the last path is stale, and an interrupted iteration is not
+    /// resumed (its queued keys were computed for the old start or values); the next iteration
+    /// takes over its work and recomputes every key.
+    fn changed(&mut self) {
+        self.dirty = true;
+        self.in_progress = false;
     }
 
     /// The robot's current node.

@@ -237,7 +237,8 @@ impl<I> Search<I> {
                     break;
                 }
                 // The expansion count is checked every time, the clock every 256 expansions.
-                let clock = if stats.expansions.is_multiple_of(256) { query.elapsed() } else { Duration::ZERO };
+                let clock =
+                    if stats.expansions.is_multiple_of(256) { query.elapsed() } else { Duration::ZERO };
                 if let Some(why) = budget.spent(clock, stats.expansions) {
                     out_of_budget = Some(why);
                     break;
@@ -290,9 +291,14 @@ impl<I> Search<I> {
             let reached = self.nodes.stamp[t] >= first;
             let cost = reached.then(|| self.nodes.g[t]);
             if reached {
+                // The path along parent links costs at most `g(goal)` (a parent may have improved
+                // since); `g(goal)` never rises, but that path may cost more than an earlier one,
+                // which is then kept.
                 let mut path = self.path_to(graph, t);
                 path.cost = path_cost(graph, &path.nodes);
-                best = Some(path);
+                if best.as_ref().is_none_or(|b| path.cost < b.cost) {
+                    best = Some(path);
+                }
             }
             let bound = match cost {
                 None => f64::INFINITY,

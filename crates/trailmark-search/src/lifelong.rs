@@ -57,6 +57,23 @@ impl QKey {
     }
 }
 
+/// Whether the repair loop must go on past a queued `key` for the `target`'s key: when `key`
+/// is below it, or when their primary parts differ by no more than rounding (a relative 1e-9).
+///
+/// The primary part of a key adds `g`, `h` (and `k_m`) in an order that can differ, in the last
+/// bits, from the sums that made the target's `g`. With a tight heuristic (an octile distance
+/// between free cells) a node whose key ties with the target's in exact arithmetic can round
+/// to a key a unit in the last place above or below it, and the queue then orders the tied
+/// nodes by those last bits instead of by their secondary parts. Stopping at the first tied
+/// node could leave an underconsistent node behind it whose stale value a path would follow.
+/// Expanding every near-tie settles them as exact arithmetic would, at the price of the nodes
+/// on the target's own level set that exact arithmetic would have left alone.
+#[inline]
+fn below(key: Key, target: Key) -> bool {
+    let tolerance = if target.primary.is_finite() { 1e-9 * target.primary.max(1.0) } else { 0.0 };
+    key.primary <= target.primary + tolerance
+}
+
 /// What an expansion did to a node's `g`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -294,10 +311,15 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        if self.anytime && self.closed[slot] == self.iteration {
-            if self.g[slot] != self.rhs[slot] {
-                self.incons.push(slot as u32);
-            }
+        let (g, rhs) = (self.g[slot], self.rhs[slot]);
+        if self.anytime && self.closed[slot] == self.iteration && g > rhs && g < f64::INFINITY {
+            // A node expanded in this iteration that can now improve waits for the next one
+            // (that is what bounds an iteration's work, as in ARA*): its `g` is the cost of a
+            // real path meanwhile. Any other inconsistent closed node is queued now: one whose
+            // value rose (underconsistent), or that lost its value (`g` infinite). In exact
+            // arithmetic neither happens to a closed node, but when rounding ties reorder two
+            // keys it does, and deferring it would leave nodes resting on a stale value.
+            self.incons.push(slot as u32);
         } else if self.g[slot] != self.rhs[slot] {
             let key = QKey::new(self.key(graph, slot, h));
             match self.queue.push(slot, key) {
@@ -432,8 +454,8 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         while let Some((u, k_old)) = self.queue.peek() {
-            let target_key = QKey::new(self.key(graph, target, h));
-            if k_old >= target_key && self.rhs[target] == self.g[target] {
+            let target_key = self.key(graph, target, h);
+            if !below(k_old.key(), target_key) && self.rhs[target] == self.g[target] {
                 break;
             }
             let k_new = QKey::new(self.key(graph, u, h));

@@ -1,0 +1,158 @@
+//! The navigation simulation end to end: every planner reaches reachable goals and proves
+//! unreachable ones, never walks through a wall, travels at least the true shortest distance,
+//! and D* Lite does less planning work than A* from scratch on the same run.
+
+use trailmark::core::generate;
+use trailmark::navigate::{NavigateError, Navigation, Outcome, PlannerChoice, Target, navigate};
+use trailmark::prelude::*;
+
+const PLANNERS: [PlannerChoice; 4] = [
+    PlannerChoice::AStar,
+    PlannerChoice::LpaStar,
+    PlannerChoice::DStarLite,
+    PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(200) },
+];
+
+fn far_apart(grid: &Grid) -> (Cell, Cell) {
+    let cells: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
+    (cells[0], cells[cells.len() - 1])
+}
+
+#[test]
+fn every_planner_reaches_the_goal_through_free_cells_only() {
+    for seed in 0..6 {
+        let truth = generate::random(64, 48, 0.25, seed).unwrap();
+        let prior = Grid::new(64, 48).unwrap();
+        let (start, goal) = far_apart(&truth);
+        let graph = GridGraph::new(&truth, Connectivity::Eight);
+        let shortest =
+            astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal)).unwrap().cost();
+        for planner in PLANNERS {
+            for radius in [1, 4] {
+                let config = Navigation { planner, sensor_radius: radius, ..Navigation::default() };
+                let run = navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap();
+                match shortest {
+                    None => assert_eq!(run.outcome, Outcome::Unreachable, "{planner:?} seed {seed}"),
+                    Some(best) => {
+                        assert_eq!(run.outcome, Outcome::Reached, "{planner:?} seed {seed}");
+                        assert!(run.distance >= best - 1e-9, "{} < {best}", run.distance);
+                        assert_eq!(run.trajectory.last(), Some(&goal));
+                    }
+                }
+                for pair in run.trajectory.windows(2) {
+                    assert!(
+                        graph.edge_cost(pair[0], pair[1]).is_some(),
+                        "{planner:?} moved {} -> {}",
+                        pair[0],
+                        pair[1]
+                    );
+                }
+                assert_eq!(run.steps + 1, run.trajectory.len());
+                assert_eq!(run.plans, run.plan_costs.len());
+            }
+        }
+    }
+}
+
+#[test]
+fn a_walled_in_goal_is_proven_unreachable() {
+    let truth =
+        Grid::from_rows(&["..........", "......@@@.", "......@.@.", "......@@@.", ".........."]).unwrap();
+    let prior = Grid::new(10, 5).unwrap();
+    for planner in PLANNERS {
+        let config = Navigation { planner, ..Navigation::default() };
+        let run = navigate(&truth, &prior, Cell::new(0, 2), Target::Cell(Cell::new(7, 2)), &config).unwrap();
+        assert_eq!(run.outcome, Outcome::Unreachable, "{planner:?}");
+        assert!(run.discoveries >= 8, "the robot walked up to the walls and saw them");
+    }
+}
+
+#[test]
+fn greedy_mapping_visits_every_reachable_cell() {
+    let truth = generate::rooms(20, 16, 6, 3).unwrap();
+    let prior = Grid::new(20, 16).unwrap();
+    let (start, _) = far_apart(&truth);
+    let graph = GridGraph::new(&truth, Connectivity::Eight);
+    let mut search = Search::new();
+    search.dijkstra_all(&graph, start).unwrap();
+    let reachable: Vec<Cell> = search.reached(&graph).collect();
+    for planner in [PlannerChoice::AStar, PlannerChoice::DStarLite] {
+        let config = Navigation { planner, ..Navigation::default() };
+        let run = navigate(&truth, &prior, start, Target::Explore, &config).unwrap();
+        assert_eq!(run.outcome, Outcome::Explored, "{planner:?}");
+        for cell in &reachable {
+            assert!(run.trajectory.contains(cell), "{planner:?} never visited {cell}");
+        }
+    }
+}
+
+#[test]
+fn dstar_lite_plans_with_fewer_expansions_than_astar_from_scratch() {
+    let truth = generate::random(128, 128, 0.25, 5).unwrap();
+    let prior = Grid::new(128, 128).unwrap();
+    let (start, goal) = far_apart(&truth);
+    let run = |planner| {
+        let config = Navigation { planner, sensor_radius: 2, ..Navigation::default() };
+        navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap()
+    };
+    let (scratch, incremental) = (run(PlannerChoice::AStar), run(PlannerChoice::DStarLite));
+    assert_eq!(scratch.outcome, Outcome::Reached);
+    assert_eq!(incremental.outcome, Outcome::Reached);
+    assert!(
+        incremental.expansions * 3 < scratch.expansions,
+        "D* Lite {} expansions, A* {}",
+        incremental.expansions,
+        scratch.expansions
+    );
+}
+
+#[test]
+fn a_follower_behind_the_robot_does_not_stop_it() {
+    let truth = generate::random(40, 30, 0.2, 9).unwrap();
+    let prior = Grid::new(40, 30).unwrap();
+    let (start, goal) = far_apart(&truth);
+    for planner in PLANNERS {
+        let config = Navigation { planner, sensor_radius: 2, follower_lag: Some(2), ..Navigation::default() };
+        let run = navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap();
+        assert!(
+            matches!(run.outcome, Outcome::Reached | Outcome::Unreachable),
+            "{planner:?}: {:?}",
+            run.outcome
+        );
+        assert!(run.discoveries > 0);
+    }
+}
+
+#[test]
+fn bad_settings_are_errors() {
+    let truth = Grid::from_rows(&["...", ".@.", "..."]).unwrap();
+    let prior = Grid::new(3, 3).unwrap();
+    let ok = Navigation::default();
+    let go = |prior: &Grid, start, goal, config: &Navigation| {
+        navigate(&truth, prior, start, Target::Cell(goal), config)
+    };
+    let (a, b) = (Cell::new(0, 0), Cell::new(2, 2));
+    assert_eq!(
+        go(&Grid::new(4, 3).unwrap(), a, b, &ok).unwrap_err(),
+        NavigateError::PriorSize { prior: (4, 3), truth: (3, 3) }
+    );
+    assert_eq!(go(&prior, Cell::new(1, 1), b, &ok).unwrap_err(), NavigateError::Start(Cell::new(1, 1)));
+    assert_eq!(go(&prior, a, Cell::new(3, 0), &ok).unwrap_err(), NavigateError::Goal(Cell::new(3, 0)));
+    let blind = Navigation { sensor_radius: 0, ..ok };
+    assert_eq!(go(&prior, a, b, &blind).unwrap_err(), NavigateError::SensorRadius);
+    let bad = Navigation {
+        planner: PlannerChoice::AdStar { epsilon: 0.5, epsilon_step: 0.5, expansions_per_step: None },
+        ..ok
+    };
+    assert!(matches!(go(&prior, a, b, &bad).unwrap_err(), NavigateError::Planner(_)));
+}
+
+#[test]
+fn the_picture_shows_the_trajectory_and_the_unseen_walls() {
+    let truth = generate::random(30, 20, 0.25, 2).unwrap();
+    let prior = Grid::new(30, 20).unwrap();
+    let (start, goal) = far_apart(&truth);
+    let run = navigate(&truth, &prior, start, Target::Cell(goal), &Navigation::default()).unwrap();
+    let svg = run.svg(&truth, Some(goal));
+    assert!(svg.contains("<polyline") && svg.contains("#b8bec6") && svg.contains("#2f3640"));
+}

@@ -25,10 +25,12 @@ use thiserror::Error;
 use trailmark_core::grid::{Cell, Grid, GridError, GridHeuristic};
 use trailmark_core::movingai::{self, ReadError};
 use trailmark_core::problem::{
-    GridWorld, PlannerSpec, Problem, ResultStats, SolveResult, Status, Waypoint, World,
+    GridWorld, IterationRecord, PlannerSpec, Problem, ResultStats, SolveResult, Status, Waypoint, World,
 };
 use trailmark_graph::{CornerCutting, GridGraph};
-use trailmark_search::{Search, SearchError, SearchResult};
+use trailmark_search::{
+    AdStar, AnytimeResult, Budget, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult,
+};
 
 /// Why a problem could not be solved (as opposed to having no path).
 #[derive(Debug, Error)]
@@ -84,12 +86,15 @@ pub enum SolveError {
     },
     /// An optimal planner was given a heuristic that may overestimate.
     #[error(
-        "the {heuristic:?} heuristic overestimates on an 8-connected grid, so \"astar\" would not be optimal; use \"octile\" or \"euclidean\", or \"weighted_astar\""
+        "the {heuristic:?} heuristic overestimates on an 8-connected grid, so the planner would not be optimal; use \"octile\" or \"euclidean\", or \"weighted_astar\""
     )]
     Inadmissible {
         /// The heuristic asked for.
         heuristic: GridHeuristic,
     },
+    /// A time limit that is negative or not a number.
+    #[error("\"time_limit_s\" is {0}; it must be a number of seconds >= 0")]
+    TimeLimit(f64),
     /// The search rejected the query.
     #[error(transparent)]
     Search(#[from] SearchError<Cell>),
@@ -162,18 +167,94 @@ pub fn solve(problem: &Problem, base_dir: impl AsRef<Path>) -> Result<SolveResul
         PlannerSpec::Dfs {} => search.dfs(&graph, start, goal)?,
         PlannerSpec::Dijkstra {} => search.dijkstra(&graph, start, goal)?,
         PlannerSpec::AStar { heuristic } => {
-            let kind = heuristic.unwrap_or(natural);
-            if !kind.is_admissible(world.connectivity) {
-                return Err(SolveError::Inadmissible { heuristic: kind });
-            }
+            let kind = admissible(heuristic, natural, world)?;
             search.astar(&graph, start, goal, graph.heuristic(kind, goal))?
         }
         PlannerSpec::WeightedAStar { weight, heuristic } => {
             let kind = heuristic.unwrap_or(natural);
             search.weighted_astar(&graph, start, goal, graph.heuristic(kind, goal), *weight)?
         }
+        PlannerSpec::LpaStar { heuristic } => {
+            let h = graph.heuristic_between(admissible(heuristic, natural, world)?);
+            let mut planner = LpaStar::new(&graph, start, goal, h)?;
+            let stats = planner.compute_shortest_path(&graph)?;
+            SearchResult { path: planner.path(&graph), stats }
+        }
+        PlannerSpec::DStarLite { heuristic } => {
+            let h = graph.heuristic_between(admissible(heuristic, natural, world)?);
+            let mut planner = DStarLite::new(&graph, start, goal, h)?;
+            let stats = planner.compute_shortest_path(&graph)?;
+            SearchResult { path: planner.path(&graph), stats }
+        }
+        PlannerSpec::AraStar { epsilon, epsilon_step, heuristic, time_limit_s, max_expansions } => {
+            let kind = admissible(heuristic, natural, world)?;
+            let schedule = schedule(*epsilon, *epsilon_step);
+            let budget = budget(*time_limit_s, *max_expansions)?;
+            let found = trailmark_search::ara_star(
+                &graph,
+                start,
+                goal,
+                graph.heuristic(kind, goal),
+                schedule,
+                budget,
+            )?;
+            return Ok(anytime_result_of(&found));
+        }
+        PlannerSpec::AdStar { epsilon, epsilon_step, heuristic, time_limit_s, max_expansions } => {
+            let h = graph.heuristic_between(admissible(heuristic, natural, world)?);
+            let mut planner = AdStar::new(&graph, start, goal, h, schedule(*epsilon, *epsilon_step))?;
+            let found = planner.improve(&graph, budget(*time_limit_s, *max_expansions)?)?;
+            return Ok(anytime_result_of(&found));
+        }
     };
     Ok(result_of(&found))
+}
+
+/// The heuristic asked for (or the natural one), which must be admissible.
+fn admissible(
+    asked: &Option<GridHeuristic>,
+    natural: GridHeuristic,
+    world: &GridWorld,
+) -> Result<GridHeuristic, SolveError> {
+    let kind = asked.unwrap_or(natural);
+    if !kind.is_admissible(world.connectivity) {
+        return Err(SolveError::Inadmissible { heuristic: kind });
+    }
+    Ok(kind)
+}
+
+fn schedule(epsilon: Option<f64>, step: Option<f64>) -> EpsilonSchedule {
+    let default = EpsilonSchedule::default();
+    EpsilonSchedule::new(epsilon.unwrap_or(default.initial), step.unwrap_or(default.step))
+}
+
+fn budget(time_limit_s: Option<f64>, max_expansions: Option<u64>) -> Result<Budget, SolveError> {
+    let time = match time_limit_s {
+        None => None,
+        Some(t) if t.is_finite() && t >= 0.0 => Some(std::time::Duration::from_secs_f64(t)),
+        Some(t) => return Err(SolveError::TimeLimit(t)),
+    };
+    Ok(Budget { time, expansions: max_expansions })
+}
+
+/// The result document of an anytime search: the path of its last iteration, every iteration.
+pub fn anytime_result_of(found: &AnytimeResult<Cell>) -> SolveResult {
+    let mut result = result_of(&SearchResult { path: found.path.clone(), stats: found.stats });
+    result.stats.iterations = Some(
+        found
+            .iterations
+            .iter()
+            .map(|it| IterationRecord {
+                epsilon: it.epsilon,
+                cost: it.cost,
+                bound: it.bound,
+                expansions: it.expansions,
+                time_s: it.elapsed.as_secs_f64(),
+            })
+            .collect(),
+    );
+    result.stats.bound = found.bound();
+    result
 }
 
 /// The result document of a grid search.
@@ -189,6 +270,8 @@ pub fn result_of(found: &SearchResult<Cell>) -> SolveResult {
             decreases: Some(s.decreases),
             reopenings: Some(s.reopenings),
             time_s: s.elapsed.as_secs_f64(),
+            iterations: None,
+            bound: None,
         },
     }
 }

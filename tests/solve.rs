@@ -27,7 +27,55 @@ fn planners() -> Vec<PlannerSpec> {
         PlannerSpec::Dijkstra {},
         PlannerSpec::AStar { heuristic: None },
         PlannerSpec::WeightedAStar { weight: 2.0, heuristic: None },
+        PlannerSpec::LpaStar { heuristic: None },
+        PlannerSpec::DStarLite { heuristic: None },
+        anytime(false, None, None),
+        anytime(true, None, None),
     ]
+}
+
+/// ARA* (`backward` false) or AD* with a schedule and default limits.
+fn anytime(backward: bool, epsilon: Option<f64>, epsilon_step: Option<f64>) -> PlannerSpec {
+    if backward {
+        PlannerSpec::AdStar {
+            epsilon,
+            epsilon_step,
+            heuristic: None,
+            time_limit_s: None,
+            max_expansions: None,
+        }
+    } else {
+        PlannerSpec::AraStar {
+            epsilon,
+            epsilon_step,
+            heuristic: None,
+            time_limit_s: None,
+            max_expansions: None,
+        }
+    }
+}
+
+/// On a static world the anytime planners end at epsilon = 1 with the optimal cost, and report
+/// each iteration within its bound.
+#[test]
+fn anytime_planners_report_their_iterations() {
+    let rows = ["..........", ".@@@@@@@@.", "........@.", ".@@@@@@.@.", "..........", "@@@@@@@@.@"];
+    let optimum = solve(&problem(&rows, vec![3.0, 2.0], vec![8.0, 5.0], PlannerSpec::Dijkstra {}), ".")
+        .unwrap()
+        .cost
+        .unwrap();
+    for backward in [false, true] {
+        let planner = anytime(backward, Some(2.5), Some(0.5));
+        let result = solve(&problem(&rows, vec![3.0, 2.0], vec![8.0, 5.0], planner), ".").unwrap();
+        assert_eq!(result.cost, Some(optimum));
+        let iterations = result.stats.iterations.expect("anytime planners list their iterations");
+        assert_eq!(iterations[0].epsilon, 2.5);
+        assert_eq!(iterations.last().unwrap().bound, 1.0);
+        assert_eq!(result.stats.bound, Some(1.0));
+        for it in iterations {
+            assert!(it.cost.unwrap() <= it.bound * optimum + 1e-9);
+        }
+    }
 }
 
 #[test]
@@ -102,6 +150,37 @@ fn bad_input_gives_typed_errors() {
     assert!(matches!(err(short), SolveError::CostsShape { row: 2, .. }));
     let negative = with(&|w| w.costs = Some(vec![vec![1.0; 4], vec![1.0; 4], vec![1.0, -2.0, 1.0, 1.0]]));
     assert!(matches!(err(negative), SolveError::Grid(_)));
+
+    for backward in [false, true] {
+        let low = anytime(backward, Some(0.5), None);
+        assert!(matches!(err(problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], low)), SolveError::Search(_)));
+        let mut late = anytime(backward, None, None);
+        match &mut late {
+            PlannerSpec::AraStar { time_limit_s, .. } | PlannerSpec::AdStar { time_limit_s, .. } => {
+                *time_limit_s = Some(-1.0)
+            }
+            _ => unreachable!(),
+        }
+        assert!(matches!(
+            err(problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], late)),
+            SolveError::TimeLimit(_)
+        ));
+    }
+}
+
+/// The new planners' names, as a user writes them.
+#[test]
+fn incremental_and_anytime_planners_parse_from_json() {
+    for (json, name) in [
+        (r#"{"name": "lpa_star"}"#, "LpaStar"),
+        (r#"{"name": "dstar_lite"}"#, "DStarLite"),
+        (r#"{"name": "ara_star", "epsilon": 3.0, "epsilon_step": 0.5}"#, "AraStar"),
+        (r#"{"name": "ad_star", "epsilon": 2.0, "max_expansions": 100}"#, "AdStar"),
+    ] {
+        let planner: PlannerSpec = serde_json::from_str(json).unwrap();
+        assert!(format!("{planner:?}").starts_with(name), "{json}");
+    }
+    assert!(serde_json::from_str::<PlannerSpec>(r#"{"name": "ara_star", "weight": 2}"#).is_err());
 }
 
 #[test]
@@ -126,7 +205,7 @@ proptest! {
             prop_oneof![Just(f64::NAN), Just(-1.0), Just(0.0), 0.1f64..5.0], 0..6), 0..6)),
         start in prop::collection::vec(prop_oneof![Just(f64::NAN), -2.0f64..8.0, 0.0f64..8.0], 0..4),
         goal in prop::collection::vec(0u32..8, 2).prop_map(|v| v.iter().map(|&x| f64::from(x)).collect::<Vec<_>>()),
-        which in 0usize..5,
+        which in 0usize..9,
         weight in prop_oneof![Just(f64::NAN), -1.0f64..4.0],
         eight in any::<bool>(),
         cut in any::<bool>(),
@@ -136,7 +215,11 @@ proptest! {
             1 => PlannerSpec::Dfs {},
             2 => PlannerSpec::Dijkstra {},
             3 => PlannerSpec::AStar { heuristic: None },
-            _ => PlannerSpec::WeightedAStar { weight, heuristic: None },
+            4 => PlannerSpec::WeightedAStar { weight, heuristic: None },
+            5 => PlannerSpec::LpaStar { heuristic: None },
+            6 => PlannerSpec::DStarLite { heuristic: None },
+            7 => anytime(false, Some(weight), Some(0.5)),
+            _ => anytime(true, Some(weight), Some(0.5)),
         };
         let world = GridWorld {
             rows: Some(rows),

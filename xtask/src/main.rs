@@ -5,6 +5,8 @@
 //! - `cargo xtask verify movingai DIR` checks every scenario of a MovingAI benchmark folder
 //!   against its published optimal length.
 //! - `cargo xtask solve PROBLEM.json` solves one problem document and prints the result JSON.
+//! - `cargo xtask navigate` runs a robot through partly known terrain with each incremental
+//!   planner and prints a JSON summary.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -12,11 +14,12 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 
 mod bench;
+mod navigate;
 mod solve;
 mod verify;
 
 #[derive(Parser)]
-#[command(name = "cargo xtask", about = "The trailmark harness: bench, verify, solve")]
+#[command(name = "cargo xtask", about = "The trailmark harness: bench, verify, solve, navigate")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -36,6 +39,8 @@ enum Command {
         /// The problem JSON file.
         problem: PathBuf,
     },
+    /// Runs a robot through partly known terrain with each planner; prints a JSON summary.
+    Navigate(navigate::Args),
 }
 
 #[derive(Subcommand)]
@@ -70,6 +75,7 @@ fn main() -> ExitCode {
             verify::movingai(&dir, &algo, every)
         }
         Command::Solve { problem } => solve::run(&problem),
+        Command::Navigate(args) => navigate::run(&args),
     }
 }
 

@@ -112,3 +112,52 @@ fn verify_counts_and_fails_on_a_wrong_optimum() {
     let out = xtask(&["verify", "movingai", "/nonexistent/folder"], &dir);
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn navigate_compares_the_planners_on_one_world() {
+    let dir = scratch("navigate");
+    let out = xtask(&["navigate", "--size", "48x32", "--seed", "4", "--radius", "2", "--svg", "svg"], &dir);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v = json(&out);
+    let runs = v["runs"].as_array().unwrap();
+    let names: Vec<&str> = runs.iter().map(|r| r["planner"].as_str().unwrap()).collect();
+    assert_eq!(names, ["astar", "lpa_star", "dstar_lite", "ad_star"]);
+    for run in runs {
+        assert_eq!(run["outcome"], "reached", "{run}");
+        assert!(run["expansions"].as_u64().unwrap() > 0 && run["planning_time_s"].as_f64().unwrap() > 0.0);
+    }
+    for name in names {
+        let svg = std::fs::read_to_string(dir.join("svg").join(format!("navigate-{name}.svg"))).unwrap();
+        assert!(svg.contains("<polyline"));
+    }
+
+    // A map file, explicit endpoints, greedy mapping.
+    std::fs::write(dir.join("wall.map"), MAP).unwrap();
+    let out = xtask(
+        &["navigate", "--map", "wall.map", "--start", "0,0", "--goal", "3,2", "--planner", "dstar-lite"],
+        &dir,
+    );
+    assert!(out.status.success());
+    assert_eq!(json(&out)["runs"][0]["distance"], 5.0);
+    let out = xtask(
+        &["navigate", "--map", "wall.map", "--start", "0,0", "--explore", "--planner", "astar,dstar-lite"],
+        &dir,
+    );
+    assert_eq!(json(&out)["runs"][1]["outcome"], "explored");
+}
+
+#[test]
+fn navigate_errors_are_documents_with_exit_2() {
+    let dir = scratch("navigate-errors");
+    std::fs::write(dir.join("wall.map"), MAP).unwrap();
+    for args in [
+        vec!["navigate", "--map", "missing.map"],
+        vec!["navigate", "--map", "wall.map", "--start", "1,1", "--goal", "3,2"],
+        vec!["navigate", "--map", "wall.map", "--start", "0,0", "--goal", "3,2", "--radius", "0"],
+        vec!["navigate", "--size", "16x16", "--planner", "ad-star", "--epsilon", "0.5"],
+    ] {
+        let out = xtask(&args, &dir);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(json(&out)["status"], "error", "{args:?}");
+    }
+}

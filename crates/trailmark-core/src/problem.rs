@@ -103,6 +103,74 @@ pub enum PlannerSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         heuristic: Option<GridHeuristic>,
     },
+    /// Lifelong Planning A*: the incremental forward search (on a static world, one search).
+    #[serde(rename = "lpa_star")]
+    LpaStar {
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
+    /// D* Lite: the incremental backward search (on a static world, one search).
+    #[serde(rename = "dstar_lite")]
+    DStarLite {
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
+    /// ARA*: anytime repairing A*, from `epsilon` down to 1 by `epsilon_step`, unless a limit
+    /// stops it first.
+    #[serde(rename = "ara_star")]
+    AraStar {
+        /// The initial inflation (default 3).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        epsilon: Option<f64>,
+        /// The decrease per iteration (default 0.5).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        epsilon_step: Option<f64>,
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+        /// Stop after this many seconds (default: none).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        time_limit_s: Option<f64>,
+        /// Stop after this many expansions (default: none).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        max_expansions: Option<u64>,
+    },
+    /// AD*: anytime D*, as ARA* but searching backward from the goal.
+    #[serde(rename = "ad_star")]
+    AdStar {
+        /// The initial inflation (default 3).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        epsilon: Option<f64>,
+        /// The decrease per iteration (default 0.5).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        epsilon_step: Option<f64>,
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+        /// Stop after this many seconds (default: none).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        time_limit_s: Option<f64>,
+        /// Stop after this many expansions (default: none).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        max_expansions: Option<u64>,
+    },
+}
+
+/// One iteration of an anytime planner, in a result.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct IterationRecord {
+    /// The inflation of the iteration.
+    pub epsilon: f64,
+    /// The path cost after it (`null` while the goal is unreached).
+    pub cost: Option<f64>,
+    /// The proven suboptimality bound of that cost.
+    pub bound: f64,
+    /// Expansions in the iteration.
+    pub expansions: u64,
+    /// Seconds from the start of the search to the end of the iteration.
+    pub time_s: f64,
 }
 
 /// Whether a planner found a path.
@@ -142,6 +210,12 @@ pub struct ResultStats {
     pub reopenings: Option<u64>,
     /// Wall-clock time of the search alone, in seconds (graph construction excluded).
     pub time_s: f64,
+    /// Anytime planners: each iteration, in order.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub iterations: Option<Vec<IterationRecord>>,
+    /// Anytime planners: the proven suboptimality bound of the returned path.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bound: Option<f64>,
 }
 
 /// The result of solving a problem.

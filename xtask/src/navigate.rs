@@ -1,0 +1,278 @@
+//! `cargo xtask navigate`: the unknown-terrain simulation from the command line, every chosen
+//! planner on the same run, a JSON summary on stdout and optional SVGs.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args as ClapArgs, ValueEnum};
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
+use trailmark::core::generate;
+use trailmark::movingai;
+use trailmark::navigate::{Navigation, NavigationReport, PlannerChoice, Target, navigate};
+use trailmark::prelude::*;
+use trailmark::problem::ErrorReport;
+
+/// A generated map kind.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Generator {
+    /// Random obstacles (`--density` of the cells).
+    Random,
+    /// A maze with corridors `--corridor` cells wide.
+    Maze,
+    /// Rooms `--room` cells wide joined by doors.
+    Rooms,
+}
+
+/// A planner name on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PlannerName {
+    /// A* from scratch at every step.
+    Astar,
+    /// LPA*, restarted whenever the robot moves.
+    LpaStar,
+    /// D* Lite.
+    DstarLite,
+    /// AD* (see --epsilon, --epsilon-step, --expansions-per-step).
+    AdStar,
+}
+
+/// The arguments of `cargo xtask navigate`.
+#[derive(Debug, ClapArgs)]
+pub struct Args {
+    /// A MovingAI map file (otherwise a map is generated).
+    #[arg(long)]
+    map: Option<PathBuf>,
+    /// The kind of map to generate without --map.
+    #[arg(long, value_enum, default_value = "random")]
+    generate: Generator,
+    /// Width and height of a generated map.
+    #[arg(long, default_value = "128x128", value_parser = parse_size)]
+    size: (usize, usize),
+    /// The obstacle fraction of a random map.
+    #[arg(long, default_value_t = 0.25)]
+    density: f64,
+    /// Corridor width of a maze.
+    #[arg(long, default_value_t = 4)]
+    corridor: u32,
+    /// Room width of a rooms map.
+    #[arg(long, default_value_t = 16)]
+    room: u32,
+    /// The seed of the generated map and of the chosen start and goal.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// The start cell `x,y` (default: chosen from the seed).
+    #[arg(long, value_parser = parse_cell)]
+    start: Option<Cell>,
+    /// The goal cell `x,y` (default: chosen from the seed, far from the start).
+    #[arg(long, value_parser = parse_cell)]
+    goal: Option<Cell>,
+    /// Greedy mapping instead of a goal: visit every reachable cell.
+    #[arg(long, conflicts_with = "goal")]
+    explore: bool,
+    /// Sensor radius in cells (a square window).
+    #[arg(long, default_value_t = 1)]
+    radius: u32,
+    /// The planners to run, each on the same world (comma-separated).
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "astar,lpa-star,dstar-lite,ad-star")]
+    planner: Vec<PlannerName>,
+    /// AD*'s initial inflation.
+    #[arg(long, default_value_t = 3.0)]
+    epsilon: f64,
+    /// AD*'s inflation decrease per iteration.
+    #[arg(long, default_value_t = 0.5)]
+    epsilon_step: f64,
+    /// AD*'s expansion budget per step (default: improve to epsilon 1 at every step).
+    #[arg(long)]
+    expansions_per_step: Option<u64>,
+    /// An obstacle following the robot this many steps behind.
+    #[arg(long)]
+    follower: Option<u32>,
+    /// Write one SVG per planner into this folder.
+    #[arg(long)]
+    svg: Option<PathBuf>,
+}
+
+fn parse_size(s: &str) -> Result<(usize, usize), String> {
+    let (w, h) = s.split_once('x').ok_or("expected WIDTHxHEIGHT, e.g. 128x128")?;
+    let w = w.parse().map_err(|e| format!("width: {e}"))?;
+    let h = h.parse().map_err(|e| format!("height: {e}"))?;
+    Ok((w, h))
+}
+
+fn parse_cell(s: &str) -> Result<Cell, String> {
+    let (x, y) = s.split_once(',').ok_or("expected x,y, e.g. 3,7")?;
+    let x = x.trim().parse().map_err(|e| format!("x: {e}"))?;
+    let y = y.trim().parse().map_err(|e| format!("y: {e}"))?;
+    Ok(Cell::new(x, y))
+}
+
+/// One planner's run in the summary.
+#[derive(Debug, Serialize)]
+pub struct RunSummary {
+    /// The planner.
+    pub planner: String,
+    /// How the run ended.
+    pub outcome: trailmark::navigate::Outcome,
+    /// Moves made.
+    pub steps: usize,
+    /// Cost of the trajectory.
+    pub distance: f64,
+    /// Plans made.
+    pub plans: usize,
+    /// Expansions over all plans.
+    pub expansions: u64,
+    /// Planning time over all plans, seconds.
+    pub planning_time_s: f64,
+    /// Mean planning time per plan, seconds.
+    pub mean_plan_time_s: f64,
+    /// Longest plan, seconds.
+    pub max_plan_time_s: f64,
+    /// Cells found different from the robot's map.
+    pub discoveries: usize,
+}
+
+impl From<&NavigationReport> for RunSummary {
+    fn from(r: &NavigationReport) -> Self {
+        RunSummary {
+            planner: r.planner.clone(),
+            outcome: r.outcome,
+            steps: r.steps,
+            distance: r.distance,
+            plans: r.plans,
+            expansions: r.expansions,
+            planning_time_s: r.planning_time.as_secs_f64(),
+            mean_plan_time_s: r.mean_plan_time().as_secs_f64(),
+            max_plan_time_s: r.max_plan_time.as_secs_f64(),
+            discoveries: r.discoveries,
+        }
+    }
+}
+
+#[derive(Debug, Serialize)]
+struct Summary {
+    map: String,
+    width: u32,
+    height: u32,
+    start: Cell,
+    goal: Option<Cell>,
+    sensor_radius: u32,
+    follower: Option<u32>,
+    seed: u64,
+    runs: Vec<RunSummary>,
+}
+
+/// A start and a goal in the largest region reached from a few seeded cells, the goal the
+/// farthest of a few seeded candidates from the start.
+pub fn endpoints(grid: &Grid, rng: &mut ChaCha8Rng) -> Option<(Cell, Cell)> {
+    let graph = GridGraph::new(grid, Connectivity::Eight);
+    let passable: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
+    if passable.is_empty() {
+        return None;
+    }
+    let mut search = Search::new();
+    let mut region: Vec<Cell> = Vec::new();
+    for _ in 0..5 {
+        let from = passable[rng.random_range(0..passable.len())];
+        search.dijkstra_all(&graph, from).ok()?;
+        let reached: Vec<Cell> = search.reached(&graph).collect();
+        if reached.len() > region.len() {
+            region = reached;
+        }
+    }
+    let start = region[rng.random_range(0..region.len())];
+    search.dijkstra_all(&graph, start).ok()?;
+    let goal = (0..16).map(|_| region[rng.random_range(0..region.len())]).max_by(|a, b| {
+        let (ca, cb) = (search.cost_to(&graph, *a), search.cost_to(&graph, *b));
+        ca.partial_cmp(&cb).unwrap_or(std::cmp::Ordering::Equal)
+    })?;
+    Some((start, goal))
+}
+
+/// The planner settings for a name.
+pub fn choice(
+    name: PlannerName,
+    epsilon: f64,
+    epsilon_step: f64,
+    expansions_per_step: Option<u64>,
+) -> PlannerChoice {
+    match name {
+        PlannerName::Astar => PlannerChoice::AStar,
+        PlannerName::LpaStar => PlannerChoice::LpaStar,
+        PlannerName::DstarLite => PlannerChoice::DStarLite,
+        PlannerName::AdStar => PlannerChoice::AdStar { epsilon, epsilon_step, expansions_per_step },
+    }
+}
+
+fn simulate(args: &Args) -> Result<String, String> {
+    let (name, truth) = match &args.map {
+        Some(path) => (path.display().to_string(), movingai::read_map(path).map_err(|e| e.to_string())?),
+        None => {
+            let (w, h) = args.size;
+            let grid = match args.generate {
+                Generator::Random => generate::random(w, h, args.density, args.seed),
+                Generator::Maze => generate::maze(w, h, args.corridor, args.seed),
+                Generator::Rooms => generate::rooms(w, h, args.room, args.seed),
+            };
+            (
+                format!("{:?}-{w}x{h}-s{}", args.generate, args.seed).to_lowercase(),
+                grid.map_err(|e| e.to_string())?,
+            )
+        }
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(args.seed);
+    let (start, goal) = match (args.start, args.goal) {
+        (Some(s), Some(g)) => (s, Some(g)),
+        (Some(s), None) if args.explore => (s, None),
+        _ => {
+            let (s, g) = endpoints(&truth, &mut rng).ok_or("the map has no passable cell")?;
+            (args.start.unwrap_or(s), if args.explore { None } else { Some(args.goal.unwrap_or(g)) })
+        }
+    };
+    let prior = Grid::new(truth.width() as usize, truth.height() as usize).map_err(|e| e.to_string())?;
+    let target = goal.map_or(Target::Explore, Target::Cell);
+    let mut runs = Vec::new();
+    for &planner in &args.planner {
+        let config = Navigation {
+            planner: choice(planner, args.epsilon, args.epsilon_step, args.expansions_per_step),
+            sensor_radius: args.radius,
+            follower_lag: args.follower,
+            max_steps: None,
+        };
+        let report = navigate(&truth, &prior, start, target, &config).map_err(|e| e.to_string())?;
+        if let Some(dir) = &args.svg {
+            std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+            let file = dir.join(format!("navigate-{}.svg", report.planner));
+            std::fs::write(&file, report.svg(&truth, goal))
+                .map_err(|e| format!("{}: {e}", file.display()))?;
+        }
+        runs.push(RunSummary::from(&report));
+    }
+    let summary = Summary {
+        map: name,
+        width: truth.width(),
+        height: truth.height(),
+        start,
+        goal,
+        sensor_radius: args.radius,
+        follower: args.follower,
+        seed: args.seed,
+        runs,
+    };
+    serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())
+}
+
+/// Runs the simulation and prints the summary, or an error document with exit code 2.
+pub fn run(args: &Args) -> ExitCode {
+    match simulate(args) {
+        Ok(json) => {
+            println!("{json}");
+            ExitCode::SUCCESS
+        }
+        Err(message) => {
+            println!("{}", serde_json::to_string(&ErrorReport::new(message)).expect("a report serializes"));
+            ExitCode::from(2)
+        }
+    }
+}

@@ -73,8 +73,10 @@ pub enum PlannerChoice {
     LpaStar,
     /// D* Lite.
     DStarLite,
-    /// AD*: each step improves within `expansions_per_step` (after the first path since the last
-    /// change, which it always completes), from `epsilon` down by `epsilon_step`.
+    /// AD*: each step improves within `expansions_per_step` expansions, from `epsilon` down by
+    /// `epsilon_step`; when the budget runs out before a path, the iteration in progress is
+    /// completed anyway (the robot needs a path to move). A budget of 0 makes one iteration per
+    /// step.
     AdStar {
         /// The initial inflation.
         #[serde(default = "default_epsilon")]
@@ -280,6 +282,9 @@ impl Successors for NavGraph {
         if cell == VIRTUAL_GOAL {
             return;
         }
+        if !self.explore {
+            return self.grid.for_each_successor(cell, visit);
+        }
         self.grid.for_each_successor(cell, &mut visit);
         if self.grid.contains(cell) && self.unvisited(self.grid.index_of(cell)) {
             visit(VIRTUAL_GOAL, VIRTUAL_EDGE_COST);
@@ -291,6 +296,11 @@ impl Successors for NavGraph {
         let bound = self.grid.node_bound();
         if index == bound {
             return;
+        }
+        if !self.explore {
+            // Handing `visit` over by value keeps the grid's loop and the search's callback in
+            // one inlined body, as on a bare grid.
+            return self.grid.for_each_successor_index(index, visit);
         }
         self.grid.for_each_successor_index(index, &mut visit);
         if self.unvisited(index) && self.grid.contains(self.grid.node_at(index)) {
@@ -430,15 +440,11 @@ impl<H: FnMut(Cell, Cell) -> Cost + Copy> Driver<H> {
                     }
                     None => state.insert(AdStar::new(graph, robot, target, h, *schedule)?),
                 };
-                let mut found = planner.improve(graph, *budget)?;
+                let found = planner.improve(graph, *budget)?;
                 let mut expansions = found.stats.expansions;
                 // The robot needs a path: finish the iteration the budget cut short.
-                while found.path.is_none() && found.stop != trailmark_search::Stop::Unreachable {
-                    found = planner.improve(graph, Budget::unlimited())?;
-                    expansions += found.stats.expansions;
-                    if found.iterations.is_empty() {
-                        break;
-                    }
+                if found.path.is_none() && found.stop != trailmark_search::Stop::Unreachable {
+                    expansions += planner.improve_once(graph)?.stats.expansions;
                 }
                 let (next, cost) = (planner.next_step(graph), planner.cost());
                 Ok(Plan { next, cost, expansions, epsilon: planner.epsilon() })
@@ -459,18 +465,38 @@ pub fn navigate(
     target: Target,
     config: &Navigation,
 ) -> Result<NavigationReport, NavigateError> {
-    run(truth, prior, start, target, config, |_, _, _| {})
+    let mut reports = run(truth, prior, start, target, config, &[config.planner], |_, _, _, _| {})?;
+    Ok(reports.remove(0))
 }
 
-/// [`navigate`], calling `inspect(robot's graph, robot, plan)` after each plan.
+/// Several planners on one run: `config.planner` drives the robot, and each of `others` plans
+/// at every step from the same place with the same knowledge, so their planning work is
+/// compared on exactly the same sequence of problems. Returns the driver's report first, then
+/// one per other planner (sharing the driver's trajectory, outcome and discoveries).
+pub fn navigate_together(
+    truth: &Grid,
+    prior: &Grid,
+    start: Cell,
+    target: Target,
+    config: &Navigation,
+    others: &[PlannerChoice],
+) -> Result<Vec<NavigationReport>, NavigateError> {
+    let planners: Vec<PlannerChoice> =
+        std::iter::once(config.planner).chain(others.iter().copied()).collect();
+    run(truth, prior, start, target, config, &planners, |_, _, _, _| {})
+}
+
+/// [`navigate_together`], calling `inspect(robot's graph, robot, planner index, plan)` after
+/// each plan.
 fn run(
     truth: &Grid,
     prior: &Grid,
     start: Cell,
     target: Target,
     config: &Navigation,
-    mut inspect: impl FnMut(&NavGraph, Cell, &Plan),
-) -> Result<NavigationReport, NavigateError> {
+    planners: &[PlannerChoice],
+    mut inspect: impl FnMut(&NavGraph, Cell, usize, &Plan),
+) -> Result<Vec<NavigationReport>, NavigateError> {
     if (prior.width(), prior.height()) != (truth.width(), truth.height()) {
         return Err(NavigateError::PriorSize {
             prior: (prior.width(), prior.height()),
@@ -489,7 +515,7 @@ fn run(
         return Err(NavigateError::SensorRadius);
     }
     let scale = truth.min_cost().unwrap_or(1.0).min(prior.min_cost().unwrap_or(1.0)).min(1.0);
-    let mut driver = Driver::new(config.planner)?;
+    let mut drivers = planners.iter().map(|&p| Driver::new(p)).collect::<Result<Vec<_>, _>>()?;
     let explore = target == Target::Explore;
     let mut world = World::new(truth, prior, start, explore);
     let goal_node = match target {
@@ -497,61 +523,82 @@ fn run(
         Target::Explore => VIRTUAL_GOAL,
     };
     let max_steps = config.max_steps.unwrap_or(20 * truth.len());
-    let mut report = NavigationReport {
-        planner: config.planner.name().to_string(),
-        outcome: Outcome::StepLimit,
-        steps: 0,
-        distance: 0.0,
-        plans: 0,
-        expansions: 0,
-        planning_time: Duration::ZERO,
-        max_plan_time: Duration::ZERO,
-        discoveries: 0,
-        trajectory: vec![start],
-        plan_costs: Vec::new(),
-        plan_bounds: Vec::new(),
-        sensed: vec![false; truth.len()],
-    };
+    let mut reports: Vec<NavigationReport> = planners
+        .iter()
+        .map(|p| NavigationReport {
+            planner: p.name().to_string(),
+            outcome: Outcome::StepLimit,
+            steps: 0,
+            distance: 0.0,
+            plans: 0,
+            expansions: 0,
+            planning_time: Duration::ZERO,
+            max_plan_time: Duration::ZERO,
+            discoveries: 0,
+            trajectory: vec![start],
+            plan_costs: Vec::new(),
+            plan_bounds: Vec::new(),
+            sensed: Vec::new(),
+        })
+        .collect();
     let mut robot = start;
     let mut trail: VecDeque<Cell> = VecDeque::new();
-    let mut changed = world.sense(robot, config.sensor_radius, &mut report);
+    let mut changed = world.sense(robot, config.sensor_radius);
+    let mut next = None;
     loop {
         if target == Target::Cell(robot) {
-            report.outcome = Outcome::Reached;
+            reports[0].outcome = Outcome::Reached;
             break;
         }
-        if report.steps >= max_steps {
+        if reports[0].steps >= max_steps {
             break;
         }
-        let clock = Instant::now();
-        let plan = driver.plan(&world.known, robot, goal_node, &changed, estimate(scale))?;
-        let spent = clock.elapsed();
-        report.plans += 1;
-        report.expansions += plan.expansions;
-        report.planning_time += spent;
-        report.max_plan_time = report.max_plan_time.max(spent);
-        report.plan_costs.push(plan.cost.unwrap_or(f64::INFINITY));
-        report.plan_bounds.push(plan.epsilon);
-        inspect(&world.known, robot, &plan);
-        let Some(next) = plan.next.filter(|&n| n != VIRTUAL_GOAL) else {
-            report.outcome = if explore { Outcome::Explored } else { Outcome::Unreachable };
+        for (k, driver) in drivers.iter_mut().enumerate() {
+            let clock = Instant::now();
+            let plan = driver.plan(&world.known, robot, goal_node, &changed, estimate(scale))?;
+            let spent = clock.elapsed();
+            let report = &mut reports[k];
+            report.plans += 1;
+            report.expansions += plan.expansions;
+            report.planning_time += spent;
+            report.max_plan_time = report.max_plan_time.max(spent);
+            report.plan_costs.push(plan.cost.unwrap_or(f64::INFINITY));
+            report.plan_bounds.push(plan.epsilon);
+            inspect(&world.known, robot, k, &plan);
+            if k == 0 {
+                next = plan.next.filter(|&n| n != VIRTUAL_GOAL);
+            }
+        }
+        let Some(to) = next else {
+            reports[0].outcome = if explore { Outcome::Explored } else { Outcome::Unreachable };
             break;
         };
-        report.distance += world.known.grid.edge_cost(robot, next).unwrap_or(f64::INFINITY);
+        reports[0].distance += world.known.grid.edge_cost(robot, to).unwrap_or(f64::INFINITY);
         trail.push_back(robot);
-        robot = next;
-        report.steps += 1;
-        report.trajectory.push(robot);
+        robot = to;
+        reports[0].steps += 1;
+        reports[0].trajectory.push(robot);
         changed = world.visit(robot, explore);
         if let Some(lag) = config.follower_lag {
             let behind = trail.len().checked_sub(lag.max(1) as usize).map(|i| trail[i]);
             world.move_follower(behind.filter(|&c| c != robot && Target::Cell(c) != target));
         }
-        changed.extend(world.sense(robot, config.sensor_radius, &mut report));
+        changed.extend(world.sense(robot, config.sensor_radius));
         changed.sort_unstable_by_key(|c| (c.y, c.x));
         changed.dedup();
     }
-    Ok(report)
+    let (head, rest) = reports.split_first_mut().expect("at least one planner");
+    head.discoveries = world.discoveries;
+    head.sensed = std::mem::take(&mut world.sensed);
+    for other in rest {
+        other.outcome = head.outcome;
+        other.steps = head.steps;
+        other.distance = head.distance;
+        other.discoveries = head.discoveries;
+        other.trajectory = head.trajectory.clone();
+        other.sensed = head.sensed.clone();
+    }
+    Ok(reports)
 }
 
 /// The true world (with the follower), the robot's map, and the cells visited.
@@ -561,6 +608,10 @@ struct World {
     fixed: Grid,
     known: NavGraph,
     follower: Option<Cell>,
+    /// Per cell of the grid (row-major): sensed at least once.
+    sensed: Vec<bool>,
+    /// Cells found to differ from the map.
+    discoveries: usize,
 }
 
 impl World {
@@ -569,22 +620,29 @@ impl World {
         let mut visited = vec![false; grid.node_bound()];
         visited[grid.index_of(start)] = true;
         let known = NavGraph { grid, visited, explore };
-        World { truth: truth.clone(), fixed: truth.clone(), known, follower: None }
+        World {
+            truth: truth.clone(),
+            fixed: truth.clone(),
+            known,
+            follower: None,
+            sensed: vec![false; truth.len()],
+            discoveries: 0,
+        }
     }
 
     /// Senses the window around `robot`: updates the map where it differs from the truth and
     /// returns the cells whose edges changed.
-    fn sense(&mut self, robot: Cell, radius: u32, report: &mut NavigationReport) -> Vec<Cell> {
+    fn sense(&mut self, robot: Cell, radius: u32) -> Vec<Cell> {
         let (w, h) = (self.truth.width(), self.truth.height());
         let mut changed = Vec::new();
         for y in robot.y.saturating_sub(radius)..=(robot.y + radius).min(h - 1) {
             for x in robot.x.saturating_sub(radius)..=(robot.x + radius).min(w - 1) {
                 let cell = Cell::new(x, y);
-                report.sensed[y as usize * w as usize + x as usize] = true;
+                self.sensed[y as usize * w as usize + x as usize] = true;
                 let truth = self.truth.cost(cell).expect("inside the map");
                 if self.known.grid.cost(cell) != Some(truth) {
                     self.known.grid.set_cost(cell, truth).expect("a cost of a valid grid");
-                    report.discoveries += 1;
+                    self.discoveries += 1;
                     changed.extend(self.known.grid.cells_affected_by(cell));
                 }
             }
@@ -633,6 +691,7 @@ mod tests {
             PlannerChoice::DStarLite,
             PlannerChoice::AdStar { epsilon: 2.5, epsilon_step: 0.5, expansions_per_step: Some(30) },
             PlannerChoice::AdStar { epsilon: 2.0, epsilon_step: 1.0, expansions_per_step: None },
+            PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(0) },
         ];
         let mut plans = 0;
         for seed in 0..16u64 {
@@ -650,24 +709,26 @@ mod tests {
                     max_steps: Some(2000),
                 };
                 let mut search = Search::new();
-                let report = run(&truth, &prior, start, target, &config, |graph, robot, plan| {
-                    let to = if target == Target::Explore { VIRTUAL_GOAL } else { goal };
-                    let h = estimate(1.0);
-                    let best = search.astar(graph, robot, to, |c| h(c, to)).unwrap().cost();
-                    match (best, plan.cost) {
-                        (None, None) => {}
-                        (Some(best), Some(cost)) => {
-                            let tol = 1e-9 * best.max(1.0);
-                            assert!(
-                                cost >= best - tol && cost <= plan.epsilon * best + tol,
-                                "{planner:?} at {robot}: {cost} vs {best}"
-                            );
+                let report =
+                    run(&truth, &prior, start, target, &config, &[planner], |graph, robot, _, plan| {
+                        let to = if target == Target::Explore { VIRTUAL_GOAL } else { goal };
+                        let h = estimate(1.0);
+                        let best = search.astar(graph, robot, to, |c| h(c, to)).unwrap().cost();
+                        match (best, plan.cost) {
+                            (None, None) => {}
+                            (Some(best), Some(cost)) => {
+                                let tol = 1e-9 * best.max(1.0);
+                                assert!(
+                                    cost >= best - tol && cost <= plan.epsilon * best + tol,
+                                    "{planner:?} at {robot}: {cost} vs {best}"
+                                );
+                            }
+                            other => panic!("{planner:?} at {robot}: planner and A* disagree: {other:?}"),
                         }
-                        other => panic!("{planner:?} at {robot}: planner and A* disagree: {other:?}"),
-                    }
-                    plans += 1;
-                })
-                .unwrap();
+                        plans += 1;
+                    })
+                    .unwrap()
+                    .remove(0);
                 assert_ne!(report.outcome, Outcome::StepLimit, "{planner:?} seed {seed}");
                 for pair in report.trajectory.windows(2) {
                     assert!(pair[0].x.abs_diff(pair[1].x) <= 1 && pair[0].y.abs_diff(pair[1].y) <= 1);

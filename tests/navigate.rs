@@ -18,6 +18,25 @@ fn far_apart(grid: &Grid) -> (Cell, Cell) {
     (cells[0], cells[cells.len() - 1])
 }
 
+/// A passable cell near the middle and the cell farthest from it in its region.
+fn connected_far_apart(grid: &Grid) -> (Cell, Cell) {
+    let graph = GridGraph::new(grid, Connectivity::Eight);
+    let middle = Cell::new(grid.width() / 2, grid.height() / 2);
+    let start = grid
+        .cells()
+        .filter(|&c| grid.is_passable(c))
+        .min_by_key(|c| c.x.abs_diff(middle.x) + c.y.abs_diff(middle.y))
+        .unwrap();
+    let mut search = Search::new();
+    search.dijkstra_all(&graph, start).unwrap();
+    let reached: Vec<Cell> = search.reached(&graph).collect();
+    let goal = reached
+        .into_iter()
+        .max_by(|a, b| search.cost_to(&graph, *a).partial_cmp(&search.cost_to(&graph, *b)).unwrap())
+        .unwrap();
+    (start, goal)
+}
+
 #[test]
 fn every_planner_reaches_the_goal_through_free_cells_only() {
     for seed in 0..6 {
@@ -155,4 +174,52 @@ fn the_picture_shows_the_trajectory_and_the_unseen_walls() {
     let run = navigate(&truth, &prior, start, Target::Cell(goal), &Navigation::default()).unwrap();
     let svg = run.svg(&truth, Some(goal));
     assert!(svg.contains("<polyline") && svg.contains("#b8bec6") && svg.contains("#2f3640"));
+}
+
+/// On one shared run (D* Lite drives, the others plan from the same cells with the same
+/// knowledge), every optimal planner's plan costs what D* Lite's does at every step, and AD*'s
+/// stays within its epsilon of it.
+#[test]
+fn planners_in_lockstep_agree_at_every_step() {
+    use trailmark::navigate::navigate_together;
+    for (seed, radius, follower) in [(1, 1, None), (2, 3, Some(2)), (3, 5, None), (4, 2, Some(3))] {
+        let truth = generate::random(60, 40, 0.2, seed).unwrap();
+        let prior = Grid::new(60, 40).unwrap();
+        let (start, goal) = connected_far_apart(&truth);
+        let config = Navigation {
+            planner: PlannerChoice::DStarLite,
+            sensor_radius: radius,
+            follower_lag: follower,
+            ..Navigation::default()
+        };
+        let others = [PLANNERS[0], PLANNERS[1], PLANNERS[3]];
+        let reports = navigate_together(&truth, &prior, start, Target::Cell(goal), &config, &others).unwrap();
+        let driver = &reports[0];
+        assert!(
+            driver.plans > 10,
+            "{:?} after {} plans, {:?} -> {:?}",
+            driver.outcome,
+            driver.plans,
+            start,
+            goal
+        );
+        for report in &reports[1..] {
+            assert_eq!(report.plans, driver.plans);
+            assert_eq!(report.trajectory, driver.trajectory);
+            for (step, ((&mine, &theirs), &bound)) in
+                report.plan_costs.iter().zip(&driver.plan_costs).zip(&report.plan_bounds).enumerate()
+            {
+                if theirs.is_finite() {
+                    let tol = 1e-9 * theirs.max(1.0);
+                    assert!(
+                        mine >= theirs - tol && mine <= bound * theirs + tol,
+                        "{} step {step}: {mine} vs {theirs}",
+                        report.planner
+                    );
+                } else {
+                    assert!(mine.is_infinite(), "{} step {step}", report.planner);
+                }
+            }
+        }
+    }
 }

@@ -44,12 +44,27 @@ pub struct Args {
     /// Print the results as JSON on standard output instead of the table.
     #[arg(long)]
     json: bool,
+    /// The sections to run: grid search beside the peers, unknown-terrain navigation
+    /// (incremental planners), anytime planners (comma-separated).
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "grid,navigation,anytime")]
+    sections: Vec<Section>,
+}
+
+/// A section of the benchmark.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Section {
+    /// One-shot grid search beside `pathfinding`.
+    Grid,
+    /// Replanning in unknown terrain: A*, LPA*, D* Lite, AD*.
+    Navigation,
+    /// ARA* and AD*: time to the first solution, cost over time.
+    Anytime,
 }
 
 /// A benchmark suite.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, Serialize)]
 #[serde(rename_all = "snake_case")]
-enum Suite {
+pub enum Suite {
     /// Generated maps with 100 queries each; MovingAI maps with 20 queries each.
     Quick,
     /// Generated maps with 400 queries each; MovingAI maps with 100 queries each.
@@ -143,18 +158,18 @@ impl Planner {
 }
 
 /// A query with its reference cost.
-struct Query {
-    start: Cell,
-    goal: Cell,
-    optimal: f64,
+pub struct Query {
+    pub start: Cell,
+    pub goal: Cell,
+    pub optimal: f64,
 }
 
 /// A map and its queries.
-struct Map {
-    name: String,
-    source: &'static str,
-    grid: Grid,
-    queries: Vec<Query>,
+pub struct Map {
+    pub name: String,
+    pub source: &'static str,
+    pub grid: Grid,
+    pub queries: Vec<Query>,
 }
 
 /// The results of one planner on one map.
@@ -203,6 +218,9 @@ struct Report {
     maps: Vec<MapInfo>,
     results: Vec<Row>,
     ratios: Vec<Ratio>,
+    navigation: Vec<crate::bench_replan::NavRow>,
+    navigation_ratios: Vec<crate::bench_replan::NavRatio>,
+    anytime: Vec<crate::bench_replan::AnytimeRow>,
 }
 
 #[derive(Serialize)]
@@ -328,7 +346,7 @@ fn solve(planner: Planner, graph: &GridGraph, search: &mut Search, q: &Query) ->
     }
 }
 
-fn median(sorted: &[f64]) -> f64 {
+pub fn median(sorted: &[f64]) -> f64 {
     match sorted.len() {
         0 => f64::NAN,
         n if n % 2 == 1 => sorted[n / 2],
@@ -460,7 +478,7 @@ fn geometric_mean(values: impl Iterator<Item = f64>) -> f64 {
 
 fn markdown(report: &Report) -> String {
     let mut out = format!(
-        "# trailmark grid benchmark: suite `{}`, {}\n\nSeed {}, {} round(s) per query (each query's time is its median over rounds), {} core(s). \
+        "# trailmark benchmark: suite `{}`, {}\n\nSeed {}, {} round(s) per query (each query's time is its median over rounds), {} core(s). \
          8-connected grids, no corner cutting, octile heuristic; weighted A* with w = {WEIGHT}.\n\n",
         report.suite.name(),
         report.date,
@@ -503,6 +521,12 @@ fn markdown(report: &Report) -> String {
             r.cost_errors
         ));
     }
+    out.push('\n');
+    out.push_str(&crate::bench_replan::markdown(
+        &report.navigation,
+        &report.navigation_ratios,
+        &report.anytime,
+    ));
     out.push_str("\n## Maps\n\n| map | source | size | passable | queries |\n|---|---|---|---:|---:|\n");
     for m in &report.maps {
         out.push_str(&format!(
@@ -545,9 +569,42 @@ pub fn run(args: &Args) -> ExitCode {
         eprintln!("MovingAI maps skipped: {} not found", dir.display());
     }
     let mut rows = Vec::new();
-    for (i, map) in maps.iter().enumerate() {
-        eprintln!("[{}/{}] {} ({} queries)", i + 1, maps.len(), map.name, map.queries.len());
-        rows.extend(bench_map(map, &planners, args.runs));
+    if args.sections.contains(&Section::Grid) {
+        for (i, map) in maps.iter().enumerate() {
+            eprintln!("[{}/{}] {} ({} queries)", i + 1, maps.len(), map.name, map.queries.len());
+            rows.extend(bench_map(map, &planners, args.runs));
+        }
+    }
+    let movingai_dir = (!args.no_movingai && dir.is_dir()).then_some(dir.as_path());
+    let mut navigation = Vec::new();
+    if args.sections.contains(&Section::Navigation) {
+        let cases = match crate::bench_replan::nav_cases(args.suite, args.seed, movingai_dir) {
+            Ok(cases) => cases,
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        };
+        match crate::bench_replan::bench_navigation(&cases, args.runs) {
+            Ok(r) => navigation = r,
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
+    let mut anytime = Vec::new();
+    let mut cost_time = None;
+    if args.sections.contains(&Section::Anytime) {
+        let large: Vec<&Map> = maps.iter().filter(|m| m.grid.len() >= 512 * 512).collect();
+        let n = match args.suite {
+            Suite::Quick => 10,
+            Suite::Full => 50,
+        };
+        anytime = crate::bench_replan::bench_anytime(&large, n, args.runs);
+        if let Some(maze) = maps.iter().find(|m| m.name.starts_with("maze512")) {
+            cost_time = Some(crate::bench_replan::cost_time_svg(maze));
+        }
     }
     let report = Report {
         suite: args.suite,
@@ -569,12 +626,23 @@ pub fn run(args: &Args) -> ExitCode {
             .collect(),
         ratios: ratios(&rows),
         results: rows,
+        navigation_ratios: crate::bench_replan::nav_ratios(&navigation),
+        navigation,
+        anytime,
     };
     let text = markdown(&report);
     let folder =
         crate::workspace_root().join("target/bench").join(format!("{}-{}", args.suite.name(), report.date));
     let written = std::fs::create_dir_all(&folder)
         .and_then(|()| std::fs::write(folder.join("report.md"), &text))
+        .and_then(|()| match &cost_time {
+            Some(Ok(svg)) => std::fs::write(folder.join("anytime-cost-time.svg"), svg),
+            Some(Err(e)) => {
+                eprintln!("warning: no cost-over-time plot: {e}");
+                Ok(())
+            }
+            None => Ok(()),
+        })
         .and_then(|()| {
             std::fs::write(
                 folder.join("results.json"),

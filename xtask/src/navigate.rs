@@ -10,7 +10,7 @@ use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 use trailmark::core::generate;
 use trailmark::movingai;
-use trailmark::navigate::{Navigation, NavigationReport, PlannerChoice, Target, navigate};
+use trailmark::navigate::{Navigation, NavigationReport, PlannerChoice, Target, navigate, navigate_together};
 use trailmark::prelude::*;
 use trailmark::problem::ErrorReport;
 
@@ -89,9 +89,13 @@ pub struct Args {
     /// An obstacle following the robot this many steps behind.
     #[arg(long)]
     follower: Option<u32>,
-    /// Write one SVG per planner into this folder.
+    /// Write the SVG of each run into this folder.
     #[arg(long)]
     svg: Option<PathBuf>,
+    /// Let each planner drive its own robot. By default the first planner drives and the others
+    /// plan in lockstep from the same cells with the same knowledge (the same problems for all).
+    #[arg(long)]
+    independent: bool,
 }
 
 fn parse_size(s: &str) -> Result<(usize, usize), String> {
@@ -160,6 +164,8 @@ struct Summary {
     sensor_radius: u32,
     follower: Option<u32>,
     seed: u64,
+    /// Whether the planners planned in lockstep along the first planner's trajectory.
+    lockstep: bool,
     runs: Vec<RunSummary>,
 }
 
@@ -232,23 +238,38 @@ fn simulate(args: &Args) -> Result<String, String> {
     };
     let prior = Grid::new(truth.width() as usize, truth.height() as usize).map_err(|e| e.to_string())?;
     let target = goal.map_or(Target::Explore, Target::Cell);
-    let mut runs = Vec::new();
-    for &planner in &args.planner {
-        let config = Navigation {
-            planner: choice(planner, args.epsilon, args.epsilon_step, args.expansions_per_step),
-            sensor_radius: args.radius,
-            follower_lag: args.follower,
-            max_steps: None,
-        };
-        let report = navigate(&truth, &prior, start, target, &config).map_err(|e| e.to_string())?;
-        if let Some(dir) = &args.svg {
-            std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let choices: Vec<PlannerChoice> = args
+        .planner
+        .iter()
+        .map(|&p| choice(p, args.epsilon, args.epsilon_step, args.expansions_per_step))
+        .collect();
+    let config = |planner| Navigation {
+        planner,
+        sensor_radius: args.radius,
+        follower_lag: args.follower,
+        max_steps: None,
+    };
+    let reports: Vec<NavigationReport> = if args.independent {
+        choices
+            .iter()
+            .map(|&p| navigate(&truth, &prior, start, target, &config(p)))
+            .collect::<Result<_, _>>()
+            .map_err(|e| e.to_string())?
+    } else {
+        let (&driver, others) = choices.split_first().ok_or("no planner")?;
+        navigate_together(&truth, &prior, start, target, &config(driver), others)
+            .map_err(|e| e.to_string())?
+    };
+    if let Some(dir) = &args.svg {
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        // In lockstep every planner shares the driver's trajectory: one picture says it all.
+        for report in if args.independent { &reports[..] } else { &reports[..1] } {
             let file = dir.join(format!("navigate-{}.svg", report.planner));
             std::fs::write(&file, report.svg(&truth, goal))
                 .map_err(|e| format!("{}: {e}", file.display()))?;
         }
-        runs.push(RunSummary::from(&report));
     }
+    let runs: Vec<RunSummary> = reports.iter().map(RunSummary::from).collect();
     let summary = Summary {
         map: name,
         width: truth.width(),
@@ -258,6 +279,7 @@ fn simulate(args: &Args) -> Result<String, String> {
         sensor_radius: args.radius,
         follower: args.follower,
         seed: args.seed,
+        lockstep: !args.independent,
         runs,
     };
     serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())

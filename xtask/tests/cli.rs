@@ -116,7 +116,10 @@ fn verify_counts_and_fails_on_a_wrong_optimum() {
 #[test]
 fn navigate_compares_the_planners_on_one_world() {
     let dir = scratch("navigate");
-    let out = xtask(&["navigate", "--size", "48x32", "--seed", "4", "--radius", "2", "--svg", "svg"], &dir);
+    let out = xtask(
+        &["navigate", "--size", "48x32", "--seed", "4", "--radius", "2", "--svg", "svg", "--independent"],
+        &dir,
+    );
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let v = json(&out);
     let runs = v["runs"].as_array().unwrap();
@@ -130,6 +133,12 @@ fn navigate_compares_the_planners_on_one_world() {
         let svg = std::fs::read_to_string(dir.join("svg").join(format!("navigate-{name}.svg"))).unwrap();
         assert!(svg.contains("<polyline"));
     }
+    // In lockstep (the default) the planners share the first one's run.
+    let out = xtask(&["navigate", "--size", "48x32", "--seed", "4", "--radius", "2"], &dir);
+    let v = json(&out);
+    assert_eq!(v["lockstep"], true);
+    let runs = v["runs"].as_array().unwrap();
+    assert!(runs.iter().all(|r| r["steps"] == runs[0]["steps"] && r["distance"] == runs[0]["distance"]));
 
     // A map file, explicit endpoints, greedy mapping.
     std::fs::write(dir.join("wall.map"), MAP).unwrap();

@@ -131,6 +131,28 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
+        self.iterate(graph, budget, usize::MAX)
+    }
+
+    /// Completes one iteration, whatever it takes: the one a budget interrupted, or the next
+    /// (after a change, the first one at the raised or current epsilon). A robot that must move
+    /// now calls this when [`improve`](Self::improve) ran out of budget before any path.
+    pub fn improve_once<G>(&mut self, graph: &G) -> Result<AnytimeResult<N>, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.iterate(graph, Budget::unlimited(), 1)
+    }
+
+    fn iterate<G>(
+        &mut self,
+        graph: &G,
+        budget: Budget,
+        most: usize,
+    ) -> Result<AnytimeResult<N>, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
         let clock = Instant::now();
         let mut iterations = Vec::new();
         let mut stats = SearchStats::default();
@@ -181,6 +203,9 @@ where
             }
             if let Some(why) = budget.spent(clock.elapsed(), stats.expansions) {
                 break why;
+            }
+            if iterations.len() >= most {
+                break Stop::Caller;
             }
         };
         stats.elapsed = clock.elapsed();

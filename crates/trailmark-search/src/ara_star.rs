@@ -100,7 +100,8 @@ pub enum Stop {
     TimeLimit,
     /// The expansion budget ran out.
     ExpansionLimit,
-    /// The caller's callback asked to stop.
+    /// The caller's callback asked to stop (or, for [`AdStar::improve_once`](crate::AdStar::improve_once),
+    /// the one iteration asked for is done).
     Caller,
 }
 

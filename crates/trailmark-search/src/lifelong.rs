@@ -520,29 +520,39 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         let mut seen = HashSet::from([target]);
         let mut at = target;
         while at != self.source {
-            let mut best: Option<(Cost, Cost, usize)> = None;
-            let mut consider = |s: usize, c: Cost| {
-                let via = (c + self.g[s], self.g[s], s);
-                // `via.0 < inf` also rejects invalid (NaN) costs; negative ones never come
-                // this far, since the search refused them.
-                if via.0 < f64::INFINITY
-                    && s != at
-                    && !seen.contains(&s)
-                    && best.is_none_or(|b| (via.0, via.1) < (b.0, b.1))
-                {
-                    best = Some(via);
-                }
-            };
-            match self.dir {
-                Direction::Backward => graph.for_each_successor_index(at, |s, _, c| consider(s, c)),
-                Direction::Forward => graph.for_each_predecessor_index(at, |s, _, c| consider(s, c)),
-            }
-            let (_, _, next) = best?;
+            let next = self.best_support(graph, at, |s| seen.contains(&s))?;
             seen.insert(next);
             slots.push(next);
             at = next;
         }
         Some(slots)
+    }
+
+    /// The neighbour of `at` that `at`'s value flows through: `argmin c + g` over its supports
+    /// (successors backward, predecessors forward), ties to the smaller `g`, skipping those
+    /// `excluded` says; `None` when every support is infinitely far.
+    pub fn best_support<G>(&self, graph: &G, at: usize, excluded: impl Fn(usize) -> bool) -> Option<usize>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let mut best: Option<(Cost, Cost, usize)> = None;
+        let mut consider = |s: usize, c: Cost| {
+            let via = (c + self.g[s], self.g[s], s);
+            // `via.0 < inf` also rejects invalid (NaN) costs; negative ones never come this
+            // far, since the search refused them.
+            if via.0 < f64::INFINITY
+                && s != at
+                && best.is_none_or(|b| (via.0, via.1) < (b.0, b.1))
+                && !excluded(s)
+            {
+                best = Some(via);
+            }
+        };
+        match self.dir {
+            Direction::Backward => graph.for_each_successor_index(at, |s, _, c| consider(s, c)),
+            Direction::Forward => graph.for_each_predecessor_index(at, |s, _, c| consider(s, c)),
+        }
+        best.map(|b| b.2)
     }
 
     /// The walk as a path of nodes from the start to the goal, with `cost`.
@@ -829,7 +839,11 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.cost()?;
-        self.search.walk(graph, self.target())?.get(1).map(|&s| graph.node_at(s))
+        let target = self.target();
+        if target == self.search.source {
+            return None;
+        }
+        self.search.best_support(graph, target, |_| false).map(|s| graph.node_at(s))
     }
 
     pub fn g<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>

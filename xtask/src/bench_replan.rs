@@ -1,0 +1,440 @@
+//! The incremental and anytime sections of `cargo xtask bench`.
+//!
+//! - **Navigation**: a robot crosses a map it does not know (free-space prior), sensing a square
+//!   window around it, replanning at every step with A* from scratch, LPA*, D* Lite and AD*; the
+//!   planning work of each is summed over the run. A "trap" case puts an unseen cup-shaped wall
+//!   around the goal, the change D* Lite handles worst: it is discovered next to the goal, the
+//!   root of D* Lite's search.
+//! - **Anytime**: on the large maps, the time ARA* and AD* take to their first solution at
+//!   epsilon = 3, against the time of an optimal A*; and the cost of each iteration over time.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
+use trailmark::core::generate;
+use trailmark::movingai;
+use trailmark::navigate::{Navigation, NavigationReport, Outcome, PlannerChoice, Target, navigate_together};
+use trailmark::prelude::*;
+use trailmark::search::{AdStar, Budget, EpsilonSchedule};
+
+use crate::bench::{Map, Suite, median};
+
+/// One navigation problem: a map, a start and a goal, a sensor radius.
+pub struct NavCase {
+    name: String,
+    grid: Grid,
+    start: Cell,
+    goal: Cell,
+    radius: u32,
+}
+
+/// One planner's run on a navigation case (time: median over the rounds).
+#[derive(Debug, Clone, Serialize)]
+pub struct NavRow {
+    /// The map.
+    pub map: String,
+    /// The sensor radius.
+    pub radius: u32,
+    /// The planner.
+    pub planner: String,
+    /// How the run ended.
+    pub outcome: Outcome,
+    /// Moves made.
+    pub steps: usize,
+    /// Cost of the trajectory.
+    pub distance: f64,
+    /// Expansions summed over every plan.
+    pub expansions: u64,
+    /// Planning time summed over every plan, milliseconds.
+    pub planning_ms: f64,
+    /// The longest single plan, milliseconds.
+    pub max_plan_ms: f64,
+}
+
+/// D* Lite against A* from scratch on one case.
+#[derive(Debug, Clone, Serialize)]
+pub struct NavRatio {
+    /// The map.
+    pub map: String,
+    /// The sensor radius.
+    pub radius: u32,
+    /// A* expansions / D* Lite expansions.
+    pub expansions: f64,
+    /// A* planning time / D* Lite planning time.
+    pub time: f64,
+    /// A*'s longest plan / D* Lite's longest plan.
+    pub worst_plan: f64,
+}
+
+/// The AD* settings of the navigation runs: one iteration per step from epsilon 3 down.
+const NAV_AD_STAR: PlannerChoice =
+    PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(0) };
+
+/// The planners that plan in lockstep with the driver, D* Lite.
+const NAV_OTHERS: [PlannerChoice; 3] = [PlannerChoice::AStar, PlannerChoice::LpaStar, NAV_AD_STAR];
+
+/// The MovingAI maps of the navigation section: one per kind (game, street, maze).
+const NAV_MOVINGAI: [(&str, &str); 3] =
+    [("dao", "brc202d"), ("street", "Berlin_0_512"), ("mazes", "maze512-4-0")];
+
+/// A map whose goal sits in a cup-shaped wall that opens away from the start: the robot sees
+/// the wall only when it arrives next to the goal.
+fn trap(size: usize) -> (Grid, Cell, Cell) {
+    let mut grid = Grid::new(size, size).expect("a valid size");
+    let (c, r) = (size as u32 * 3 / 4, size as u32 / 8);
+    let goal = Cell::new(c, size as u32 / 2);
+    for d in 0..=2 * r {
+        for cell in [
+            Cell::new(goal.x - r, goal.y - r + d), // the side facing the start
+            Cell::new(goal.x - r + d, goal.y - r), // top
+            Cell::new(goal.x - r + d, goal.y + r), // bottom
+        ] {
+            grid.set_blocked(cell, true).expect("inside");
+        }
+    }
+    (grid, Cell::new(size as u32 / 16, size as u32 / 2), goal)
+}
+
+/// The navigation cases of a suite: generated random maps (25% and 40% obstacles), the trap,
+/// and the MovingAI maps when the folder is there, each with sensor radius 1 and 5.
+pub fn nav_cases(suite: Suite, seed: u64, movingai_dir: Option<&Path>) -> Result<Vec<NavCase>, String> {
+    let size = match suite {
+        Suite::Quick => 256,
+        Suite::Full => 512,
+    };
+    let mut rng = <ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed ^ 0x6e61_7669);
+    let mut maps: Vec<(String, Grid, Cell, Cell)> = Vec::new();
+    for density in [25, 40] {
+        let grid =
+            generate::random(size, size, f64::from(density) / 100.0, seed).map_err(|e| e.to_string())?;
+        let (start, goal) = crate::navigate::endpoints(&grid, &mut rng).ok_or("an empty map")?;
+        maps.push((format!("random{size}-{density}-s{seed}"), grid, start, goal));
+    }
+    let (grid, start, goal) = trap(size);
+    maps.push((format!("trap{size}"), grid, start, goal));
+    if let Some(dir) = movingai_dir {
+        let chosen: &[(&str, &str)] = match suite {
+            Suite::Quick => &NAV_MOVINGAI[..1],
+            Suite::Full => &NAV_MOVINGAI,
+        };
+        for (set, name) in chosen {
+            let path = dir.join("maps").join(set).join(format!("{name}.map"));
+            let grid = movingai::read_map(&path).map_err(|e| e.to_string())?;
+            let (start, goal) = crate::navigate::endpoints(&grid, &mut rng).ok_or("an empty map")?;
+            maps.push((name.to_string(), grid, start, goal));
+        }
+    }
+    let mut cases = Vec::new();
+    for (name, grid, start, goal) in maps {
+        for radius in [1, 5] {
+            cases.push(NavCase { name: name.clone(), grid: grid.clone(), start, goal, radius });
+        }
+    }
+    Ok(cases)
+}
+
+/// Runs every planner on every case, `runs` times (the runs are deterministic but for time).
+/// D* Lite drives the robot; the other planners plan in lockstep from the same cells with the
+/// same knowledge, so all of them solve exactly the same sequence of problems.
+pub fn bench_navigation(cases: &[NavCase], runs: u32) -> Result<Vec<NavRow>, String> {
+    let mut rows = Vec::new();
+    for (i, case) in cases.iter().enumerate() {
+        eprintln!("[nav {}/{}] {} radius {}", i + 1, cases.len(), case.name, case.radius);
+        let prior =
+            Grid::new(case.grid.width() as usize, case.grid.height() as usize).map_err(|e| e.to_string())?;
+        let config = Navigation {
+            planner: PlannerChoice::DStarLite,
+            sensor_radius: case.radius,
+            follower_lag: None,
+            max_steps: None,
+        };
+        let mut all: Vec<Vec<NavigationReport>> = Vec::new();
+        for _ in 0..runs {
+            all.push(
+                navigate_together(
+                    &case.grid,
+                    &prior,
+                    case.start,
+                    Target::Cell(case.goal),
+                    &config,
+                    &NAV_OTHERS,
+                )
+                .map_err(|e| format!("{}: {e}", case.name))?,
+            );
+        }
+        for k in 0..=NAV_OTHERS.len() {
+            let reports: Vec<&NavigationReport> = all.iter().map(|run| &run[k]).collect();
+            let mut times: Vec<f64> = reports.iter().map(|r| r.planning_time.as_secs_f64() * 1e3).collect();
+            times.sort_by(f64::total_cmp);
+            let mut worst: Vec<f64> = reports.iter().map(|r| r.max_plan_time.as_secs_f64() * 1e3).collect();
+            worst.sort_by(f64::total_cmp);
+            let r = reports[0];
+            rows.push(NavRow {
+                map: case.name.clone(),
+                radius: case.radius,
+                planner: r.planner.clone(),
+                outcome: r.outcome,
+                steps: r.steps,
+                distance: r.distance,
+                expansions: r.expansions,
+                planning_ms: median(&times),
+                max_plan_ms: median(&worst),
+            });
+        }
+    }
+    Ok(rows)
+}
+
+/// D* Lite against A* from scratch, per case.
+pub fn nav_ratios(rows: &[NavRow]) -> Vec<NavRatio> {
+    let find = |map: &str, radius: u32, planner: &str| {
+        rows.iter().find(|r| r.map == map && r.radius == radius && r.planner == planner)
+    };
+    rows.iter()
+        .filter(|r| r.planner == "astar")
+        .filter_map(|a| {
+            let d = find(&a.map, a.radius, "dstar_lite")?;
+            Some(NavRatio {
+                map: a.map.clone(),
+                radius: a.radius,
+                expansions: a.expansions as f64 / d.expansions.max(1) as f64,
+                time: a.planning_ms / d.planning_ms.max(1e-9),
+                worst_plan: a.max_plan_ms / d.max_plan_ms.max(1e-9),
+            })
+        })
+        .collect()
+}
+
+/// The anytime planners against optimal A* on one map.
+#[derive(Debug, Clone, Serialize)]
+pub struct AnytimeRow {
+    /// The map.
+    pub map: String,
+    /// Queries measured.
+    pub queries: usize,
+    /// Median time of an optimal A* query, milliseconds.
+    pub astar_ms: f64,
+    /// Median time of ARA*'s first solution (epsilon 3), milliseconds.
+    pub ara_first_ms: f64,
+    /// Median time of ARA* down to epsilon 1, milliseconds.
+    pub ara_optimal_ms: f64,
+    /// Median time of AD*'s first solution (epsilon 3), milliseconds.
+    pub ad_first_ms: f64,
+    /// Mean cost of ARA*'s first solution over the optimum.
+    pub ara_first_cost_ratio: f64,
+    /// A* median time / ARA* first-solution median time.
+    pub ara_speedup: f64,
+    /// A* median time / AD* first-solution median time.
+    pub ad_speedup: f64,
+}
+
+const ANYTIME: EpsilonSchedule = EpsilonSchedule { initial: 3.0, step: 0.5 };
+
+/// ARA* and AD* on the queries of `maps` (the first `n` of each), against A*.
+pub fn bench_anytime(maps: &[&Map], n: usize, runs: u32) -> Vec<AnytimeRow> {
+    let mut rows = Vec::new();
+    for map in maps {
+        eprintln!("[anytime] {}", map.name);
+        let graph = GridGraph::new(&map.grid, Connectivity::Eight);
+        let between = graph.heuristic_between(GridHeuristic::Octile);
+        let mut search = Search::new();
+        let (mut astar_t, mut first_t, mut full_t, mut ad_t, mut ratio) =
+            (vec![], vec![], vec![], vec![], 0.0);
+        let queries: Vec<_> = map.queries.iter().take(n).collect();
+        for q in &queries {
+            let h = graph.heuristic(GridHeuristic::Octile, q.goal);
+            let timed = |f: &mut dyn FnMut() -> f64| {
+                let mut t: Vec<f64> = (0..runs).map(|_| f()).collect();
+                t.sort_by(f64::total_cmp);
+                median(&t)
+            };
+            astar_t.push(timed(&mut || {
+                let found = search.astar(&graph, q.start, q.goal, h).expect("valid query");
+                found.stats.elapsed.as_secs_f64() * 1e3
+            }));
+            let mut first_cost = 0.0;
+            first_t.push(timed(&mut || {
+                let found = search
+                    .ara_star(&graph, q.start, q.goal, h, ANYTIME, Budget::unlimited(), |_| {
+                        std::ops::ControlFlow::Break(())
+                    })
+                    .expect("valid query");
+                first_cost = found.cost().unwrap_or(f64::INFINITY);
+                found.iterations[0].elapsed.as_secs_f64() * 1e3
+            }));
+            ratio += first_cost / q.optimal.max(1e-9);
+            full_t.push(timed(&mut || {
+                let found = search.ara_star(&graph, q.start, q.goal, h, ANYTIME, Budget::unlimited(), |_| {
+                    std::ops::ControlFlow::Continue(())
+                });
+                found.expect("valid query").stats.elapsed.as_secs_f64() * 1e3
+            }));
+            ad_t.push(timed(&mut || {
+                let clock = std::time::Instant::now();
+                let mut planner =
+                    AdStar::new(&graph, q.start, q.goal, between, ANYTIME).expect("valid query");
+                planner.improve_once(&graph).expect("valid query");
+                clock.elapsed().as_secs_f64() * 1e3
+            }));
+        }
+        for v in [&mut astar_t, &mut first_t, &mut full_t, &mut ad_t] {
+            v.sort_by(f64::total_cmp);
+        }
+        let (a, f, d) = (median(&astar_t), median(&first_t), median(&ad_t));
+        rows.push(AnytimeRow {
+            map: map.name.clone(),
+            queries: queries.len(),
+            astar_ms: a,
+            ara_first_ms: f,
+            ara_optimal_ms: median(&full_t),
+            ad_first_ms: d,
+            ara_first_cost_ratio: ratio / queries.len().max(1) as f64,
+            ara_speedup: a / f.max(1e-9),
+            ad_speedup: a / d.max(1e-9),
+        });
+    }
+    rows
+}
+
+/// A plot of path cost against time for ARA* and AD* on the query of `map` with the longest
+/// optimal path, with optimal A* as a point: an SVG document.
+pub fn cost_time_svg(map: &Map) -> Result<String, String> {
+    let q = map.queries.iter().max_by(|a, b| a.optimal.total_cmp(&b.optimal)).ok_or("no query")?;
+    let graph = GridGraph::new(&map.grid, Connectivity::Eight);
+    let h = graph.heuristic(GridHeuristic::Octile, q.goal);
+    let fine = EpsilonSchedule::new(3.0, 0.1);
+    let ara = trailmark::search::ara_star(&graph, q.start, q.goal, h, fine, Budget::unlimited())
+        .map_err(|e| e.to_string())?;
+    let mut planner =
+        AdStar::new(&graph, q.start, q.goal, graph.heuristic_between(GridHeuristic::Octile), fine)
+            .map_err(|e| e.to_string())?;
+    let ad = planner.improve(&graph, Budget::unlimited()).map_err(|e| e.to_string())?;
+    let astar = Search::new().astar(&graph, q.start, q.goal, h).map_err(|e| e.to_string())?;
+    let points = |it: &[trailmark::search::Iteration]| -> Vec<(f64, f64)> {
+        it.iter().filter_map(|i| Some((i.elapsed.as_secs_f64() * 1e3, i.cost?))).collect()
+    };
+    let (ara_pts, ad_pts) = (points(&ara.iterations), points(&ad.iterations));
+    let astar_pt = (astar.stats.elapsed.as_secs_f64() * 1e3, astar.cost().ok_or("unreachable")?);
+    let all: Vec<(f64, f64)> = ara_pts.iter().chain(&ad_pts).chain([&astar_pt]).copied().collect();
+    let t_max = all.iter().map(|p| p.0).fold(0.0, f64::max) * 1.05;
+    let c_min = all.iter().map(|p| p.1).fold(f64::INFINITY, f64::min) * 0.98;
+    let c_max = all.iter().map(|p| p.1).fold(0.0, f64::max) * 1.02;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (720, 420)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                format!("{}: path cost over time (query {} -> {})", map.name, q.start, q.goal),
+                ("sans-serif", 16),
+            )
+            .margin(12)
+            .x_label_area_size(36)
+            .y_label_area_size(56)
+            .build_cartesian_2d(0.0..t_max, c_min..c_max)
+            .map_err(|e| e.to_string())?;
+        chart.configure_mesh().x_desc("time (ms)").y_desc("path cost").draw().map_err(|e| e.to_string())?;
+        let step = |pts: &[(f64, f64)]| -> Vec<(f64, f64)> {
+            let mut out = Vec::new();
+            for (i, &(t, c)) in pts.iter().enumerate() {
+                if i > 0 {
+                    out.push((t, pts[i - 1].1));
+                }
+                out.push((t, c));
+            }
+            if let Some(&(_, c)) = pts.last() {
+                out.push((t_max, c));
+            }
+            out
+        };
+        let ara_colour = RGBColor(225, 48, 108);
+        let ad_colour = RGBColor(22, 160, 133);
+        chart
+            .draw_series(LineSeries::new(step(&ara_pts), ara_colour.stroke_width(2)))
+            .map_err(|e| e.to_string())?
+            .label("ARA* (epsilon 3 down by 0.1)")
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], ara_colour.stroke_width(2)));
+        chart
+            .draw_series(LineSeries::new(step(&ad_pts), ad_colour.stroke_width(2)))
+            .map_err(|e| e.to_string())?
+            .label("AD* (epsilon 3 down by 0.1)")
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], ad_colour.stroke_width(2)));
+        chart
+            .draw_series(std::iter::once(Circle::new(astar_pt, 5, BLACK.filled())))
+            .map_err(|e| e.to_string())?
+            .label("A* (optimal)")
+            .legend(|(x, y)| Circle::new((x + 9, y), 4, BLACK.filled()));
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK)
+            .draw()
+            .map_err(|e| e.to_string())?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}
+
+/// The markdown of the navigation and anytime sections.
+pub fn markdown(nav: &[NavRow], ratios: &[NavRatio], anytime: &[AnytimeRow]) -> String {
+    let mut out = String::new();
+    if !nav.is_empty() {
+        out.push_str("## Unknown-terrain navigation\n\n");
+        out.push_str(
+            "Free-space prior, 8-connected, sensing a square window of the given radius. D* Lite drives the \
+             robot; A*, LPA* (restarted at every step, as the start moves) and AD* (one iteration per step, \
+             epsilon 3 down by 0.5) plan in lockstep from the same cells with the same knowledge. Planning work \
+             summed over the run (time: median over rounds).\n\n",
+        );
+        out.push_str("| map | radius | planner | outcome | steps | distance | expansions | planning ms | worst plan ms |\n");
+        out.push_str("|---|---:|---|---|---:|---:|---:|---:|---:|\n");
+        for r in nav {
+            out.push_str(&format!(
+                "| {} | {} | {} | {:?} | {} | {:.1} | {} | {:.2} | {:.3} |\n",
+                r.map,
+                r.radius,
+                r.planner,
+                r.outcome,
+                r.steps,
+                r.distance,
+                r.expansions,
+                r.planning_ms,
+                r.max_plan_ms
+            ));
+        }
+        out.push_str("\n### D* Lite against A* from scratch (goal: 10x fewer expansions, 5x less time)\n\n");
+        out.push_str("| map | radius | expansions A* / D* Lite | time A* / D* Lite | worst plan A* / D* Lite | goal |\n");
+        out.push_str("|---|---:|---:|---:|---:|---|\n");
+        for r in ratios {
+            let met = if r.expansions >= 10.0 && r.time >= 5.0 { "met" } else { "**not met**" };
+            out.push_str(&format!(
+                "| {} | {} | {:.1}x | {:.1}x | {:.1}x | {met} |\n",
+                r.map, r.radius, r.expansions, r.time, r.worst_plan
+            ));
+        }
+        out.push('\n');
+    }
+    if !anytime.is_empty() {
+        out.push_str("## Anytime planners: time to the first solution (goal: 5x below optimal A*)\n\n");
+        out.push_str("| map | queries | A* ms | ARA* first ms | speedup | first cost / optimal | ARA* to optimal ms | AD* first ms | speedup |\n");
+        out.push_str("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        for r in anytime {
+            out.push_str(&format!(
+                "| {} | {} | {:.2} | {:.2} | {:.1}x | {:.3} | {:.2} | {:.2} | {:.1}x |\n",
+                r.map,
+                r.queries,
+                r.astar_ms,
+                r.ara_first_ms,
+                r.ara_speedup,
+                r.ara_first_cost_ratio,
+                r.ara_optimal_ms,
+                r.ad_first_ms,
+                r.ad_speedup
+            ));
+        }
+        out.push('\n');
+    }
+    out
+}

@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use trailmark::core::generate;
+use trailmark::navigate::{Navigation, PlannerChoice, Target, navigate_together};
 use trailmark::prelude::*;
 use trailmark::svg::GridSvg;
 
@@ -82,5 +83,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .path(&path.nodes);
         write(&format!("search-{name}.svg"), svg.to_svg())?;
     }
+
+    // Navigation in unknown terrain: a robot with a free-space prior and a sensor radius of 3,
+    // driven by D* Lite, with A* from scratch planning along the same trajectory for comparison.
+    let truth = generate::rooms(96, 64, 15, 5)?;
+    let prior = Grid::new(96, 64)?;
+    let (start, goal) = (Cell::new(2, 61), Cell::new(93, 2));
+    let config = Navigation { planner: PlannerChoice::DStarLite, sensor_radius: 3, ..Navigation::default() };
+    let runs =
+        navigate_together(&truth, &prior, start, Target::Cell(goal), &config, &[PlannerChoice::AStar])?;
+    let (dstar, scratch) = (&runs[0], &runs[1]);
+    println!(
+        "navigation: {:?} in {} steps; D* Lite {} expansions, A* from scratch {}",
+        dstar.outcome, dstar.steps, dstar.expansions, scratch.expansions
+    );
+    write("navigate-dstar-lite.svg", dstar.svg(&truth, Some(goal)))?;
     Ok(())
 }

@@ -190,6 +190,9 @@ pub struct NavigationReport {
     /// The suboptimality bound of each plan: 1 for the optimal planners, AD*'s epsilon.
     #[serde(skip)]
     pub plan_bounds: Vec<f64>,
+    /// The expansions of each plan.
+    #[serde(skip)]
+    pub plan_expansions: Vec<u64>,
     /// Whether each cell of the grid (row-major) was ever sensed.
     #[serde(skip)]
     pub sensed: Vec<bool>,
@@ -465,14 +468,15 @@ pub fn navigate(
     target: Target,
     config: &Navigation,
 ) -> Result<NavigationReport, NavigateError> {
-    let mut reports = run(truth, prior, start, target, config, &[config.planner], |_, _, _, _| {})?;
-    Ok(reports.remove(0))
+    run(truth, prior, start, target, config, config.planner, None, |_, _, _| {})
 }
 
-/// Several planners on one run: `config.planner` drives the robot, and each of `others` plans
-/// at every step from the same place with the same knowledge, so their planning work is
-/// compared on exactly the same sequence of problems. Returns the driver's report first, then
-/// one per other planner (sharing the driver's trajectory, outcome and discoveries).
+/// Several planners on one run: `config.planner` drives the robot, then each of `others` is run
+/// along the driver's trajectory, planning at every step from the same cell with the same
+/// knowledge, so their planning work is compared on exactly the same sequence of problems (each
+/// run on its own, so no planner's timing suffers from another's use of the caches). Returns the
+/// driver's report first, then one per other planner (sharing the driver's trajectory, outcome
+/// and discoveries).
 pub fn navigate_together(
     truth: &Grid,
     prior: &Grid,
@@ -481,22 +485,32 @@ pub fn navigate_together(
     config: &Navigation,
     others: &[PlannerChoice],
 ) -> Result<Vec<NavigationReport>, NavigateError> {
-    let planners: Vec<PlannerChoice> =
-        std::iter::once(config.planner).chain(others.iter().copied()).collect();
-    run(truth, prior, start, target, config, &planners, |_, _, _, _| {})
+    let driver = run(truth, prior, start, target, config, config.planner, None, |_, _, _| {})?;
+    let mut reports = Vec::with_capacity(others.len() + 1);
+    for &planner in others {
+        let script = Some(&driver.trajectory[..]);
+        let mut report = run(truth, prior, start, target, config, planner, script, |_, _, _| {})?;
+        report.outcome = driver.outcome;
+        reports.push(report);
+    }
+    reports.insert(0, driver);
+    Ok(reports)
 }
 
-/// [`navigate_together`], calling `inspect(robot's graph, robot, planner index, plan)` after
-/// each plan.
+/// Runs `planner` from `start`. Without a `script` the robot follows the planner; with one it
+/// moves along the script whatever the planner says (the planner still plans at every step), and
+/// the run ends where the script does. `inspect(robot's graph, robot, plan)` sees every plan.
+#[allow(clippy::too_many_arguments)]
 fn run(
     truth: &Grid,
     prior: &Grid,
     start: Cell,
     target: Target,
     config: &Navigation,
-    planners: &[PlannerChoice],
-    mut inspect: impl FnMut(&NavGraph, Cell, usize, &Plan),
-) -> Result<Vec<NavigationReport>, NavigateError> {
+    planner: PlannerChoice,
+    script: Option<&[Cell]>,
+    mut inspect: impl FnMut(&NavGraph, Cell, &Plan),
+) -> Result<NavigationReport, NavigateError> {
     if (prior.width(), prior.height()) != (truth.width(), truth.height()) {
         return Err(NavigateError::PriorSize {
             prior: (prior.width(), prior.height()),
@@ -515,7 +529,7 @@ fn run(
         return Err(NavigateError::SensorRadius);
     }
     let scale = truth.min_cost().unwrap_or(1.0).min(prior.min_cost().unwrap_or(1.0)).min(1.0);
-    let mut drivers = planners.iter().map(|&p| Driver::new(p)).collect::<Result<Vec<_>, _>>()?;
+    let mut driver = Driver::new(planner)?;
     let explore = target == Target::Explore;
     let mut world = World::new(truth, prior, start, explore);
     let goal_node = match target {
@@ -523,61 +537,57 @@ fn run(
         Target::Explore => VIRTUAL_GOAL,
     };
     let max_steps = config.max_steps.unwrap_or(20 * truth.len());
-    let mut reports: Vec<NavigationReport> = planners
-        .iter()
-        .map(|p| NavigationReport {
-            planner: p.name().to_string(),
-            outcome: Outcome::StepLimit,
-            steps: 0,
-            distance: 0.0,
-            plans: 0,
-            expansions: 0,
-            planning_time: Duration::ZERO,
-            max_plan_time: Duration::ZERO,
-            discoveries: 0,
-            trajectory: vec![start],
-            plan_costs: Vec::new(),
-            plan_bounds: Vec::new(),
-            sensed: Vec::new(),
-        })
-        .collect();
+    let mut report = NavigationReport {
+        planner: planner.name().to_string(),
+        outcome: Outcome::StepLimit,
+        steps: 0,
+        distance: 0.0,
+        plans: 0,
+        expansions: 0,
+        planning_time: Duration::ZERO,
+        max_plan_time: Duration::ZERO,
+        discoveries: 0,
+        trajectory: vec![start],
+        plan_costs: Vec::new(),
+        plan_bounds: Vec::new(),
+        plan_expansions: Vec::new(),
+        sensed: Vec::new(),
+    };
     let mut robot = start;
     let mut trail: VecDeque<Cell> = VecDeque::new();
     let mut changed = world.sense(robot, config.sensor_radius);
-    let mut next = None;
     loop {
         if target == Target::Cell(robot) {
-            reports[0].outcome = Outcome::Reached;
+            report.outcome = Outcome::Reached;
             break;
         }
-        if reports[0].steps >= max_steps {
+        if report.steps >= max_steps {
             break;
         }
-        for (k, driver) in drivers.iter_mut().enumerate() {
-            let clock = Instant::now();
-            let plan = driver.plan(&world.known, robot, goal_node, &changed, estimate(scale))?;
-            let spent = clock.elapsed();
-            let report = &mut reports[k];
-            report.plans += 1;
-            report.expansions += plan.expansions;
-            report.planning_time += spent;
-            report.max_plan_time = report.max_plan_time.max(spent);
-            report.plan_costs.push(plan.cost.unwrap_or(f64::INFINITY));
-            report.plan_bounds.push(plan.epsilon);
-            inspect(&world.known, robot, k, &plan);
-            if k == 0 {
-                next = plan.next.filter(|&n| n != VIRTUAL_GOAL);
-            }
-        }
-        let Some(to) = next else {
-            reports[0].outcome = if explore { Outcome::Explored } else { Outcome::Unreachable };
+        let clock = Instant::now();
+        let plan = driver.plan(&world.known, robot, goal_node, &changed, estimate(scale))?;
+        let spent = clock.elapsed();
+        report.plans += 1;
+        report.expansions += plan.expansions;
+        report.planning_time += spent;
+        report.max_plan_time = report.max_plan_time.max(spent);
+        report.plan_costs.push(plan.cost.unwrap_or(f64::INFINITY));
+        report.plan_bounds.push(plan.epsilon);
+        report.plan_expansions.push(plan.expansions);
+        inspect(&world.known, robot, &plan);
+        let next = match script {
+            Some(script) => script.get(report.steps + 1).copied(),
+            None => plan.next.filter(|&n| n != VIRTUAL_GOAL),
+        };
+        let Some(next) = next else {
+            report.outcome = if explore { Outcome::Explored } else { Outcome::Unreachable };
             break;
         };
-        reports[0].distance += world.known.grid.edge_cost(robot, to).unwrap_or(f64::INFINITY);
+        report.distance += world.known.grid.edge_cost(robot, next).unwrap_or(f64::INFINITY);
         trail.push_back(robot);
-        robot = to;
-        reports[0].steps += 1;
-        reports[0].trajectory.push(robot);
+        robot = next;
+        report.steps += 1;
+        report.trajectory.push(robot);
         changed = world.visit(robot, explore);
         if let Some(lag) = config.follower_lag {
             let behind = trail.len().checked_sub(lag.max(1) as usize).map(|i| trail[i]);
@@ -587,18 +597,9 @@ fn run(
         changed.sort_unstable_by_key(|c| (c.y, c.x));
         changed.dedup();
     }
-    let (head, rest) = reports.split_first_mut().expect("at least one planner");
-    head.discoveries = world.discoveries;
-    head.sensed = std::mem::take(&mut world.sensed);
-    for other in rest {
-        other.outcome = head.outcome;
-        other.steps = head.steps;
-        other.distance = head.distance;
-        other.discoveries = head.discoveries;
-        other.trajectory = head.trajectory.clone();
-        other.sensed = head.sensed.clone();
-    }
-    Ok(reports)
+    report.discoveries = world.discoveries;
+    report.sensed = std::mem::take(&mut world.sensed);
+    Ok(report)
 }
 
 /// The true world (with the follower), the robot's map, and the cells visited.
@@ -710,7 +711,7 @@ mod tests {
                 };
                 let mut search = Search::new();
                 let report =
-                    run(&truth, &prior, start, target, &config, &[planner], |graph, robot, _, plan| {
+                    run(&truth, &prior, start, target, &config, planner, None, |graph, robot, plan| {
                         let to = if target == Target::Explore { VIRTUAL_GOAL } else { goal };
                         let h = estimate(1.0);
                         let best = search.astar(graph, robot, to, |c| h(c, to)).unwrap().cost();
@@ -727,8 +728,7 @@ mod tests {
                         }
                         plans += 1;
                     })
-                    .unwrap()
-                    .remove(0);
+                    .unwrap();
                 assert_ne!(report.outcome, Outcome::StepLimit, "{planner:?} seed {seed}");
                 for pair in report.trajectory.windows(2) {
                     assert!(pair[0].x.abs_diff(pair[1].x) <= 1 && pair[0].y.abs_diff(pair[1].y) <= 1);

@@ -93,7 +93,7 @@ pub struct Args {
     #[arg(long)]
     svg: Option<PathBuf>,
     /// Let each planner drive its own robot. By default the first planner drives and the others
-    /// plan in lockstep from the same cells with the same knowledge (the same problems for all).
+    /// are run along its trajectory, planning from the same cells with the same knowledge.
     #[arg(long)]
     independent: bool,
 }
@@ -164,8 +164,8 @@ struct Summary {
     sensor_radius: u32,
     follower: Option<u32>,
     seed: u64,
-    /// Whether the planners planned in lockstep along the first planner's trajectory.
-    lockstep: bool,
+    /// Whether the planners planned along the first planner's trajectory (the same problems).
+    same_run: bool,
     runs: Vec<RunSummary>,
 }
 
@@ -262,7 +262,7 @@ fn simulate(args: &Args) -> Result<String, String> {
     };
     if let Some(dir) = &args.svg {
         std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-        // In lockstep every planner shares the driver's trajectory: one picture says it all.
+        // On one run every planner shares the driver's trajectory: one picture says it all.
         for report in if args.independent { &reports[..] } else { &reports[..1] } {
             let file = dir.join(format!("navigate-{}.svg", report.planner));
             std::fs::write(&file, report.svg(&truth, goal))
@@ -279,7 +279,7 @@ fn simulate(args: &Args) -> Result<String, String> {
         sensor_radius: args.radius,
         follower: args.follower,
         seed: args.seed,
-        lockstep: !args.independent,
+        same_run: !args.independent,
         runs,
     };
     serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())

@@ -133,10 +133,10 @@ fn navigate_compares_the_planners_on_one_world() {
         let svg = std::fs::read_to_string(dir.join("svg").join(format!("navigate-{name}.svg"))).unwrap();
         assert!(svg.contains("<polyline"));
     }
-    // In lockstep (the default) the planners share the first one's run.
+    // By default the planners share the first one's run.
     let out = xtask(&["navigate", "--size", "48x32", "--seed", "4", "--radius", "2"], &dir);
     let v = json(&out);
-    assert_eq!(v["lockstep"], true);
+    assert_eq!(v["same_run"], true);
     let runs = v["runs"].as_array().unwrap();
     assert!(runs.iter().all(|r| r["steps"] == runs[0]["steps"] && r["distance"] == runs[0]["distance"]));
 

@@ -1,6 +1,9 @@
 //! Search algorithms over any graph that implements the traits of
-//! [`trailmark_core::graph`]: breadth-first, depth-first, Dijkstra, A* and weighted A*, plus the
-//! indexed priority queue they share with the incremental planners.
+//! [`trailmark_core::graph`]: breadth-first, depth-first, Dijkstra, A* and weighted A*; the
+//! incremental planners [`LpaStar`] and [`DStarLite`], which repair their search after edge
+//! costs change (and, for D* Lite, as the robot moves); the anytime planners [`ara_star`] and
+//! [`AdStar`], which return an inflated solution fast and improve it while time allows; and the
+//! indexed priority queue they all share.
 //!
 //! Each algorithm is a function (`astar(&graph, start, goal, heuristic)`) and a method of a
 //! reusable [`Search`] workspace, which keeps its per-node state in dense vectors across queries.

@@ -119,8 +119,8 @@ pub(crate) enum Direction {
 #[derive(Debug, Clone)]
 pub(crate) struct Lifelong<N: Debug> {
     pub dir: Direction,
-    g: Vec<Cost>,
-    rhs: Vec<Cost>,
+    g: Costs,
+    rhs: Costs,
     queue: IndexedHeap<QKey>,
     /// The slot whose `rhs` is 0.
     pub source: usize,
@@ -140,6 +140,44 @@ pub(crate) struct Lifelong<N: Debug> {
     iteration: u32,
     /// Closed nodes made inconsistent in this iteration (may repeat).
     incons: Vec<u32>,
+}
+
+/// Per-slot costs, `+inf` until set. Stored as bits XOR the bits of `+inf`, so that `+inf` is 0
+/// and a fresh table is zeroed memory: the allocator hands large zeroed blocks out without
+/// writing them, so a planner made for one query on a large graph pays for the pages its search
+/// touches, not for the whole graph.
+#[derive(Debug, Clone, Default)]
+struct Costs(Vec<u64>);
+
+const INF_BITS: u64 = 0x7ff0_0000_0000_0000;
+
+impl Costs {
+    #[inline]
+    fn get(&self, slot: usize) -> Cost {
+        f64::from_bits(self.0[slot] ^ INF_BITS)
+    }
+
+    #[inline]
+    fn set(&mut self, slot: usize, cost: Cost) {
+        self.0[slot] = cost.to_bits() ^ INF_BITS;
+    }
+
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn grow(&mut self, len: usize) {
+        grow_zeroed(&mut self.0, len);
+    }
+}
+
+/// Makes `v` `len` long, new entries 0; a first allocation is a zeroed one (see [`Costs`]).
+fn grow_zeroed<T: Copy + Default + PartialEq>(v: &mut Vec<T>, len: usize) {
+    if v.is_empty() {
+        *v = vec![T::default(); len];
+    } else if v.len() < len {
+        v.resize(len, T::default());
+    }
 }
 
 /// Whether `cost` is a valid edge cost for lifelong planning: positive, possibly infinite (no
@@ -175,8 +213,8 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     {
         let mut search = Lifelong {
             dir,
-            g: Vec::new(),
-            rhs: Vec::new(),
+            g: Costs::default(),
+            rhs: Costs::default(),
             queue: IndexedHeap::new(),
             source: 0,
             stats: SearchStats::default(),
@@ -190,7 +228,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         };
         search.fit(graph)?;
         search.source = graph.index_of(source);
-        search.rhs[search.source] = 0.0;
+        search.rhs.set(search.source, 0.0);
         Ok(search)
     }
 
@@ -204,12 +242,12 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             return Err(SearchError::TooManyNodes(bound));
         }
         if self.g.len() < bound {
-            self.g.resize(bound, f64::INFINITY);
-            self.rhs.resize(bound, f64::INFINITY);
+            self.g.grow(bound);
+            self.rhs.grow(bound);
             self.queue.reserve_items(bound);
         }
         if self.anytime && self.closed.len() < bound {
-            self.closed.resize(bound, 0);
+            grow_zeroed(&mut self.closed, bound);
         }
         Ok(())
     }
@@ -218,7 +256,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     pub fn make_anytime(&mut self, epsilon: f64) {
         self.anytime = true;
         self.epsilon = epsilon;
-        self.closed.resize(self.g.len(), 0);
+        grow_zeroed(&mut self.closed, self.g.len());
     }
 
     /// Starts a new iteration (AD*): nothing is closed any more, the inconsistent nodes held
@@ -233,7 +271,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         slots.extend(self.incons.drain(..).map(|s| s as usize));
         self.queue.clear();
         for s in slots {
-            if self.g[s] != self.rhs[s] {
+            if self.g.get(s) != self.rhs.get(s) {
                 let key = QKey::new(self.key(graph, s, h));
                 self.queue.push(s, key);
             }
@@ -253,12 +291,12 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
 
     #[inline]
     pub fn g(&self, slot: usize) -> Cost {
-        self.g[slot]
+        self.g.get(slot)
     }
 
     #[inline]
     pub fn rhs(&self, slot: usize) -> Cost {
-        self.rhs[slot]
+        self.rhs.get(slot)
     }
 
     /// The queued nodes and their keys, least first.
@@ -270,7 +308,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
 
     /// Bytes held by the state and the queue.
     pub fn memory_bytes(&self) -> usize {
-        (self.g.capacity() + self.rhs.capacity()) * 8
+        (self.g.0.capacity() + self.rhs.0.capacity()) * 8
             + (self.closed.capacity() + self.incons.capacity()) * 4
             + self.queue.memory_bytes()
     }
@@ -296,7 +334,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     {
         // `[min(g, rhs) + h; min(g, rhs)]`, with AD*'s inflation of overconsistent nodes
         // (`[rhs + epsilon h; rhs]`), which is the same key when epsilon is 1.
-        let (g, rhs) = (self.g[slot], self.rhs[slot]);
+        let (g, rhs) = (self.g.get(slot), self.rhs.get(slot));
         let m = g.min(rhs);
         if m == f64::INFINITY {
             return Key::new(m, m);
@@ -311,7 +349,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        let (g, rhs) = (self.g[slot], self.rhs[slot]);
+        let (g, rhs) = (self.g.get(slot), self.rhs.get(slot));
         if self.anytime && self.closed[slot] == self.iteration && g > rhs && g < f64::INFINITY {
             // A node expanded in this iteration that can now improve waits for the next one
             // (that is what bounds an iteration's work, as in ARA*): its `g` is the cost of a
@@ -320,7 +358,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             // arithmetic neither happens to a closed node, but when rounding ties reorder two
             // keys it does, and deferring it would leave nodes resting on a stale value.
             self.incons.push(slot as u32);
-        } else if self.g[slot] != self.rhs[slot] {
+        } else if self.g.get(slot) != self.rhs.get(slot) {
             let key = QKey::new(self.key(graph, slot, h));
             match self.queue.push(slot, key) {
                 None => self.stats.pushes += 1,
@@ -396,7 +434,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         let mut best = f64::INFINITY;
-        self.each_support(graph, slot, |this, s, c| best = best.min(c + this.g[s]));
+        self.each_support(graph, slot, |this, s, c| best = best.min(c + this.g.get(s)));
         best
     }
 
@@ -406,10 +444,15 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        if slot != self.source {
-            self.rhs[slot] = self.rhs_from_scratch(graph, slot);
+        if slot == self.source {
+            return;
         }
-        self.update_vertex(graph, slot, h);
+        let rhs = self.rhs_from_scratch(graph, slot);
+        // An unchanged `rhs` leaves the node where it is (see the expansions in `compute`).
+        if rhs != self.rhs.get(slot) {
+            self.rhs.set(slot, rhs);
+            self.update_vertex(graph, slot, h);
+        }
     }
 
     /// The response to the change of one edge whose old cost was `old`: the edge joins
@@ -427,15 +470,21 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     ) where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        if dependent != self.source && dependent != support {
-            let through = self.g[support];
-            if old > new {
-                self.rhs[dependent] = self.rhs[dependent].min(new + through);
-            } else if self.rhs[dependent] == old + through {
-                self.rhs[dependent] = self.rhs_from_scratch(graph, dependent);
-            }
+        if dependent == self.source || dependent == support {
+            return;
         }
-        self.update_vertex(graph, dependent, h);
+        let (through, before) = (self.g.get(support), self.rhs.get(dependent));
+        let rhs = if old > new {
+            before.min(new + through)
+        } else if before == old + through {
+            self.rhs_from_scratch(graph, dependent)
+        } else {
+            before
+        };
+        if rhs != before {
+            self.rhs.set(dependent, rhs);
+            self.update_vertex(graph, dependent, h);
+        }
     }
 
     /// The repair loop: expands inconsistent nodes in key order until `target` is consistent and
@@ -455,7 +504,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     {
         while let Some((u, k_old)) = self.queue.peek() {
             let target_key = self.key(graph, target, h);
-            if !below(k_old.key(), target_key) && self.rhs[target] == self.g[target] {
+            if !below(k_old.key(), target_key) && self.rhs.get(target) == self.g.get(target) {
                 break;
             }
             let k_new = QKey::new(self.key(graph, u, h));
@@ -470,7 +519,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             }
             self.queue.pop();
             self.stats.expansions += 1;
-            let kind = if self.g[u] > self.rhs[u] {
+            let kind = if self.g.get(u) > self.rhs.get(u) {
                 Consistency::Overconsistent
             } else {
                 Consistency::Underconsistent
@@ -478,26 +527,33 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             trace(Expansion { node: graph.node_at(u), key: k_old.key(), kind });
             match kind {
                 Consistency::Overconsistent => {
-                    let gu = self.rhs[u];
-                    self.g[u] = gu;
+                    let gu = self.rhs.get(u);
+                    self.g.set(u, gu);
                     if self.anytime {
                         self.closed[u] = self.iteration;
                     }
+                    // The paper updates every dependent; one whose `rhs` did not change keeps
+                    // its place in the queue (or stays out of it), and a key it keeps from an
+                    // older `k_m` is a lower bound, requeued when popped. Skipping it saves a
+                    // key computation and a heap operation per edge.
                     self.each_dependent(graph, u, |this, s, c| {
-                        if s != this.source && c + gu < this.rhs[s] {
-                            this.rhs[s] = c + gu;
+                        if s != this.source && c + gu < this.rhs.get(s) {
+                            this.rhs.set(s, c + gu);
+                            this.update_vertex(graph, s, h);
                         }
-                        this.update_vertex(graph, s, h);
                     });
                 }
                 Consistency::Underconsistent => {
-                    let g_old = self.g[u];
-                    self.g[u] = f64::INFINITY;
+                    let g_old = self.g.get(u);
+                    self.g.set(u, f64::INFINITY);
                     self.each_dependent(graph, u, |this, s, c| {
-                        if s != this.source && this.rhs[s] == c + g_old {
-                            this.rhs[s] = this.rhs_from_scratch(graph, s);
+                        if s != this.source && this.rhs.get(s) == c + g_old {
+                            let rhs = this.rhs_from_scratch(graph, s);
+                            if rhs != this.rhs.get(s) {
+                                this.rhs.set(s, rhs);
+                                this.update_vertex(graph, s, h);
+                            }
                         }
-                        this.update_vertex(graph, s, h);
                     });
                     self.update_vertex(graph, u, h);
                 }
@@ -513,7 +569,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        if self.g[target].min(self.rhs[target]) == f64::INFINITY {
+        if self.g.get(target).min(self.rhs.get(target)) == f64::INFINITY {
             return None;
         }
         let mut slots = vec![target];
@@ -537,7 +593,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     {
         let mut best: Option<(Cost, Cost, usize)> = None;
         let mut consider = |s: usize, c: Cost| {
-            let via = (c + self.g[s], self.g[s], s);
+            let via = (c + self.g.get(s), self.g.get(s), s);
             // `via.0 < inf` also rejects invalid (NaN) costs; negative ones never come this
             // far, since the search refused them.
             if via.0 < f64::INFINITY

@@ -21,10 +21,7 @@
 //! ```
 
 /// The position of an item that is not in the queue.
-/// `pos` of an item not in the queue. Positions are stored bit-inverted (`!p`), so that the
-/// absent mark is 0 and a fresh position table is zeroed memory, which the allocator hands out
-/// without writing it (a large table costs nothing until its pages are touched).
-const ABSENT: u32 = 0;
+const ABSENT: u32 = u32::MAX;
 
 /// The number of children of each heap node: 4 keeps the tree shallow and the children of a node
 /// in one or two cache lines.
@@ -45,7 +42,7 @@ struct Entry<K> {
 #[derive(Debug, Clone)]
 pub struct IndexedHeap<K> {
     heap: Vec<Entry<K>>,
-    /// `pos[item]`: the heap position of `item` bit-inverted, or `ABSENT`.
+    /// `pos[item]`: the heap position of `item`, or `ABSENT`.
     pos: Vec<u32>,
 }
 
@@ -57,7 +54,7 @@ impl<K> Default for IndexedHeap<K> {
 
 impl<K: Copy + PartialOrd> IndexedHeap<K> {
     /// The largest item the queue accepts.
-    pub const MAX_ITEM: usize = u32::MAX as usize - 1;
+    pub const MAX_ITEM: usize = ABSENT as usize - 1;
 
     /// An empty queue.
     pub fn new() -> Self {
@@ -91,7 +88,7 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
     #[inline]
     pub fn key(&self, item: usize) -> Option<K> {
         match self.pos.get(item) {
-            Some(&p) if p != ABSENT => Some(self.heap[!p as usize].key),
+            Some(&p) if p != ABSENT => Some(self.heap[p as usize].key),
             _ => None,
         }
     }
@@ -117,12 +114,12 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
             ABSENT => {
                 let p = self.heap.len();
                 self.heap.push(Entry { key, item: item as u32 });
-                self.pos[item] = !(p as u32);
+                self.pos[item] = p as u32;
                 self.sift_up(p);
                 None
             }
             p => {
-                let p = !p as usize;
+                let p = p as usize;
                 let old = self.heap[p].key;
                 self.heap[p].key = key;
                 if key < old {
@@ -144,9 +141,7 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
 
     /// Prepares the position table for items `0..items`, so that pushing them never reallocates.
     pub fn reserve_items(&mut self, items: usize) {
-        if self.pos.is_empty() {
-            self.pos = vec![ABSENT; items];
-        } else if items > self.pos.len() {
+        if items > self.pos.len() {
             self.pos.resize(items, ABSENT);
         }
     }
@@ -161,7 +156,7 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
         }
         let top = std::mem::replace(&mut self.heap[0], last);
         self.pos[top.item as usize] = ABSENT;
-        self.pos[last.item as usize] = !0;
+        self.pos[last.item as usize] = 0;
         self.sift_down(0);
         Some((top.item as usize, top.key))
     }
@@ -169,7 +164,7 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
     /// Removes `item` from the queue and returns its key, or `None` if it was not queued.
     pub fn remove(&mut self, item: usize) -> Option<K> {
         let p = match self.pos.get(item) {
-            Some(&p) if p != ABSENT => !p as usize,
+            Some(&p) if p != ABSENT => p as usize,
             _ => return None,
         };
         let removed = self.heap[p].key;
@@ -177,7 +172,7 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
         let last = self.heap.pop().expect("a queued item means a non-empty heap");
         if p < self.heap.len() {
             self.heap[p] = last;
-            self.pos[last.item as usize] = !(p as u32);
+            self.pos[last.item as usize] = p as u32;
             if last.key < removed {
                 self.sift_up(p);
             } else {
@@ -214,11 +209,11 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
                 break;
             }
             self.heap[p] = above;
-            self.pos[above.item as usize] = !(p as u32);
+            self.pos[above.item as usize] = p as u32;
             p = parent;
         }
         self.heap[p] = moving;
-        self.pos[moving.item as usize] = !(p as u32);
+        self.pos[moving.item as usize] = p as u32;
     }
 
     #[inline]
@@ -251,11 +246,11 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
                 break;
             }
             self.heap[p] = self.heap[best];
-            self.pos[self.heap[p].item as usize] = !(p as u32);
+            self.pos[self.heap[p].item as usize] = p as u32;
             p = best;
         }
         self.heap[p] = moving;
-        self.pos[moving.item as usize] = !(p as u32);
+        self.pos[moving.item as usize] = p as u32;
     }
 }
 

@@ -602,8 +602,8 @@ pub fn run(args: &Args) -> ExitCode {
             Suite::Full => 50,
         };
         anytime = crate::bench_replan::bench_anytime(&large, n, args.runs);
-        if let Some(maze) = maps.iter().find(|m| m.name.starts_with("maze512")) {
-            cost_time = Some(crate::bench_replan::cost_time_svg(maze));
+        if let Some(map) = maps.iter().find(|m| m.name.starts_with("random512-25")) {
+            cost_time = Some(crate::bench_replan::cost_time_svg(map));
         }
     }
     let report = Report {

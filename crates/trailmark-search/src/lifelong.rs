@@ -370,61 +370,52 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     }
 
     /// Calls `visit(self, neighbour, cost)` for each edge along which `slot`'s `g` flows: its
-    /// predecessors (backward) or successors (forward). Invalid costs are remembered and
-    /// skipped, self-loops skipped.
+    /// predecessors (backward) or successors (forward).
     #[inline]
-    fn each_dependent<G>(&mut self, graph: &G, slot: usize, mut visit: impl FnMut(&mut Self, usize, Cost))
+    fn each_dependent<G>(&mut self, graph: &G, slot: usize, visit: impl FnMut(&mut Self, usize, Cost))
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        match self.dir {
-            Direction::Backward => graph.for_each_predecessor_index(slot, |s, node, c| {
-                if s == slot {
-                    return;
-                }
-                if !valid_cost(c) {
-                    return self.bad_edge(node, graph.node_at(slot), c);
-                }
-                visit(self, s, c)
-            }),
-            Direction::Forward => graph.for_each_successor_index(slot, |s, node, c| {
-                if s == slot {
-                    return;
-                }
-                if !valid_cost(c) {
-                    return self.bad_edge(graph.node_at(slot), node, c);
-                }
-                visit(self, s, c)
-            }),
-        }
+        self.each_edge(graph, slot, self.dir == Direction::Forward, visit)
     }
 
     /// Calls `visit(self, neighbour, cost)` for each edge `slot`'s `rhs` is computed over: its
-    /// successors (backward) or predecessors (forward), with the same checks.
+    /// successors (backward) or predecessors (forward).
     #[inline]
-    fn each_support<G>(&mut self, graph: &G, slot: usize, mut visit: impl FnMut(&mut Self, usize, Cost))
+    fn each_support<G>(&mut self, graph: &G, slot: usize, visit: impl FnMut(&mut Self, usize, Cost))
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        match self.dir {
-            Direction::Backward => graph.for_each_successor_index(slot, |s, node, c| {
-                if s == slot {
-                    return;
-                }
-                if !valid_cost(c) {
-                    return self.bad_edge(graph.node_at(slot), node, c);
-                }
-                visit(self, s, c)
-            }),
-            Direction::Forward => graph.for_each_predecessor_index(slot, |s, node, c| {
-                if s == slot {
-                    return;
-                }
-                if !valid_cost(c) {
-                    return self.bad_edge(node, graph.node_at(slot), c);
-                }
-                visit(self, s, c)
-            }),
+        self.each_edge(graph, slot, self.dir == Direction::Backward, visit)
+    }
+
+    /// Calls `visit(self, neighbour, cost)` for each edge leaving (`outgoing`) or entering
+    /// `slot`. Invalid costs are remembered and skipped, self-loops skipped.
+    #[inline]
+    fn each_edge<G>(
+        &mut self,
+        graph: &G,
+        slot: usize,
+        outgoing: bool,
+        mut visit: impl FnMut(&mut Self, usize, Cost),
+    ) where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let mut step = |this: &mut Self, s: usize, node: N, c: Cost| {
+            if s == slot {
+                return;
+            }
+            if !valid_cost(c) {
+                let here = graph.node_at(slot);
+                let (from, to) = if outgoing { (here, node) } else { (node, here) };
+                return this.bad_edge(from, to, c);
+            }
+            visit(this, s, c)
+        };
+        if outgoing {
+            graph.for_each_successor_index(slot, |s, node, c| step(self, s, node, c))
+        } else {
+            graph.for_each_predecessor_index(slot, |s, node, c| step(self, s, node, c))
         }
     }
 
@@ -448,7 +439,18 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             return;
         }
         let rhs = self.rhs_from_scratch(graph, slot);
-        // An unchanged `rhs` leaves the node where it is (see the expansions in `compute`).
+        self.set_rhs(graph, slot, rhs, h);
+    }
+
+    /// Sets `rhs` of `slot` and requeues it, if `rhs` changed: a node whose `rhs` (and `g`) did
+    /// not change keeps its place in the queue or stays out of it, and a key it keeps from an
+    /// older `k_m` is a lower bound, requeued when popped. Skipping it saves a key computation
+    /// and a heap operation.
+    #[inline]
+    fn set_rhs<G>(&mut self, graph: &G, slot: usize, rhs: Cost, h: &mut impl FnMut(N) -> Cost)
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
         if rhs != self.rhs.get(slot) {
             self.rhs.set(slot, rhs);
             self.update_vertex(graph, slot, h);
@@ -481,10 +483,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         } else {
             before
         };
-        if rhs != before {
-            self.rhs.set(dependent, rhs);
-            self.update_vertex(graph, dependent, h);
-        }
+        self.set_rhs(graph, dependent, rhs, h);
     }
 
     /// The repair loop: expands inconsistent nodes in key order until `target` is consistent and
@@ -532,14 +531,11 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
                     if self.anytime {
                         self.closed[u] = self.iteration;
                     }
-                    // The paper updates every dependent; one whose `rhs` did not change keeps
-                    // its place in the queue (or stays out of it), and a key it keeps from an
-                    // older `k_m` is a lower bound, requeued when popped. Skipping it saves a
-                    // key computation and a heap operation per edge.
+                    // The paper updates every dependent; `set_rhs` skips those whose `rhs` did
+                    // not change.
                     self.each_dependent(graph, u, |this, s, c| {
                         if s != this.source && c + gu < this.rhs.get(s) {
-                            this.rhs.set(s, c + gu);
-                            this.update_vertex(graph, s, h);
+                            this.set_rhs(graph, s, c + gu, h);
                         }
                     });
                 }
@@ -549,10 +545,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
                     self.each_dependent(graph, u, |this, s, c| {
                         if s != this.source && this.rhs.get(s) == c + g_old {
                             let rhs = this.rhs_from_scratch(graph, s);
-                            if rhs != this.rhs.get(s) {
-                                this.rhs.set(s, rhs);
-                                this.update_vertex(graph, s, h);
-                            }
+                            this.set_rhs(graph, s, rhs, h);
                         }
                     });
                     self.update_vertex(graph, u, h);
@@ -750,22 +743,12 @@ where
     pub fn compute<G>(
         &mut self,
         graph: &G,
-        mut trace: impl FnMut(Expansion<N>),
+        trace: impl FnMut(Expansion<N>),
     ) -> Result<SearchStats, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        let clock = std::time::Instant::now();
-        check_endpoints(graph, self.start, self.goal)?;
-        self.search.fit(graph)?;
-        let target = self.target();
-        {
-            let (search, mut h) = self.keyed();
-            search.compute(graph, target, &mut h, &mut trace, &mut |_| false);
-        }
-        let stats = self.search.close_call(clock.elapsed());
-        self.report()?;
-        Ok(stats)
+        self.run(graph, trace, &mut |_| false).map(|(_, stats)| stats)
     }
 
     /// AD*: one pass of the repair loop at the current inflation, from the current start,
@@ -779,13 +762,26 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
+        self.run(graph, |_| {}, interrupt)
+    }
+
+    /// The repair loop from the current start, with its checks, statistics and error report.
+    fn run<G>(
+        &mut self,
+        graph: &G,
+        mut trace: impl FnMut(Expansion<N>),
+        interrupt: &mut impl FnMut(u64) -> bool,
+    ) -> Result<(bool, SearchStats), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
         let clock = std::time::Instant::now();
         check_endpoints(graph, self.start, self.goal)?;
         self.search.fit(graph)?;
         let target = self.target();
         let complete = {
             let (search, mut h) = self.keyed();
-            search.compute(graph, target, &mut h, &mut |_| {}, interrupt)
+            search.compute(graph, target, &mut h, &mut trace, interrupt)
         };
         let stats = self.search.close_call(clock.elapsed());
         self.report()?;

@@ -4,9 +4,10 @@
 
 use std::ops::ControlFlow;
 
+mod common;
+
+use common::walk_cost;
 use proptest::prelude::*;
-use trailmark_core::cost::Cost;
-use trailmark_core::graph::Successors;
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
 use trailmark_search::{Budget, EpsilonSchedule, Search, SearchError, Stop, ara_star, astar};
@@ -24,20 +25,6 @@ fn grid_world() -> impl Strategy<Value = (Grid, Connectivity, Cell, Cell)> {
                 (grid, if eight { Connectivity::Eight } else { Connectivity::Four }, start, goal)
             })
     })
-}
-
-fn walk_cost(graph: &GridGraph, nodes: &[Cell]) -> Option<Cost> {
-    let mut total = 0.0;
-    for pair in nodes.windows(2) {
-        let mut best = f64::INFINITY;
-        graph.for_each_successor(pair[0], |n, c| {
-            if n == pair[1] {
-                best = best.min(c);
-            }
-        });
-        total += best;
-    }
-    total.is_finite().then_some(total)
 }
 
 proptest! {

@@ -2,6 +2,9 @@
 //! Lite, moves of the start), the incremental planners must report the cost A* finds on the
 //! graph as it is now, with a path that exists in that graph and costs what they say.
 
+mod common;
+
+use common::walk_cost;
 use proptest::prelude::*;
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
@@ -19,24 +22,6 @@ fn same_cost(a: Option<Cost>, b: Option<Cost>) -> bool {
         (None, None) => true,
         _ => false,
     }
-}
-
-/// The cost of `nodes` walked in `graph`, `None` if a step is not an edge.
-fn walk_cost<G: Successors>(graph: &G, nodes: &[G::Node]) -> Option<Cost> {
-    let mut total = 0.0;
-    for pair in nodes.windows(2) {
-        let mut best = f64::INFINITY;
-        graph.for_each_successor(pair[0], |n, c| {
-            if n == pair[1] {
-                best = best.min(c);
-            }
-        });
-        if !best.is_finite() {
-            return None;
-        }
-        total += best;
-    }
-    Some(total)
 }
 
 /// Octile distance without scaling: admissible and consistent while every cell costs >= 1.
@@ -80,6 +65,35 @@ fn world() -> impl Strategy<Value = (Grid, Connectivity, Cell, Cell, Vec<Vec<Cha
     })
 }
 
+/// What a planner is told after a change of the world.
+enum Told {
+    /// These cells' edges changed.
+    Cells(Vec<Cell>),
+    /// The robot moved here.
+    Moved(Cell),
+}
+
+/// Applies `batch` to `graph` and the robot, telling `tell` of each change.
+fn apply(batch: &[Change], graph: &mut GridGraph, robot: &mut Cell, mut tell: impl FnMut(&GridGraph, Told)) {
+    for change in batch {
+        match *change {
+            Change::Cell { x, y, cost } => {
+                let cell = Cell::new(x, y);
+                graph.set_cost(cell, cost.unwrap_or(f64::INFINITY)).unwrap();
+                let cells = graph.cells_affected_by(cell).collect();
+                tell(graph, Told::Cells(cells));
+            }
+            Change::Step(k) => {
+                let next: Vec<Cell> = graph.neighbours(*robot).map(|(c, _)| c).collect();
+                if let Some(&to) = next.get(k % next.len().max(1)) {
+                    *robot = to;
+                    tell(graph, Told::Moved(to));
+                }
+            }
+        }
+    }
+}
+
 /// A* from scratch: the cost, or an error when an endpoint is blocked.
 fn reference(graph: &GridGraph, start: Cell, goal: Cell) -> Result<Option<Cost>, SearchError<Cell>> {
     astar(graph, start, goal, |c| octile(c, goal)).map(|r| r.cost())
@@ -94,22 +108,10 @@ proptest! {
         let mut planner = DStarLite::new(&graph, start, goal, octile).unwrap();
         let mut robot = start;
         for batch in std::iter::once(&vec![]).chain(&batches) {
-            for change in batch {
-                match *change {
-                    Change::Cell { x, y, cost } => {
-                        let cell = Cell::new(x, y);
-                        graph.set_cost(cell, cost.unwrap_or(f64::INFINITY)).unwrap();
-                        planner.update_nodes(&graph, graph.cells_affected_by(cell)).unwrap();
-                    }
-                    Change::Step(k) => {
-                        let next: Vec<Cell> = graph.neighbours(robot).map(|(c, _)| c).collect();
-                        if let Some(&to) = next.get(k % next.len().max(1)) {
-                            planner.move_start(&graph, to).unwrap();
-                            robot = to;
-                        }
-                    }
-                }
-            }
+            apply(batch, &mut graph, &mut robot, |graph, told| match told {
+                Told::Cells(cells) => planner.update_nodes(graph, cells).unwrap(),
+                Told::Moved(to) => planner.move_start(graph, to).unwrap(),
+            });
             let expected = reference(&graph, robot, goal);
             let got = planner.compute_shortest_path(&graph);
             match expected {
@@ -180,22 +182,10 @@ proptest! {
         let mut planner = AdStar::new(&graph, start, goal, octile, schedule).unwrap().with_raise_threshold(threshold);
         let mut robot = start;
         for batch in std::iter::once(&vec![]).chain(&batches) {
-            for change in batch {
-                match *change {
-                    Change::Cell { x, y, cost } => {
-                        let cell = Cell::new(x, y);
-                        graph.set_cost(cell, cost.unwrap_or(f64::INFINITY)).unwrap();
-                        planner.update_nodes(&graph, graph.cells_affected_by(cell)).unwrap();
-                    }
-                    Change::Step(k) => {
-                        let next: Vec<Cell> = graph.neighbours(robot).map(|(c, _)| c).collect();
-                        if let Some(&to) = next.get(k % next.len().max(1)) {
-                            planner.move_start(&graph, to).unwrap();
-                            robot = to;
-                        }
-                    }
-                }
-            }
+            apply(batch, &mut graph, &mut robot, |graph, told| match told {
+                Told::Cells(cells) => planner.update_nodes(graph, cells).unwrap(),
+                Told::Moved(to) => planner.move_start(graph, to).unwrap(),
+            });
             let expected = reference(&graph, robot, goal);
             // A first call cut short by a budget (resumed below, or abandoned at the next change).
             if first_budget.is_some() && expected.is_ok() {

@@ -368,7 +368,7 @@ fn estimate(scale: Cost) -> impl Fn(Cell, Cell) -> Cost + Copy {
 /// A planner with the state it keeps between steps.
 enum Driver<H> {
     AStar(Search),
-    Lpa,
+    Lpa(Option<LpaStar<Cell, H>>),
     DStar(Option<DStarLite<Cell, H>>),
     Ad(Option<AdStar<Cell, H>>, EpsilonSchedule, Budget),
 }
@@ -386,7 +386,7 @@ impl<H: FnMut(Cell, Cell) -> Cost + Copy> Driver<H> {
     fn new(choice: PlannerChoice) -> Result<Self, SearchError<Cell>> {
         Ok(match choice {
             PlannerChoice::AStar => Driver::AStar(Search::new()),
-            PlannerChoice::LpaStar => Driver::Lpa,
+            PlannerChoice::LpaStar => Driver::Lpa(None),
             PlannerChoice::DStarLite => Driver::DStar(None),
             PlannerChoice::AdStar { epsilon, epsilon_step, expansions_per_step } => {
                 let schedule = EpsilonSchedule::new(epsilon, epsilon_step);
@@ -415,8 +415,16 @@ impl<H: FnMut(Cell, Cell) -> Cost + Copy> Driver<H> {
                 let next = found.path.and_then(|p| second(&p.nodes));
                 Ok(Plan { next, cost, expansions: found.stats.expansions, epsilon: 1.0 })
             }
-            Driver::Lpa => {
-                let mut planner = LpaStar::new(graph, robot, target, h)?;
+            Driver::Lpa(state) => {
+                // A forward search cannot keep its values when its start moves: every step
+                // restarts it (reusing its memory).
+                let planner = match state {
+                    Some(planner) => {
+                        planner.reset(graph, robot, target)?;
+                        planner
+                    }
+                    None => state.insert(LpaStar::new(graph, robot, target, h)?),
+                };
                 let stats = planner.compute_shortest_path(graph)?;
                 let next = planner.path(graph).and_then(|p| second(&p.nodes));
                 Ok(Plan { next, cost: planner.cost(), expansions: stats.expansions, epsilon: 1.0 })

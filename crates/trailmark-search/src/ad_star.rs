@@ -105,6 +105,24 @@ where
         })
     }
 
+    /// Starts a new query from `start` to `goal` at the initial inflation, keeping the planner's
+    /// memory: a planner reused for many queries pays, at each reset, for the nodes the previous
+    /// query touched rather than for the whole graph. Errors as [`new`](Self::new) does.
+    pub fn reset<G>(&mut self, graph: &G, start: N, goal: N) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.reset(graph, start, goal)?;
+        self.planner.search.epsilon = self.schedule.initial;
+        self.epsilon = self.schedule.initial;
+        self.in_progress = false;
+        self.completed = 0;
+        self.changes = 0;
+        self.dirty = true;
+        self.raise = false;
+        Ok(())
+    }
+
     /// The same planner with another significance threshold: a batch of at least `changes`
     /// changed nodes or edges (between two completed iterations) restarts from the initial ε.
     /// `usize::MAX` never restarts on its own.

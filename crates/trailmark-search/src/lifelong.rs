@@ -146,8 +146,11 @@ pub(crate) struct Lifelong<N: Debug> {
 /// and a fresh table is zeroed memory: the allocator hands large zeroed blocks out without
 /// writing them, so a planner made for one query on a large graph pays for the pages its search
 /// touches, not for the whole graph.
+///
+/// The slots set since the last [`Costs::reset`] are listed, so that a reset costs what the
+/// search touched, not the size of the graph.
 #[derive(Debug, Clone, Default)]
-struct Costs(Vec<u64>);
+struct Costs(Vec<u64>, Vec<u32>);
 
 const INF_BITS: u64 = 0x7ff0_0000_0000_0000;
 
@@ -159,7 +162,18 @@ impl Costs {
 
     #[inline]
     fn set(&mut self, slot: usize, cost: Cost) {
+        if self.0[slot] == 0 {
+            self.1.push(slot as u32);
+        }
         self.0[slot] = cost.to_bits() ^ INF_BITS;
+    }
+
+    /// Every cost back to `+inf`.
+    fn reset(&mut self) {
+        for &slot in &self.1 {
+            self.0[slot as usize] = 0;
+        }
+        self.1.clear();
     }
 
     fn len(&self) -> usize {
@@ -249,6 +263,26 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         if self.anytime && self.closed.len() < bound {
             grow_zeroed(&mut self.closed, bound);
         }
+        Ok(())
+    }
+
+    /// Forgets everything for a new query from `source` (already checked to be a node), keeping
+    /// the memory: the cost is that of the nodes the previous queries touched.
+    pub fn reset<G>(&mut self, graph: &G, source: N) -> Result<(), SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.g.reset();
+        self.rhs.reset();
+        self.queue.clear();
+        self.incons.clear();
+        // Closed marks are iteration numbers: the next one makes them all stale.
+        self.iteration += 1;
+        self.stats = SearchStats::default();
+        self.fault = None;
+        self.fit(graph)?;
+        self.source = graph.index_of(source);
+        self.rhs.set(self.source, 0.0);
         Ok(())
     }
 
@@ -556,8 +590,11 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     }
 
     /// The path from `target` to the source along the best supports (`argmin c + g`), in the
-    /// order walked; `None` when the target's value is infinite. Ties prefer the smaller `g`, and
-    /// a node already on the path is never taken again (zero-cost cycles).
+    /// order walked; `None` when the target's value is infinite. Ties prefer the smaller `g`.
+    ///
+    /// With positive costs `g` falls strictly along such a path, so the walk only takes
+    /// supports of smaller `g` and needs no record of where it has been; should rounding ever
+    /// make two `g` equal there, it walks again remembering the nodes it passed.
     pub fn walk<G>(&self, graph: &G, target: usize) -> Option<Vec<usize>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
@@ -565,6 +602,24 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         if self.g.get(target).min(self.rhs.get(target)) == f64::INFINITY {
             return None;
         }
+        let mut slots = vec![target];
+        let mut at = target;
+        while at != self.source {
+            let limit = self.g.get(at).min(self.rhs.get(at));
+            let Some(next) = self.best_support(graph, at, |s| self.g.get(s) >= limit) else {
+                return self.walk_remembering(graph, target);
+            };
+            slots.push(next);
+            at = next;
+        }
+        Some(slots)
+    }
+
+    /// [`Lifelong::walk`] with a record of the nodes passed, never taking one twice.
+    fn walk_remembering<G>(&self, graph: &G, target: usize) -> Option<Vec<usize>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
         let mut slots = vec![target];
         let mut seen = HashSet::from([target]);
         let mut at = target;
@@ -706,6 +761,27 @@ where
         }
         planner.search.close_call(std::time::Duration::ZERO);
         Ok(planner)
+    }
+
+    /// A new query from `start` to `goal` with the planner's memory (see [`Lifelong::reset`]).
+    pub fn reset<G>(&mut self, graph: &G, start: N, goal: N) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        check_endpoints(graph, start, goal)?;
+        let source = if self.search.dir == Direction::Backward { goal } else { start };
+        self.search.reset(graph, source)?;
+        (self.start, self.goal, self.last) = (start, goal, start);
+        (self.start_slot, self.goal_slot) = (graph.index_of(start), graph.index_of(goal));
+        self.k_m = 0.0;
+        self.bad_h = None;
+        let source = self.search.source;
+        {
+            let (search, mut h) = self.keyed();
+            search.update_vertex(graph, source, &mut h);
+        }
+        self.search.close_call(std::time::Duration::ZERO);
+        Ok(())
     }
 
     /// The node whose value the search computes: the goal (forward) or the start (backward).

@@ -66,6 +66,16 @@ where
         Ok(LpaStar { planner: Planner::new(Direction::Forward, graph, start, goal, heuristic, None)? })
     }
 
+    /// Starts a new query from `start` to `goal`, keeping the planner's memory: a planner
+    /// reused for many queries pays, at each reset, for the nodes the previous query touched
+    /// rather than for the whole graph. Errors as [`new`](Self::new) does.
+    pub fn reset<G>(&mut self, graph: &G, start: N, goal: N) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.planner.reset(graph, start, goal)
+    }
+
     /// Expands nodes until the cost to the goal is known: the first search, or the repair
     /// after changes. Returns this call's statistics (expansions, queue insertions,
     /// key updates, time).

@@ -392,3 +392,58 @@ fn zero_cost_edges_are_refused() {
     let mut fresh = LpaStar::new(&graph, 0, 1, zero).unwrap();
     assert_eq!(fresh.compute_shortest_path(&graph), Err(SearchError::ZeroCostEdge { from: 0, to: 1 }));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
+
+    /// One planner of each kind reused through `reset` for a series of queries answers each as
+    /// A* from scratch does, whatever the earlier queries left behind (changes included).
+    #[test]
+    fn reset_planners_answer_like_fresh_ones(
+        (grid, connectivity, start, goal, batches) in world(),
+        queries in prop::collection::vec((0u32..12, 0u32..12, 0u32..12, 0u32..12), 1..6),
+    ) {
+        let mut graph = GridGraph::new(&grid, connectivity);
+        let mut dstar = DStarLite::new(&graph, start, goal, octile).unwrap();
+        let mut lpa = LpaStar::new(&graph, start, goal, octile).unwrap();
+        let mut ad = AdStar::new(&graph, start, goal, octile, EpsilonSchedule::new(2.0, 0.5)).unwrap();
+        dstar.compute_shortest_path(&graph).unwrap();
+        lpa.compute_shortest_path(&graph).unwrap();
+        ad.improve(&graph, Budget { time: None, expansions: Some(5) }).unwrap();
+        // Change the world a little, so that a reset must forget repaired state too.
+        let mut robot = start;
+        for batch in batches.iter().take(1) {
+            apply(batch, &mut graph, &mut robot, |graph, told| {
+                if let Told::Cells(cells) = told {
+                    dstar.update_nodes(graph, cells.iter().copied()).unwrap();
+                    lpa.update_nodes(graph, cells.iter().copied()).unwrap();
+                    ad.update_nodes(graph, cells).unwrap();
+                }
+            });
+        }
+        for (sx, sy, gx, gy) in queries {
+            let (s, g) = (Cell::new(sx % grid.width(), sy % grid.height()), Cell::new(gx % grid.width(), gy % grid.height()));
+            let expected = reference(&graph, s, g);
+            let resets = [dstar.reset(&graph, s, g), lpa.reset(&graph, s, g), ad.reset(&graph, s, g)];
+            match expected {
+                Err(e) => {
+                    for r in resets {
+                        prop_assert_eq!(r.unwrap_err(), e.clone());
+                    }
+                }
+                Ok(cost) => {
+                    for r in resets {
+                        r.unwrap();
+                    }
+                    dstar.compute_shortest_path(&graph).unwrap();
+                    lpa.compute_shortest_path(&graph).unwrap();
+                    let found = ad.improve(&graph, Budget::unlimited()).unwrap();
+                    prop_assert!(same_cost(dstar.cost(), cost), "D* Lite {:?}, A* {:?}", dstar.cost(), cost);
+                    prop_assert!(same_cost(lpa.cost(), cost), "LPA* {:?}, A* {:?}", lpa.cost(), cost);
+                    prop_assert!(same_cost(found.cost(), cost), "AD* {:?}, A* {:?}", found.cost(), cost);
+                    prop_assert_eq!(found.iterations.first().map(|i| i.epsilon), Some(2.0));
+                }
+            }
+        }
+    }
+}

@@ -236,18 +236,8 @@ struct MapInfo {
 /// Seeded queries between cells of the largest reachable region, with Dijkstra's cost.
 fn generated_queries(grid: &Grid, n: usize, rng: &mut ChaCha8Rng) -> Vec<Query> {
     let graph = GridGraph::new(grid, Connectivity::Eight);
-    let passable: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
     let mut search = Search::new();
-    // The region reached from a few random cells: keep the largest.
-    let mut region: Vec<Cell> = Vec::new();
-    for _ in 0..5 {
-        let from = passable[rng.random_range(0..passable.len())];
-        search.dijkstra_all(&graph, from).expect("a passable cell");
-        let reached: Vec<Cell> = search.reached(&graph).collect();
-        if reached.len() > region.len() {
-            region = reached;
-        }
-    }
+    let region = largest_region(grid, &graph, &mut search, rng).expect("a map with passable cells");
     (0..n)
         .map(|_| {
             let start = region[rng.random_range(0..region.len())];
@@ -256,6 +246,30 @@ fn generated_queries(grid: &Grid, n: usize, rng: &mut ChaCha8Rng) -> Vec<Query> 
             Query { start, goal, optimal }
         })
         .collect()
+}
+
+/// The largest of the regions reached from five seeded passable cells, `None` without any
+/// passable cell. Leaves `search` holding the last of those searches.
+pub fn largest_region(
+    grid: &Grid,
+    graph: &GridGraph,
+    search: &mut Search,
+    rng: &mut ChaCha8Rng,
+) -> Option<Vec<Cell>> {
+    let passable: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
+    if passable.is_empty() {
+        return None;
+    }
+    let mut region: Vec<Cell> = Vec::new();
+    for _ in 0..5 {
+        let from = passable[rng.random_range(0..passable.len())];
+        search.dijkstra_all(graph, from).ok()?;
+        let reached: Vec<Cell> = search.reached(graph).collect();
+        if reached.len() > region.len() {
+            region = reached;
+        }
+    }
+    Some(region)
 }
 
 fn generated_maps(seed: u64, n: usize) -> Vec<Map> {

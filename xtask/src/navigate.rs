@@ -173,20 +173,8 @@ struct Summary {
 /// farthest of a few seeded candidates from the start.
 pub fn endpoints(grid: &Grid, rng: &mut ChaCha8Rng) -> Option<(Cell, Cell)> {
     let graph = GridGraph::new(grid, Connectivity::Eight);
-    let passable: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
-    if passable.is_empty() {
-        return None;
-    }
     let mut search = Search::new();
-    let mut region: Vec<Cell> = Vec::new();
-    for _ in 0..5 {
-        let from = passable[rng.random_range(0..passable.len())];
-        search.dijkstra_all(&graph, from).ok()?;
-        let reached: Vec<Cell> = search.reached(&graph).collect();
-        if reached.len() > region.len() {
-            region = reached;
-        }
-    }
+    let region = crate::bench::largest_region(grid, &graph, &mut search, rng)?;
     let start = region[rng.random_range(0..region.len())];
     search.dijkstra_all(&graph, start).ok()?;
     let goal = (0..16).map(|_| region[rng.random_range(0..region.len())]).max_by(|a, b| {

@@ -290,10 +290,9 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        let nodes: Vec<N> = nodes.into_iter().collect();
-        self.planner.update_nodes(graph, nodes.iter().copied())?;
-        self.changes += nodes.len();
-        if !nodes.is_empty() {
+        let told = self.planner.update_nodes(graph, nodes)?;
+        self.changes += told;
+        if told > 0 {
             self.changed();
         }
         Ok(())

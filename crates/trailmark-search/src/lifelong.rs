@@ -932,13 +932,14 @@ where
         &mut self,
         graph: &G,
         nodes: impl IntoIterator<Item = N>,
-    ) -> Result<(), SearchError<N>>
+    ) -> Result<usize, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.search.fit(graph)?;
         let slots =
             nodes.into_iter().map(|n| self.search.slot_of(graph, n)).collect::<Result<Vec<_>, _>>()?;
+        let told = slots.len();
         {
             let (search, mut h) = self.keyed();
             for slot in slots {
@@ -946,7 +947,7 @@ where
             }
         }
         self.search.close_call(std::time::Duration::ZERO);
-        self.report()
+        self.report().map(|()| told)
     }
 
     pub fn cost(&self) -> Option<Cost> {

@@ -126,7 +126,7 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.planner.update_nodes(graph, nodes)
+        self.planner.update_nodes(graph, nodes).map(|_| ())
     }
 
     /// The cost of a shortest path from the start to the goal as of the last

@@ -113,7 +113,7 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.planner.reset(graph, start, goal)?;
-        self.planner.search.epsilon = self.schedule.initial;
+        self.planner.search.set_epsilon(self.schedule.initial);
         self.epsilon = self.schedule.initial;
         self.in_progress = false;
         self.completed = 0;

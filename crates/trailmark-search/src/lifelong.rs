@@ -119,8 +119,8 @@ pub(crate) enum Direction {
 #[derive(Debug, Clone)]
 pub(crate) struct Lifelong<N: Debug> {
     pub dir: Direction,
-    g: Costs,
-    rhs: Costs,
+    /// `g` and `rhs` of every slot.
+    v: Values,
     queue: IndexedHeap<QKey>,
     /// The slot whose `rhs` is 0.
     pub source: usize,
@@ -131,7 +131,11 @@ pub(crate) struct Lifelong<N: Debug> {
     /// The first invalid edge cost met since the last report.
     fault: Option<SearchError<N>>,
     /// The heuristic inflation of overconsistent keys (AD*); 1 for LPA* and D* Lite.
-    pub epsilon: f64,
+    epsilon: f64,
+    /// Every queued key was computed with the current heuristic (and `k_m`, and inflation), so
+    /// none is stale and the repair loop need not recompute the key of each node it pops. Moving
+    /// the start or changing the inflation clears it; re-keying the queue sets it.
+    keys_current: bool,
     /// Whether nodes expanded in an iteration are closed until the next (AD*): an inconsistent
     /// closed node waits in `incons` instead of the queue.
     anytime: bool,
@@ -142,50 +146,70 @@ pub(crate) struct Lifelong<N: Debug> {
     incons: Vec<u32>,
 }
 
-/// Per-slot costs, `+inf` until set. Stored as bits XOR the bits of `+inf`, so that `+inf` is 0
-/// and a fresh table is zeroed memory: the allocator hands large zeroed blocks out without
-/// writing them, so a planner made for one query on a large graph pays for the pages its search
+/// `g` and `rhs` per slot, side by side (the repair loop reads both of a node at once: one
+/// cache line), `+inf` until set. Stored as bits XOR the bits of `+inf`, so that `+inf` is 0 and
+/// a fresh table is zeroed memory: the allocator hands large zeroed blocks out without writing
+/// them, so a planner made for one query on a large graph pays for the pages its search
 /// touches, not for the whole graph.
 ///
-/// The slots set since the last [`Costs::reset`] are listed, so that a reset costs what the
+/// The slots set since the last [`Values::reset`] are listed, so that a reset costs what the
 /// search touched, not the size of the graph.
 #[derive(Debug, Clone, Default)]
-struct Costs(Vec<u64>, Vec<u32>);
+struct Values {
+    bits: Vec<[u64; 2]>,
+    touched: Vec<u32>,
+}
 
 const INF_BITS: u64 = 0x7ff0_0000_0000_0000;
 
-impl Costs {
+impl Values {
     #[inline]
-    fn get(&self, slot: usize) -> Cost {
-        f64::from_bits(self.0[slot] ^ INF_BITS)
+    fn g(&self, slot: usize) -> Cost {
+        f64::from_bits(self.bits[slot][0] ^ INF_BITS)
     }
 
     #[inline]
-    fn set(&mut self, slot: usize, cost: Cost) {
-        if self.0[slot] == 0 {
-            self.1.push(slot as u32);
+    fn rhs(&self, slot: usize) -> Cost {
+        f64::from_bits(self.bits[slot][1] ^ INF_BITS)
+    }
+
+    #[inline]
+    fn set_g(&mut self, slot: usize, cost: Cost) {
+        self.set(slot, 0, cost)
+    }
+
+    #[inline]
+    fn set_rhs(&mut self, slot: usize, cost: Cost) {
+        self.set(slot, 1, cost)
+    }
+
+    #[inline]
+    fn set(&mut self, slot: usize, which: usize, cost: Cost) {
+        let pair = &mut self.bits[slot];
+        if *pair == [0, 0] {
+            self.touched.push(slot as u32);
         }
-        self.0[slot] = cost.to_bits() ^ INF_BITS;
+        pair[which] = cost.to_bits() ^ INF_BITS;
     }
 
-    /// Every cost back to `+inf`.
+    /// Every value back to `+inf`.
     fn reset(&mut self) {
-        for &slot in &self.1 {
-            self.0[slot as usize] = 0;
+        for &slot in &self.touched {
+            self.bits[slot as usize] = [0, 0];
         }
-        self.1.clear();
+        self.touched.clear();
     }
 
     fn len(&self) -> usize {
-        self.0.len()
+        self.bits.len()
     }
 
     fn grow(&mut self, len: usize) {
-        grow_zeroed(&mut self.0, len);
+        grow_zeroed(&mut self.bits, len);
     }
 }
 
-/// Makes `v` `len` long, new entries 0; a first allocation is a zeroed one (see [`Costs`]).
+/// Makes `v` `len` long, new entries 0; a first allocation is a zeroed one (see [`Values`]).
 fn grow_zeroed<T: Copy + Default + PartialEq>(v: &mut Vec<T>, len: usize) {
     if v.is_empty() {
         *v = vec![T::default(); len];
@@ -227,14 +251,14 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     {
         let mut search = Lifelong {
             dir,
-            g: Costs::default(),
-            rhs: Costs::default(),
+            v: Values::default(),
             queue: IndexedHeap::new(),
             source: 0,
             stats: SearchStats::default(),
             totals: SearchStats::default(),
             fault: None,
             epsilon: 1.0,
+            keys_current: true,
             anytime: false,
             closed: Vec::new(),
             iteration: 1,
@@ -242,7 +266,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         };
         search.fit(graph)?;
         search.source = graph.index_of(source);
-        search.rhs.set(search.source, 0.0);
+        search.v.set_rhs(search.source, 0.0);
         Ok(search)
     }
 
@@ -255,9 +279,8 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         if bound > MAX_NODES {
             return Err(SearchError::TooManyNodes(bound));
         }
-        if self.g.len() < bound {
-            self.g.grow(bound);
-            self.rhs.grow(bound);
+        if self.v.len() < bound {
+            self.v.grow(bound);
             self.queue.reserve_items(bound);
         }
         if self.anytime && self.closed.len() < bound {
@@ -272,25 +295,38 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        self.g.reset();
-        self.rhs.reset();
+        self.v.reset();
         self.queue.clear();
         self.incons.clear();
         // Closed marks are iteration numbers: the next one makes them all stale.
         self.iteration += 1;
+        self.keys_current = true;
         self.stats = SearchStats::default();
         self.fault = None;
         self.fit(graph)?;
         self.source = graph.index_of(source);
-        self.rhs.set(self.source, 0.0);
+        self.v.set_rhs(self.source, 0.0);
         Ok(())
     }
 
     /// Turns on the anytime behaviour of AD* (closed lists per iteration, inflated keys).
     pub fn make_anytime(&mut self, epsilon: f64) {
         self.anytime = true;
-        self.epsilon = epsilon;
-        grow_zeroed(&mut self.closed, self.g.len());
+        self.set_epsilon(epsilon);
+        grow_zeroed(&mut self.closed, self.v.len());
+    }
+
+    /// Sets the inflation of overconsistent keys; queued keys are stale until re-keyed.
+    pub fn set_epsilon(&mut self, epsilon: f64) {
+        if epsilon != self.epsilon {
+            self.epsilon = epsilon;
+            self.keys_current = false;
+        }
+    }
+
+    /// Marks the queued keys stale: the heuristic part of keys changed (the start moved).
+    pub fn keys_changed(&mut self) {
+        self.keys_current = false;
     }
 
     /// Starts a new iteration (AD*): nothing is closed any more, the inconsistent nodes held
@@ -305,11 +341,12 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         slots.extend(self.incons.drain(..).map(|s| s as usize));
         self.queue.clear();
         for s in slots {
-            if self.g.get(s) != self.rhs.get(s) {
+            if self.v.g(s) != self.v.rhs(s) {
                 let key = QKey::new(self.key(graph, s, h));
                 self.queue.push(s, key);
             }
         }
+        self.keys_current = true;
     }
 
     /// The slot of a node named by the user, or an error if it names nothing.
@@ -318,19 +355,19 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         G: IndexedGraph<Node = N> + ?Sized,
     {
         match graph.checked_index(node) {
-            Some(i) if i < self.g.len() => Ok(i),
+            Some(i) if i < self.v.len() => Ok(i),
             _ => Err(SearchError::UnknownNode(node)),
         }
     }
 
     #[inline]
     pub fn g(&self, slot: usize) -> Cost {
-        self.g.get(slot)
+        self.v.g(slot)
     }
 
     #[inline]
     pub fn rhs(&self, slot: usize) -> Cost {
-        self.rhs.get(slot)
+        self.v.rhs(slot)
     }
 
     /// The queued nodes and their keys, least first.
@@ -342,7 +379,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
 
     /// Bytes held by the state and the queue.
     pub fn memory_bytes(&self) -> usize {
-        (self.g.0.capacity() + self.rhs.0.capacity()) * 8
+        self.v.bits.capacity() * 16
             + (self.closed.capacity() + self.incons.capacity()) * 4
             + self.queue.memory_bytes()
     }
@@ -366,14 +403,20 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
+        self.key_at(slot, graph.node_at(slot), h)
+    }
+
+    /// The key of `slot`, which is `node`.
+    #[inline]
+    fn key_at(&self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> Key {
         // `[min(g, rhs) + h; min(g, rhs)]`, with AD*'s inflation of overconsistent nodes
         // (`[rhs + epsilon h; rhs]`), which is the same key when epsilon is 1.
-        let (g, rhs) = (self.g.get(slot), self.rhs.get(slot));
+        let (g, rhs) = (self.v.g(slot), self.v.rhs(slot));
         let m = g.min(rhs);
         if m == f64::INFINITY {
             return Key::new(m, m);
         }
-        let h = h(graph.node_at(slot));
+        let h = h(node);
         if g > rhs { Key::new(rhs + self.epsilon * h, rhs) } else { Key::new(g + h, g) }
     }
 
@@ -383,7 +426,13 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        let (g, rhs) = (self.g.get(slot), self.rhs.get(slot));
+        self.update_vertex_at(slot, graph.node_at(slot), h)
+    }
+
+    /// [`Lifelong::update_vertex`] of `slot`, which is `node`.
+    #[inline]
+    fn update_vertex_at(&mut self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) {
+        let (g, rhs) = (self.v.g(slot), self.v.rhs(slot));
         if self.anytime && self.closed[slot] == self.iteration && g > rhs && g < f64::INFINITY {
             // A node expanded in this iteration that can now improve waits for the next one
             // (that is what bounds an iteration's work, as in ARA*): its `g` is the cost of a
@@ -391,9 +440,12 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             // value rose (underconsistent), or that lost its value (`g` infinite). In exact
             // arithmetic neither happens to a closed node, but when rounding ties reorder two
             // keys it does, and deferring it would leave nodes resting on a stale value.
+            // As in the paper's UpdateState, a node moved to INCONS leaves OPEN (it may have
+            // been queued as underconsistent since its expansion).
+            self.queue.remove(slot);
             self.incons.push(slot as u32);
-        } else if self.g.get(slot) != self.rhs.get(slot) {
-            let key = QKey::new(self.key(graph, slot, h));
+        } else if g != rhs {
+            let key = QKey::new(self.key_at(slot, node, h));
             match self.queue.push(slot, key) {
                 None => self.stats.pushes += 1,
                 Some(_) => self.stats.decreases += 1,
@@ -403,27 +455,27 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         }
     }
 
-    /// Calls `visit(self, neighbour, cost)` for each edge along which `slot`'s `g` flows: its
+    /// Calls `visit(self, slot, neighbour, cost)` for each edge along which `slot`'s `g` flows: its
     /// predecessors (backward) or successors (forward).
     #[inline]
-    fn each_dependent<G>(&mut self, graph: &G, slot: usize, visit: impl FnMut(&mut Self, usize, Cost))
+    fn each_dependent<G>(&mut self, graph: &G, slot: usize, visit: impl FnMut(&mut Self, usize, N, Cost))
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.each_edge(graph, slot, self.dir == Direction::Forward, visit)
     }
 
-    /// Calls `visit(self, neighbour, cost)` for each edge `slot`'s `rhs` is computed over: its
+    /// Calls `visit(self, slot, neighbour, cost)` for each edge `slot`'s `rhs` is computed over: its
     /// successors (backward) or predecessors (forward).
     #[inline]
-    fn each_support<G>(&mut self, graph: &G, slot: usize, visit: impl FnMut(&mut Self, usize, Cost))
+    fn each_support<G>(&mut self, graph: &G, slot: usize, visit: impl FnMut(&mut Self, usize, N, Cost))
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.each_edge(graph, slot, self.dir == Direction::Backward, visit)
     }
 
-    /// Calls `visit(self, neighbour, cost)` for each edge leaving (`outgoing`) or entering
+    /// Calls `visit(self, slot, neighbour, cost)` for each edge leaving (`outgoing`) or entering
     /// `slot`. Invalid costs are remembered and skipped, self-loops skipped.
     #[inline]
     fn each_edge<G>(
@@ -431,7 +483,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         graph: &G,
         slot: usize,
         outgoing: bool,
-        mut visit: impl FnMut(&mut Self, usize, Cost),
+        mut visit: impl FnMut(&mut Self, usize, N, Cost),
     ) where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
@@ -444,7 +496,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
                 let (from, to) = if outgoing { (here, node) } else { (node, here) };
                 return this.bad_edge(from, to, c);
             }
-            visit(this, s, c)
+            visit(this, s, node, c)
         };
         if outgoing {
             graph.for_each_successor_index(slot, |s, node, c| step(self, s, node, c))
@@ -459,7 +511,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         let mut best = f64::INFINITY;
-        self.each_support(graph, slot, |this, s, c| best = best.min(c + this.g.get(s)));
+        self.each_support(graph, slot, |this, s, _, c| best = best.min(c + this.v.g(s)));
         best
     }
 
@@ -485,9 +537,15 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        if rhs != self.rhs.get(slot) {
-            self.rhs.set(slot, rhs);
-            self.update_vertex(graph, slot, h);
+        self.set_rhs_at(slot, graph.node_at(slot), rhs, h)
+    }
+
+    /// [`Lifelong::set_rhs`] of `slot`, which is `node`.
+    #[inline]
+    fn set_rhs_at(&mut self, slot: usize, node: N, rhs: Cost, h: &mut impl FnMut(N) -> Cost) {
+        if rhs != self.v.rhs(slot) {
+            self.v.set_rhs(slot, rhs);
+            self.update_vertex_at(slot, node, h);
         }
     }
 
@@ -509,7 +567,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         if dependent == self.source || dependent == support {
             return;
         }
-        let (through, before) = (self.g.get(support), self.rhs.get(dependent));
+        let (through, before) = (self.v.g(support), self.v.rhs(dependent));
         let rhs = if old > new {
             before.min(new + through)
         } else if before == old + through {
@@ -535,24 +593,39 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
+        // The target's key, recomputed only when its values change (the heuristic does not
+        // change during the loop).
+        let mut target_values = (self.v.g(target), self.v.rhs(target));
+        let mut target_key = self.key(graph, target, h);
         while let Some((u, k_old)) = self.queue.peek() {
-            let target_key = self.key(graph, target, h);
-            if !below(k_old.key(), target_key) && self.rhs.get(target) == self.g.get(target) {
+            let values = (self.v.g(target), self.v.rhs(target));
+            if values != target_values {
+                target_values = values;
+                target_key = self.key(graph, target, h);
+            }
+            if !below(k_old.key(), target_key) && values.0 == values.1 {
                 break;
             }
-            let k_new = QKey::new(self.key(graph, u, h));
-            if k_old < k_new {
-                // The key was computed with an older `k_m` or start: requeue, expand later.
-                self.queue.push(u, k_new);
-                self.stats.decreases += 1;
-                continue;
+            if !self.keys_current {
+                let k_new = QKey::new(self.key(graph, u, h));
+                if k_old < k_new {
+                    // The key was computed with an older `k_m` or start: requeue, expand later.
+                    self.queue.push(u, k_new);
+                    self.stats.decreases += 1;
+                    continue;
+                }
+            } else {
+                debug_assert!(
+                    k_old == QKey::new(self.key(graph, u, h)),
+                    "a stale key while keys are current"
+                );
             }
             if interrupt(self.stats.expansions) {
                 return false;
             }
             self.queue.pop();
             self.stats.expansions += 1;
-            let kind = if self.g.get(u) > self.rhs.get(u) {
+            let kind = if self.v.g(u) > self.v.rhs(u) {
                 Consistency::Overconsistent
             } else {
                 Consistency::Underconsistent
@@ -560,26 +633,26 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             trace(Expansion { node: graph.node_at(u), key: k_old.key(), kind });
             match kind {
                 Consistency::Overconsistent => {
-                    let gu = self.rhs.get(u);
-                    self.g.set(u, gu);
+                    let gu = self.v.rhs(u);
+                    self.v.set_g(u, gu);
                     if self.anytime {
                         self.closed[u] = self.iteration;
                     }
                     // The paper updates every dependent; `set_rhs` skips those whose `rhs` did
                     // not change.
-                    self.each_dependent(graph, u, |this, s, c| {
-                        if s != this.source && c + gu < this.rhs.get(s) {
-                            this.set_rhs(graph, s, c + gu, h);
+                    self.each_dependent(graph, u, |this, s, node, c| {
+                        if s != this.source && c + gu < this.v.rhs(s) {
+                            this.set_rhs_at(s, node, c + gu, h);
                         }
                     });
                 }
                 Consistency::Underconsistent => {
-                    let g_old = self.g.get(u);
-                    self.g.set(u, f64::INFINITY);
-                    self.each_dependent(graph, u, |this, s, c| {
-                        if s != this.source && this.rhs.get(s) == c + g_old {
+                    let g_old = self.v.g(u);
+                    self.v.set_g(u, f64::INFINITY);
+                    self.each_dependent(graph, u, |this, s, node, c| {
+                        if s != this.source && this.v.rhs(s) == c + g_old {
                             let rhs = this.rhs_from_scratch(graph, s);
-                            this.set_rhs(graph, s, rhs, h);
+                            this.set_rhs_at(s, node, rhs, h);
                         }
                     });
                     self.update_vertex(graph, u, h);
@@ -599,14 +672,14 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        if self.g.get(target).min(self.rhs.get(target)) == f64::INFINITY {
+        if self.v.g(target).min(self.v.rhs(target)) == f64::INFINITY {
             return None;
         }
         let mut slots = vec![target];
         let mut at = target;
         while at != self.source {
-            let limit = self.g.get(at).min(self.rhs.get(at));
-            let Some(next) = self.best_support(graph, at, |s| self.g.get(s) >= limit) else {
+            let limit = self.v.g(at).min(self.v.rhs(at));
+            let Some(next) = self.best_support(graph, at, |s| self.v.g(s) >= limit) else {
                 return self.walk_remembering(graph, target);
             };
             slots.push(next);
@@ -641,7 +714,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     {
         let mut best: Option<(Cost, Cost, usize)> = None;
         let mut consider = |s: usize, c: Cost| {
-            let via = (c + self.g.get(s), self.g.get(s), s);
+            let via = (c + self.v.g(s), self.v.g(s), s);
             // `via.0 < inf` also rejects invalid (NaN) costs; negative ones never come this
             // far, since the search refused them.
             if via.0 < f64::INFINITY
@@ -869,7 +942,7 @@ where
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        self.search.epsilon = epsilon;
+        self.search.set_epsilon(epsilon);
         let (search, mut h) = self.keyed();
         search.next_iteration(graph, &mut h);
     }
@@ -894,6 +967,10 @@ where
             return Err(SearchError::StartNotInGraph(to));
         }
         self.start_slot = self.search.slot_of(graph, to)?;
+        if to != self.start {
+            // Backward, the heuristic part of every key is measured from the start.
+            self.search.keys_changed();
+        }
         self.start = to;
         Ok(())
     }

@@ -9,24 +9,16 @@
 use std::ops::ControlFlow;
 use std::time::Instant;
 
-use trailmark::movingai;
 use trailmark::prelude::*;
 use trailmark::search::{AdStar, Budget, EpsilonSchedule};
 
+mod common;
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/movingai");
-    if !dir.is_dir() {
-        println!("skipped: {} not found", dir.display());
+    let Some((name, grid, queries)) = common::movingai_queries("bg512", "AR0011SR")? else {
         return Ok(());
-    }
-    let args: Vec<String> = std::env::args().collect();
-    let set = args.get(1).map_or("bg512", String::as_str);
-    let name = args.get(2).map_or("AR0011SR", String::as_str);
-    let grid = movingai::read_map(dir.join(format!("maps/{set}/{name}.map")))?;
-    let scenarios = movingai::read_scenarios(dir.join(format!("scenarios/{set}/{name}.map.scen")))?;
+    };
     let graph = GridGraph::new(&grid, Connectivity::Eight);
-    // 100 queries spread over the scenario file (every difficulty bucket), as in the bench.
-    let queries: Vec<_> = scenarios.iter().step_by((scenarios.len() / 100).max(1)).take(100).collect();
     let schedule = EpsilonSchedule::new(3.0, 0.5);
     let only_ad = std::env::var("TM_ONLY").is_ok_and(|v| v == "ad");
     let mut search = Search::new();

@@ -9,8 +9,9 @@
 use std::time::Instant;
 
 use ordered_float::OrderedFloat;
-use trailmark::movingai;
 use trailmark::prelude::*;
+
+mod common;
 
 /// The grid's moves as `pathfinding` wants them, through a fixed array (no allocation).
 fn neighbours(graph: &GridGraph, c: Cell) -> impl Iterator<Item = (Cell, OrderedFloat<f64>)> {
@@ -24,18 +25,10 @@ fn neighbours(graph: &GridGraph, c: Cell) -> impl Iterator<Item = (Cell, Ordered
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/movingai");
-    if !dir.is_dir() {
-        println!("skipped: {} not found", dir.display());
+    let Some((name, grid, queries)) = common::movingai_queries("mazes", "maze512-4-0")? else {
         return Ok(());
-    }
-    let args: Vec<String> = std::env::args().collect();
-    let set = args.get(1).map_or("mazes", String::as_str);
-    let name = args.get(2).map_or("maze512-4-0", String::as_str);
-    let grid = movingai::read_map(dir.join(format!("maps/{set}/{name}.map")))?;
-    let scenarios = movingai::read_scenarios(dir.join(format!("scenarios/{set}/{name}.map.scen")))?;
+    };
     let graph = GridGraph::new(&grid, Connectivity::Eight);
-    let queries: Vec<_> = scenarios.iter().step_by((scenarios.len() / 100).max(1)).take(100).collect();
     let only_ours = std::env::var("TM_ONLY").is_ok();
     let mut search = Search::new();
     let (mut ours, mut theirs, mut expansions) = (Vec::new(), Vec::new(), 0);

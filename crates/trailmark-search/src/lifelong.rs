@@ -20,7 +20,7 @@ use trailmark_core::path::Path;
 
 use crate::error::SearchError;
 use crate::queue::IndexedHeap;
-use crate::search::MAX_NODES;
+use crate::search::{MAX_NODES, priority_bits};
 use crate::stats::SearchStats;
 
 /// The priority of a node in the queue of LPA* and D* Lite: `[min(g, rhs) + h (+ k_m);
@@ -40,20 +40,53 @@ impl Key {
     }
 }
 
-/// A [`Key`] as one integer: the bits of the primary part above those of the secondary one.
+/// A [`Key`] as one integer, in the order the queue takes nodes: by the primary part, then,
+/// among ties, the underconsistent nodes (smaller `g` first, as in the papers) before the
+/// overconsistent ones (larger `rhs` first).
+///
+/// Among overconsistent nodes of equal primary key, the one with the larger `rhs` is the one
+/// nearer the target (its heuristic is smaller), so taking it first dives toward the target the
+/// way A* does when it breaks ties toward larger `g`. On an open map with the octile
+/// heuristic, every cell of the parallelogram between the endpoints ties; the papers' order
+/// (smaller first) fills it, this one walks across it. The order among overconsistent ties
+/// does not matter for correctness: a node whose `rhs` is not yet its least cost always has a
+/// queued node with a strictly smaller primary key. Underconsistent nodes are another matter:
+/// their stale values can hold up a tied node's `rhs`, so they keep the papers' order and come
+/// first (see [`Lifelong::compute`] for how the loop ends).
+///
+/// Bits: the primary part's (rounded as [`priority_bits`] says) above the secondary word, whose top bit says overconsistent; the
+/// secondary part's bits below it, as they are (underconsistent) or complemented (overconsistent).
 /// Both parts are non-negative (or +inf), whose bit patterns order like the numbers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) struct QKey(u128);
 
+/// The top bit of the secondary word: an overconsistent node.
+const OVER: u64 = 1 << 63;
+
 impl QKey {
     #[inline]
-    fn new(key: Key) -> Self {
-        QKey((u128::from((key.primary + 0.0).to_bits()) << 64) | u128::from((key.secondary + 0.0).to_bits()))
+    fn new(key: Key, overconsistent: bool) -> Self {
+        let secondary = (key.secondary + 0.0).to_bits();
+        let low = if overconsistent { OVER | ((OVER - 1) - secondary) } else { secondary };
+        QKey((u128::from(priority_bits(key.primary)) << 64) | u128::from(low))
+    }
+
+    #[inline]
+    fn primary(self) -> Cost {
+        f64::from_bits((self.0 >> 64) as u64)
+    }
+
+    /// Whether the node was underconsistent when queued.
+    #[inline]
+    fn under(self) -> bool {
+        (self.0 as u64) & OVER == 0
     }
 
     #[inline]
     fn key(self) -> Key {
-        Key::new(f64::from_bits((self.0 >> 64) as u64), f64::from_bits(self.0 as u64))
+        let low = self.0 as u64;
+        let secondary = if low & OVER == 0 { low } else { (OVER - 1) - (low & !OVER) };
+        Key::new(self.primary(), f64::from_bits(secondary))
     }
 }
 
@@ -122,6 +155,8 @@ pub(crate) struct Lifelong<N: Debug> {
     /// `g` and `rhs` of every slot.
     v: Values,
     queue: IndexedHeap<QKey>,
+    /// Underconsistent nodes in the queue.
+    under: usize,
     /// The slot whose `rhs` is 0.
     pub source: usize,
     /// Counters of the current call.
@@ -253,6 +288,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             dir,
             v: Values::default(),
             queue: IndexedHeap::new(),
+            under: 0,
             source: 0,
             stats: SearchStats::default(),
             totals: SearchStats::default(),
@@ -297,6 +333,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     {
         self.v.reset();
         self.queue.clear();
+        self.under = 0;
         self.incons.clear();
         // Closed marks are iteration numbers: the next one makes them all stale.
         self.iteration += 1;
@@ -340,10 +377,11 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         let mut slots: Vec<usize> = self.queue.iter().map(|(s, _)| s).collect();
         slots.extend(self.incons.drain(..).map(|s| s as usize));
         self.queue.clear();
+        self.under = 0;
         for s in slots {
             if self.v.g(s) != self.v.rhs(s) {
-                let key = QKey::new(self.key(graph, s, h));
-                self.queue.push(s, key);
+                let key = self.qkey(graph, s, h);
+                self.enqueue(s, key);
             }
         }
         self.keys_current = true;
@@ -406,6 +444,42 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         self.key_at(slot, graph.node_at(slot), h)
     }
 
+    /// The queue's key of `slot`.
+    #[inline]
+    fn qkey<G>(&self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost) -> QKey
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        self.qkey_at(slot, graph.node_at(slot), h)
+    }
+
+    /// The queue's key of `slot`, which is `node`.
+    #[inline]
+    fn qkey_at(&self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> QKey {
+        QKey::new(self.key_at(slot, node, h), self.v.g(slot) > self.v.rhs(slot))
+    }
+
+    /// Queues `slot` with `key`, or changes its key; keeps count of underconsistent nodes.
+    #[inline]
+    fn enqueue(&mut self, slot: usize, key: QKey) {
+        match self.queue.push(slot, key) {
+            None => self.stats.pushes += 1,
+            Some(old) => {
+                self.stats.decreases += 1;
+                self.under -= usize::from(old.under());
+            }
+        }
+        self.under += usize::from(key.under());
+    }
+
+    /// Takes `slot` out of the queue if it is there.
+    #[inline]
+    fn dequeue(&mut self, slot: usize) {
+        if let Some(old) = self.queue.remove(slot) {
+            self.under -= usize::from(old.under());
+        }
+    }
+
     /// The key of `slot`, which is `node`.
     #[inline]
     fn key_at(&self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> Key {
@@ -442,16 +516,13 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             // keys it does, and deferring it would leave nodes resting on a stale value.
             // As in the paper's UpdateState, a node moved to INCONS leaves OPEN (it may have
             // been queued as underconsistent since its expansion).
-            self.queue.remove(slot);
+            self.dequeue(slot);
             self.incons.push(slot as u32);
         } else if g != rhs {
-            let key = QKey::new(self.key_at(slot, node, h));
-            match self.queue.push(slot, key) {
-                None => self.stats.pushes += 1,
-                Some(_) => self.stats.decreases += 1,
-            }
+            let key = self.qkey_at(slot, node, h);
+            self.enqueue(slot, key);
         } else {
-            self.queue.remove(slot);
+            self.dequeue(slot);
         }
     }
 
@@ -579,7 +650,12 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     }
 
     /// The repair loop: expands inconsistent nodes in key order until `target` is consistent and
-    /// no queued key is below its key. `h` gives the heuristic part of a node's key. Before each
+    /// no queued key is below its key. While only overconsistent nodes wait, the loop ends at
+    /// the first whose primary key reaches the target's (as A* stops at its goal): expanding
+    /// it could not lower the target's value. While underconsistent nodes wait, it also expands
+    /// every node whose primary key ties with the target's up to rounding (see [`below`]), so
+    /// that no stale value is left where a path could follow it. `h` gives the heuristic part
+    /// of a node's key. Before each
     /// expansion `interrupt(expansions so far in this call)` may stop the loop early, leaving a
     /// valid state to continue from; returns whether the loop ran to its end.
     pub fn compute<G>(
@@ -596,34 +672,37 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         // The target's key, recomputed only when its values change (the heuristic does not
         // change during the loop).
         let mut target_values = (self.v.g(target), self.v.rhs(target));
-        let mut target_key = self.key(graph, target, h);
+        let mut target_key = self.qkey(graph, target, h);
         while let Some((u, k_old)) = self.queue.peek() {
             let values = (self.v.g(target), self.v.rhs(target));
             if values != target_values {
                 target_values = values;
-                target_key = self.key(graph, target, h);
+                target_key = self.qkey(graph, target, h);
             }
-            if !below(k_old.key(), target_key) && values.0 == values.1 {
+            let done = if self.under == 0 {
+                // Only overconsistent nodes wait: none below the target's key can improve it.
+                k_old.primary() >= target_key.primary()
+            } else {
+                !below(k_old.key(), target_key.key())
+            };
+            if done && values.0 == values.1 {
                 break;
             }
             if !self.keys_current {
-                let k_new = QKey::new(self.key(graph, u, h));
+                let k_new = self.qkey(graph, u, h);
                 if k_old < k_new {
                     // The key was computed with an older `k_m` or start: requeue, expand later.
-                    self.queue.push(u, k_new);
-                    self.stats.decreases += 1;
+                    self.enqueue(u, k_new);
                     continue;
                 }
             } else {
-                debug_assert!(
-                    k_old == QKey::new(self.key(graph, u, h)),
-                    "a stale key while keys are current"
-                );
+                debug_assert!(k_old == self.qkey(graph, u, h), "a stale key while keys are current");
             }
             if interrupt(self.stats.expansions) {
                 return false;
             }
             self.queue.pop();
+            self.under -= usize::from(k_old.under());
             self.stats.expansions += 1;
             let kind = if self.v.g(u) > self.v.rhs(u) {
                 Consistency::Overconsistent

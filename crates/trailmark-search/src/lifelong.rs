@@ -435,15 +435,6 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         }
     }
 
-    /// The key of `slot`, with `h` the heuristic part (and `k_m`) of the node.
-    #[inline]
-    fn key<G>(&self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost) -> Key
-    where
-        G: IndexedGraph<Node = N> + ?Sized,
-    {
-        self.key_at(slot, graph.node_at(slot), h)
-    }
-
     /// The queue's key of `slot`.
     #[inline]
     fn qkey<G>(&self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost) -> QKey
@@ -480,7 +471,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         }
     }
 
-    /// The key of `slot`, which is `node`.
+    /// The key of `slot`, which is `node`, with `h` the heuristic part (and `k_m`) of the node.
     #[inline]
     fn key_at(&self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> Key {
         // `[min(g, rhs) + h; min(g, rhs)]`, with AD*'s inflation of overconsistent nodes

@@ -71,9 +71,10 @@ impl QKey {
         QKey((u128::from(priority_bits(key.primary)) << 64) | u128::from(low))
     }
 
+    /// The bits of the (rounded) primary part, which order like its value.
     #[inline]
-    fn primary(self) -> Cost {
-        f64::from_bits((self.0 >> 64) as u64)
+    fn primary_bits(self) -> u64 {
+        (self.0 >> 64) as u64
     }
 
     /// Whether the node was underconsistent when queued.
@@ -86,25 +87,24 @@ impl QKey {
     fn key(self) -> Key {
         let low = self.0 as u64;
         let secondary = if low & OVER == 0 { low } else { (OVER - 1) - (low & !OVER) };
-        Key::new(self.primary(), f64::from_bits(secondary))
+        Key::new(f64::from_bits(self.primary_bits()), f64::from_bits(secondary))
     }
 }
 
-/// Whether the repair loop must go on past a queued `key` for the `target`'s key: when `key`
-/// is below it, or when their primary parts differ by no more than rounding (a relative 1e-9).
+/// Whether an underconsistent node whose key has the (rounded) `primary` part must be expanded
+/// before the repair loop ends at a `target` primary key: when it is below, or when the two
+/// differ by no more than rounding (a relative 1e-9).
 ///
 /// The primary part of a key adds `g`, `h` (and `k_m`) in an order that can differ, in the last
-/// bits, from the sums that made the target's `g`. With a tight heuristic (an octile distance
-/// between free cells) a node whose key ties with the target's in exact arithmetic can round
-/// to a key a unit in the last place above or below it, and the queue then orders the tied
-/// nodes by those last bits instead of by their secondary parts. Stopping at the first tied
-/// node could leave an underconsistent node behind it whose stale value a path would follow.
-/// Expanding every near-tie settles them as exact arithmetic would, at the price of the nodes
-/// on the target's own level set that exact arithmetic would have left alone.
+/// bits, from the sums that made the target's `g`; rounding priorities to 32 mantissa bits
+/// (see `priority_bits`) makes most such near-ties exact, but two values on either side of a
+/// rounding boundary still differ by one unit. Leaving behind an underconsistent node whose
+/// key ties with the target's in exact arithmetic could leave a stale value a path would
+/// follow; overconsistent near-ties cannot lower the target's value and may wait.
 #[inline]
-fn below(key: Key, target: Key) -> bool {
-    let tolerance = if target.primary.is_finite() { 1e-9 * target.primary.max(1.0) } else { 0.0 };
-    key.primary <= target.primary + tolerance
+fn below(primary: Cost, target: Cost) -> bool {
+    let tolerance = if target.is_finite() { 1e-9 * target.max(1.0) } else { 0.0 };
+    primary <= target + tolerance
 }
 
 /// What an expansion did to a node's `g`.
@@ -155,8 +155,9 @@ pub(crate) struct Lifelong<N: Debug> {
     /// `g` and `rhs` of every slot.
     v: Values,
     queue: IndexedHeap<QKey>,
-    /// Underconsistent nodes in the queue.
-    under: usize,
+    /// The underconsistent nodes of `queue`, by the primary part of their key: the loop's end
+    /// waits for those near the target's key (see [`Lifelong::compute`]).
+    under: IndexedHeap<u64>,
     /// The slot whose `rhs` is 0.
     pub source: usize,
     /// Counters of the current call.
@@ -288,7 +289,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             dir,
             v: Values::default(),
             queue: IndexedHeap::new(),
-            under: 0,
+            under: IndexedHeap::new(),
             source: 0,
             stats: SearchStats::default(),
             totals: SearchStats::default(),
@@ -333,7 +334,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     {
         self.v.reset();
         self.queue.clear();
-        self.under = 0;
+        self.under.clear();
         self.incons.clear();
         // Closed marks are iteration numbers: the next one makes them all stale.
         self.iteration += 1;
@@ -377,7 +378,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         let mut slots: Vec<usize> = self.queue.iter().map(|(s, _)| s).collect();
         slots.extend(self.incons.drain(..).map(|s| s as usize));
         self.queue.clear();
-        self.under = 0;
+        self.under.clear();
         for s in slots {
             if self.v.g(s) != self.v.rhs(s) {
                 let key = self.qkey(graph, s, h);
@@ -450,24 +451,26 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         QKey::new(self.key_at(slot, node, h), self.v.g(slot) > self.v.rhs(slot))
     }
 
-    /// Queues `slot` with `key`, or changes its key; keeps count of underconsistent nodes.
+    /// Queues `slot` with `key`, or changes its key (and keeps `under` in step).
     #[inline]
     fn enqueue(&mut self, slot: usize, key: QKey) {
-        match self.queue.push(slot, key) {
+        let old = self.queue.push(slot, key);
+        match old {
             None => self.stats.pushes += 1,
-            Some(old) => {
-                self.stats.decreases += 1;
-                self.under -= usize::from(old.under());
-            }
+            Some(_) => self.stats.decreases += 1,
         }
-        self.under += usize::from(key.under());
+        if key.under() {
+            self.under.push(slot, key.primary_bits());
+        } else if old.is_some_and(QKey::under) {
+            self.under.remove(slot);
+        }
     }
 
     /// Takes `slot` out of the queue if it is there.
     #[inline]
     fn dequeue(&mut self, slot: usize) {
-        if let Some(old) = self.queue.remove(slot) {
-            self.under -= usize::from(old.under());
+        if self.queue.remove(slot).is_some_and(QKey::under) {
+            self.under.remove(slot);
         }
     }
 
@@ -641,12 +644,11 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     }
 
     /// The repair loop: expands inconsistent nodes in key order until `target` is consistent and
-    /// no queued key is below its key. While only overconsistent nodes wait, the loop ends at
-    /// the first whose primary key reaches the target's (as A* stops at its goal): expanding
-    /// it could not lower the target's value. While underconsistent nodes wait, it also expands
-    /// every node whose primary key ties with the target's up to rounding (see [`below`]), so
-    /// that no stale value is left where a path could follow it. `h` gives the heuristic part
-    /// of a node's key. Before each
+    /// no queued key is below its key: it ends at the first queued node whose primary key
+    /// reaches the target's (as A* stops at its goal), since expanding it could not lower the
+    /// target's value, once every underconsistent node whose primary key ties with the
+    /// target's up to rounding (see [`below`]) is expanded too, so that no stale value is left
+    /// where a path could follow it. `h` gives the heuristic part of a node's key. Before each
     /// expansion `interrupt(expansions so far in this call)` may stop the loop early, leaving a
     /// valid state to continue from; returns whether the loop ran to its end.
     pub fn compute<G>(
@@ -664,21 +666,26 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         // change during the loop).
         let mut target_values = (self.v.g(target), self.v.rhs(target));
         let mut target_key = self.qkey(graph, target, h);
-        while let Some((u, k_old)) = self.queue.peek() {
+        while let Some((top, k_top)) = self.queue.peek() {
             let values = (self.v.g(target), self.v.rhs(target));
             if values != target_values {
                 target_values = values;
                 target_key = self.qkey(graph, target, h);
             }
-            let done = if self.under == 0 {
-                // Only overconsistent nodes wait: none below the target's key can improve it.
-                k_old.primary() >= target_key.primary()
+            let (u, k_old) = if k_top.primary_bits() < target_key.primary_bits() || values.0 != values.1 {
+                (top, k_top)
             } else {
-                !below(k_old.key(), target_key.key())
+                // No node below the target's key can improve its value; but an underconsistent
+                // node whose key ties with it up to rounding may hold a stale value that a path
+                // would follow: those are expanded first.
+                let target_primary = f64::from_bits(target_key.primary_bits());
+                match self.under.peek() {
+                    Some((w, bits)) if below(f64::from_bits(bits), target_primary) => {
+                        (w, self.queue.key(w).expect("underconsistent nodes are queued"))
+                    }
+                    _ => break,
+                }
             };
-            if done && values.0 == values.1 {
-                break;
-            }
             if !self.keys_current {
                 let k_new = self.qkey(graph, u, h);
                 if k_old < k_new {
@@ -692,8 +699,14 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             if interrupt(self.stats.expansions) {
                 return false;
             }
-            self.queue.pop();
-            self.under -= usize::from(k_old.under());
+            if u == top {
+                self.queue.pop();
+            } else {
+                self.queue.remove(u);
+            }
+            if k_old.under() {
+                self.under.remove(u);
+            }
             self.stats.expansions += 1;
             let kind = if self.v.g(u) > self.v.rhs(u) {
                 Consistency::Overconsistent

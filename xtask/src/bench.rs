@@ -644,13 +644,18 @@ pub fn run(args: &Args) -> ExitCode {
         navigation,
         anytime,
     };
-    let text = markdown(&report);
+    let mut text = markdown(&report);
+    if let Some(Ok((_, summary))) = &cost_time {
+        text.push_str(&format!(
+            "\n## Path cost over time\n\n![path cost over time](anytime-cost-time.svg)\n\n{summary}\n"
+        ));
+    }
     let folder =
         crate::workspace_root().join("target/bench").join(format!("{}-{}", args.suite.name(), report.date));
     let written = std::fs::create_dir_all(&folder)
         .and_then(|()| std::fs::write(folder.join("report.md"), &text))
         .and_then(|()| match &cost_time {
-            Some(Ok(svg)) => std::fs::write(folder.join("anytime-cost-time.svg"), svg),
+            Some(Ok((svg, _))) => std::fs::write(folder.join("anytime-cost-time.svg"), svg),
             Some(Err(e)) => {
                 eprintln!("warning: no cost-over-time plot: {e}");
                 Ok(())

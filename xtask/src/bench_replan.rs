@@ -321,8 +321,9 @@ pub fn bench_anytime(maps: &[&Map], n: usize, runs: u32) -> Vec<AnytimeRow> {
 }
 
 /// A plot of path cost against time for ARA* and AD* on the query of `map` with the longest
-/// optimal path, with optimal A* as a point: an SVG document.
-pub fn cost_time_svg(map: &Map) -> Result<String, String> {
+/// optimal path, with optimal A* as a point: an SVG document, and a sentence that gives the
+/// plotted figures.
+pub fn cost_time_svg(map: &Map) -> Result<(String, String), String> {
     let q = map.queries.iter().max_by(|a, b| a.optimal.total_cmp(&b.optimal)).ok_or("no query")?;
     let graph = GridGraph::new(&map.grid, Connectivity::Eight);
     let h = graph.heuristic(GridHeuristic::Octile, q.goal);
@@ -339,6 +340,27 @@ pub fn cost_time_svg(map: &Map) -> Result<String, String> {
     };
     let (ara_pts, ad_pts) = (points(&ara.iterations), points(&ad.iterations));
     let astar_pt = (astar.stats.elapsed.as_secs_f64() * 1e3, astar.cost().ok_or("unreachable")?);
+    let summary = match (ara_pts.first(), ara_pts.last(), ad_pts.first(), ad_pts.last()) {
+        (Some(a0), Some(a1), Some(d0), Some(d1)) => format!(
+            "Query ({}, {}) -> ({}, {}) on {}: A* finds the optimum {:.2} in {:.2} ms. ARA*'s first path \
+             comes in {:.2} ms at {:.1}% above it, its last (epsilon 1) at {:.2} ms; AD*'s first in \
+             {:.2} ms ({:.1}% above), its last at {:.2} ms.",
+            q.start.x,
+            q.start.y,
+            q.goal.x,
+            q.goal.y,
+            map.name,
+            astar_pt.1,
+            astar_pt.0,
+            a0.0,
+            (a0.1 / astar_pt.1 - 1.0) * 100.0,
+            a1.0,
+            d0.0,
+            (d0.1 / astar_pt.1 - 1.0) * 100.0,
+            d1.0,
+        ),
+        _ => "No anytime path found.".to_string(),
+    };
     let all: Vec<(f64, f64)> = ara_pts.iter().chain(&ad_pts).chain([&astar_pt]).copied().collect();
     let t_max = all.iter().map(|p| p.0).fold(0.0, f64::max) * 1.05;
     let c_min = all.iter().map(|p| p.1).fold(f64::INFINITY, f64::min) * 0.98;
@@ -396,7 +418,7 @@ pub fn cost_time_svg(map: &Map) -> Result<String, String> {
             .map_err(|e| e.to_string())?;
         root.present().map_err(|e| e.to_string())?;
     }
-    Ok(svg)
+    Ok((svg, summary))
 }
 
 /// The markdown of the navigation and anytime sections.

@@ -223,7 +223,7 @@ impl<I> Search<I> {
             let u = match held.take() {
                 Some((key, v)) => match self.heap.peek() {
                     Some((_, top)) if top < key => {
-                        self.heap.push(v, key);
+                        self.heap.push_absent(v, key);
                         self.heap.pop().map_or(v, |(u, _)| u)
                     }
                     _ => v,
@@ -273,11 +273,11 @@ impl<I> Search<I> {
                     }
                     None => held = Some((key, v)),
                     Some((k, w)) if key < k => {
-                        heap.push(w, k);
+                        heap.push_absent(w, k);
                         held = Some((key, v));
                     }
                     Some(_) => {
-                        heap.push(v, key);
+                        heap.push_absent(v, key);
                     }
                 }
             });

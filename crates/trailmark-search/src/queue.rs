@@ -132,6 +132,20 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
         }
     }
 
+    /// Queues `item`, which the caller knows is not queued, with `key`: [`IndexedHeap::push`]
+    /// without reading the item's position first (for a node the search has just met, that
+    /// read is a cache miss).
+    #[inline]
+    pub(crate) fn push_absent(&mut self, item: usize, key: K) {
+        if item >= self.pos.len() {
+            self.grow(item);
+        }
+        debug_assert_eq!(self.pos[item], ABSENT, "push_absent of a queued item");
+        let p = self.heap.len();
+        self.heap.push(Entry { key, item: item as u32 });
+        self.sift_up(p);
+    }
+
     /// Makes room in the position table for `item`.
     #[cold]
     fn grow(&mut self, item: usize) {

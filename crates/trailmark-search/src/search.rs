@@ -92,7 +92,9 @@ impl FKey {
         // the exponent is clamped so that the scale stays a normal float (tiny `f` only).
         let exponent = (rounded >> 52).max(u64::from(DEPTH_BITS) + 1);
         let scale = f64::from_bits((2 * 1023 + u64::from(DEPTH_BITS) - exponent) << 52);
-        let depth = ((g * scale) as u64).min(SCALE);
+        // Adding 2^52 puts the integer part of a number below 2^52 in the low mantissa bits
+        // (rounded to nearest): cheaper than a float-to-integer conversion.
+        let depth = ((g * scale + 4503599627370496.0).to_bits() & ((1 << 52) - 1)).min(SCALE);
         FKey(rounded | (SCALE - depth))
     }
 }
@@ -442,7 +444,18 @@ impl<N: Copy + Debug> EdgeCheck<N> {
     pub fn accept(&mut self, to: N, cost: Cost) -> bool {
         // One integer comparison: the bit patterns below that of +inf are exactly the
         // non-negative finite numbers (negative numbers and NaN have larger patterns).
-        if cost.to_bits() < f64::INFINITY.to_bits() || cost == 0.0 {
+        if cost.to_bits() < f64::INFINITY.to_bits() {
+            return true;
+        }
+        self.unusual(to, cost)
+    }
+
+    /// The rest of [`EdgeCheck::accept`], out of the hot path: `-0.0` is accepted, `NO_EDGE`
+    /// skipped, anything else remembered as invalid.
+    #[cold]
+    #[inline(never)]
+    fn unusual(&mut self, to: N, cost: Cost) -> bool {
+        if cost == 0.0 {
             return true;
         }
         if cost != f64::INFINITY && self.bad.is_none() {

@@ -74,7 +74,7 @@ pub(crate) fn priority_bits(value: Cost) -> u64 {
 /// of `f`. For
 /// non-negative floats the bit pattern orders like the number, so keys compare as integers,
 /// without floating-point branches in the heap's inner loop, and a heap entry (key and node)
-/// takes 16 bytes, so the four children of a heap node share one cache line. Among keys of equal
+/// takes 16 bytes, so the four children of a heap node span 64 bytes. Among keys of equal
 /// `f`, `g` values closer than `f / 2^19` tie; such ties are broken arbitrarily.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) struct FKey(u64);

@@ -98,5 +98,71 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         dstar.outcome, dstar.steps, dstar.expansions, scratch.expansions
     );
     write("navigate-dstar-lite.svg", dstar.svg(&truth, Some(goal)))?;
+
+    write("core-dubins.svg", dubins_words()?)?;
     Ok(())
+}
+
+/// The six Dubins words between two poses a few turning radii apart, the shortest drawn bold.
+fn dubins_words() -> Result<String, Box<dyn std::error::Error>> {
+    use std::fmt::Write;
+    use trailmark::core::dubins::{DubinsPath, DubinsWord};
+    use trailmark::core::geometry::{Pose, Vector};
+
+    let start = Pose::new(Vector::new(0.0, 0.0), std::f64::consts::FRAC_PI_2);
+    let goal = Pose::new(Vector::new(2.2, 0.6), -2.4);
+    let best = DubinsPath::shortest(&start, &goal, 1.0)?;
+    // World window [-2.6, 5] x [-2.6, 3.2], 60 pixels a unit, y up.
+    let (scale, x0, y1) = (60.0, -2.6, 3.2);
+    let px = |x: f64, y: f64| ((x - x0) * scale, (y1 - y) * scale);
+    let colours = ["#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#a6761d"];
+    let mut svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0}\" height=\"{:.0}\" font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+        7.6 * scale + 190.0,
+        5.8 * scale
+    );
+    for (i, word) in DubinsWord::ALL.into_iter().enumerate() {
+        let label = match DubinsPath::with_word(&start, &goal, 1.0, word) {
+            Ok(path) => {
+                let points: Vec<String> = path
+                    .sample(0.02)?
+                    .iter()
+                    .map(|p| {
+                        let (x, y) = px(p.translation.vector.x, p.translation.vector.y);
+                        format!("{x:.1},{y:.1}")
+                    })
+                    .collect();
+                let width = if word == best.word() { 4.0 } else { 1.6 };
+                writeln!(
+                    svg,
+                    "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{width}\" points=\"{}\"/>",
+                    colours[i],
+                    points.join(" ")
+                )?;
+                println!("dubins {word}: length {:.3}", path.length());
+                format!("{word} {:.3}{}", path.length(), if word == best.word() { " (shortest)" } else { "" })
+            }
+            Err(_) => format!("{word}: none"),
+        };
+        writeln!(
+            svg,
+            "<text x=\"{:.0}\" y=\"{:.0}\" fill=\"{}\">{label}</text>",
+            7.6 * scale + 10.0,
+            24.0 + 20.0 * i as f64,
+            colours[i]
+        )?;
+    }
+    for (pose, name) in [(&start, "start"), (&goal, "goal")] {
+        let (x, y) = px(pose.translation.vector.x, pose.translation.vector.y);
+        let h = pose.rotation.angle();
+        let (tx, ty) = (x + 24.0 * h.cos(), y - 24.0 * h.sin());
+        writeln!(
+            svg,
+            "<circle cx=\"{x:.1}\" cy=\"{y:.1}\" r=\"5\"/><line x1=\"{x:.1}\" y1=\"{y:.1}\" x2=\"{tx:.1}\" y2=\"{ty:.1}\" stroke=\"black\" stroke-width=\"2.5\"/><text x=\"{:.1}\" y=\"{:.1}\">{name}</text>",
+            x + 8.0,
+            y + 18.0
+        )?;
+    }
+    svg.push_str("</svg>\n");
+    Ok(svg)
 }

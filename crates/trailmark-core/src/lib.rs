@@ -1,5 +1,5 @@
 //! The vocabulary shared by every trailmark crate: geometry, costs, graph traits, grids,
-//! MovingAI benchmark files, problem/result documents and SVG pictures.
+//! Dubins curves, MovingAI benchmark files, problem/result documents and SVG pictures.
 //!
 //! Algorithms (`trailmark-search`) and graph builders (`trailmark-graph`) both depend on this
 //! crate and never on each other; a graph of your own that implements the traits of [`graph`]
@@ -24,6 +24,7 @@
 #![deny(missing_docs)]
 
 pub mod cost;
+pub mod dubins;
 pub mod generate;
 pub mod geometry;
 pub mod graph;

@@ -1,0 +1,775 @@
+//! Dubins curves: the shortest paths of a vehicle that only drives forward, at unit speed, with
+//! a bounded turning radius.
+//!
+//! Dubins (1957) showed that such a shortest path between two poses is made of at most three
+//! pieces, each a left turn (`L`) or right turn (`R`) at the minimum turning radius or a straight
+//! segment (`S`), in one of six *words*: `LSL`, `LSR`, `RSL`, `RSR`, `RLR`, `LRL`.
+//! [`DubinsPath::shortest`] tries all six with the closed forms of Shkel and Lumelsky (2001) and
+//! keeps the shortest; [`DubinsPath::with_word`] builds one given word.
+//!
+//! Poses are [`Pose`]s (nalgebra `Isometry2`): position in world units, heading in radians,
+//! counter-clockwise from +x. A path can be measured ([`DubinsPath::length`]), evaluated at any
+//! arc length ([`DubinsPath::pose_at`]), sampled ([`DubinsPath::sample`]), cut
+//! ([`DubinsPath::subpath`]), and taken apart into exact arcs and segments
+//! ([`DubinsPath::pieces`]) for collision checks.
+//!
+//! ```
+//! use std::f64::consts::PI;
+//! use trailmark_core::dubins::{DubinsPath, DubinsWord};
+//! use trailmark_core::geometry::{Pose, Vector};
+//!
+//! // From the origin facing +x to (4, 0) facing back: turn around with a radius of 1.
+//! let start = Pose::new(Vector::new(0.0, 0.0), 0.0);
+//! let goal = Pose::new(Vector::new(4.0, 0.0), PI);
+//! let path = DubinsPath::shortest(&start, &goal, 1.0)?;
+//! let end = path.end();
+//! assert!((end.translation.vector - goal.translation.vector).norm() < 1e-9);
+//! assert!(path.length() > 4.0); // longer than the straight line
+//! // No word is shorter.
+//! for word in DubinsWord::ALL {
+//!     if let Ok(other) = DubinsPath::with_word(&start, &goal, 1.0, word) {
+//!         assert!(path.length() <= other.length() + 1e-12);
+//!     }
+//! }
+//!
+//! // Poses along the way, every 0.1 units, the end included.
+//! let poses = path.sample(0.1)?;
+//! assert_eq!(poses.len(), (path.length() / 0.1).ceil() as usize + 1);
+//! # Ok::<(), trailmark_core::dubins::DubinsError>(())
+//! ```
+
+use std::f64::consts::TAU;
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::geometry::{Point, Pose, Vector};
+
+/// What a piece of a Dubins path does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Turn {
+    /// A counter-clockwise arc at the turning radius.
+    Left,
+    /// A straight segment.
+    Straight,
+    /// A clockwise arc at the turning radius.
+    Right,
+}
+
+/// The six kinds of Dubins path, named by their three pieces (`L`eft, `S`traight, `R`ight).
+///
+/// In JSON a word is written in capitals: `"LSL"`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "UPPERCASE")]
+pub enum DubinsWord {
+    /// Left, straight, left.
+    Lsl,
+    /// Left, straight, right.
+    Lsr,
+    /// Right, straight, left.
+    Rsl,
+    /// Right, straight, right.
+    Rsr,
+    /// Right, left, right.
+    Rlr,
+    /// Left, right, left.
+    Lrl,
+}
+
+impl DubinsWord {
+    /// All six words.
+    pub const ALL: [DubinsWord; 6] = [
+        DubinsWord::Lsl,
+        DubinsWord::Lsr,
+        DubinsWord::Rsl,
+        DubinsWord::Rsr,
+        DubinsWord::Rlr,
+        DubinsWord::Lrl,
+    ];
+
+    /// The three pieces of the word, in order.
+    pub const fn turns(self) -> [Turn; 3] {
+        use Turn::{Left as L, Right as R, Straight as S};
+        match self {
+            DubinsWord::Lsl => [L, S, L],
+            DubinsWord::Lsr => [L, S, R],
+            DubinsWord::Rsl => [R, S, L],
+            DubinsWord::Rsr => [R, S, R],
+            DubinsWord::Rlr => [R, L, R],
+            DubinsWord::Lrl => [L, R, L],
+        }
+    }
+
+    /// The word in capitals, as in the literature: `"LSL"`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            DubinsWord::Lsl => "LSL",
+            DubinsWord::Lsr => "LSR",
+            DubinsWord::Rsl => "RSL",
+            DubinsWord::Rsr => "RSR",
+            DubinsWord::Rlr => "RLR",
+            DubinsWord::Lrl => "LRL",
+        }
+    }
+}
+
+impl std::fmt::Display for DubinsWord {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// What was wrong with a Dubins query.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum DubinsError {
+    /// The turning radius must be positive and finite.
+    #[error("the turning radius must be positive and finite, got {0}")]
+    InvalidRadius(f64),
+    /// A pose has a NaN or infinite coordinate or heading.
+    #[error("the {which} pose is not finite: ({x}, {y}), rotation ({cos}, {sin})")]
+    NonFinitePose {
+        /// `"start"` or `"goal"`.
+        which: &'static str,
+        /// Its x coordinate.
+        x: f64,
+        /// Its y coordinate.
+        y: f64,
+        /// The cosine of its heading.
+        cos: f64,
+        /// The sine of its heading.
+        sin: f64,
+    },
+    /// The requested word cannot join the two poses (the shortest path always exists).
+    #[error("no {0} path joins these poses")]
+    NoPath(DubinsWord),
+    /// An arc length outside `[0, length]`.
+    #[error("arc length {s} is outside the path, whose length is {length}")]
+    OutOfRange {
+        /// The arc length asked for.
+        s: f64,
+        /// The path's length.
+        length: f64,
+    },
+    /// A sampling step must be positive and finite.
+    #[error("the sampling step must be positive and finite, got {0}")]
+    InvalidStep(f64),
+}
+
+/// One piece of a Dubins path in world coordinates: what collision checks test.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Piece {
+    /// A circular arc.
+    Arc {
+        /// The centre of the circle.
+        center: Point,
+        /// The radius (the path's turning radius).
+        radius: f64,
+        /// The angle of the arc's first point as seen from the centre, in radians.
+        start_angle: f64,
+        /// The signed angle swept: positive counter-clockwise (a left turn), negative clockwise.
+        sweep: f64,
+    },
+    /// A straight segment.
+    Segment {
+        /// Where it starts.
+        from: Point,
+        /// Where it ends.
+        to: Point,
+    },
+}
+
+/// A Dubins path: a start pose, a turning radius, a word and the length of each of its three
+/// pieces.
+///
+/// Serializes as `{"start": [x, y, heading], "turning_radius": r, "word": "LSL", "params": [t, p,
+/// q]}`, with `params` the pieces' lengths divided by the radius (a turn's angle in radians).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct DubinsPath {
+    start: [f64; 3],
+    turning_radius: f64,
+    word: DubinsWord,
+    params: [f64; 3],
+}
+
+/// A query in the normalised frame of Shkel and Lumelsky: the start at the origin, the goal on
+/// the +x axis at distance `d` (in turning radii), headings `alpha` and `beta` relative to the
+/// line between them.
+#[derive(Debug, Clone, Copy)]
+struct Normalised {
+    alpha: f64,
+    beta: f64,
+    d: f64,
+    sa: f64,
+    ca: f64,
+    sb: f64,
+    cb: f64,
+    /// `cos(alpha - beta)`.
+    cab: f64,
+}
+
+/// `x` modulo 2π, in `[0, 2π)`. Arguments are within a few turns of the range, so a loop of
+/// additions beats a division and a call to `floor`.
+#[inline]
+fn mod_tau(mut x: f64) -> f64 {
+    while x < 0.0 {
+        x += TAU;
+    }
+    while x >= TAU {
+        x -= TAU;
+    }
+    x
+}
+
+impl Normalised {
+    fn new(start: &Pose, goal: &Pose, radius: f64) -> Result<Self, DubinsError> {
+        if !(radius > 0.0 && radius.is_finite()) {
+            return Err(DubinsError::InvalidRadius(radius));
+        }
+        check_pose("start", start)?;
+        check_pose("goal", goal)?;
+        let delta = goal.translation.vector - start.translation.vector;
+        let dist = delta.norm();
+        // The direction of the line from start to goal (+x when they coincide).
+        let (cphi, sphi) = if dist > 0.0 { (delta.x / dist, delta.y / dist) } else { (1.0, 0.0) };
+        // Headings relative to that line, through the rotations' cosines and sines: no sin or
+        // cos to evaluate.
+        let (c0, s0) = (start.rotation.re, start.rotation.im);
+        let (c1, s1) = (goal.rotation.re, goal.rotation.im);
+        let (ca, sa) = (c0 * cphi + s0 * sphi, s0 * cphi - c0 * sphi);
+        let (cb, sb) = (c1 * cphi + s1 * sphi, s1 * cphi - c1 * sphi);
+        Ok(Normalised {
+            alpha: mod_tau(sa.atan2(ca)),
+            beta: mod_tau(sb.atan2(cb)),
+            d: dist / radius,
+            sa,
+            ca,
+            sb,
+            cb,
+            cab: ca * cb + sa * sb,
+        })
+    }
+
+    /// The normalised lengths of `word`'s three pieces, or `None` when it cannot join the poses.
+    #[inline]
+    fn params(&self, word: DubinsWord) -> Option<[f64; 3]> {
+        let Normalised { alpha, beta, d, sa, ca, sb, cb, cab } = *self;
+        match word {
+            DubinsWord::Lsl => {
+                let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sa - sb);
+                if p2 < 0.0 {
+                    return None;
+                }
+                let theta = (cb - ca).atan2(d + sa - sb);
+                Some([mod_tau(theta - alpha), p2.sqrt(), mod_tau(beta - theta)])
+            }
+            DubinsWord::Rsr => {
+                let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sb - sa);
+                if p2 < 0.0 {
+                    return None;
+                }
+                let theta = (ca - cb).atan2(d - sa + sb);
+                Some([mod_tau(alpha - theta), p2.sqrt(), mod_tau(theta - beta)])
+            }
+            DubinsWord::Lsr => {
+                let p2 = -2.0 + d * d + 2.0 * cab + 2.0 * d * (sa + sb);
+                if p2 < 0.0 {
+                    return None;
+                }
+                let p = p2.sqrt();
+                // atan2(-ca - cb, d + sa + sb) - atan2(-2, p), as the argument of one product.
+                let (x, y) = (d + sa + sb, -ca - cb);
+                let theta = (2.0 * x + y * p).atan2(x * p - 2.0 * y);
+                Some([mod_tau(theta - alpha), p, mod_tau(theta - beta)])
+            }
+            DubinsWord::Rsl => {
+                let p2 = -2.0 + d * d + 2.0 * cab - 2.0 * d * (sa + sb);
+                if p2 < 0.0 {
+                    return None;
+                }
+                let p = p2.sqrt();
+                // atan2(ca + cb, d - sa - sb) - atan2(2, p), as the argument of one product.
+                let (x, y) = (d - sa - sb, ca + cb);
+                let theta = (y * p - 2.0 * x).atan2(x * p + 2.0 * y);
+                Some([mod_tau(alpha - theta), p, mod_tau(beta - theta)])
+            }
+            DubinsWord::Rlr => {
+                let c = (6.0 - d * d + 2.0 * cab + 2.0 * d * (sa - sb)) / 8.0;
+                if c.abs() > 1.0 {
+                    return None;
+                }
+                let theta = (ca - cb).atan2(d - sa + sb);
+                let p = mod_tau(TAU - c.acos());
+                let t = mod_tau(alpha - theta + p / 2.0);
+                Some([t, p, mod_tau(alpha - beta - t + p)])
+            }
+            DubinsWord::Lrl => {
+                let c = (6.0 - d * d + 2.0 * cab + 2.0 * d * (sb - sa)) / 8.0;
+                if c.abs() > 1.0 {
+                    return None;
+                }
+                let theta = (cb - ca).atan2(d + sa - sb);
+                let p = mod_tau(TAU - c.acos());
+                let t = mod_tau(theta - alpha + p / 2.0);
+                Some([t, p, mod_tau(beta - alpha - t + p)])
+            }
+        }
+    }
+
+    /// The shortest word and its parameters (one always exists).
+    ///
+    /// `LSL` and `RSR` are measured without their turn angles (see [`Normalised::same_side`]),
+    /// so only the winning word pays for its `atan2`; the other words are evaluated in full.
+    fn shortest(&self) -> (DubinsWord, [f64; 3]) {
+        let mut best = (DubinsWord::Lsl, f64::INFINITY);
+        for word in DubinsWord::ALL {
+            let length = match word {
+                DubinsWord::Lsl | DubinsWord::Rsr => match self.same_side_length(word) {
+                    Some(Some(length)) => length,
+                    Some(None) => continue,
+                    None => self.params(word).map_or(f64::INFINITY, |[t, p, q]| t + p + q),
+                },
+                _ => self.params(word).map_or(f64::INFINITY, |[t, p, q]| t + p + q),
+            };
+            if length < best.1 {
+                best = (word, length);
+            }
+        }
+        let params = self.params(best.0).expect("the shortest word exists");
+        debug_assert!(
+            (params.iter().sum::<f64>() - best.1).abs() <= 1e-6 * (1.0 + best.1),
+            "{} measured {} but evaluates to {params:?}",
+            best.0,
+            best.1
+        );
+        (best.0, params)
+    }
+
+    /// The normalised length of `LSL` or `RSR` without evaluating their turn angles: `Some(None)`
+    /// when the word cannot join the poses, `None` when the answer is too close to call (then
+    /// [`Normalised::params`] decides).
+    ///
+    /// For `LSL`, the turns `t = θ - α` and `q = β - θ` (mod 2π) add up to `β - α` (mod 2π), so
+    /// `t + q` is `D = (β - α) mod 2π`, or `D + 2π` when `t > D`. Whether `t > D` is an
+    /// orientation test between two vectors, without an angle. `RSR` is its mirror image.
+    #[inline]
+    fn same_side_length(&self, word: DubinsWord) -> Option<Option<f64>> {
+        let Normalised { alpha, beta, d, sa, ca, sb, cb, cab } = *self;
+        let (p2, x, y, turns, sin_turns) = match word {
+            DubinsWord::Lsl => {
+                let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sa - sb);
+                let (x, y) = (d + sa - sb, cb - ca);
+                // (x, y) points along θ; turned by -α it points along t.
+                (p2, x * ca + y * sa, y * ca - x * sa, mod_tau(beta - alpha), sb * ca - cb * sa)
+            }
+            _ => {
+                let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sb - sa);
+                let (x, y) = (d - sa + sb, ca - cb);
+                // The direction of α turned by -θ points along t = α - θ.
+                (p2, ca * x + sa * y, sa * x - ca * y, mod_tau(alpha - beta), sa * cb - ca * sb)
+            }
+        };
+        if p2 < 0.0 {
+            return Some(None);
+        }
+        // t and D as the angles of vectors in [0, 2π): u for t, w for D.
+        let (u, w) = ((x, y), (cab, sin_turns));
+        const CLOSE: f64 = 1e-9;
+        let (nu, nw) = ((u.0 * u.0 + u.1 * u.1).sqrt(), (w.0 * w.0 + w.1 * w.1).sqrt());
+        // Too close to call: t or D near 0 (where mod 2π jumps), or t near D.
+        let cross = w.0 * u.1 - w.1 * u.0;
+        let (hu, hw) = (lower_half(u), lower_half(w));
+        if (u.1.abs() <= CLOSE * nu && u.0 > 0.0)
+            || (w.1.abs() <= CLOSE * nw && w.0 > 0.0)
+            || (hu == hw && cross.abs() <= CLOSE * nu * nw)
+            || nu == 0.0
+        {
+            return None;
+        }
+        let t_beyond_d = if hu == hw { cross > 0.0 } else { hu };
+        let extra = if t_beyond_d { TAU } else { 0.0 };
+        Some(Some(p2.sqrt() + turns + extra))
+    }
+}
+
+/// Whether the angle of `(x, y)` in `[0, 2π)` is at least π (as `atan2` then mod 2π says).
+#[inline]
+fn lower_half((x, y): (f64, f64)) -> bool {
+    !(y > 0.0 || (y == 0.0 && x >= 0.0))
+}
+
+fn check_pose(which: &'static str, pose: &Pose) -> Result<(), DubinsError> {
+    let (x, y) = (pose.translation.vector.x, pose.translation.vector.y);
+    let (cos, sin) = (pose.rotation.re, pose.rotation.im);
+    if [x, y, cos, sin].iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(DubinsError::NonFinitePose { which, x, y, cos, sin })
+    }
+}
+
+/// The pose after driving `length` (world units) along `turn` from `(x, y, heading)`.
+#[inline]
+fn advance(pose: [f64; 3], turn: Turn, length: f64, radius: f64) -> [f64; 3] {
+    let [x, y, h] = pose;
+    match turn {
+        Turn::Straight => [x + length * h.cos(), y + length * h.sin(), h],
+        Turn::Left => {
+            let h2 = h + length / radius;
+            [x + radius * (h2.sin() - h.sin()), y - radius * (h2.cos() - h.cos()), mod_tau(h2)]
+        }
+        Turn::Right => {
+            let h2 = h - length / radius;
+            [x - radius * (h2.sin() - h.sin()), y + radius * (h2.cos() - h.cos()), mod_tau(h2)]
+        }
+    }
+}
+
+fn to_pose([x, y, h]: [f64; 3]) -> Pose {
+    Pose::new(Vector::new(x, y), h)
+}
+
+impl DubinsPath {
+    /// The shortest path from `start` to `goal` for a vehicle whose turning radius is
+    /// `turning_radius` (world units).
+    ///
+    /// Errors when the radius is not positive and finite, or a pose is not finite.
+    pub fn shortest(start: &Pose, goal: &Pose, turning_radius: f64) -> Result<DubinsPath, DubinsError> {
+        let n = Normalised::new(start, goal, turning_radius)?;
+        let (word, params) = n.shortest();
+        Ok(DubinsPath { start: pose_array(start), turning_radius, word, params })
+    }
+
+    /// The length of the shortest path from `start` to `goal`: [`DubinsPath::shortest`]'s
+    /// length, without building the path.
+    pub fn shortest_length(start: &Pose, goal: &Pose, turning_radius: f64) -> Result<f64, DubinsError> {
+        let n = Normalised::new(start, goal, turning_radius)?;
+        let (_, [t, p, q]) = n.shortest();
+        Ok((t + p + q) * turning_radius)
+    }
+
+    /// The path of the given `word` from `start` to `goal`.
+    ///
+    /// Errors as [`DubinsPath::shortest`] does, and with [`DubinsError::NoPath`] when that word
+    /// cannot join the poses (a `CSC` word whose circles overlap the wrong way, a `CCC` word for
+    /// poses more than four radii apart).
+    pub fn with_word(
+        start: &Pose,
+        goal: &Pose,
+        turning_radius: f64,
+        word: DubinsWord,
+    ) -> Result<DubinsPath, DubinsError> {
+        let n = Normalised::new(start, goal, turning_radius)?;
+        let params = n.params(word).ok_or(DubinsError::NoPath(word))?;
+        Ok(DubinsPath { start: pose_array(start), turning_radius, word, params })
+    }
+
+    /// The path's word.
+    pub fn word(&self) -> DubinsWord {
+        self.word
+    }
+
+    /// The turning radius, in world units.
+    pub fn turning_radius(&self) -> f64 {
+        self.turning_radius
+    }
+
+    /// The lengths of the three pieces divided by the turning radius: a turn's angle in
+    /// radians, the straight piece's length in radii.
+    pub fn normalised_params(&self) -> [f64; 3] {
+        self.params
+    }
+
+    /// The lengths of the three pieces, in world units.
+    pub fn segment_lengths(&self) -> [f64; 3] {
+        self.params.map(|p| p * self.turning_radius)
+    }
+
+    /// The total length, in world units.
+    pub fn length(&self) -> f64 {
+        (self.params[0] + self.params[1] + self.params[2]) * self.turning_radius
+    }
+
+    /// The start pose.
+    pub fn start(&self) -> Pose {
+        to_pose(self.start)
+    }
+
+    /// The pose at the end of the path: the goal, up to rounding.
+    pub fn end(&self) -> Pose {
+        to_pose(self.end_array())
+    }
+
+    fn end_array(&self) -> [f64; 3] {
+        let lengths = self.segment_lengths();
+        let mut pose = self.start;
+        for (turn, length) in self.word.turns().into_iter().zip(lengths) {
+            pose = advance(pose, turn, length, self.turning_radius);
+        }
+        pose
+    }
+
+    /// The pose after driving `s` world units along the path, `0 <= s <= length()`.
+    ///
+    /// Errors with [`DubinsError::OutOfRange`] for any other `s` (NaN included).
+    pub fn pose_at(&self, s: f64) -> Result<Pose, DubinsError> {
+        let length = self.length();
+        if !(0.0..=length).contains(&s) {
+            return Err(DubinsError::OutOfRange { s, length });
+        }
+        Ok(to_pose(self.pose_array_at(s)))
+    }
+
+    /// The pose at arc length `s` in `[0, length]`.
+    fn pose_array_at(&self, s: f64) -> [f64; 3] {
+        let mut pose = self.start;
+        let mut left = s;
+        for (turn, length) in self.word.turns().into_iter().zip(self.segment_lengths()) {
+            let step = left.min(length);
+            pose = advance(pose, turn, step, self.turning_radius);
+            left -= step;
+            if left <= 0.0 {
+                break;
+            }
+        }
+        pose
+    }
+
+    /// Poses every `step` world units from the start, then the end pose: `ceil(length / step)
+    /// + 1` poses (one for a path of length 0).
+    ///
+    /// Errors with [`DubinsError::InvalidStep`] unless `step` is positive and finite.
+    pub fn sample(&self, step: f64) -> Result<Vec<Pose>, DubinsError> {
+        if !(step > 0.0 && step.is_finite()) {
+            return Err(DubinsError::InvalidStep(step));
+        }
+        let length = self.length();
+        let mut poses = Vec::with_capacity((length / step).ceil() as usize + 1);
+        let mut k = 0u64;
+        loop {
+            let s = k as f64 * step;
+            if s >= length {
+                break;
+            }
+            poses.push(to_pose(self.pose_array_at(s)));
+            k += 1;
+        }
+        poses.push(self.end());
+        Ok(poses)
+    }
+
+    /// The first `s` world units of the path, `0 <= s <= length()`: a path with the same start,
+    /// radius and word, ending at [`pose_at(s)`](DubinsPath::pose_at).
+    ///
+    /// Errors with [`DubinsError::OutOfRange`] for any other `s`.
+    pub fn subpath(&self, s: f64) -> Result<DubinsPath, DubinsError> {
+        let length = self.length();
+        if !(0.0..=length).contains(&s) {
+            return Err(DubinsError::OutOfRange { s, length });
+        }
+        let mut left = s / self.turning_radius;
+        let mut params = [0.0; 3];
+        for (out, full) in params.iter_mut().zip(self.params) {
+            *out = left.min(full);
+            left -= *out;
+        }
+        Ok(DubinsPath { params, ..*self })
+    }
+
+    /// The three pieces in world coordinates (a piece of length 0 included), for exact
+    /// collision checks.
+    pub fn pieces(&self) -> [Piece; 3] {
+        let r = self.turning_radius;
+        let mut pose = self.start;
+        let lengths = self.segment_lengths();
+        let turns = self.word.turns();
+        std::array::from_fn(|i| {
+            let [x, y, h] = pose;
+            let next = advance(pose, turns[i], lengths[i], r);
+            pose = next;
+            match turns[i] {
+                Turn::Straight => Piece::Segment { from: Point::new(x, y), to: Point::new(next[0], next[1]) },
+                Turn::Left => Piece::Arc {
+                    center: Point::new(x - r * h.sin(), y + r * h.cos()),
+                    radius: r,
+                    start_angle: mod_tau(h - std::f64::consts::FRAC_PI_2),
+                    sweep: self.params[i],
+                },
+                Turn::Right => Piece::Arc {
+                    center: Point::new(x + r * h.sin(), y - r * h.cos()),
+                    radius: r,
+                    start_angle: mod_tau(h + std::f64::consts::FRAC_PI_2),
+                    sweep: -self.params[i],
+                },
+            }
+        })
+    }
+}
+
+fn pose_array(pose: &Pose) -> [f64; 3] {
+    [pose.translation.vector.x, pose.translation.vector.y, mod_tau(pose.rotation.angle())]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use std::f64::consts::PI;
+
+    fn pose(x: f64, y: f64, h: f64) -> Pose {
+        Pose::new(Vector::new(x, y), h)
+    }
+
+    /// The angle between two headings, in `[0, π]`.
+    fn angle_between(a: f64, b: f64) -> f64 {
+        let d = mod_tau(a - b);
+        d.min(TAU - d)
+    }
+
+    fn close(a: &Pose, b: &Pose, tol: f64) -> bool {
+        (a.translation.vector - b.translation.vector).norm() <= tol
+            && angle_between(a.rotation.angle(), b.rotation.angle()) <= tol
+    }
+
+    #[test]
+    fn coincident_poses_give_an_empty_path() {
+        let p = pose(3.0, -2.0, 1.0);
+        let path = DubinsPath::shortest(&p, &p, 2.0).unwrap();
+        assert_eq!(path.length(), 0.0);
+        assert!(close(&path.end(), &p, 1e-12));
+        assert_eq!(path.sample(0.5).unwrap().len(), 1);
+    }
+
+    #[test]
+    fn straight_ahead_is_a_segment() {
+        let path = DubinsPath::shortest(&pose(1.0, 1.0, PI / 2.0), &pose(1.0, 6.0, PI / 2.0), 1.0).unwrap();
+        assert!((path.length() - 5.0).abs() < 1e-12);
+        assert_eq!(path.normalised_params()[0], 0.0);
+        assert!(matches!(path.pieces()[1], Piece::Segment { .. }));
+    }
+
+    #[test]
+    fn bad_input_is_an_error() {
+        let (a, b) = (pose(0.0, 0.0, 0.0), pose(1.0, 0.0, 0.0));
+        for r in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(matches!(DubinsPath::shortest(&a, &b, r), Err(DubinsError::InvalidRadius(_))));
+        }
+        let nan = pose(f64::NAN, 0.0, 0.0);
+        assert!(matches!(
+            DubinsPath::shortest(&a, &nan, 1.0),
+            Err(DubinsError::NonFinitePose { which: "goal", .. })
+        ));
+        let path = DubinsPath::shortest(&a, &b, 1.0).unwrap();
+        for s in [-0.1, 1.5, f64::NAN] {
+            assert!(matches!(path.pose_at(s), Err(DubinsError::OutOfRange { .. })));
+            assert!(matches!(path.subpath(s), Err(DubinsError::OutOfRange { .. })));
+        }
+        for step in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(matches!(path.sample(step), Err(DubinsError::InvalidStep(_))));
+        }
+        // Far apart: no three-turn path.
+        let far = pose(10.0, 0.0, 0.0);
+        assert_eq!(
+            DubinsPath::with_word(&a, &far, 1.0, DubinsWord::Rlr),
+            Err(DubinsError::NoPath(DubinsWord::Rlr))
+        );
+    }
+
+    #[test]
+    fn words_round_trip_through_json() {
+        let path = DubinsPath::shortest(&pose(0.0, 0.0, 0.3), &pose(-2.0, 1.0, 2.0), 0.7).unwrap();
+        let json = serde_json::to_string(&path).unwrap();
+        assert!(json.contains(&format!("\"{}\"", path.word().name())));
+        let back: DubinsPath = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, path);
+    }
+
+    fn any_pose() -> impl Strategy<Value = Pose> {
+        (-20.0..20.0f64, -20.0..20.0f64, -10.0..10.0f64).prop_map(|(x, y, h)| pose(x, y, h))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+
+        /// The shortest path joins the poses, is at least the straight-line distance, and is no
+        /// longer than any word that joins them (each of which joins them too).
+        #[test]
+        fn shortest_joins_the_poses_and_beats_every_word(
+            a in any_pose(), b in any_pose(), r in 0.05..5.0f64,
+        ) {
+            let scale = 1.0 + a.translation.vector.norm() + b.translation.vector.norm();
+            let tol = 1e-9 * scale / r.min(1.0);
+            let best = DubinsPath::shortest(&a, &b, r).unwrap();
+            prop_assert!(close(&best.start(), &a, 1e-12 * scale));
+            prop_assert!(close(&best.end(), &b, tol), "{:?} ends at {:?}, not {:?}", best, best.end(), b);
+            let euclid = (b.translation.vector - a.translation.vector).norm();
+            prop_assert!(best.length() >= euclid - 1e-9 * scale);
+            prop_assert_eq!(best.length(), DubinsPath::shortest_length(&a, &b, r).unwrap());
+            let mut joined = 0;
+            for word in DubinsWord::ALL {
+                if let Ok(path) = DubinsPath::with_word(&a, &b, r, word) {
+                    joined += 1;
+                    prop_assert!(close(&path.end(), &b, tol), "{} ends at {:?}", word, path.end());
+                    // Words of equal length may be ranked either way by rounding.
+                    prop_assert!(best.length() <= path.length() + 1e-12 * (1.0 + path.length()));
+                }
+            }
+            prop_assert!(joined >= 1);
+        }
+
+        /// On poses with round coordinates and headings (collinear poses, equal headings, turns
+        /// of exactly 0 or π: where the shortcut for `LSL` and `RSR` must defer to the full
+        /// evaluation), the shortest length is the least over the six words.
+        #[test]
+        fn shortest_is_the_least_word_on_degenerate_poses(
+            a in (-4i32..=4, -4i32..=4, 0i32..8), b in (-4i32..=4, -4i32..=4, 0i32..8), r in 1i32..=3,
+        ) {
+            let at = |(x, y, h): (i32, i32, i32)| pose(f64::from(x), f64::from(y), f64::from(h) * PI / 4.0);
+            let (a, b, r) = (at(a), at(b), f64::from(r) / 2.0);
+            let least = DubinsWord::ALL
+                .into_iter()
+                .filter_map(|w| DubinsPath::with_word(&a, &b, r, w).ok())
+                .map(|p| p.length())
+                .fold(f64::INFINITY, f64::min);
+            let best = DubinsPath::shortest(&a, &b, r).unwrap();
+            prop_assert!((best.length() - least).abs() <= 1e-9, "{} vs {least}", best.length());
+        }
+
+        /// Evaluating, cutting and sampling agree with one another.
+        #[test]
+        fn pose_at_subpath_and_sample_agree(a in any_pose(), b in any_pose(), r in 0.1..3.0f64, f in 0.0..=1.0f64) {
+            let path = DubinsPath::shortest(&a, &b, r).unwrap();
+            let s = f * path.length();
+            let at = path.pose_at(s).unwrap();
+            let cut = path.subpath(s).unwrap();
+            prop_assert!((cut.length() - s).abs() <= 1e-9 * (1.0 + s));
+            prop_assert!(close(&cut.end(), &at, 1e-9 * (1.0 + path.length())));
+            prop_assert!(close(&path.pose_at(path.length()).unwrap(), &path.end(), 1e-9));
+            let step = (path.length() / 7.3).max(0.01);
+            let samples = path.sample(step).unwrap();
+            prop_assert!(close(&samples[0], &a, 1e-9 * (1.0 + a.translation.vector.norm())));
+            prop_assert!(close(samples.last().unwrap(), &path.end(), 0.0));
+            for pair in samples.windows(2) {
+                let gap = (pair[1].translation.vector - pair[0].translation.vector).norm();
+                prop_assert!(gap <= step * (1.0 + 1e-9));
+            }
+        }
+
+        /// The pieces chain: each ends where the next starts, arcs at the turning radius.
+        #[test]
+        fn pieces_chain(a in any_pose(), b in any_pose(), r in 0.1..3.0f64) {
+            let path = DubinsPath::shortest(&a, &b, r).unwrap();
+            let ends = path.pieces().map(|piece| match piece {
+                Piece::Segment { from, to } => (from, to),
+                Piece::Arc { center, radius, start_angle, sweep } => {
+                    let at = |angle: f64| center + radius * Vector::new(angle.cos(), angle.sin());
+                    (at(start_angle), at(start_angle + sweep))
+                }
+            });
+            let tol = 1e-9 * (1.0 + path.length() + a.translation.vector.norm());
+            prop_assert!((ends[0].0.coords - a.translation.vector).norm() <= tol);
+            prop_assert!((ends[0].1 - ends[1].0).norm() <= tol);
+            prop_assert!((ends[1].1 - ends[2].0).norm() <= tol);
+            prop_assert!((ends[2].1.coords - path.end().translation.vector).norm() <= tol);
+        }
+    }
+}

@@ -255,19 +255,19 @@ impl Normalised {
         let Normalised { alpha, beta, d, sa, ca, sb, cb, cab } = *self;
         match word {
             DubinsWord::Lsl => {
-                let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sa - sb);
+                let (p2, x, y) = self.same_side(word);
                 if p2 < 0.0 {
                     return None;
                 }
-                let theta = (cb - ca).atan2(d + sa - sb);
+                let theta = y.atan2(x);
                 Some([mod_tau(theta - alpha), p2.sqrt(), mod_tau(beta - theta)])
             }
             DubinsWord::Rsr => {
-                let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sb - sa);
+                let (p2, x, y) = self.same_side(word);
                 if p2 < 0.0 {
                     return None;
                 }
-                let theta = (ca - cb).atan2(d - sa + sb);
+                let theta = y.atan2(x);
                 Some([mod_tau(alpha - theta), p2.sqrt(), mod_tau(theta - beta)])
             }
             DubinsWord::Lsr => {
@@ -320,21 +320,22 @@ impl Normalised {
     /// `LSL` and `RSR` are measured without their turn angles (see [`Normalised::same_side`]),
     /// so only the winning word pays for its `atan2`; the other words are evaluated in full.
     fn shortest(&self) -> (DubinsWord, [f64; 3]) {
-        let mut best = (DubinsWord::Lsl, f64::INFINITY);
+        // The best word, its length, and its parameters when they were evaluated.
+        let mut best = (DubinsWord::Lsl, f64::INFINITY, None);
         for word in DubinsWord::ALL {
-            let length = match word {
+            let (length, params) = match word {
                 DubinsWord::Lsl | DubinsWord::Rsr => match self.same_side_length(word) {
-                    Some(Some(length)) => length,
+                    Some(Some(length)) => (length, None),
                     Some(None) => continue,
-                    None => self.params(word).map_or(f64::INFINITY, |[t, p, q]| t + p + q),
+                    None => self.evaluated(word),
                 },
-                _ => self.params(word).map_or(f64::INFINITY, |[t, p, q]| t + p + q),
+                _ => self.evaluated(word),
             };
             if length < best.1 {
-                best = (word, length);
+                best = (word, length, params);
             }
         }
-        let params = self.params(best.0).expect("the shortest word exists");
+        let params = best.2.or_else(|| self.params(best.0)).expect("the shortest word exists");
         debug_assert!(
             (params.iter().sum::<f64>() - best.1).abs() <= 1e-6 * (1.0 + best.1),
             "{} measured {} but evaluates to {params:?}",
@@ -342,6 +343,26 @@ impl Normalised {
             best.1
         );
         (best.0, params)
+    }
+
+    /// `word`'s normalised length (`+inf` when it cannot join the poses) and parameters.
+    #[inline]
+    fn evaluated(&self, word: DubinsWord) -> (f64, Option<[f64; 3]>) {
+        let params = self.params(word);
+        (params.map_or(f64::INFINITY, |[t, p, q]| t + p + q), params)
+    }
+
+    /// For `LSL` or `RSR`: the square of the straight piece's normalised length (negative when
+    /// the word cannot join the poses), and a vector `(x, y)` along the straight piece's
+    /// direction `θ`.
+    #[inline]
+    fn same_side(&self, word: DubinsWord) -> (f64, f64, f64) {
+        let Normalised { d, sa, ca, sb, cb, cab, .. } = *self;
+        if word == DubinsWord::Lsl {
+            (2.0 + d * d - 2.0 * cab + 2.0 * d * (sa - sb), d + sa - sb, cb - ca)
+        } else {
+            (2.0 + d * d - 2.0 * cab + 2.0 * d * (sb - sa), d - sa + sb, ca - cb)
+        }
     }
 
     /// The normalised length of `LSL` or `RSR` without evaluating their turn angles: `Some(None)`
@@ -353,20 +374,13 @@ impl Normalised {
     /// orientation test between two vectors, without an angle. `RSR` is its mirror image.
     #[inline]
     fn same_side_length(&self, word: DubinsWord) -> Option<Option<f64>> {
-        let Normalised { alpha, beta, d, sa, ca, sb, cb, cab } = *self;
-        let (p2, x, y, turns, sin_turns) = match word {
-            DubinsWord::Lsl => {
-                let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sa - sb);
-                let (x, y) = (d + sa - sb, cb - ca);
-                // (x, y) points along θ; turned by -α it points along t.
-                (p2, x * ca + y * sa, y * ca - x * sa, mod_tau(beta - alpha), sb * ca - cb * sa)
-            }
-            _ => {
-                let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sb - sa);
-                let (x, y) = (d - sa + sb, ca - cb);
-                // The direction of α turned by -θ points along t = α - θ.
-                (p2, ca * x + sa * y, sa * x - ca * y, mod_tau(alpha - beta), sa * cb - ca * sb)
-            }
+        let Normalised { alpha, beta, sa, ca, sb, cb, cab, .. } = *self;
+        let (p2, x, y) = self.same_side(word);
+        let (x, y, turns, sin_turns) = match word {
+            // (x, y) points along θ; turned by -α it points along t.
+            DubinsWord::Lsl => (x * ca + y * sa, y * ca - x * sa, mod_tau(beta - alpha), sb * ca - cb * sa),
+            // The direction of α turned by -θ points along t = α - θ.
+            _ => (ca * x + sa * y, sa * x - ca * y, mod_tau(alpha - beta), sa * cb - ca * sb),
         };
         if p2 < 0.0 {
             return Some(None);
@@ -512,11 +526,14 @@ impl DubinsPath {
     ///
     /// Errors with [`DubinsError::OutOfRange`] for any other `s` (NaN included).
     pub fn pose_at(&self, s: f64) -> Result<Pose, DubinsError> {
-        let length = self.length();
-        if !(0.0..=length).contains(&s) {
-            return Err(DubinsError::OutOfRange { s, length });
-        }
+        self.check_arc_length(s)?;
         Ok(to_pose(self.pose_array_at(s)))
+    }
+
+    /// `Ok` when `0 <= s <= length()`, else [`DubinsError::OutOfRange`].
+    fn check_arc_length(&self, s: f64) -> Result<(), DubinsError> {
+        let length = self.length();
+        if (0.0..=length).contains(&s) { Ok(()) } else { Err(DubinsError::OutOfRange { s, length }) }
     }
 
     /// The pose at arc length `s` in `[0, length]`.
@@ -562,10 +579,7 @@ impl DubinsPath {
     ///
     /// Errors with [`DubinsError::OutOfRange`] for any other `s`.
     pub fn subpath(&self, s: f64) -> Result<DubinsPath, DubinsError> {
-        let length = self.length();
-        if !(0.0..=length).contains(&s) {
-            return Err(DubinsError::OutOfRange { s, length });
-        }
+        self.check_arc_length(s)?;
         let mut left = s / self.turning_radius;
         let mut params = [0.0; 3];
         for (out, full) in params.iter_mut().zip(self.params) {

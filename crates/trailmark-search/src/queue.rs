@@ -112,10 +112,7 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
         }
         match self.pos[item] {
             ABSENT => {
-                let p = self.heap.len();
-                self.heap.push(Entry { key, item: item as u32 });
-                self.pos[item] = p as u32;
-                self.sift_up(p);
+                self.insert(item, key);
                 None
             }
             p => {
@@ -141,8 +138,15 @@ impl<K: Copy + PartialOrd> IndexedHeap<K> {
             self.grow(item);
         }
         debug_assert_eq!(self.pos[item], ABSENT, "push_absent of a queued item");
+        self.insert(item, key);
+    }
+
+    /// Adds `item`, not queued and within the position table, with `key`.
+    #[inline]
+    fn insert(&mut self, item: usize, key: K) {
         let p = self.heap.len();
         self.heap.push(Entry { key, item: item as u32 });
+        // `sift_up` records the item's final position.
         self.sift_up(p);
     }
 

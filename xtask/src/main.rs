@@ -3,7 +3,8 @@
 //! - `cargo xtask bench` runs the planners on a built-in generated suite (and the MovingAI maps
 //!   in `../shared/movingai` when present) beside peer libraries, and writes a report.
 //! - `cargo xtask verify movingai DIR` checks every scenario of a MovingAI benchmark folder
-//!   against its published optimal length.
+//!   against its published optimal length; `cargo xtask verify anyangle DIR` checks the GPPC
+//!   any-angle track on visibility graphs.
 //! - `cargo xtask solve PROBLEM.json` solves one problem document and prints the result JSON.
 //! - `cargo xtask navigate` runs a robot through partly known terrain with each incremental
 //!   planner and prints a JSON summary.
@@ -12,6 +13,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use trailmark::graph::visibility::Edges;
 
 mod bench;
 mod bench_replan;
@@ -57,6 +59,20 @@ enum VerifySet {
         #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
         every: u64,
     },
+    /// Every DIR/NAME.map.scen of the GPPC any-angle track, on the visibility graph of DIR/NAME.map.
+    Anyangle {
+        /// The folder with the maps and their scenario files.
+        dir: PathBuf,
+        /// Check every K-th scenario of each file only.
+        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+        every: u64,
+        /// The relative tolerance on a published optimum.
+        #[arg(long, default_value_t = 1e-6)]
+        rel: f64,
+        /// Build the full visibility graph instead of its tangent edges only.
+        #[arg(long)]
+        all_edges: bool,
+    },
 }
 
 /// An optimal algorithm that `verify` checks.
@@ -74,6 +90,10 @@ fn main() -> ExitCode {
         Command::Bench(args) => bench::run(&args),
         Command::Verify { set: VerifySet::Movingai { dir, algo, every } } => {
             verify::movingai(&dir, &algo, every)
+        }
+        Command::Verify { set: VerifySet::Anyangle { dir, every, rel, all_edges } } => {
+            let edges = if all_edges { Edges::All } else { Edges::Tangent };
+            verify::anyangle(&dir, every, rel, edges)
         }
         Command::Solve { problem } => solve::run(&problem),
         Command::Navigate(args) => navigate::run(&args),

@@ -1,9 +1,13 @@
-//! `cargo xtask verify movingai DIR`: every scenario against its published optimal length.
+//! `cargo xtask verify movingai DIR`: every scenario against its published optimal length;
+//! `cargo xtask verify anyangle DIR`: the GPPC any-angle scenarios on the visibility graph.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
+use trailmark::core::freespace::FreeSpace;
+use trailmark::core::geometry::Point;
+use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::movingai::{self, Scenario};
 use trailmark::prelude::*;
 
@@ -169,6 +173,94 @@ pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
         algos.join(" and "),
         clock.elapsed().as_secs_f64()
     );
+    println!("{passed} passed, {failed} failed");
+    if failed > 0 { ExitCode::from(1) } else { ExitCode::SUCCESS }
+}
+
+/// `cargo xtask verify anyangle DIR`: every `DIR/*.map.scen` of the GPPC any-angle track solved
+/// on the visibility graph of its map (blocked cells as unit squares), against the published
+/// Euclidean optimum within `rel` relative error.
+pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
+    let listing = match std::fs::read_dir(dir) {
+        Ok(l) => l,
+        Err(e) => {
+            eprintln!("error: cannot list {}: {e}", dir.display());
+            return ExitCode::from(2);
+        }
+    };
+    let mut scens: Vec<PathBuf> = listing
+        .filter_map(|f| f.ok().map(|f| f.path()))
+        .filter(|p| p.to_string_lossy().ends_with(".map.scen"))
+        .collect();
+    scens.sort();
+    if scens.is_empty() {
+        eprintln!("error: no scenario files (*.map.scen) in {}", dir.display());
+        return ExitCode::from(2);
+    }
+    let clock = Instant::now();
+    let (mut passed, mut failed) = (0u64, 0u64);
+    for scen in &scens {
+        let map = scen.with_extension("");
+        let name = map.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+        let loaded = movingai::read_map(&map)
+            .map_err(|e| e.to_string())
+            .and_then(|g| movingai::read_scenarios(scen).map(|s| (g, s)).map_err(|e| e.to_string()));
+        let (grid, scenarios) = match loaded {
+            Ok(x) => x,
+            Err(e) => {
+                println!("{name}: {e}");
+                failed += 1;
+                continue;
+            }
+        };
+        let build = Instant::now();
+        let graph = VisibilityGraph::with_edges(FreeSpace::from_grid(&grid), edges);
+        let build_seconds = build.elapsed().as_secs_f64();
+        let solve = Instant::now();
+        let mut search = Search::new();
+        let (mut ok, mut bad, mut messages) = (0u64, 0u64, Vec::new());
+        for (i, s) in scenarios.iter().enumerate().filter(|(i, _)| (*i as u64).is_multiple_of(every)) {
+            let corner = |c: Cell| Point::new(f64::from(c.x), f64::from(c.y));
+            let (start, goal) = (corner(s.start), corner(s.goal));
+            let outcome = graph
+                .query(start, goal)
+                .map_err(|e| e.to_string())
+                .and_then(|q| search.astar(&q, q.start(), q.goal(), q.heuristic()).map_err(|e| e.to_string()))
+                .and_then(|found| found.cost().ok_or_else(|| "no path found".to_string()));
+            match outcome {
+                Ok(cost) if (cost - s.optimal_length).abs() <= rel * s.optimal_length.max(1.0) => ok += 1,
+                Ok(cost) => {
+                    bad += 1;
+                    messages.push(format!(
+                        "scenario {} {} -> {}: cost {cost:.9}, published {}",
+                        i + 1,
+                        s.start,
+                        s.goal,
+                        s.optimal_length
+                    ));
+                }
+                Err(e) => {
+                    bad += 1;
+                    messages.push(format!("scenario {} {} -> {}: {e}", i + 1, s.start, s.goal));
+                }
+            }
+        }
+        println!(
+            "{name:<24} {ok:>6} passed {bad:>4} failed  graph {} nodes {} edges in {build_seconds:.2}s, queries {:.2}s",
+            graph.node_count(),
+            graph.edge_count(),
+            solve.elapsed().as_secs_f64()
+        );
+        for m in messages.iter().take(10) {
+            println!("    {m}");
+        }
+        if messages.len() > 10 {
+            println!("    ... and {} more", messages.len() - 10);
+        }
+        passed += ok;
+        failed += bad;
+    }
+    println!("checked in {:.1}s (relative tolerance {rel:e})", clock.elapsed().as_secs_f64());
     println!("{passed} passed, {failed} failed");
     if failed > 0 { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }

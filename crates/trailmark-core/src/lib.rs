@@ -25,6 +25,7 @@
 
 pub mod cost;
 pub mod dubins;
+pub mod freespace;
 pub mod generate;
 pub mod geometry;
 pub mod graph;

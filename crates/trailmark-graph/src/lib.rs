@@ -24,5 +24,7 @@
 #![deny(missing_docs)]
 
 pub mod grid;
+pub mod visibility;
 
 pub use grid::{CornerCutting, GridGraph, Neighbours};
+pub use visibility::{VisibilityGraph, VisibilityQuery};

@@ -1,0 +1,223 @@
+//! Visibility graphs on random grid worlds, checked against references that do not share the
+//! sweep: a brute-force pairwise construction, the grid itself (sampled points of every edge
+//! must lie in free cells), and the 8-connected corner lattice (an upper bound on any-angle
+//! lengths), plus the straight-line lower bound.
+
+use std::collections::BTreeSet;
+
+use proptest::prelude::*;
+use trailmark::core::freespace::FreeSpace;
+use trailmark::core::geometry::Point;
+use trailmark::graph::visibility::{Edges, VisibilityGraph};
+use trailmark::prelude::*;
+
+/// A random grid with about `density` of its cells blocked, as rows of `.` and `@`.
+fn grid_strategy() -> impl Strategy<Value = Grid> {
+    (2usize..14, 2usize..14, 0.0f64..0.45, any::<u64>()).prop_map(|(w, h, density, seed)| {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let rows: Vec<String> = (0..h)
+            .map(|_| (0..w).map(|_| if rng.random_bool(density) { '@' } else { '.' }).collect())
+            .collect();
+        Grid::from_rows(&rows).expect("valid rows")
+    })
+}
+
+/// The free cells' top-left corners: the GPPC query points.
+fn query_points(grid: &Grid) -> Vec<Point> {
+    grid.cells()
+        .filter(|&c| grid.is_passable(c))
+        .map(|c| Point::new(f64::from(c.x), f64::from(c.y)))
+        .collect()
+}
+
+/// Whether a point lies strictly inside a blocked cell (or strictly outside the map).
+fn strictly_blocked(grid: &Grid, p: Point) -> bool {
+    let (w, h) = (f64::from(grid.width()), f64::from(grid.height()));
+    if p.x < 0.0 || p.y < 0.0 || p.x > w || p.y > h {
+        return true;
+    }
+    let (fx, fy) = (p.x.floor(), p.y.floor());
+    if fx == p.x || fy == p.y {
+        return false; // on a cell side: not strictly inside any cell
+    }
+    !grid.is_passable(Cell::new(fx as u32, fy as u32))
+}
+
+/// Every node pair that sees each other, by testing each pair on its own.
+fn brute_force_edges(space: &FreeSpace) -> BTreeSet<[(u64, u64); 2]> {
+    let key = |p: Point| (p.x.to_bits(), p.y.to_bits());
+    let mut nodes = Vec::new();
+    for (i, &at) in space.positions().iter().enumerate() {
+        for corner in space.corners(i) {
+            if corner.is_convex_obstacle(at) {
+                nodes.push((at, *corner));
+            }
+        }
+    }
+    let mut edges = BTreeSet::new();
+    for (i, &(a, ca)) in nodes.iter().enumerate() {
+        for &(b, cb) in &nodes[i + 1..] {
+            if a != b && ca.admits(a, b) && cb.admits(b, a) && space.segment_is_free(a, b) {
+                let (ka, kb) = (key(a), key(b));
+                edges.insert(if ka < kb { [ka, kb] } else { [kb, ka] });
+            }
+        }
+    }
+    edges
+}
+
+fn graph_edges(graph: &VisibilityGraph) -> BTreeSet<[(u64, u64); 2]> {
+    let key = |p: Point| (p.x.to_bits(), p.y.to_bits());
+    let mut edges = BTreeSet::new();
+    for v in 0..graph.node_count() as u32 {
+        for (u, _) in graph.neighbours(v) {
+            let (ka, kb) = (key(graph.position(v)), key(graph.position(u)));
+            edges.insert(if ka < kb { [ka, kb] } else { [kb, ka] });
+        }
+    }
+    edges
+}
+
+/// A lattice move: its step and the cells beside it.
+type Move<'a> = (i64, i64, &'a [(i64, i64)]);
+
+/// The 8-connected lattice of cell corners: a side between two cells may be followed when one of
+/// them is free, a cell's diagonal when the cell is free. Where two blocked cells touch at a
+/// corner, the corner is two lattice nodes, one per free cell, so no lattice path slips between
+/// the blocked cells. An any-angle path is never longer.
+fn lattice_cost(grid: &Grid, start: Point, goal: Point) -> Option<f64> {
+    let (w, h) = (grid.width() as i64, grid.height() as i64);
+    let free = |x: i64, y: i64| {
+        x >= 0 && y >= 0 && x < w && y < h && grid.is_passable(Cell::new(x as u32, y as u32))
+    };
+    let pinch = |x: i64, y: i64| {
+        let (nw, ne, sw, se) = (free(x - 1, y - 1), free(x, y - 1), free(x - 1, y), free(x, y));
+        (nw && se && !ne && !sw) || (ne && sw && !nw && !se)
+    };
+    // Which node of corner (x, y) a move beside free cell (cx, cy) uses: at a pinch the two free
+    // cells are in different rows.
+    let part = |x: i64, y: i64, cy: i64| usize::from(pinch(x, y) && cy < y);
+    let index = |x: i64, y: i64, p: usize| ((y * (w + 1) + x) as usize) * 2 + p;
+    let mut dist = vec![f64::INFINITY; ((w + 1) * (h + 1) * 2) as usize];
+    let mut open = std::collections::BinaryHeap::new();
+    let (sx, sy) = (start.x as i64, start.y as i64);
+    for p in 0..2 {
+        dist[index(sx, sy, p)] = 0.0;
+        open.push((std::cmp::Reverse(ordered_float::OrderedFloat(0.0)), sx, sy, p));
+    }
+    while let Some((std::cmp::Reverse(d), x, y, p)) = open.pop() {
+        if d.0 > dist[index(x, y, p)] {
+            continue;
+        }
+        if (x as f64, y as f64) == (goal.x, goal.y) {
+            return Some(d.0);
+        }
+        // (dx, dy, the cells beside the move).
+        let moves: [Move; 8] = [
+            (1, 0, &[(x, y - 1), (x, y)]),
+            (-1, 0, &[(x - 1, y - 1), (x - 1, y)]),
+            (0, 1, &[(x - 1, y), (x, y)]),
+            (0, -1, &[(x - 1, y - 1), (x, y - 1)]),
+            (1, 1, &[(x, y)]),
+            (-1, 1, &[(x - 1, y)]),
+            (1, -1, &[(x, y - 1)]),
+            (-1, -1, &[(x - 1, y - 1)]),
+        ];
+        for (dx, dy, beside) in moves {
+            let (nx, ny) = (x + dx, y + dy);
+            let Some(&(_, cy)) = beside.iter().find(|&&(cx, cy)| free(cx, cy)) else { continue };
+            if nx < 0 || ny < 0 || nx > w || ny > h || part(x, y, cy) != p {
+                continue;
+            }
+            let np = part(nx, ny, cy);
+            let nd = d.0 + if dx != 0 && dy != 0 { std::f64::consts::SQRT_2 } else { 1.0 };
+            if nd < dist[index(nx, ny, np)] {
+                dist[index(nx, ny, np)] = nd;
+                open.push((std::cmp::Reverse(ordered_float::OrderedFloat(nd)), nx, ny, np));
+            }
+        }
+    }
+    None
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(192))]
+
+    /// The sweep finds exactly the pairs that a pairwise test finds.
+    #[test]
+    fn sweep_matches_brute_force(grid in grid_strategy()) {
+        let space = FreeSpace::from_grid(&grid);
+        let expected = brute_force_edges(&space);
+        let graph = VisibilityGraph::with_options(space, Edges::All, 1);
+        prop_assert_eq!(graph_edges(&graph), expected);
+    }
+
+    /// Every edge, and every query edge, stays out of blocked cells (sampled on the grid itself)
+    /// and passes the exact segment test.
+    #[test]
+    fn every_edge_is_collision_free(grid in grid_strategy(), pick in any::<(usize, usize)>()) {
+        let points = query_points(&grid);
+        prop_assume!(!points.is_empty());
+        let graph = VisibilityGraph::new(FreeSpace::from_grid(&grid));
+        let (start, goal) = (points[pick.0 % points.len()], points[pick.1 % points.len()]);
+        let query = graph.query(start, goal).expect("query points are free");
+        for v in 0..query.node_bound() as u32 {
+            query.for_each_successor(v, |u, cost| {
+                let (a, b) = (query.position(v), query.position(u));
+                assert!((cost - (a - b).norm()).abs() < 1e-12);
+                assert!(graph.space().segment_is_free(a, b), "{a} -> {b}");
+                for k in 1..64 {
+                    let p = a + (b - a) * (f64::from(k) / 64.0);
+                    assert!(!strictly_blocked(&grid, p), "{a} -> {b} crosses a blocked cell at {p}");
+                }
+            });
+        }
+    }
+
+    /// Shortest paths: at least the straight line, at most the corner lattice, and the same on
+    /// the full and the tangent graph.
+    #[test]
+    fn shortest_paths_are_bounded_and_agree(grid in grid_strategy(), pick in any::<(usize, usize)>()) {
+        let points = query_points(&grid);
+        prop_assume!(!points.is_empty());
+        let (start, goal) = (points[pick.0 % points.len()], points[pick.1 % points.len()]);
+        let space = FreeSpace::from_grid(&grid);
+        let full = VisibilityGraph::with_options(space.clone(), Edges::All, 1);
+        let tangent = VisibilityGraph::with_options(space, Edges::Tangent, 2);
+        let cost = |graph: &VisibilityGraph| {
+            let q = graph.query(start, goal).expect("free");
+            astar(&q, q.start(), q.goal(), q.heuristic()).expect("valid").cost()
+        };
+        let (a, b) = (cost(&full), cost(&tangent));
+        let lattice = lattice_cost(&grid, start, goal);
+        prop_assert_eq!(a.is_some(), lattice.is_some(), "{:?} {} -> {}", grid.to_rows(), start, goal);
+        if let (Some(a), Some(b), Some(lattice)) = (a, b, lattice) {
+            prop_assert!((a - b).abs() <= 1e-9 * a.max(1.0), "full {} tangent {}", a, b);
+            prop_assert!(a >= (goal - start).norm() - 1e-9);
+            prop_assert!(a <= lattice + 1e-9, "any-angle {} above lattice {}", a, lattice);
+        }
+    }
+}
+
+#[test]
+fn around_a_block() {
+    // From the middle of the left side to the middle of the right, around a 2x1 block.
+    let grid = Grid::from_rows(&["....", ".@@.", "...."]).unwrap();
+    let graph = VisibilityGraph::new(FreeSpace::from_grid(&grid));
+    let q = graph.query(Point::new(0.0, 1.0), Point::new(4.0, 2.0)).unwrap();
+    let found = astar(&q, q.start(), q.goal(), q.heuristic()).unwrap();
+    // (0,1) -> (1,1) -> (3,1)? No: the block spans x 1..3, y 1..2; the path runs along its top
+    // side to (3, 1), then diagonally to (4, 2).
+    let expected = 3.0 + std::f64::consts::SQRT_2;
+    assert!((found.cost().unwrap() - expected).abs() < 1e-12);
+}
+
+#[test]
+fn start_and_goal_inside_obstacles_are_errors() {
+    let grid = Grid::from_rows(&["...", ".@.", "..."]).unwrap();
+    let graph = VisibilityGraph::new(FreeSpace::from_grid(&grid));
+    assert!(graph.query(Point::new(1.5, 1.5), Point::new(0.0, 0.0)).is_err());
+    assert!(graph.query(Point::new(0.0, 0.0), Point::new(1.5, 1.5)).is_err());
+    assert!(graph.query(Point::new(f64::NAN, 0.0), Point::new(0.0, 0.0)).is_err());
+}

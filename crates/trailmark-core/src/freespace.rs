@@ -192,26 +192,17 @@ impl FreeSpace {
     /// ([`PolygonWorld::free_space`](crate::world::PolygonWorld::free_space),
     /// [`FreeSpace::from_grid`]) produce such rings by construction.
     pub fn from_rings(rings: &[Vec<Point>]) -> Result<Self, FreeSpaceError> {
-        let mut cleaned = Vec::with_capacity(rings.len());
-        for (r, ring) in rings.iter().enumerate() {
-            if let Some(v) = ring.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
-                return Err(FreeSpaceError::NonFinite { ring: r, vertex: v });
-            }
-            let mut kept: Vec<Point> = Vec::with_capacity(ring.len());
-            for &p in ring {
-                if kept.last() != Some(&p) {
-                    kept.push(p);
-                }
-            }
-            while kept.len() > 1 && kept.first() == kept.last() {
-                kept.pop();
-            }
-            if kept.len() < 3 {
-                return Err(FreeSpaceError::TooFewVertices { ring: r });
-            }
-            cleaned.push(kept);
-        }
+        let cleaned =
+            rings.iter().enumerate().map(|(r, ring)| clean_ring(r, ring)).collect::<Result<Vec<_>, _>>()?;
         Ok(Self::from_clean_rings(cleaned))
+    }
+
+    /// A free space from rings, dropping those that are not rings (fewer than three distinct
+    /// vertices, or non-finite ones): the slivers a polygon union can leave.
+    pub(crate) fn from_rings_dropping_degenerate(rings: Vec<Vec<Point>>) -> Self {
+        Self::from_clean_rings(
+            rings.iter().enumerate().filter_map(|(r, ring)| clean_ring(r, ring).ok()).collect(),
+        )
     }
 
     fn from_clean_rings(rings: Vec<Vec<Point>>) -> Self {
@@ -430,6 +421,26 @@ pub fn angular_order(at: Point, p: Point, q: Point) -> std::cmp::Ordering {
     half(p)
         .cmp(&half(q))
         .then_with(|| 0.0.partial_cmp(&orient(at, p, q)).unwrap_or(std::cmp::Ordering::Equal))
+}
+
+/// Ring `r` with repeated consecutive vertices (and a closing repeat) dropped, checked.
+fn clean_ring(r: usize, ring: &[Point]) -> Result<Vec<Point>, FreeSpaceError> {
+    if let Some(v) = ring.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
+        return Err(FreeSpaceError::NonFinite { ring: r, vertex: v });
+    }
+    let mut kept: Vec<Point> = Vec::with_capacity(ring.len());
+    for &p in ring {
+        if kept.last() != Some(&p) {
+            kept.push(p);
+        }
+    }
+    while kept.len() > 1 && kept.first() == kept.last() {
+        kept.pop();
+    }
+    if kept.len() < 3 {
+        return Err(FreeSpaceError::TooFewVertices { ring: r });
+    }
+    Ok(kept)
 }
 
 fn segment_aabb(a: Point, b: Point) -> Aabb {

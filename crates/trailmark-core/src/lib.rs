@@ -34,6 +34,7 @@ pub mod movingai;
 pub mod path;
 pub mod problem;
 pub mod svg;
+pub mod world;
 
 pub use cost::Cost;
 pub use graph::{Graph, IndexedGraph, Predecessors, Successors};

@@ -1,0 +1,808 @@
+//! Polygon worlds: bounds, polygonal obstacles and a disc-shaped robot.
+//!
+//! A [`PolygonWorld`] is what a roadmap builder or a sampling planner plans in: a rectangle of
+//! bounds that the robot's centre stays in, simple polygons as obstacles (convex or not), and
+//! the robot's radius. Two views of it answer the two kinds of question:
+//!
+//! - [`PolygonWorld::checker`] gives a [`CollisionChecker`]: exact tests of points, segments,
+//!   circular arcs and Dubins paths against the obstacles grown by the robot radius (the
+//!   Minkowski sum with a disc, with its round corners), through a bounding-volume hierarchy
+//!   (parry2d's BVH) so a query only looks at the obstacles near it;
+//! - [`PolygonWorld::free_space`] gives a [`FreeSpace`]: the same grown obstacles as polygons
+//!   (round corners replaced by short edges *outside* the exact disc, so nothing the polygons
+//!   allow collides), overlapping ones merged, cut out of the bounds. Builders that need
+//!   vertices (the visibility graph) work on it.
+//!
+//! Obstacles are validated where they enter: fewer than three distinct vertices, zero area,
+//! self-intersection and non-finite coordinates are typed errors ([`PolygonError`]).
+//!
+//! ```
+//! use trailmark_core::geometry::Point;
+//! use trailmark_core::world::{Bounds, PolygonWorld};
+//!
+//! let square = vec![Point::new(4.0, 4.0), Point::new(6.0, 4.0), Point::new(6.0, 6.0), Point::new(4.0, 6.0)];
+//! let world = PolygonWorld::new(Bounds::new(0.0, 0.0, 10.0, 10.0)?, vec![square], 0.5)?;
+//! let checker = world.checker();
+//! assert!(!checker.point_is_free(Point::new(3.7, 5.0))); // within 0.5 of the square
+//! assert!(checker.point_is_free(Point::new(3.4, 5.0)));
+//! assert!(checker.segment_is_free(Point::new(1.0, 3.4), Point::new(9.0, 3.4)));
+//! assert!(!checker.segment_is_free(Point::new(1.0, 5.0), Point::new(9.0, 5.0)));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use geo::algorithm::buffer::{Buffer, BufferStyle, LineJoin};
+use geo::{BooleanOps, Coord, LineString, MultiPolygon, unary_union};
+use parry2d_f64::bounding_volume::Aabb;
+use parry2d_f64::math::{Pose as PPose, Vector as PVector};
+use parry2d_f64::partitioning::{Bvh, BvhBuildStrategy};
+use parry2d_f64::query::PointQuery;
+use parry2d_f64::shape::Segment;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::dubins::{DubinsPath, Piece};
+use crate::freespace::{FreeSpace, orient};
+use crate::geometry::Point;
+
+/// Why a polygon is not a valid obstacle.
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum PolygonError {
+    /// A vertex has a NaN or infinite coordinate.
+    #[error("vertex {vertex} has a non-finite coordinate")]
+    NonFinite {
+        /// Index of the vertex.
+        vertex: usize,
+    },
+    /// Fewer than three distinct vertices (after dropping repeats of the previous vertex).
+    #[error("a polygon needs at least three distinct vertices, this one has {count}")]
+    TooFewVertices {
+        /// The number of distinct vertices.
+        count: usize,
+    },
+    /// All vertices on one line.
+    #[error("the polygon has zero area")]
+    ZeroArea,
+    /// Two edges cross or touch (other than consecutive edges at their shared vertex).
+    #[error("edges {first} and {second} intersect: the polygon is not simple")]
+    SelfIntersecting {
+        /// Index of the first edge (edge i joins vertex i to vertex i + 1).
+        first: usize,
+        /// Index of the second edge.
+        second: usize,
+    },
+}
+
+/// Why a world is not valid.
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum WorldError {
+    /// The bounds are not a finite rectangle of positive area.
+    #[error("bounds [{xmin}, {ymin}, {xmax}, {ymax}] must be finite with xmin < xmax and ymin < ymax")]
+    InvalidBounds {
+        /// Left.
+        xmin: f64,
+        /// Bottom.
+        ymin: f64,
+        /// Right.
+        xmax: f64,
+        /// Top.
+        ymax: f64,
+    },
+    /// The robot radius is negative or not finite.
+    #[error("robot radius {0} must be finite and non-negative")]
+    InvalidRadius(f64),
+    /// The angle step for round corners is outside `(0, PI/2]`.
+    #[error("arc step {0} must lie in (0, PI/2]")]
+    InvalidArcStep(f64),
+    /// An obstacle is not a valid polygon.
+    #[error("obstacle {index}: {error}")]
+    Obstacle {
+        /// Index of the obstacle.
+        index: usize,
+        /// What is wrong with it.
+        error: PolygonError,
+    },
+}
+
+/// An axis-aligned rectangle: the region the robot's centre must stay in. Serialized as
+/// `[xmin, ymin, xmax, ymax]`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "[f64; 4]", into = "[f64; 4]")]
+pub struct Bounds {
+    min: Point,
+    max: Point,
+}
+
+impl Bounds {
+    /// The rectangle `[xmin, xmax] x [ymin, ymax]`; an error unless finite with positive area.
+    pub fn new(xmin: f64, ymin: f64, xmax: f64, ymax: f64) -> Result<Self, WorldError> {
+        let finite = [xmin, ymin, xmax, ymax].iter().all(|v| v.is_finite());
+        if !(finite && xmin < xmax && ymin < ymax) {
+            return Err(WorldError::InvalidBounds { xmin, ymin, xmax, ymax });
+        }
+        Ok(Bounds { min: Point::new(xmin, ymin), max: Point::new(xmax, ymax) })
+    }
+
+    /// The lower-left corner.
+    pub fn min(&self) -> Point {
+        self.min
+    }
+
+    /// The upper-right corner.
+    pub fn max(&self) -> Point {
+        self.max
+    }
+
+    /// Whether `p` lies in the closed rectangle.
+    pub fn contains(&self, p: Point) -> bool {
+        p.x >= self.min.x && p.x <= self.max.x && p.y >= self.min.y && p.y <= self.max.y
+    }
+
+    /// The four corners, counter-clockwise from the lower left.
+    pub fn corners(&self) -> [Point; 4] {
+        let (a, b) = (self.min, self.max);
+        [a, Point::new(b.x, a.y), b, Point::new(a.x, b.y)]
+    }
+}
+
+impl TryFrom<[f64; 4]> for Bounds {
+    type Error = WorldError;
+
+    fn try_from([xmin, ymin, xmax, ymax]: [f64; 4]) -> Result<Self, WorldError> {
+        Bounds::new(xmin, ymin, xmax, ymax)
+    }
+}
+
+impl From<Bounds> for [f64; 4] {
+    fn from(b: Bounds) -> Self {
+        [b.min.x, b.min.y, b.max.x, b.max.y]
+    }
+}
+
+/// A simple polygon, its vertices counter-clockwise. Serialized as a list of `[x, y]`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "Vec<[f64; 2]>", into = "Vec<[f64; 2]>")]
+pub struct Polygon {
+    vertices: Vec<Point>,
+}
+
+impl Polygon {
+    /// A polygon from its vertices in either orientation (a clockwise list is reversed).
+    /// A vertex equal to the one before it is dropped, and so is a closing repeat of the first.
+    pub fn new(vertices: Vec<Point>) -> Result<Self, PolygonError> {
+        if let Some(vertex) = vertices.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
+            return Err(PolygonError::NonFinite { vertex });
+        }
+        let mut kept: Vec<Point> = Vec::with_capacity(vertices.len());
+        for p in vertices {
+            if kept.last() != Some(&p) {
+                kept.push(p);
+            }
+        }
+        while kept.len() > 1 && kept.first() == kept.last() {
+            kept.pop();
+        }
+        if kept.len() < 3 {
+            return Err(PolygonError::TooFewVertices { count: kept.len() });
+        }
+        let n = kept.len();
+        if (0..n).all(|i| orient(kept[0], kept[1], kept[i]) == 0.0) {
+            return Err(PolygonError::ZeroArea);
+        }
+        if let Some((first, second)) = self_intersection(&kept) {
+            return Err(PolygonError::SelfIntersecting { first, second });
+        }
+        if signed_area(&kept) < 0.0 {
+            kept.reverse();
+        }
+        Ok(Polygon { vertices: kept })
+    }
+
+    /// The vertices, counter-clockwise.
+    pub fn vertices(&self) -> &[Point] {
+        &self.vertices
+    }
+
+    /// The area.
+    pub fn area(&self) -> f64 {
+        signed_area(&self.vertices)
+    }
+
+    /// Whether the polygon is convex.
+    pub fn is_convex(&self) -> bool {
+        let v = &self.vertices;
+        let n = v.len();
+        (0..n).all(|i| orient(v[i], v[(i + 1) % n], v[(i + 2) % n]) >= 0.0)
+    }
+
+    /// Whether `p` lies strictly inside. Exact.
+    pub fn contains_strictly(&self, p: Point) -> bool {
+        let v = &self.vertices;
+        let n = v.len();
+        let mut winding = 0i32;
+        for i in 0..n {
+            let (a, b) = (v[i], v[(i + 1) % n]);
+            let side = orient(a, b, p);
+            if side == 0.0
+                && p.x >= a.x.min(b.x)
+                && p.x <= a.x.max(b.x)
+                && p.y >= a.y.min(b.y)
+                && p.y <= a.y.max(b.y)
+            {
+                return false; // on the boundary
+            }
+            if a.y <= p.y {
+                if b.y > p.y && side > 0.0 {
+                    winding += 1;
+                }
+            } else if b.y <= p.y && side < 0.0 {
+                winding -= 1;
+            }
+        }
+        winding != 0
+    }
+
+    fn edges(&self) -> impl Iterator<Item = (Point, Point)> + '_ {
+        let n = self.vertices.len();
+        (0..n).map(move |i| (self.vertices[i], self.vertices[(i + 1) % n]))
+    }
+
+    fn aabb(&self, margin: f64) -> Aabb {
+        let (mut lo, mut hi) = (self.vertices[0], self.vertices[0]);
+        for p in &self.vertices {
+            lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
+            hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
+        }
+        Aabb::new(PVector::new(lo.x - margin, lo.y - margin), PVector::new(hi.x + margin, hi.y + margin))
+    }
+}
+
+impl TryFrom<Vec<[f64; 2]>> for Polygon {
+    type Error = PolygonError;
+
+    fn try_from(points: Vec<[f64; 2]>) -> Result<Self, PolygonError> {
+        Polygon::new(points.into_iter().map(|[x, y]| Point::new(x, y)).collect())
+    }
+}
+
+impl From<Polygon> for Vec<[f64; 2]> {
+    fn from(p: Polygon) -> Self {
+        p.vertices.iter().map(|v| [v.x, v.y]).collect()
+    }
+}
+
+fn signed_area(v: &[Point]) -> f64 {
+    let n = v.len();
+    0.5 * (0..n).map(|i| v[i].x * v[(i + 1) % n].y - v[(i + 1) % n].x * v[i].y).sum::<f64>()
+}
+
+/// The first pair of edges that intersect other than at the shared vertex of consecutive edges
+/// (or that fold back over each other there). Quadratic: obstacles are validated once.
+fn self_intersection(v: &[Point]) -> Option<(usize, usize)> {
+    let n = v.len();
+    let edge = |i: usize| (v[i], v[(i + 1) % n]);
+    for i in 0..n {
+        for j in i + 1..n {
+            let ((a, b), (c, d)) = (edge(i), edge(j));
+            let adjacent = j == i + 1 || (i == 0 && j == n - 1);
+            if adjacent {
+                // Consecutive edges share one vertex; they must not overlap along a line.
+                let (shared, p, q) = if j == i + 1 { (b, a, d) } else { (a, b, c) };
+                if orient(shared, p, q) == 0.0 && (p - shared).dot(&(q - shared)) > 0.0 {
+                    return Some((i, j));
+                }
+            } else if segments_touch(a, b, c, d) {
+                return Some((i, j));
+            }
+        }
+    }
+    None
+}
+
+/// Whether closed segments `a-b` and `c-d` share a point. Exact.
+fn segments_touch(a: Point, b: Point, c: Point, d: Point) -> bool {
+    let (d1, d2) = (orient(a, b, c), orient(a, b, d));
+    let (d3, d4) = (orient(c, d, a), orient(c, d, b));
+    if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
+        return true;
+    }
+    let on = |p: Point, q: Point, r: Point| {
+        r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
+    };
+    (d1 == 0.0 && on(a, b, c))
+        || (d2 == 0.0 && on(a, b, d))
+        || (d3 == 0.0 && on(c, d, a))
+        || (d4 == 0.0 && on(c, d, b))
+}
+
+/// A world of polygonal obstacles for a disc robot. Serialized as
+/// `{"bounds": [xmin, ymin, xmax, ymax], "obstacles": [[[x, y], ...], ...], "robot_radius": r}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "WorldDocument", into = "WorldDocument")]
+pub struct PolygonWorld {
+    bounds: Bounds,
+    obstacles: Vec<Polygon>,
+    robot_radius: f64,
+}
+
+/// The serialized form of a [`PolygonWorld`], checked on the way in.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WorldDocument {
+    bounds: Bounds,
+    #[serde(default)]
+    obstacles: Vec<Vec<[f64; 2]>>,
+    #[serde(default)]
+    robot_radius: f64,
+}
+
+impl TryFrom<WorldDocument> for PolygonWorld {
+    type Error = WorldError;
+
+    fn try_from(doc: WorldDocument) -> Result<Self, WorldError> {
+        let obstacles = doc
+            .obstacles
+            .into_iter()
+            .map(|o| o.into_iter().map(|[x, y]| Point::new(x, y)).collect())
+            .collect();
+        PolygonWorld::new(doc.bounds, obstacles, doc.robot_radius)
+    }
+}
+
+impl From<PolygonWorld> for WorldDocument {
+    fn from(w: PolygonWorld) -> Self {
+        WorldDocument {
+            bounds: w.bounds,
+            obstacles: w.obstacles.into_iter().map(Vec::from).collect(),
+            robot_radius: w.robot_radius,
+        }
+    }
+}
+
+/// The largest angle one straight edge of a grown obstacle's round corner may span, in
+/// radians, unless [`PolygonWorld::free_space_with_step`] is given another.
+pub const DEFAULT_ARC_STEP: f64 = std::f64::consts::PI / 8.0;
+
+impl PolygonWorld {
+    /// A world with the given bounds, obstacles (each a vertex list, checked by
+    /// [`Polygon::new`]) and robot radius.
+    pub fn new(bounds: Bounds, obstacles: Vec<Vec<Point>>, robot_radius: f64) -> Result<Self, WorldError> {
+        if !(robot_radius.is_finite() && robot_radius >= 0.0) {
+            return Err(WorldError::InvalidRadius(robot_radius));
+        }
+        let obstacles = obstacles
+            .into_iter()
+            .enumerate()
+            .map(|(index, v)| Polygon::new(v).map_err(|error| WorldError::Obstacle { index, error }))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(PolygonWorld { bounds, obstacles, robot_radius })
+    }
+
+    /// The bounds of the robot's centre.
+    pub fn bounds(&self) -> Bounds {
+        self.bounds
+    }
+
+    /// The obstacles, as given (not grown).
+    pub fn obstacles(&self) -> &[Polygon] {
+        &self.obstacles
+    }
+
+    /// The robot's radius.
+    pub fn robot_radius(&self) -> f64 {
+        self.robot_radius
+    }
+
+    /// The margin added to grown obstacles for the rounding of polygon operations: 2^-20 of
+    /// the bounds' larger side.
+    fn snap_margin(&self) -> f64 {
+        let size = self.bounds.max - self.bounds.min;
+        size.x.max(size.y) * (-20f64).exp2()
+    }
+
+    /// The exact collision checker of this world.
+    pub fn checker(&self) -> CollisionChecker {
+        CollisionChecker::new(self.clone())
+    }
+
+    /// The free space for the robot's centre as polygons, with [`DEFAULT_ARC_STEP`].
+    pub fn free_space(&self) -> FreeSpace {
+        self.free_space_with_step(DEFAULT_ARC_STEP).expect("the default step is valid")
+    }
+
+    /// The free space for the robot's centre as polygons: each obstacle grown by the robot
+    /// radius, its round corners replaced by edges spanning at most `arc_step` radians that lie
+    /// outside the exact disc (so the polygons are conservative), overlapping obstacles merged,
+    /// and the union cut out of the bounds. A smaller step is closer to the exact shape and has
+    /// more vertices; it must lie in `(0, PI/2]`.
+    pub fn free_space_with_step(&self, arc_step: f64) -> Result<FreeSpace, WorldError> {
+        if !(arc_step > 0.0 && arc_step <= std::f64::consts::FRAC_PI_2) {
+            return Err(WorldError::InvalidArcStep(arc_step));
+        }
+        let step = arc_step;
+        let to_geo = |p: &Polygon| {
+            let mut ring: Vec<Coord<f64>> = p.vertices.iter().map(|v| Coord { x: v.x, y: v.y }).collect();
+            ring.push(ring[0]);
+            geo::Polygon::new(LineString::new(ring), vec![])
+        };
+        let grown: Vec<MultiPolygon<f64>> = self
+            .obstacles
+            .iter()
+            .map(|p| {
+                let polygon = to_geo(p);
+                if self.robot_radius > 0.0 {
+                    // Vertices on a circle of radius r / cos(step / 2): the chords then stay
+                    // outside the disc of radius r. The polygon operations snap coordinates to
+                    // a fixed-point grid (about 1e-9 of the extent): a margin covers that.
+                    let distance = self.robot_radius / (step / 2.0).cos() + self.snap_margin();
+                    polygon.buffer_with_style(BufferStyle::new(distance).line_join(LineJoin::Round(step)))
+                } else {
+                    MultiPolygon::new(vec![polygon])
+                }
+            })
+            .collect();
+        let union = unary_union(grown.iter());
+        let bounds_polygon = to_geo(&Polygon { vertices: self.bounds.corners().to_vec() });
+        let free = bounds_polygon.difference(&union);
+        let mut rings = Vec::new();
+        for polygon in free.iter() {
+            let ring = |l: &LineString<f64>, outer: bool| {
+                let mut v: Vec<Point> = l.coords().map(|c| Point::new(c.x, c.y)).collect();
+                if v.len() > 1 && v.first() == v.last() {
+                    v.pop();
+                }
+                // Free space on the left: the outer ring counter-clockwise, holes clockwise.
+                if (signed_area(&v) > 0.0) != outer {
+                    v.reverse();
+                }
+                v
+            };
+            rings.push(ring(polygon.exterior(), true));
+            rings.extend(polygon.interiors().iter().map(|l| ring(l, false)));
+        }
+        Ok(FreeSpace::from_rings_dropping_degenerate(rings))
+    }
+}
+
+/// Exact collision tests against a [`PolygonWorld`]: a configuration collides when the robot's
+/// disc overlaps an obstacle's interior (touching is allowed) or its centre leaves the bounds.
+#[derive(Clone, Debug)]
+pub struct CollisionChecker {
+    world: PolygonWorld,
+    bvh: Bvh,
+}
+
+impl CollisionChecker {
+    /// The checker of `world`, with a bounding-volume hierarchy over its grown obstacles.
+    pub fn new(world: PolygonWorld) -> Self {
+        let r = world.robot_radius;
+        let leaves: Vec<Aabb> = world.obstacles.iter().map(|o| o.aabb(r)).collect();
+        let bvh = Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves);
+        CollisionChecker { world, bvh }
+    }
+
+    /// The world checked.
+    pub fn world(&self) -> &PolygonWorld {
+        &self.world
+    }
+
+    fn near(&self, min: Point, max: Point) -> Vec<usize> {
+        let query = Aabb::new(PVector::new(min.x, min.y), PVector::new(max.x, max.y));
+        self.bvh.intersect_aabb(&query).map(|i| i as usize).collect()
+    }
+
+    /// Whether the robot at `p` is collision-free.
+    pub fn point_is_free(&self, p: Point) -> bool {
+        if !(p.x.is_finite() && p.y.is_finite() && self.world.bounds.contains(p)) {
+            return false;
+        }
+        let r = self.world.robot_radius;
+        self.near(p, p).into_iter().all(|i| {
+            let o = &self.world.obstacles[i];
+            !o.contains_strictly(p) && o.edges().all(|(a, b)| point_segment_distance(p, a, b) >= r)
+        })
+    }
+
+    /// Whether the robot moving in a straight line from `a` to `b` stays collision-free.
+    pub fn segment_is_free(&self, a: Point, b: Point) -> bool {
+        if !(self.point_is_free(a) && self.point_is_free(b)) {
+            return false;
+        }
+        let r = self.world.robot_radius;
+        let min = Point::new(a.x.min(b.x), a.y.min(b.y));
+        let max = Point::new(a.x.max(b.x), a.y.max(b.y));
+        self.near(min, max).into_iter().all(|i| {
+            let o = &self.world.obstacles[i];
+            if r > 0.0 {
+                // The start is outside, so the segment can only get in through the boundary.
+                o.edges().all(|(p, q)| segment_distance(a, b, p, q) >= r)
+            } else {
+                !segment_enters(o, a, b)
+            }
+        })
+    }
+
+    /// Whether the robot moving along the circular arc with `center`, `radius`, starting at
+    /// angle `start_angle` and turning by `sweep` radians (counter-clockwise when positive)
+    /// stays collision-free.
+    pub fn arc_is_free(&self, center: Point, radius: f64, start_angle: f64, sweep: f64) -> bool {
+        let at = |t: f64| center + radius * nalgebra::Vector2::new(t.cos(), t.sin());
+        let (a, b) = (at(start_angle), at(start_angle + sweep));
+        if !(self.point_is_free(a) && self.point_is_free(b)) {
+            return false;
+        }
+        let arc = Arc { center, radius, start: start_angle, sweep };
+        // The arc must stay in the (convex) bounds: check its extreme points.
+        let bounds = self.world.bounds;
+        for k in 0..4 {
+            let t = f64::from(k) * std::f64::consts::FRAC_PI_2;
+            if arc.holds_angle(t) && !bounds.contains(at(t)) {
+                return false;
+            }
+        }
+        let r = self.world.robot_radius;
+        let reach = radius + r;
+        let (min, max) =
+            (center - nalgebra::Vector2::new(reach, reach), center + nalgebra::Vector2::new(reach, reach));
+        self.near(min, max).into_iter().all(|i| {
+            let o = &self.world.obstacles[i];
+            o.edges().all(|(p, q)| arc.distance_to_segment(p, q) >= r.max(f64::MIN_POSITIVE))
+        })
+    }
+
+    /// Whether the robot following a Dubins path stays collision-free (every arc and segment
+    /// tested exactly).
+    pub fn dubins_is_free(&self, path: &DubinsPath) -> bool {
+        path.pieces().iter().all(|piece| match *piece {
+            Piece::Segment { from, to } => self.segment_is_free(from, to),
+            Piece::Arc { center, radius, start_angle, sweep } => {
+                self.arc_is_free(center, radius, start_angle, sweep)
+            }
+        })
+    }
+}
+
+fn to_parry(p: Point) -> PVector {
+    PVector::new(p.x, p.y)
+}
+
+fn point_segment_distance(p: Point, a: Point, b: Point) -> f64 {
+    Segment::new(to_parry(a), to_parry(b)).distance_to_local_point(to_parry(p), true)
+}
+
+fn segment_distance(a: Point, b: Point, p: Point, q: Point) -> f64 {
+    parry2d_f64::query::details::distance_segment_segment(
+        &PPose::IDENTITY,
+        &Segment::new(to_parry(a), to_parry(b)),
+        &Segment::new(to_parry(p), to_parry(q)),
+    )
+}
+
+/// For a point robot: whether the open segment `a-b` meets the polygon's open interior. The
+/// segment is cut where it meets the boundary, and each piece's midpoint is tested.
+fn segment_enters(o: &Polygon, a: Point, b: Point) -> bool {
+    let ab = b - a;
+    let mut cuts = vec![0.0, 1.0];
+    for (p, q) in o.edges() {
+        if !segments_touch(a, b, p, q) {
+            continue;
+        }
+        let denom = ab.perp(&(q - p));
+        if denom != 0.0 {
+            cuts.push(((p - a).perp(&(q - p)) / denom).clamp(0.0, 1.0));
+        } else {
+            // Collinear: the overlap's ends.
+            let len2 = ab.norm_squared();
+            for v in [p, q] {
+                cuts.push(((v - a).dot(&ab) / len2).clamp(0.0, 1.0));
+            }
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.windows(2).any(|w| w[1] > w[0] && o.contains_strictly(a + ab * (0.5 * (w[0] + w[1]))))
+}
+
+/// A circular arc.
+struct Arc {
+    center: Point,
+    radius: f64,
+    start: f64,
+    sweep: f64,
+}
+
+impl Arc {
+    fn point(&self, t: f64) -> Point {
+        self.center + self.radius * nalgebra::Vector2::new(t.cos(), t.sin())
+    }
+
+    /// Whether the arc passes through angle `t`.
+    fn holds_angle(&self, t: f64) -> bool {
+        let tau = std::f64::consts::TAU;
+        if self.sweep.abs() >= tau {
+            return true;
+        }
+        let offset = if self.sweep >= 0.0 { t - self.start } else { self.start - t };
+        offset.rem_euclid(tau) <= self.sweep.abs()
+    }
+
+    fn distance_to_point(&self, p: Point) -> f64 {
+        let d = p - self.center;
+        let ends = (self.point(self.start) - p).norm().min((self.point(self.start + self.sweep) - p).norm());
+        if d.norm() > 0.0 && self.holds_angle(d.y.atan2(d.x)) {
+            (d.norm() - self.radius).abs().min(ends)
+        } else {
+            ends
+        }
+    }
+
+    /// The distance between the arc and segment `p-q`: the least over the pairs where the
+    /// closest points can be (an end of one, or the normal through the centre), zero where the
+    /// segment crosses the arc.
+    fn distance_to_segment(&self, p: Point, q: Point) -> f64 {
+        let (a, b) = (self.point(self.start), self.point(self.start + self.sweep));
+        let mut best = point_segment_distance(a, p, q)
+            .min(point_segment_distance(b, p, q))
+            .min(self.distance_to_point(p))
+            .min(self.distance_to_point(q));
+        // The point of the segment nearest the centre, and the circle's crossings of the segment.
+        let pq = q - p;
+        let len2 = pq.norm_squared();
+        if len2 > 0.0 {
+            let t = ((self.center - p).dot(&pq) / len2).clamp(0.0, 1.0);
+            let foot = p + pq * t;
+            best = best.min(self.distance_to_point(foot));
+            let h = (foot - self.center).norm();
+            if h <= self.radius {
+                let half = (self.radius * self.radius - h * h).max(0.0).sqrt() / len2.sqrt();
+                for s in [t - half, t + half] {
+                    if (0.0..=1.0).contains(&s) {
+                        let x = p + pq * s;
+                        let d = x - self.center;
+                        if self.holds_angle(d.y.atan2(d.x)) {
+                            return 0.0;
+                        }
+                    }
+                }
+            }
+        }
+        best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    fn square(x: f64, y: f64, s: f64) -> Vec<Point> {
+        vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]
+    }
+
+    #[test]
+    fn bad_polygons_are_typed_errors() {
+        assert_eq!(
+            Polygon::new(vec![p(0.0, 0.0), p(1.0, 0.0)]),
+            Err(PolygonError::TooFewVertices { count: 2 })
+        );
+        assert_eq!(
+            Polygon::new(vec![p(0.0, 0.0), p(1.0, 0.0), p(1.0, 0.0), p(0.0, 0.0)]),
+            Err(PolygonError::TooFewVertices { count: 2 })
+        );
+        assert_eq!(Polygon::new(vec![p(0.0, 0.0), p(1.0, 1.0), p(2.0, 2.0)]), Err(PolygonError::ZeroArea));
+        assert_eq!(
+            Polygon::new(vec![p(0.0, 0.0), p(f64::NAN, 1.0), p(2.0, 2.0)]),
+            Err(PolygonError::NonFinite { vertex: 1 })
+        );
+        // A bow tie.
+        let bow = vec![p(0.0, 0.0), p(2.0, 2.0), p(2.0, 0.0), p(0.0, 2.0)];
+        assert!(matches!(Polygon::new(bow), Err(PolygonError::SelfIntersecting { .. })));
+        // A spike folding back on itself.
+        let spike = vec![p(0.0, 0.0), p(2.0, 0.0), p(1.0, 0.0), p(1.0, 1.0)];
+        assert!(matches!(Polygon::new(spike), Err(PolygonError::SelfIntersecting { .. })));
+        // A vertex touching another edge.
+        let touch = vec![p(0.0, 0.0), p(4.0, 0.0), p(4.0, 4.0), p(2.0, 0.0), p(0.0, 4.0)];
+        assert!(matches!(Polygon::new(touch), Err(PolygonError::SelfIntersecting { .. })));
+    }
+
+    #[test]
+    fn clockwise_input_is_reversed() {
+        let mut v = square(0.0, 0.0, 1.0);
+        v.reverse();
+        let poly = Polygon::new(v).unwrap();
+        assert!(poly.area() > 0.0);
+        assert!(poly.is_convex());
+    }
+
+    #[test]
+    fn bad_worlds_are_typed_errors() {
+        assert!(matches!(Bounds::new(0.0, 0.0, 0.0, 1.0), Err(WorldError::InvalidBounds { .. })));
+        let b = Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap();
+        assert_eq!(PolygonWorld::new(b, vec![], -1.0), Err(WorldError::InvalidRadius(-1.0)));
+        assert_eq!(
+            PolygonWorld::new(b, vec![], f64::NAN).unwrap_err().to_string(),
+            "robot radius NaN must be finite and non-negative"
+        );
+        let e = PolygonWorld::new(b, vec![square(1.0, 1.0, 1.0), vec![p(0.0, 0.0)]], 0.0).unwrap_err();
+        assert_eq!(e, WorldError::Obstacle { index: 1, error: PolygonError::TooFewVertices { count: 1 } });
+    }
+
+    #[test]
+    fn json_round_trip_and_checked_input() {
+        let text = r#"{"bounds": [0, 0, 10, 10], "obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]], "robot_radius": 0.5}"#;
+        let world: PolygonWorld = serde_json::from_str(text).unwrap();
+        assert_eq!(world.obstacles().len(), 1);
+        let again: PolygonWorld = serde_json::from_str(&serde_json::to_string(&world).unwrap()).unwrap();
+        assert_eq!(again, world);
+        let bad = r#"{"bounds": [0, 0, 10, 10], "obstacles": [[[4, 4], [6, 4]]]}"#;
+        let err = serde_json::from_str::<PolygonWorld>(bad).unwrap_err().to_string();
+        assert!(err.contains("obstacle 0"), "{err}");
+    }
+
+    #[test]
+    fn point_robot_segments_touch_but_do_not_enter() {
+        let b = Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap();
+        let world = PolygonWorld::new(b, vec![square(4.0, 4.0, 2.0)], 0.0).unwrap();
+        let c = world.checker();
+        assert!(c.segment_is_free(p(0.0, 4.0), p(10.0, 4.0))); // along the bottom side
+        assert!(c.segment_is_free(p(2.0, 2.0), p(4.0, 4.0))); // to a corner
+        assert!(c.segment_is_free(p(3.0, 5.0), p(5.0, 3.0))); // touching a corner
+        assert!(!c.segment_is_free(p(3.0, 5.0), p(5.0, 4.5))); // cutting it
+        assert!(!c.segment_is_free(p(0.0, 5.0), p(10.0, 5.0)));
+        assert!(!c.segment_is_free(p(2.0, 2.0), p(8.0, 8.0))); // through two corners
+        assert!(!c.segment_is_free(p(-1.0, 0.0), p(1.0, 1.0))); // leaves the bounds
+    }
+
+    #[test]
+    fn arcs_against_a_square() {
+        let b = Bounds::new(-10.0, -10.0, 10.0, 10.0).unwrap();
+        let world = PolygonWorld::new(b, vec![square(-1.0, 3.0, 2.0)], 0.5).unwrap();
+        let c = world.checker();
+        let half = std::f64::consts::PI;
+        // The upper half of a circle of radius 3 around the origin runs through the square.
+        assert!(!c.arc_is_free(p(0.0, 0.0), 3.0, 0.0, half));
+        // The lower half does not.
+        assert!(c.arc_is_free(p(0.0, 0.0), 3.0, 0.0, -half));
+        // Radius 2.4: the top of the arc passes 0.6 below the square, more than the robot radius.
+        assert!(c.arc_is_free(p(0.0, 0.0), 2.4, 0.0, half));
+        assert!(!c.arc_is_free(p(0.0, 0.0), 2.6, 0.0, half));
+        // A full turn leaving the bounds.
+        assert!(!c.arc_is_free(p(0.0, -8.0), 3.0, 0.0, 2.0 * half));
+    }
+
+    #[test]
+    fn grown_polygons_are_conservative_and_merge() {
+        let b = Bounds::new(0.0, 0.0, 20.0, 20.0).unwrap();
+        // Two squares 0.8 apart, robot radius 0.5: grown, they overlap and merge.
+        let world = PolygonWorld::new(b, vec![square(5.0, 5.0, 2.0), square(7.8, 5.0, 2.0)], 0.5).unwrap();
+        let space = world.free_space();
+        let checker = world.checker();
+        // Outer ring plus one merged hole.
+        let (lo, hi) = space.bounding_box();
+        assert_eq!((lo, hi), (p(0.0, 0.0), p(20.0, 20.0)));
+        let holes = space.positions().iter().filter(|v| v.x > 1.0 && v.x < 19.0).count();
+        assert!(holes > 8);
+        // Every edge of the grown polygons is outside the exact disc sum (checked at its ends and
+        // middle), and no vertex is much farther out than the circumscribed polygon's corners
+        // (where two grown outlines cross, a little farther).
+        let limit = 1.001 * (0.5 / (DEFAULT_ARC_STEP / 2.0).cos() + world.snap_margin());
+        for e in 0..space.edges().len() {
+            let (a, z) = space.edge_points(e);
+            if !(b.contains(a) && b.contains(z)) || a.x == 0.0 || a.x == 20.0 || a.y == 0.0 || a.y == 20.0 {
+                continue; // the outer boundary
+            }
+            for q in [a, z, a + (z - a) * 0.5] {
+                assert!(checker.point_is_free(q), "{q}");
+            }
+            let distance = world
+                .obstacles()
+                .iter()
+                .flat_map(|o| o.edges())
+                .map(|(s, t)| point_segment_distance(a, s, t))
+                .fold(f64::INFINITY, f64::min);
+            assert!(distance <= limit, "{a} is {distance} from the obstacles");
+        }
+        assert!(!space.segment_is_free(p(7.4, 0.0), p(7.4, 20.0)));
+    }
+}

@@ -6,7 +6,7 @@
 use std::collections::BTreeSet;
 
 use proptest::prelude::*;
-use trailmark::core::freespace::FreeSpace;
+use trailmark::core::freespace::{FreeSpace, Location};
 use trailmark::core::geometry::Point;
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::prelude::*;
@@ -220,4 +220,43 @@ fn start_and_goal_inside_obstacles_are_errors() {
     assert!(graph.query(Point::new(1.5, 1.5), Point::new(0.0, 0.0)).is_err());
     assert!(graph.query(Point::new(0.0, 0.0), Point::new(1.5, 1.5)).is_err());
     assert!(graph.query(Point::new(f64::NAN, 0.0), Point::new(0.0, 0.0)).is_err());
+}
+
+/// A generated polygon world: random convex obstacles, a robot radius, and two free points.
+fn polygon_world() -> impl Strategy<Value = (trailmark::core::world::PolygonWorld, Point, Point)> {
+    (1usize..25, prop_oneof![Just(0.0), 0.0f64..1.5], any::<u64>(), any::<[u32; 4]>()).prop_filter_map(
+        "start and goal must be free",
+        |(count, radius, seed, picks)| {
+            let world = trailmark::core::generate::convex_obstacles(40.0, count, 5, radius, seed).ok()?;
+            let checker = world.checker();
+            let at = |a: u32, b: u32| Point::new(f64::from(a % 4001) / 100.0, f64::from(b % 4001) / 100.0);
+            let (start, goal) = (at(picks[0], picks[1]), at(picks[2], picks[3]));
+            let space = world.free_space();
+            let usable = |p: Point| checker.point_is_free(p) && space.locate(p) != Location::Blocked;
+            (usable(start) && usable(goal)).then_some((world, start, goal))
+        },
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// On polygon worlds, every edge of the visibility graph (and of a query) is collision-free
+    /// for the disc robot by the exact checker (round shapes, not the polygons the graph was
+    /// built on), and the shortest path is no shorter than the straight line.
+    #[test]
+    fn polygon_world_edges_are_collision_free((world, start, goal) in polygon_world()) {
+        let checker = world.checker();
+        let graph = VisibilityGraph::new(world.free_space());
+        let query = graph.query(start, goal).expect("free points");
+        for v in 0..query.node_bound() as u32 {
+            query.for_each_successor(v, |u, _| {
+                let (a, b) = (query.position(v), query.position(u));
+                assert!(checker.segment_is_free(a, b), "{a} -> {b} collides");
+            });
+        }
+        if let Some(cost) = astar(&query, query.start(), query.goal(), query.heuristic()).expect("valid").cost() {
+            prop_assert!(cost >= (goal - start).norm() - 1e-9);
+        }
+    }
 }

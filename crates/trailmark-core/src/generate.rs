@@ -26,6 +26,9 @@ pub enum GenerateError {
     /// The obstacle fraction is not within `[0, 1]`.
     #[error("the obstacle fraction {0} is not within [0, 1]")]
     Fraction(f64),
+    /// A polygon world could not be made from the arguments.
+    #[error(transparent)]
+    World(#[from] crate::world::WorldError),
     /// A corridor or room size of zero, or too large for the grid.
     #[error("a {what} of {size} does not fit a {width} x {height} grid")]
     Size {
@@ -235,4 +238,57 @@ mod tests {
         assert!(matches!(rooms(10, 10, 1, 0), Err(GenerateError::Size { .. })));
         assert!(matches!(random(0, 3, 0.1, 0), Err(GenerateError::Grid(_))));
     }
+}
+
+/// A square world of side `size` with `count` random convex obstacles of `sides` vertices each
+/// (at least 3), in the style of roadmap benchmarks: centres uniform in the square, radii
+/// uniform in `[0.3, 1] x size / sqrt(count) / 2`, vertices at sorted random angles on that
+/// circle. Obstacles may overlap; the free space merges them. The robot radius is
+/// `robot_radius`.
+///
+/// ```
+/// use trailmark_core::generate;
+///
+/// let world = generate::convex_obstacles(100.0, 50, 6, 0.0, 7)?;
+/// assert_eq!(world.obstacles().len(), 50);
+/// assert!(world.obstacles().iter().all(|o| o.is_convex() && o.vertices().len() == 6));
+/// assert_eq!(world, generate::convex_obstacles(100.0, 50, 6, 0.0, 7)?); // reproducible
+/// # Ok::<(), trailmark_core::generate::GenerateError>(())
+/// ```
+pub fn convex_obstacles(
+    size: f64,
+    count: usize,
+    sides: usize,
+    robot_radius: f64,
+    seed: u64,
+) -> Result<crate::world::PolygonWorld, GenerateError> {
+    use crate::geometry::Point;
+    use crate::world::{Bounds, PolygonWorld};
+    let bounds = Bounds::new(0.0, 0.0, size, size)?;
+    if sides < 3 {
+        return Err(GenerateError::Size {
+            what: "polygon side count",
+            size: sides as u32,
+            width: 3,
+            height: 3,
+        });
+    }
+    let mut rng = rng(seed);
+    let scale = size / (count.max(1) as f64).sqrt() / 2.0;
+    let mut obstacles = Vec::with_capacity(count);
+    while obstacles.len() < count {
+        let centre = Point::new(rng.random_range(0.0..size), rng.random_range(0.0..size));
+        let radius = scale * rng.random_range(0.3..1.0);
+        let mut angles: Vec<f64> = (0..sides).map(|_| rng.random_range(0.0..std::f64::consts::TAU)).collect();
+        angles.sort_by(f64::total_cmp);
+        let polygon: Vec<Point> =
+            angles.iter().map(|t| centre + radius * crate::geometry::Vector::new(t.cos(), t.sin())).collect();
+        // Angles too close together give a degenerate polygon: draw again.
+        if crate::world::Polygon::new(polygon.clone())
+            .is_ok_and(|p| p.vertices().len() == sides && p.is_convex())
+        {
+            obstacles.push(polygon);
+        }
+    }
+    Ok(PolygonWorld::new(bounds, obstacles, robot_radius)?)
 }

@@ -429,12 +429,17 @@ impl PolygonWorld {
             .iter()
             .map(|p| {
                 let polygon = to_geo(p);
+                let margin = self.snap_margin();
                 if self.robot_radius > 0.0 {
-                    // Vertices on a circle of radius r / cos(step / 2): the chords then stay
-                    // outside the disc of radius r. The polygon operations snap coordinates to
-                    // a fixed-point grid (about 1e-9 of the extent): a margin covers that.
-                    let distance = self.robot_radius / (step / 2.0).cos() + self.snap_margin();
-                    polygon.buffer_with_style(BufferStyle::new(distance).line_join(LineJoin::Round(step)))
+                    // Vertices on a circle of radius r / cos(step / 2): chords spanning at most
+                    // `step` then stay outside the disc of radius r. The join's parameter is the
+                    // chord length over the radius; it asks for chords of half the step, since
+                    // the corner's arc is split into a power of two of pieces, each up to twice
+                    // the requested angle. The polygon operations snap coordinates to a
+                    // fixed-point grid (about 1e-9 of the extent): a margin covers that.
+                    let distance = self.robot_radius / (step / 2.0).cos() + margin;
+                    let join = LineJoin::Round(2.0 * (step / 4.0).sin());
+                    polygon.buffer_with_style(BufferStyle::new(distance).line_join(join))
                 } else {
                     MultiPolygon::new(vec![polygon])
                 }
@@ -443,10 +448,36 @@ impl PolygonWorld {
         let union = unary_union(grown.iter());
         let bounds_polygon = to_geo(&Polygon { vertices: self.bounds.corners().to_vec() });
         let free = bounds_polygon.difference(&union);
+        // For a point robot, the union's vertices are the obstacles' own vertices (snapped to the
+        // fixed-point grid of the polygon operations) and crossings of their edges: put the
+        // former back exactly, so a path may touch an obstacle's corner without entering it.
+        let tolerance = self.snap_margin();
+        let originals: std::collections::HashMap<(i64, i64), Vec<Point>> = if self.robot_radius == 0.0 {
+            let mut map: std::collections::HashMap<(i64, i64), Vec<Point>> = std::collections::HashMap::new();
+            for v in self.obstacles.iter().flat_map(|o| o.vertices.iter()).chain(self.bounds.corners().iter())
+            {
+                map.entry(((v.x / tolerance).floor() as i64, (v.y / tolerance).floor() as i64))
+                    .or_default()
+                    .push(*v);
+            }
+            map
+        } else {
+            Default::default()
+        };
+        let restore = |p: Point| {
+            let (cx, cy) = ((p.x / tolerance).floor() as i64, (p.y / tolerance).floor() as i64);
+            (cx - 1..=cx + 1)
+                .flat_map(|x| (cy - 1..=cy + 1).map(move |y| (x, y)))
+                .filter_map(|k| originals.get(&k))
+                .flatten()
+                .copied()
+                .find(|v| (v - p).norm() <= tolerance)
+                .unwrap_or(p)
+        };
         let mut rings = Vec::new();
         for polygon in free.iter() {
             let ring = |l: &LineString<f64>, outer: bool| {
-                let mut v: Vec<Point> = l.coords().map(|c| Point::new(c.x, c.y)).collect();
+                let mut v: Vec<Point> = l.coords().map(|c| restore(Point::new(c.x, c.y))).collect();
                 if v.len() > 1 && v.first() == v.last() {
                     v.pop();
                 }
@@ -581,24 +612,39 @@ fn segment_distance(a: Point, b: Point, p: Point, q: Point) -> f64 {
 /// segment is cut where it meets the boundary, and each piece's midpoint is tested.
 fn segment_enters(o: &Polygon, a: Point, b: Point) -> bool {
     let ab = b - a;
+    let len2 = ab.norm_squared();
     let mut cuts = vec![0.0, 1.0];
+    // Stretches of the segment that run along an edge: on the boundary, not inside.
+    let mut along: Vec<(f64, f64)> = Vec::new();
     for (p, q) in o.edges() {
         if !segments_touch(a, b, p, q) {
             continue;
         }
         let denom = ab.perp(&(q - p));
-        if denom != 0.0 {
+        if orient(p, q, a) == 0.0 && orient(p, q, b) == 0.0 {
+            let (s, t) = ((p - a).dot(&ab) / len2, (q - a).dot(&ab) / len2);
+            let (lo, hi) = (s.min(t).clamp(0.0, 1.0), s.max(t).clamp(0.0, 1.0));
+            cuts.extend([lo, hi]);
+            along.push((lo, hi));
+        } else if orient(p, q, a) == 0.0 {
+            cuts.push(0.0); // touching at the segment's ends: exactly there, not nearly
+        } else if orient(p, q, b) == 0.0 {
+            cuts.push(1.0);
+        } else if orient(a, b, p) == 0.0 {
+            cuts.push(((p - a).dot(&ab) / len2).clamp(0.0, 1.0));
+        } else if orient(a, b, q) == 0.0 {
+            cuts.push(((q - a).dot(&ab) / len2).clamp(0.0, 1.0));
+        } else if denom != 0.0 {
             cuts.push(((p - a).perp(&(q - p)) / denom).clamp(0.0, 1.0));
-        } else {
-            // Collinear: the overlap's ends.
-            let len2 = ab.norm_squared();
-            for v in [p, q] {
-                cuts.push(((v - a).dot(&ab) / len2).clamp(0.0, 1.0));
-            }
         }
     }
     cuts.sort_by(f64::total_cmp);
-    cuts.windows(2).any(|w| w[1] > w[0] && o.contains_strictly(a + ab * (0.5 * (w[0] + w[1]))))
+    cuts.windows(2).any(|w| {
+        let mid = 0.5 * (w[0] + w[1]);
+        w[1] > w[0]
+            && !along.iter().any(|&(lo, hi)| lo <= mid && mid <= hi)
+            && o.contains_strictly(a + ab * mid)
+    })
 }
 
 /// A circular arc.

@@ -187,59 +187,6 @@ pub fn rooms(width: usize, height: usize, room: u32, seed: u64) -> Result<Grid, 
     Ok(grid)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The passable cells reachable from `from`, 4-connected, by flood fill.
-    fn reachable(grid: &Grid, from: Cell) -> usize {
-        let mut seen = vec![false; grid.len()];
-        let mut stack = vec![from];
-        let w = grid.width() as usize;
-        let mut n = 0;
-        while let Some(c) = stack.pop() {
-            if !grid.is_passable(c) || std::mem::replace(&mut seen[c.y as usize * w + c.x as usize], true) {
-                continue;
-            }
-            n += 1;
-            for (dx, dy) in [(1i32, 0i32), (-1, 0), (0, 1), (0, -1)] {
-                stack.push(Cell::new(c.x.wrapping_add_signed(dx), c.y.wrapping_add_signed(dy)));
-            }
-        }
-        n
-    }
-
-    #[test]
-    fn mazes_and_rooms_are_connected() {
-        for seed in 0..5 {
-            let m = maze(61, 40, 2, seed).unwrap();
-            assert_eq!(reachable(&m, Cell::new(1, 1)), m.passable_count(), "maze seed {seed}");
-            for (w, h) in [(70, 45), (72, 72), (73, 19), (9, 100)] {
-                let r = rooms(w, h, 8, seed).unwrap();
-                assert_eq!(reachable(&r, Cell::new(0, 0)), r.passable_count(), "rooms {w}x{h} seed {seed}");
-            }
-        }
-    }
-
-    #[test]
-    fn same_seed_same_grid() {
-        assert_eq!(random(30, 20, 0.3, 9).unwrap(), random(30, 20, 0.3, 9).unwrap());
-        assert_ne!(random(30, 20, 0.3, 9).unwrap(), random(30, 20, 0.3, 10).unwrap());
-        let density = random(200, 200, 0.25, 1).unwrap().passable_count() as f64 / 40000.0;
-        assert!((density - 0.75).abs() < 0.02, "{density}");
-    }
-
-    #[test]
-    fn bad_arguments_are_errors() {
-        assert_eq!(random(3, 3, 1.5, 0), Err(GenerateError::Fraction(1.5)));
-        assert!(random(3, 3, f64::NAN, 0).is_err());
-        assert!(matches!(maze(10, 10, 0, 0), Err(GenerateError::Size { .. })));
-        assert!(matches!(maze(3, 3, 4, 0), Err(GenerateError::Size { .. })));
-        assert!(matches!(rooms(10, 10, 1, 0), Err(GenerateError::Size { .. })));
-        assert!(matches!(random(0, 3, 0.1, 0), Err(GenerateError::Grid(_))));
-    }
-}
-
 /// A square world of side `size` with `count` random convex obstacles of `sides` vertices each
 /// (at least 3), in the style of roadmap benchmarks: centres uniform in the square, radii
 /// uniform in `[0.3, 1] x size / sqrt(count) / 2`, vertices at sorted random angles on that
@@ -291,4 +238,57 @@ pub fn convex_obstacles(
         }
     }
     Ok(PolygonWorld::new(bounds, obstacles, robot_radius)?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The passable cells reachable from `from`, 4-connected, by flood fill.
+    fn reachable(grid: &Grid, from: Cell) -> usize {
+        let mut seen = vec![false; grid.len()];
+        let mut stack = vec![from];
+        let w = grid.width() as usize;
+        let mut n = 0;
+        while let Some(c) = stack.pop() {
+            if !grid.is_passable(c) || std::mem::replace(&mut seen[c.y as usize * w + c.x as usize], true) {
+                continue;
+            }
+            n += 1;
+            for (dx, dy) in [(1i32, 0i32), (-1, 0), (0, 1), (0, -1)] {
+                stack.push(Cell::new(c.x.wrapping_add_signed(dx), c.y.wrapping_add_signed(dy)));
+            }
+        }
+        n
+    }
+
+    #[test]
+    fn mazes_and_rooms_are_connected() {
+        for seed in 0..5 {
+            let m = maze(61, 40, 2, seed).unwrap();
+            assert_eq!(reachable(&m, Cell::new(1, 1)), m.passable_count(), "maze seed {seed}");
+            for (w, h) in [(70, 45), (72, 72), (73, 19), (9, 100)] {
+                let r = rooms(w, h, 8, seed).unwrap();
+                assert_eq!(reachable(&r, Cell::new(0, 0)), r.passable_count(), "rooms {w}x{h} seed {seed}");
+            }
+        }
+    }
+
+    #[test]
+    fn same_seed_same_grid() {
+        assert_eq!(random(30, 20, 0.3, 9).unwrap(), random(30, 20, 0.3, 9).unwrap());
+        assert_ne!(random(30, 20, 0.3, 9).unwrap(), random(30, 20, 0.3, 10).unwrap());
+        let density = random(200, 200, 0.25, 1).unwrap().passable_count() as f64 / 40000.0;
+        assert!((density - 0.75).abs() < 0.02, "{density}");
+    }
+
+    #[test]
+    fn bad_arguments_are_errors() {
+        assert_eq!(random(3, 3, 1.5, 0), Err(GenerateError::Fraction(1.5)));
+        assert!(random(3, 3, f64::NAN, 0).is_err());
+        assert!(matches!(maze(10, 10, 0, 0), Err(GenerateError::Size { .. })));
+        assert!(matches!(maze(3, 3, 4, 0), Err(GenerateError::Size { .. })));
+        assert!(matches!(rooms(10, 10, 1, 0), Err(GenerateError::Size { .. })));
+        assert!(matches!(random(0, 3, 0.1, 0), Err(GenerateError::Grid(_))));
+    }
 }

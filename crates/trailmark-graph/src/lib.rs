@@ -1,7 +1,8 @@
 //! Graph builders: turn a world into a graph that every `trailmark-search` algorithm can search.
 //!
 //! This release builds grid graphs ([`grid::GridGraph`]): 4- or 8-connected, with per-cell costs
-//! and a choice of corner-cutting rule. The graphs implement the traits of
+//! and a choice of corner-cutting rule; and visibility graphs ([`visibility::VisibilityGraph`])
+//! of a polygonal free space, by Lee's rotational sweep with exact predicates. The graphs implement the traits of
 //! [`trailmark_core::graph`], and nothing here depends on a search algorithm.
 //!
 //! ```

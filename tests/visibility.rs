@@ -44,9 +44,15 @@ fn strictly_blocked(grid: &Grid, p: Point) -> bool {
     !grid.is_passable(Cell::new(fx as u32, fy as u32))
 }
 
+/// An undirected edge as a key: the endpoints' bit patterns, in order.
+fn edge_key(a: Point, b: Point) -> [(u64, u64); 2] {
+    let key = |p: Point| (p.x.to_bits(), p.y.to_bits());
+    let (ka, kb) = (key(a), key(b));
+    if ka < kb { [ka, kb] } else { [kb, ka] }
+}
+
 /// Every node pair that sees each other, by testing each pair on its own.
 fn brute_force_edges(space: &FreeSpace) -> BTreeSet<[(u64, u64); 2]> {
-    let key = |p: Point| (p.x.to_bits(), p.y.to_bits());
     let mut nodes = Vec::new();
     for (i, &at) in space.positions().iter().enumerate() {
         for corner in space.corners(i) {
@@ -59,8 +65,7 @@ fn brute_force_edges(space: &FreeSpace) -> BTreeSet<[(u64, u64); 2]> {
     for (i, &(a, ca)) in nodes.iter().enumerate() {
         for &(b, cb) in &nodes[i + 1..] {
             if a != b && ca.admits(a, b) && cb.admits(b, a) && space.segment_is_free(a, b) {
-                let (ka, kb) = (key(a), key(b));
-                edges.insert(if ka < kb { [ka, kb] } else { [kb, ka] });
+                edges.insert(edge_key(a, b));
             }
         }
     }
@@ -68,15 +73,9 @@ fn brute_force_edges(space: &FreeSpace) -> BTreeSet<[(u64, u64); 2]> {
 }
 
 fn graph_edges(graph: &VisibilityGraph) -> BTreeSet<[(u64, u64); 2]> {
-    let key = |p: Point| (p.x.to_bits(), p.y.to_bits());
-    let mut edges = BTreeSet::new();
-    for v in 0..graph.node_count() as u32 {
-        for (u, _) in graph.neighbours(v) {
-            let (ka, kb) = (key(graph.position(v)), key(graph.position(u)));
-            edges.insert(if ka < kb { [ka, kb] } else { [kb, ka] });
-        }
-    }
-    edges
+    (0..graph.node_count() as u32)
+        .flat_map(|v| graph.neighbours(v).map(move |(u, _)| edge_key(graph.position(v), graph.position(u))))
+        .collect()
 }
 
 /// A lattice move: its step and the cells beside it.

@@ -127,6 +127,16 @@ fn solve_one(
     Ok(())
 }
 
+/// Prints the first ten failure messages of a map, and how many more there were.
+fn print_messages(messages: &[String]) {
+    for m in messages.iter().take(10) {
+        println!("    {m}");
+    }
+    if messages.len() > 10 {
+        println!("    ... and {} more", messages.len() - 10);
+    }
+}
+
 /// Runs the check over every scenario file of `dir`, maps in parallel, and prints one line per
 /// map and the total.
 pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
@@ -157,12 +167,7 @@ pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
     let (mut passed, mut failed) = (0, 0);
     for o in outcomes.into_iter().flatten() {
         println!("{:<24} {:>6} passed {:>4} failed  {:>7.2}s", o.name, o.passed, o.failed, o.seconds);
-        for m in o.messages.iter().take(10) {
-            println!("    {m}");
-        }
-        if o.messages.len() > 10 {
-            println!("    ... and {} more", o.messages.len() - 10);
-        }
+        print_messages(&o.messages);
         passed += o.passed;
         failed += o.failed;
     }
@@ -251,12 +256,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
             graph.edge_count(),
             solve.elapsed().as_secs_f64()
         );
-        for m in messages.iter().take(10) {
-            println!("    {m}");
-        }
-        if messages.len() > 10 {
-            println!("    ... and {} more", messages.len() - 10);
-        }
+        print_messages(&messages);
         passed += ok;
         failed += bad;
     }

@@ -77,16 +77,28 @@ fn orient_exact(a: Point, b: Point, c: Point) -> f64 {
 /// A wedge whose two directions coincide is taken as the full turn. Exact.
 #[inline]
 pub fn in_wedge(apex: Point, from: Point, to: Point, q: Point) -> bool {
-    let turn = orient(apex, from, to);
-    let from_q = orient(apex, from, q);
-    let to_q = orient(apex, to, q);
+    wedge_holds(
+        orient(apex, from, to),
+        || same_direction(apex, from, to),
+        orient(apex, from, q),
+        orient(apex, to, q),
+    )
+}
+
+/// The decision of [`in_wedge`] from its orientation signs, for callers that compute them in
+/// another way (rays pointing away from a point, say): `turn` is the orientation of the wedge's
+/// second direction relative to its first, `aligned` whether the two coincide (asked only when
+/// `turn` is zero), `from_q` and `to_q` the orientations of the tested direction relative to
+/// each.
+#[inline]
+pub fn wedge_holds(turn: f64, aligned: impl FnOnce() -> bool, from_q: f64, to_q: f64) -> bool {
     if turn > 0.0 {
         // Less than a half turn: q between the two directions.
         from_q >= 0.0 && to_q <= 0.0
     } else if turn < 0.0 {
         // More than a half turn: q not strictly inside the complement.
         !(to_q > 0.0 && from_q < 0.0)
-    } else if same_direction(apex, from, to) {
+    } else if aligned() {
         true
     } else {
         // Exactly a half turn: the closed half-plane left of `from`.
@@ -98,6 +110,51 @@ pub fn in_wedge(apex: Point, from: Point, to: Point, q: Point) -> bool {
 #[inline]
 fn same_direction(apex: Point, a: Point, b: Point) -> bool {
     (a.x - apex.x) * (b.x - apex.x) + (a.y - apex.y) * (b.y - apex.y) > 0.0
+}
+
+/// Whether `p` lies on the closed segment `a`-`b`. Exact.
+#[inline]
+pub(crate) fn on_segment(a: Point, b: Point, p: Point) -> bool {
+    orient(a, b, p) == 0.0
+        && p.x >= a.x.min(b.x)
+        && p.x <= a.x.max(b.x)
+        && p.y >= a.y.min(b.y)
+        && p.y <= a.y.max(b.y)
+}
+
+/// The winding number around `p` of the closed rings whose edges are `edges` (only those that
+/// cross the ray from `p` toward +x count, so the caller may pass just those), or `None` when
+/// `p` lies on an edge. Exact.
+pub(crate) fn winding_number(p: Point, edges: impl IntoIterator<Item = (Point, Point)>) -> Option<i64> {
+    let mut winding = 0i64;
+    for (a, b) in edges {
+        let side = orient(a, b, p);
+        if side == 0.0 && on_segment(a, b, p) {
+            return None;
+        }
+        if a.y <= p.y {
+            if b.y > p.y && side > 0.0 {
+                winding += 1;
+            }
+        } else if b.y <= p.y && side < 0.0 {
+            winding -= 1;
+        }
+    }
+    Some(winding)
+}
+
+/// `ring` without vertices equal to the one before them, nor a closing repeat of the first.
+pub(crate) fn dedup_ring(ring: impl IntoIterator<Item = Point>) -> Vec<Point> {
+    let mut kept: Vec<Point> = Vec::new();
+    for p in ring {
+        if kept.last() != Some(&p) {
+            kept.push(p);
+        }
+    }
+    while kept.len() > 1 && kept.first() == kept.last() {
+        kept.pop();
+    }
+    kept
 }
 
 /// Whether collinear point `p` lies strictly between `a` and `b`.
@@ -296,7 +353,7 @@ impl FreeSpace {
     pub fn edges_through(&self, p: Point) -> impl Iterator<Item = usize> + '_ {
         self.edges_near(p, p).filter(move |&e| {
             let (a, b) = self.edge_points(e);
-            a == p || b == p || (orient(a, b, p) == 0.0 && strictly_between(a, b, p))
+            on_segment(a, b, p)
         })
     }
 
@@ -314,36 +371,39 @@ impl FreeSpace {
         if !(p.x.is_finite() && p.y.is_finite()) {
             return Location::Blocked;
         }
-        // Winding number of the rings around p, from the edges that cross the ray to +x.
-        let mut winding = 0i64;
-        for e in self.edges_near(p, Point::new(max.x.max(p.x), p.y)) {
-            let (a, b) = self.edge_points(e);
-            let side = orient(a, b, p);
-            if side == 0.0 && (a == p || b == p || strictly_between(a, b, p)) {
-                return Location::Boundary;
-            }
-            if a.y <= p.y {
-                if b.y > p.y && side > 0.0 {
-                    winding += 1;
-                }
-            } else if b.y <= p.y && side < 0.0 {
-                winding -= 1;
-            }
+        // Winding number of the rings around p, from the edges near the ray to +x.
+        let near = self.edges_near(p, Point::new(max.x.max(p.x), p.y)).map(|e| self.edge_points(e));
+        match winding_number(p, near) {
+            None => Location::Boundary,
+            Some(w) if w > 0 => Location::Free,
+            Some(_) => Location::Blocked,
         }
-        if winding > 0 { Location::Free } else { Location::Blocked }
     }
 
     /// The free directions at point `p` on the boundary: whether the direction toward `q` leaves
     /// `p` into free space (or along the boundary). `p` must be on the boundary.
     pub fn admits_direction(&self, p: Point, q: Point) -> bool {
-        if let Some(i) = self.position_at(p) {
-            return self.corners(i).iter().any(|c| c.admits(p, q));
-        }
+        self.departure(p)(q)
+    }
+
+    /// The test of [`admits_direction`](Self::admits_direction) for one point `p` and many
+    /// directions: the vertex or edges at `p` are looked up once. At a point of the open free
+    /// space every direction is admitted.
+    pub fn departure(&self, p: Point) -> impl Fn(Point) -> bool + '_ {
+        let vertex = self.position_at(p);
         // On the interior of edges: free on their left.
-        self.edges_near(p, p).all(|e| {
-            let (a, b) = self.edge_points(e);
-            !(orient(a, b, p) == 0.0 && strictly_between(a, b, p)) || orient(a, b, q) >= 0.0
-        })
+        let through: Vec<(Point, Point)> = match vertex {
+            Some(_) => Vec::new(),
+            None => self
+                .edges_near(p, p)
+                .map(|e| self.edge_points(e))
+                .filter(|&(a, b)| orient(a, b, p) == 0.0 && strictly_between(a, b, p))
+                .collect(),
+        };
+        move |q| match vertex {
+            Some(i) => self.corners(i).iter().any(|c| c.admits(p, q)),
+            None => through.iter().all(|&(a, b)| orient(a, b, q) >= 0.0),
+        }
     }
 
     /// Whether a segment through the vertex at position `index`, from `a` to `b` (the vertex
@@ -428,15 +488,7 @@ fn clean_ring(r: usize, ring: &[Point]) -> Result<Vec<Point>, FreeSpaceError> {
     if let Some(v) = ring.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
         return Err(FreeSpaceError::NonFinite { ring: r, vertex: v });
     }
-    let mut kept: Vec<Point> = Vec::with_capacity(ring.len());
-    for &p in ring {
-        if kept.last() != Some(&p) {
-            kept.push(p);
-        }
-    }
-    while kept.len() > 1 && kept.first() == kept.last() {
-        kept.pop();
-    }
+    let kept = dedup_ring(ring.iter().copied());
     if kept.len() < 3 {
         return Err(FreeSpaceError::TooFewVertices { ring: r });
     }

@@ -41,7 +41,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::dubins::{DubinsPath, Piece};
-use crate::freespace::{FreeSpace, orient};
+use crate::freespace::{FreeSpace, dedup_ring, on_segment, orient, winding_number};
 use crate::geometry::Point;
 
 /// Why a polygon is not a valid obstacle.
@@ -172,15 +172,7 @@ impl Polygon {
         if let Some(vertex) = vertices.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
             return Err(PolygonError::NonFinite { vertex });
         }
-        let mut kept: Vec<Point> = Vec::with_capacity(vertices.len());
-        for p in vertices {
-            if kept.last() != Some(&p) {
-                kept.push(p);
-            }
-        }
-        while kept.len() > 1 && kept.first() == kept.last() {
-            kept.pop();
-        }
+        let mut kept = dedup_ring(vertices);
         if kept.len() < 3 {
             return Err(PolygonError::TooFewVertices { count: kept.len() });
         }
@@ -216,29 +208,7 @@ impl Polygon {
 
     /// Whether `p` lies strictly inside. Exact.
     pub fn contains_strictly(&self, p: Point) -> bool {
-        let v = &self.vertices;
-        let n = v.len();
-        let mut winding = 0i32;
-        for i in 0..n {
-            let (a, b) = (v[i], v[(i + 1) % n]);
-            let side = orient(a, b, p);
-            if side == 0.0
-                && p.x >= a.x.min(b.x)
-                && p.x <= a.x.max(b.x)
-                && p.y >= a.y.min(b.y)
-                && p.y <= a.y.max(b.y)
-            {
-                return false; // on the boundary
-            }
-            if a.y <= p.y {
-                if b.y > p.y && side > 0.0 {
-                    winding += 1;
-                }
-            } else if b.y <= p.y && side < 0.0 {
-                winding -= 1;
-            }
-        }
-        winding != 0
+        winding_number(p, self.edges()).is_some_and(|w| w != 0)
     }
 
     fn edges(&self) -> impl Iterator<Item = (Point, Point)> + '_ {
@@ -302,16 +272,11 @@ fn self_intersection(v: &[Point]) -> Option<(usize, usize)> {
 fn segments_touch(a: Point, b: Point, c: Point, d: Point) -> bool {
     let (d1, d2) = (orient(a, b, c), orient(a, b, d));
     let (d3, d4) = (orient(c, d, a), orient(c, d, b));
-    if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
-        return true;
-    }
-    let on = |p: Point, q: Point, r: Point| {
-        r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
-    };
-    (d1 == 0.0 && on(a, b, c))
-        || (d2 == 0.0 && on(a, b, d))
-        || (d3 == 0.0 && on(c, d, a))
-        || (d4 == 0.0 && on(c, d, b))
+    (d1 * d2 < 0.0 && d3 * d4 < 0.0)
+        || (d1 == 0.0 && on_segment(a, b, c))
+        || (d2 == 0.0 && on_segment(a, b, d))
+        || (d3 == 0.0 && on_segment(c, d, a))
+        || (d4 == 0.0 && on_segment(c, d, b))
 }
 
 /// A world of polygonal obstacles for a disc robot. Serialized as
@@ -556,17 +521,16 @@ impl CollisionChecker {
     /// angle `start_angle` and turning by `sweep` radians (counter-clockwise when positive)
     /// stays collision-free.
     pub fn arc_is_free(&self, center: Point, radius: f64, start_angle: f64, sweep: f64) -> bool {
-        let at = |t: f64| center + radius * nalgebra::Vector2::new(t.cos(), t.sin());
-        let (a, b) = (at(start_angle), at(start_angle + sweep));
+        let arc = Arc { center, radius, start: start_angle, sweep };
+        let (a, b) = (arc.point(start_angle), arc.point(start_angle + sweep));
         if !(self.point_is_free(a) && self.point_is_free(b)) {
             return false;
         }
-        let arc = Arc { center, radius, start: start_angle, sweep };
         // The arc must stay in the (convex) bounds: check its extreme points.
         let bounds = self.world.bounds;
         for k in 0..4 {
             let t = f64::from(k) * std::f64::consts::FRAC_PI_2;
-            if arc.holds_angle(t) && !bounds.contains(at(t)) {
+            if arc.holds_angle(t) && !bounds.contains(arc.point(t)) {
                 return false;
             }
         }

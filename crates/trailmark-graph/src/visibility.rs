@@ -34,7 +34,7 @@ use std::collections::BTreeSet;
 
 use thiserror::Error;
 use trailmark_core::cost::Cost;
-use trailmark_core::freespace::{Corner, FreeSpace, Location, orient};
+use trailmark_core::freespace::{Corner, FreeSpace, Location, orient, wedge_holds};
 use trailmark_core::geometry::Point;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
 
@@ -208,17 +208,18 @@ impl VisibilityGraph {
         for (v, node) in self.nodes.iter().enumerate().skip(first).step_by(step) {
             let depart = |q: Point| node.corner.admits(node.at, q);
             let (next, prev) = (node.corner.next, node.corner.prev);
+            let free_wedge = Wedge { from: Ray::toward(next), to: Some(Ray::toward(prev)) };
             let wedges = match self.edges {
                 // The free wedge of the corner.
-                Edges::All => vec![Wedge { from: Ray::toward(next), to: Some(Ray::toward(prev)) }],
+                Edges::All => [Some(free_wedge), None],
                 // Its two tangent parts: along each boundary edge, up to where the line through
                 // the node starts to cut into the corner.
-                Edges::Tangent => vec![
-                    Wedge { from: Ray::toward(next), to: Some(Ray::away_from(prev)) },
-                    Wedge { from: Ray::away_from(next), to: Some(Ray::toward(prev)) },
+                Edges::Tangent => [
+                    Some(Wedge { from: Ray::toward(next), to: Some(Ray::away_from(prev)) }),
+                    Some(Wedge { from: Ray::away_from(next), to: Some(Ray::toward(prev)) }),
                 ],
             };
-            for wedge in wedges {
+            for wedge in wedges.into_iter().flatten() {
                 sweep.run(self, node.at, Some(node.position as usize), wedge, &depart, None, |target| {
                     let Target::Position(w) = target else { return };
                     for &u in self.nodes_at(w) {
@@ -295,10 +296,12 @@ impl VisibilityGraph {
         let mut sweep = Sweep::default();
         let mut links = [vec![Cost::INFINITY; n], vec![Cost::INFINITY; n]];
         let mut direct = if start == goal { Some(0.0) } else { None };
+        // Whether the goal may be entered from the start's direction (always, in open space).
+        let goal_admits_start = self.space.departure(goal)(start);
         for (end, (at, location)) in [(start, start_location), (goal, goal_location)].into_iter().enumerate()
         {
             let position = if location == Location::Boundary { self.space.position_at(at) } else { None };
-            let depart = |q: Point| location == Location::Free || self.space.admits_direction(at, q);
+            let depart = self.space.departure(at);
             let other = if end == 0 && direct.is_none() { Some(goal) } else { None };
             let goal_position = other.and_then(|g| self.space.position_at(g));
             let extra = other.filter(|_| goal_position.is_none());
@@ -306,14 +309,14 @@ impl VisibilityGraph {
             sweep.run(self, at, position, Wedge::full(at), &depart, extra, |target| {
                 let w = match target {
                     Target::Extra => {
-                        if goal_location == Location::Free || self.space.admits_direction(goal, at) {
+                        if goal_admits_start {
                             direct = Some((goal - at).norm());
                         }
                         return;
                     }
                     Target::Position(w) => w,
                 };
-                if goal_position == Some(w) && self.space.admits_direction(goal, at) {
+                if goal_position == Some(w) && goal_admits_start {
                     direct = Some((goal - at).norm());
                 }
                 for &u in self.nodes_at(w) {
@@ -598,21 +601,11 @@ impl Wedge {
     /// Whether the direction toward `p` lies in the wedge. Exact.
     fn contains(&self, centre: Point, p: Point) -> bool {
         let Some(to) = self.to else { return true };
-        let turn = self.from.sign() * to.side(centre, self.from.through);
-        // turn = orient(from, to) up to sign conventions: positive when `to` is left of `from`.
-        let turn = -turn;
-        let (from_p, to_p) = (self.from.side(centre, p), to.side(centre, p));
-        if turn > 0.0 {
-            from_p >= 0.0 && to_p <= 0.0
-        } else if turn < 0.0 {
-            !(to_p > 0.0 && from_p < 0.0)
-        } else if self.from.sign() * to.sign() * (self.from.through - centre).dot(&(to.through - centre))
-            > 0.0
-        {
-            true
-        } else {
-            from_p >= 0.0
-        }
+        let from = self.from;
+        // The orientation of `to` relative to `from`, with the rays' signs.
+        let turn = -from.sign() * to.side(centre, from.through);
+        let aligned = || from.sign() * to.sign() * (from.through - centre).dot(&(to.through - centre)) > 0.0;
+        wedge_holds(turn, aligned, from.side(centre, p), to.side(centre, p))
     }
 }
 

@@ -39,6 +39,8 @@
 use std::fmt::Debug;
 use std::hash::Hash;
 
+use serde::{Deserialize, Serialize};
+
 use crate::cost::Cost;
 
 /// A graph: a type of node and a membership test.
@@ -163,4 +165,19 @@ impl<G: IndexedGraph + ?Sized> IndexedGraph for &G {
     fn checked_index(&self, node: Self::Node) -> Option<usize> {
         (**self).checked_index(node)
     }
+}
+
+/// A change of one directed edge, told to an incremental planner after the graph changed.
+///
+/// Graphs that change (a grid whose cells are blocked, a roadmap whose obstacles move) report
+/// their changes in this form, and the incremental planners of `trailmark-search` take it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct EdgeChange<N> {
+    /// The tail of the edge.
+    pub from: N,
+    /// The head of the edge.
+    pub to: N,
+    /// The cost before the change (`f64::INFINITY` if the edge did not exist). The new cost is
+    /// read from the graph.
+    pub old_cost: Cost,
 }

@@ -38,6 +38,6 @@ pub mod svg;
 pub mod world;
 
 pub use cost::Cost;
-pub use graph::{Graph, IndexedGraph, Predecessors, Successors};
+pub use graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
 pub use grid::{Cell, Connectivity, Grid, GridError, GridHeuristic};
 pub use path::Path;

@@ -25,7 +25,13 @@
 #![deny(missing_docs)]
 
 pub mod grid;
+pub mod prm;
+pub mod roadmap;
 pub mod visibility;
 
 pub use grid::{CornerCutting, GridGraph, Neighbours};
+pub use prm::{
+    Connection, DubinsPrm, DubinsSteering, Prm, PrmError, PrmOptions, PrmQuery, Sampler, Steering, Straight,
+};
+pub use roadmap::{Roadmap, RoadmapQuery};
 pub use visibility::{VisibilityGraph, VisibilityQuery};

@@ -36,7 +36,8 @@ use thiserror::Error;
 use trailmark_core::cost::Cost;
 use trailmark_core::freespace::{Corner, FreeSpace, Location, orient, wedge_holds};
 use trailmark_core::geometry::Point;
-use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
+
+use crate::roadmap::{Roadmap, RoadmapQuery};
 
 /// Which edges a [`VisibilityGraph`] keeps.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -328,7 +329,7 @@ impl VisibilityGraph {
             });
         }
         let [from_start, from_goal] = links;
-        Ok(VisibilityQuery { graph: self, start, goal, from_start, from_goal, direct })
+        Ok(RoadmapQuery::new(self, (start, goal), from_start, from_goal, direct))
     }
 }
 
@@ -342,112 +343,28 @@ fn tangent(a: &Node, q: Point) -> bool {
 ///
 /// Nodes `0..n` are the graph's, `n` the start and `n + 1` the goal; it implements the graph
 /// traits of `trailmark-core`, so every search algorithm runs on it.
-#[derive(Clone, Debug)]
-pub struct VisibilityQuery<'g> {
-    graph: &'g VisibilityGraph,
-    start: Point,
-    goal: Point,
-    from_start: Vec<Cost>,
-    from_goal: Vec<Cost>,
-    direct: Option<Cost>,
-}
+pub type VisibilityQuery<'g> = RoadmapQuery<'g, VisibilityGraph>;
 
-impl VisibilityQuery<'_> {
-    /// The start node.
-    pub fn start(&self) -> u32 {
-        self.graph.node_count() as u32
+impl Roadmap for VisibilityGraph {
+    type Position = Point;
+    const DIRECTED: bool = false;
+
+    fn node_count(&self) -> usize {
+        self.nodes.len()
     }
 
-    /// The goal node.
-    pub fn goal(&self) -> u32 {
-        self.graph.node_count() as u32 + 1
+    fn position(&self, node: u32) -> Point {
+        self.nodes[node as usize].at
     }
 
-    /// The position of `node`.
-    pub fn position(&self, node: u32) -> Point {
-        match node as usize {
-            n if n == self.graph.node_count() => self.start,
-            n if n == self.graph.node_count() + 1 => self.goal,
-            n => self.graph.position(n as u32),
+    fn lower_bound(&self, a: Point, b: Point) -> Cost {
+        (b - a).norm()
+    }
+
+    fn for_each_out<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
+        for (u, c) in self.neighbours(node) {
+            visit(u, c);
         }
-    }
-
-    /// The straight-line distance from `node` to the goal: an admissible, consistent heuristic.
-    pub fn heuristic(&self) -> impl Fn(u32) -> Cost + '_ {
-        move |node| (self.position(node) - self.goal).norm()
-    }
-
-    /// Whether the start sees the goal directly.
-    pub fn sees_goal(&self) -> bool {
-        self.direct.is_some()
-    }
-}
-
-impl Graph for VisibilityQuery<'_> {
-    type Node = u32;
-
-    fn contains(&self, node: u32) -> bool {
-        (node as usize) < self.graph.node_count() + 2
-    }
-}
-
-impl Successors for VisibilityQuery<'_> {
-    fn for_each_successor<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
-        let n = self.graph.node_count();
-        let (start, goal) = (n as u32, n as u32 + 1);
-        let ends = |row: &[Cost], mut visit: F| {
-            for (u, &c) in row.iter().enumerate() {
-                if c.is_finite() {
-                    visit(u as u32, c);
-                }
-            }
-            visit
-        };
-        match node as usize {
-            i if i == n => {
-                visit = ends(&self.from_start, visit);
-                if let Some(c) = self.direct {
-                    visit(goal, c);
-                }
-            }
-            i if i == n + 1 => {
-                visit = ends(&self.from_goal, visit);
-                if let Some(c) = self.direct {
-                    visit(start, c);
-                }
-            }
-            i => {
-                for (u, c) in self.graph.neighbours(node) {
-                    visit(u, c);
-                }
-                if self.from_goal[i].is_finite() {
-                    visit(goal, self.from_goal[i]);
-                }
-                if self.from_start[i].is_finite() {
-                    visit(start, self.from_start[i]);
-                }
-            }
-        }
-    }
-}
-
-impl Predecessors for VisibilityQuery<'_> {
-    fn for_each_predecessor<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
-        self.for_each_successor(node, visit)
-    }
-}
-
-impl IndexedGraph for VisibilityQuery<'_> {
-    fn node_bound(&self) -> usize {
-        self.graph.node_count() + 2
-    }
-
-    fn index_of(&self, node: u32) -> usize {
-        node as usize
-    }
-
-    fn node_at(&self, index: usize) -> u32 {
-        index as u32
     }
 }
 

@@ -15,6 +15,7 @@ use std::fmt::Debug;
 
 use serde::{Deserialize, Serialize};
 use trailmark_core::cost::Cost;
+pub use trailmark_core::graph::EdgeChange;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
@@ -127,18 +128,6 @@ pub struct Expansion<N> {
     pub key: Key,
     /// Whether it was over- or underconsistent.
     pub kind: Consistency,
-}
-
-/// A change of one directed edge, told to an incremental planner after the graph changed.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct EdgeChange<N> {
-    /// The tail of the edge.
-    pub from: N,
-    /// The head of the edge.
-    pub to: N,
-    /// The cost before the change (`f64::INFINITY` if the edge did not exist). The new cost is
-    /// read from the graph.
-    pub old_cost: Cost,
 }
 
 /// Which way the values flow: from the start (LPA*) or from the goal (D* Lite).

@@ -1,0 +1,190 @@
+//! Probabilistic roadmaps on random polygon worlds, checked against references that do not
+//! share their code: an independent sampled distance test of every edge, the visibility graph
+//! (the true shortest path, a lower bound on any roadmap's), Dijkstra from scratch after
+//! obstacle changes (for D* Lite's repair), and the Dubins path properties.
+
+use proptest::prelude::*;
+use trailmark::core::dubins::DubinsPath;
+use trailmark::core::freespace::Location;
+use trailmark::core::geometry::{Point, Pose, Vector};
+use trailmark::core::world::{Polygon, PolygonWorld};
+use trailmark::graph::prm::{Connection, DubinsSteering, Prm, PrmOptions, Sampler};
+use trailmark::graph::visibility::VisibilityGraph;
+use trailmark::prelude::*;
+
+/// The distance from `p` to a polygon's closed region, by a crossing count and the edges: a
+/// plain reference, no BVH and no segment-to-segment distances.
+fn distance_to(polygon: &Polygon, p: Point) -> f64 {
+    let v = polygon.vertices();
+    let mut inside = false;
+    let mut best = f64::INFINITY;
+    for i in 0..v.len() {
+        let (a, b) = (v[i], v[(i + 1) % v.len()]);
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            inside = !inside;
+        }
+        let ab = b - a;
+        let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+        best = best.min((p - (a + ab * t)).norm());
+    }
+    if inside { 0.0 } else { best }
+}
+
+/// Whether the robot's disc, sampled every `step` along `a -> b`, keeps clear of every
+/// obstacle (a rounding allowance of 1e-9) and its centre stays in the bounds.
+fn sampled_free(world: &PolygonWorld, a: Point, b: Point, step: f64) -> bool {
+    let n = ((b - a).norm() / step).ceil().max(1.0) as usize;
+    (0..=n).all(|i| {
+        let p = a + (b - a) * (i as f64 / n as f64);
+        world.bounds().contains(p)
+            && world.obstacles().iter().all(|o| distance_to(o, p) >= world.robot_radius() - 1e-9)
+    })
+}
+
+/// A generated world (random convex obstacles in a 40 x 40 square), a robot radius, two
+/// free points the visibility graph also sees as free, and a sampler.
+fn world_strategy(
+    radius: impl Strategy<Value = f64>,
+) -> impl Strategy<Value = (PolygonWorld, Point, Point, Sampler)> {
+    (
+        1usize..20,
+        radius,
+        any::<u64>(),
+        any::<[u32; 4]>(),
+        prop_oneof![Just(None), any::<u64>().prop_map(Some)],
+    )
+        .prop_filter_map("start and goal must be free", |(count, radius, seed, picks, sampler)| {
+            let world = trailmark::core::generate::convex_obstacles(40.0, count, 5, radius, seed).ok()?;
+            let checker = world.checker();
+            let at = |a: u32, b: u32| Point::new(f64::from(a % 4001) / 100.0, f64::from(b % 4001) / 100.0);
+            let (start, goal) = (at(picks[0], picks[1]), at(picks[2], picks[3]));
+            let space = world.free_space_with_step(std::f64::consts::PI / 64.0).ok()?;
+            let usable = |p: Point| checker.point_is_free(p) && space.locate(p) != Location::Blocked;
+            let sampler = sampler.map_or(Sampler::Halton, |seed| Sampler::Uniform { seed });
+            (usable(start) && usable(goal)).then_some((world, start, goal, sampler))
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Every roadmap and query edge is collision-free, both by the exact checker and by an
+    /// independent test sampled at 1e-3 of the world's size.
+    #[test]
+    fn prm_edges_are_collision_free((world, start, goal, sampler) in world_strategy(0.0f64..1.5)) {
+        let options = PrmOptions { sampler, connection: Connection::PrmStar, ..PrmOptions::default() };
+        let prm = Prm::new(world.clone(), options).expect("valid options");
+        let mut prm = prm;
+        if prm.grow(200).is_err() {
+            return Ok(()); // a world too full to sample is reported, not a failure here
+        }
+        let query = prm.query(start, goal).expect("free ends");
+        let checker = world.checker();
+        let mut edges = 0;
+        for v in 0..query.node_bound() as u32 {
+            query.for_each_successor(v, |u, cost| {
+                let (a, b) = (query.position(v), query.position(u));
+                assert!(checker.segment_is_free(a, b), "{a} -> {b} collides");
+                assert!(sampled_free(&world, a, b, 0.04), "{a} -> {b} collides when sampled");
+                assert!((cost - (b - a).norm()).abs() <= 1e-12);
+                edges += 1;
+            });
+        }
+        prop_assert!(edges >= 2 * prm.edge_count());
+    }
+
+    /// No roadmap beats the visibility graph, whose paths are the shortest: for a point robot
+    /// exactly, for a disc within the polygonal approximation of its round corners (grown by
+    /// 1 / cos(PI / 128), a relative 3e-4).
+    #[test]
+    fn visibility_cost_is_a_lower_bound_on_prm_cost(
+        (world, start, goal, sampler) in world_strategy(prop_oneof![Just(0.0), 0.1f64..1.0])
+    ) {
+        let space = world.free_space_with_step(std::f64::consts::PI / 64.0).expect("valid step");
+        let graph = VisibilityGraph::new(space);
+        let q = graph.query(start, goal).expect("free ends");
+        let best = dijkstra(&q, q.start(), q.goal()).expect("valid").cost();
+        for connection in [Connection::PrmStar, Connection::Radius { radius: 6.0 }] {
+            let mut prm = Prm::new(world.clone(), PrmOptions { sampler, connection, ..PrmOptions::default() }).unwrap();
+            if prm.grow(300).is_err() {
+                return Ok(());
+            }
+            let q = prm.query(start, goal).expect("free ends");
+            if let Some(cost) = dijkstra(&q, q.start(), q.goal()).expect("valid").cost() {
+                let best = best.expect("the visibility graph connects whatever a roadmap connects");
+                let slack = if world.robot_radius() == 0.0 { 1e-9 } else { 3e-4 * best + 1e-9 };
+                prop_assert!(best <= cost + slack, "visibility {best} > roadmap {cost}");
+            }
+        }
+    }
+
+    /// After obstacles are added and removed, D* Lite told only the reported edge changes finds
+    /// the cost Dijkstra finds from scratch on the changed roadmap.
+    #[test]
+    fn dstar_lite_repairs_match_dijkstra(
+        (world, start, goal, sampler) in world_strategy(0.0f64..1.0),
+        blocks in prop::collection::vec((2.0f64..38.0, 2.0f64..38.0, 1.0f64..6.0), 1..4)
+    ) {
+        let mut prm = Prm::new(world, PrmOptions { sampler, ..PrmOptions::default() }).unwrap();
+        if prm.grow(250).is_err() {
+            return Ok(());
+        }
+        let (s, g) = (prm.insert(start).unwrap(), prm.insert(goal).unwrap());
+        let points: Vec<Point> = (0..prm.node_count() as u32).map(|u| prm.position(u)).collect();
+        let h = move |u: u32, v: u32| (points[u as usize] - points[v as usize]).norm();
+        let mut planner = DStarLite::new(&prm, s, g, h).unwrap();
+        planner.compute_shortest_path(&prm).unwrap();
+        let first = prm.world().obstacles().len();
+        let mut steps = Vec::new();
+        for &(x, y, half) in &blocks {
+            let square = vec![
+                Point::new(x - half, y - half), Point::new(x + half, y - half),
+                Point::new(x + half, y + half), Point::new(x - half, y + half),
+            ];
+            steps.push(prm.add_obstacle(square).unwrap());
+        }
+        steps.push(prm.remove_obstacle(first).unwrap());
+        for changes in steps {
+            // The changes of one step are told after that step; the roadmap is already at the
+            // last step here, which D* Lite allows as long as every changed edge is named.
+            planner.update_edges(&prm, &changes).unwrap();
+        }
+        planner.compute_shortest_path(&prm).unwrap();
+        let fresh = dijkstra(&prm, s, g).unwrap().cost();
+        match (planner.cost(), fresh) {
+            (Some(a), Some(b)) => prop_assert!((a - b).abs() <= 1e-9 * b.max(1.0), "D* Lite {a} vs Dijkstra {b}"),
+            (a, b) => prop_assert_eq!(a, b),
+        }
+    }
+
+    /// Dubins roadmap edges: each is a shortest Dubins path from its tail's pose to its head's,
+    /// free by the exact checker and by the independent sampled test of its pieces, and no
+    /// shorter than the straight line.
+    #[test]
+    fn dubins_prm_edges_are_free_shortest_curves((world, start, goal, sampler) in world_strategy(0.0f64..1.0), rho in 0.5f64..3.0) {
+        let steering = DubinsSteering::new(rho).unwrap();
+        let options = PrmOptions { sampler, connection: Connection::Nearest { k: 6 }, ..PrmOptions::default() };
+        let mut prm = Prm::with_steering(world.clone(), steering, options).unwrap();
+        if prm.grow(60).is_err() {
+            return Ok(());
+        }
+        let (a, b) = (Pose::new(start.coords, 0.3), Pose::new(goal.coords, -2.0));
+        let query = prm.query(a, b).expect("free ends");
+        let checker = world.checker();
+        for v in 0..query.node_bound() as u32 {
+            query.for_each_successor(v, |u, cost| {
+                let (p, q) = (query.position(v), query.position(u));
+                let path = DubinsPath::shortest(&p, &q, rho).unwrap();
+                assert_eq!(cost, path.length());
+                assert!(checker.dubins_is_free(&path));
+                // Poses 0.04 apart along the curve, each tested on its own.
+                for pose in path.sample(0.04).unwrap() {
+                    let x = Point::from(pose.translation.vector);
+                    assert!(sampled_free(&world, x, x, 1.0), "{x} on {path:?} collides when sampled");
+                }
+                let chord: Vector = q.translation.vector - p.translation.vector;
+                assert!(cost >= chord.norm() - 1e-9);
+            });
+        }
+    }
+}

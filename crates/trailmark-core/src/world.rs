@@ -462,7 +462,9 @@ impl PolygonWorld {
                 .filter_map(|k| originals.get(&k))
                 .flatten()
                 .copied()
-                .find(|v| (v - p).norm() <= tolerance)
+                .filter(|v| (v - p).norm() <= tolerance)
+                // The nearest: two vertices closer than the tolerance must not swap.
+                .min_by(|a, b| (a - p).norm().total_cmp(&(b - p).norm()))
                 .unwrap_or(p)
         };
         let mut rings = Vec::new();
@@ -806,6 +808,30 @@ mod tests {
         assert!(!c.arc_is_free(p(0.0, 0.0), 2.6, 0.0, half));
         // A full turn leaving the bounds.
         assert!(!c.arc_is_free(p(0.0, -8.0), 3.0, 0.0, 2.0 * half));
+    }
+
+    /// For a point robot the free space keeps every obstacle vertex exactly, even two closer
+    /// together than the snapping tolerance (extent x 2^-20): each snapped vertex goes back to
+    /// its nearest original. (Restoring to the first one in range once merged them and cut a
+    /// sliver off the obstacle.)
+    #[test]
+    fn close_vertices_survive_the_union() {
+        let b = Bounds::new(0.0, 0.0, 40.0, 40.0).unwrap();
+        let v = vec![
+            p(19.85748855920151, 21.500917134384114),
+            p(19.49651392900802, 21.218310167815684),
+            p(18.772466308939965, 19.203178962697976),
+            p(20.357924526009626, 17.236321386233328),
+            p(20.357959235248966, 17.236309328012158),
+        ];
+        let world = PolygonWorld::new(b, vec![v.clone()], 0.0).unwrap();
+        let space = world.free_space();
+        for q in &v {
+            assert!(space.position_at(*q).is_some(), "{q} lost");
+        }
+        let from = p(35.78906048710447, 30.95817254821389);
+        assert!(!world.checker().segment_is_free(from, v[3]));
+        assert!(!space.segment_is_free(from, v[3]));
     }
 
     /// The arc-to-segment distance against dense sampling of the arc, on random arcs and

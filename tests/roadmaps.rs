@@ -12,6 +12,8 @@ use trailmark::graph::prm::{Connection, DubinsSteering, Prm, PrmOptions, Sampler
 use trailmark::graph::visibility::VisibilityGraph;
 use trailmark::prelude::*;
 
+mod common;
+
 /// The distance from `p` to a polygon's closed region, by a crossing count and the edges: a
 /// plain reference, no BVH and no segment-to-segment distances.
 fn distance_to(polygon: &Polygon, p: Point) -> f64 {
@@ -185,6 +187,107 @@ proptest! {
                 let chord: Vector = q.translation.vector - p.translation.vector;
                 assert!(cost >= chord.norm() - 1e-9);
             });
+        }
+    }
+}
+
+mod trapezoids {
+    use proptest::prelude::*;
+    use trailmark::core::freespace::{FreeSpace, Location};
+    use trailmark::core::geometry::Point;
+    use trailmark::graph::trapezoid::Trapezoids;
+    use trailmark::graph::visibility::VisibilityGraph;
+    use trailmark::prelude::*;
+
+    use super::common::grid_strategy;
+    use super::world_strategy;
+
+    /// Checks a decomposition against its free space: positive-area cells inside it, portals on
+    /// both their cells' sides, point location agreeing with the free space's own exact test,
+    /// and queries whose edges are free, whose reachability is the visibility graph's and whose
+    /// cost is no lower than the visibility graph's.
+    fn check(space: &FreeSpace, cells: &Trapezoids, probes: &[Point], pairs: &[(Point, Point)]) {
+        for c in 0..cells.cell_count() {
+            let cell = cells.cell(c);
+            assert!(cell.area() > 0.0 && cell.left < cell.right, "cell {c}: {cell:?}");
+            assert!(cell.contains(cell.centroid()), "cell {c}: {cell:?} corners {:?}", cell.corners());
+            assert_ne!(space.locate(cell.centroid()), Location::Blocked, "cell {c} centroid");
+            assert!(cell.contains(cell.centroid()));
+        }
+        for portal in cells.portals() {
+            assert!(portal.low < portal.high);
+            for c in [portal.left, portal.right] {
+                assert!(cells.cell(c as usize).contains(portal.midpoint()));
+            }
+            assert_eq!(cells.cell(portal.left as usize).right, portal.x);
+            assert_eq!(cells.cell(portal.right as usize).left, portal.x);
+        }
+        for &p in probes {
+            let inside = space.locate(p) != Location::Blocked;
+            assert_eq!(cells.locate(p).is_some(), inside, "{p}");
+        }
+        let graph = VisibilityGraph::new(space.clone());
+        for &(start, goal) in pairs {
+            let q = cells.query(start, goal).expect("free ends");
+            for v in 0..q.node_bound() as u32 {
+                q.for_each_successor(v, |u, _| {
+                    let (a, b) = (q.position(v), q.position(u));
+                    assert!(space.segment_is_free(a, b), "{a} -> {b} leaves the free space");
+                });
+            }
+            let cost = dijkstra(&q, q.start(), q.goal()).expect("valid").cost();
+            let v = graph.query(start, goal).expect("free ends");
+            let best = dijkstra(&v, v.start(), v.goal()).expect("valid").cost();
+            assert_eq!(cost.is_some(), best.is_some(), "{start} -> {goal}: reachability differs");
+            if let (Some(cost), Some(best)) = (cost, best) {
+                assert!(best <= cost + 1e-9, "visibility {best} > trapezoid {cost}");
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// On grid maps (unit-square obstacles, many vertices on one vertical line, vertical
+        /// edges, corner pinches) the cells tile exactly the free cells: their areas sum to the
+        /// number of free cells.
+        #[test]
+        fn grid_decompositions_tile_the_free_cells(grid in grid_strategy(), picks in any::<[u16; 8]>()) {
+            let space = FreeSpace::from_grid(&grid);
+            let cells = Trapezoids::new(space.clone());
+            let free = grid.cells().filter(|&c| grid.is_passable(c)).count() as f64;
+            let area: f64 = (0..cells.cell_count()).map(|c| cells.cell(c).area()).sum();
+            prop_assert!((area - free).abs() <= 1e-9 * free.max(1.0), "area {area} vs {free} free cells");
+            let (w, h) = (f64::from(grid.width()), f64::from(grid.height()));
+            let probe = |a: u16, b: u16| Point::new(f64::from(a) / 65535.0 * (w + 1.0) - 0.5, f64::from(b) / 65535.0 * (h + 1.0) - 0.5);
+            let mut probes: Vec<Point> = picks.chunks(2).map(|c| probe(c[0], c[1])).collect();
+            // Cell corners and centres: on vertices, sides and pinches.
+            probes.extend(grid.cells().flat_map(|c| {
+                let (x, y) = (f64::from(c.x), f64::from(c.y));
+                [Point::new(x, y), Point::new(x + 0.5, y + 0.5), Point::new(x + 0.5, y)]
+            }));
+            let free_points: Vec<Point> = grid
+                .cells()
+                .filter(|&c| grid.is_passable(c))
+                .map(|c| Point::new(f64::from(c.x) + 0.5, f64::from(c.y) + 0.5))
+                .collect();
+            let pairs: Vec<(Point, Point)> = if free_points.is_empty() {
+                Vec::new()
+            } else {
+                picks.chunks(2).map(|c| (free_points[c[0] as usize % free_points.len()], free_points[c[1] as usize % free_points.len()])).collect()
+            };
+            check(&space, &cells, &probes, &pairs);
+        }
+
+        /// On polygon worlds (grown obstacles, merged where they overlap) the same checks hold.
+        #[test]
+        fn polygon_decompositions_are_sound((world, start, goal, _sampler) in world_strategy(prop_oneof![Just(0.0), 0.1f64..1.0])) {
+            let space = world.free_space_with_step(std::f64::consts::PI / 64.0).expect("valid step");
+            let cells = Trapezoids::new(space.clone());
+            let area: f64 = (0..cells.cell_count()).map(|c| cells.cell(c).area()).sum();
+            prop_assert!(area <= 40.0 * 40.0 * (1.0 + 1e-12));
+            let probes: Vec<Point> = (0..64).map(|k| Point::new(f64::from(k % 8) * 5.3 + 0.7, f64::from(k / 8) * 5.1 + 0.4)).collect();
+            check(&space, &cells, &probes, &[(start, goal)]);
         }
     }
 }

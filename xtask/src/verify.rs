@@ -7,6 +7,7 @@ use std::time::Instant;
 
 use trailmark::core::freespace::FreeSpace;
 use trailmark::core::geometry::Point;
+use trailmark::graph::trapezoid::Trapezoids;
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::movingai::{self, Scenario};
 use trailmark::prelude::*;
@@ -224,9 +225,41 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
         let solve = Instant::now();
         let mut search = Search::new();
         let (mut ok, mut bad, mut messages) = (0u64, 0u64, Vec::new());
+        // The trapezoidal decomposition of the same map: its cells tile exactly the free cells,
+        // and its paths exist wherever the published ones do and are no shorter.
+        let cells = Trapezoids::new(graph.space().clone());
+        let free = grid.cells().filter(|&c| grid.is_passable(c)).count() as f64;
+        let area: f64 = (0..cells.cell_count()).map(|c| cells.cell(c).area()).sum();
+        if (area - free).abs() > 1e-9 * free {
+            bad += 1;
+            messages.push(format!("trapezoid cells cover {area}, the map has {free} free cells"));
+        }
+        let mut detour = Vec::new();
         for (i, s) in scenarios.iter().enumerate().filter(|(i, _)| (*i as u64).is_multiple_of(every)) {
             let corner = |c: Cell| Point::new(f64::from(c.x), f64::from(c.y));
             let (start, goal) = (corner(s.start), corner(s.goal));
+            let through_cells = cells
+                .query(start, goal)
+                .map_err(|e| e.to_string())
+                .and_then(|q| search.dijkstra(&q, q.start(), q.goal()).map_err(|e| e.to_string()))
+                .and_then(|found| found.cost().ok_or_else(|| "no path through the cells".to_string()));
+            match through_cells {
+                Ok(cost) if cost >= s.optimal_length * (1.0 - rel) => {
+                    detour.push(cost / s.optimal_length.max(1e-300))
+                }
+                Ok(cost) => {
+                    bad += 1;
+                    messages.push(format!(
+                        "scenario {}: trapezoid path {cost} below the optimum {}",
+                        i + 1,
+                        s.optimal_length
+                    ));
+                }
+                Err(e) => {
+                    bad += 1;
+                    messages.push(format!("scenario {} {} -> {}: trapezoids: {e}", i + 1, s.start, s.goal));
+                }
+            }
             let outcome = graph
                 .query(start, goal)
                 .map_err(|e| e.to_string())
@@ -256,6 +289,16 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
             graph.edge_count(),
             solve.elapsed().as_secs_f64()
         );
+        detour.retain(|r| r.is_finite());
+        detour.sort_by(f64::total_cmp);
+        if let Some(&median) = detour.get(detour.len() / 2) {
+            println!(
+                "{:<24} trapezoids: {} cells, {} portals, area {area} = {free} free cells; median path / optimum {median:.3}",
+                "",
+                cells.cell_count(),
+                cells.portals().len()
+            );
+        }
         print_messages(&messages);
         passed += ok;
         failed += bad;

@@ -27,6 +27,7 @@
 pub mod grid;
 pub mod prm;
 pub mod roadmap;
+pub mod trapezoid;
 pub mod visibility;
 
 pub use grid::{CornerCutting, GridGraph, Neighbours};
@@ -34,4 +35,5 @@ pub use prm::{
     Connection, DubinsPrm, DubinsSteering, Prm, PrmError, PrmOptions, PrmQuery, Sampler, Steering, Straight,
 };
 pub use roadmap::{Roadmap, RoadmapQuery};
+pub use trapezoid::{TrapezoidError, TrapezoidQuery, Trapezoids};
 pub use visibility::{VisibilityGraph, VisibilityQuery};

@@ -100,7 +100,136 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     write("navigate-dstar-lite.svg", dstar.svg(&truth, Some(goal)))?;
 
     write("core-dubins.svg", dubins_words()?)?;
+    roadmaps()?;
     Ok(())
+}
+
+/// The four roadmap builders on one generated world (24 convex obstacles, robot radius 0.5)
+/// with one start and goal: visibility graph, trapezoidal cells, PRM*, and a Dubins roadmap.
+fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
+    use trailmark::core::dubins::DubinsPath;
+    use trailmark::core::geometry::{Point, Pose};
+    use trailmark::core::svg::WorldSvg;
+    use trailmark::graph::Roadmap;
+    use trailmark::graph::prm::{Connection, DubinsSteering, Prm, PrmOptions, Sampler};
+    use trailmark::graph::trapezoid::Trapezoids;
+    use trailmark::graph::visibility::{Edges, VisibilityGraph};
+
+    let world = generate::convex_obstacles(40.0, 24, 6, 0.5, 7)?;
+    // Round corners in quarter-turn steps keep the pictures small.
+    let space = world.free_space_with_step(std::f64::consts::FRAC_PI_4)?;
+    let (start, goal) = (Point::new(1.5, 20.0), Point::new(38.5, 38.0));
+    fn edges_of<R: Roadmap<Position = Point>>(r: &R) -> Vec<(Point, Point)> {
+        let mut edges = Vec::new();
+        for u in 0..r.node_count() as u32 {
+            r.for_each_out(u, |v, _| {
+                if u < v {
+                    edges.push((r.position(u), r.position(v)));
+                }
+            });
+        }
+        edges
+    }
+
+    let visibility = VisibilityGraph::with_edges(space.clone(), Edges::Tangent);
+    let q = visibility.query(start, goal)?;
+    let found = dijkstra(&q, q.start(), q.goal())?;
+    let path = found.path.as_ref().ok_or("no visibility path")?;
+    println!(
+        "visibility: {} nodes, {} edges, cost {:.3}",
+        visibility.node_count(),
+        visibility.edge_count(),
+        found.cost().unwrap_or(f64::NAN)
+    );
+    let svg = WorldSvg::new(&world)
+        .free_space(&space)
+        .edges(edges_of(&visibility))
+        .path(&q.positions(&path.nodes))
+        .start(start)
+        .goal(goal)
+        .title("Visibility graph (tangent edges): convex corners of the grown obstacles, the shortest path")
+        .to_svg();
+    write("graph-visibility.svg", svg)?;
+
+    let cells = Trapezoids::new(space.clone());
+    let q = cells.query(start, goal)?;
+    let found = dijkstra(&q, q.start(), q.goal())?;
+    let path = found.path.as_ref().ok_or("no trapezoid path")?;
+    println!(
+        "trapezoids: {} cells, {} portals, cost {:.3}",
+        cells.cell_count(),
+        cells.portals().len(),
+        found.cost().unwrap_or(f64::NAN)
+    );
+    let svg = WorldSvg::new(&world)
+        .free_space(&space)
+        .cells((0..cells.cell_count()).map(|c| cells.cell(c).corners().to_vec()))
+        .edges(edges_of(&cells))
+        .path(&q.positions(&path.nodes))
+        .start(start)
+        .goal(goal)
+        .title("Trapezoidal cells: centroids and portal midpoints, a path through the cells")
+        .to_svg();
+    write("graph-trapezoid.svg", svg)?;
+
+    let options =
+        PrmOptions { sampler: Sampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
+    let mut prm = Prm::new(world.clone(), options)?;
+    prm.grow(400)?;
+    let q = prm.query(start, goal)?;
+    let found = dijkstra(&q, q.start(), q.goal())?;
+    let path = found.path.as_ref().ok_or("no PRM path")?;
+    println!(
+        "prm*: {} nodes, {} edges, {} components, cost {:.3}",
+        prm.node_count(),
+        prm.edge_count(),
+        prm.component_count(),
+        found.cost().unwrap_or(f64::NAN)
+    );
+    let svg = WorldSvg::new(&world)
+        .edges(edges_of(&prm))
+        .nodes((0..prm.node_count() as u32).map(|u| prm.position(u)))
+        .path(&q.positions(&path.nodes))
+        .start(start)
+        .goal(goal)
+        .title("PRM*: 400 Halton samples, k = e(1 + 1/d) ln n nearest, exact segment checks")
+        .to_svg();
+    write("graph-prm.svg", svg)?;
+
+    let steering = DubinsSteering::new(1.0)?;
+    let options = PrmOptions {
+        sampler: Sampler::Halton,
+        connection: Connection::Nearest { k: 15 },
+        ..PrmOptions::default()
+    };
+    let mut dubins = Prm::with_steering(world.clone(), steering, options)?;
+    dubins.grow(1500)?;
+    let (a, b) = (
+        Pose::new(start.coords, std::f64::consts::FRAC_PI_4),
+        Pose::new(goal.coords, std::f64::consts::FRAC_PI_4),
+    );
+    let q = dubins.query(a, b)?;
+    let found = dijkstra(&q, q.start(), q.goal())?;
+    let path = found.path.as_ref().ok_or("no Dubins path")?;
+    println!(
+        "dubins prm: {} nodes, {} edges, cost {:.3}",
+        dubins.node_count(),
+        dubins.edge_count(),
+        found.cost().unwrap_or(f64::NAN)
+    );
+    let mut curve = Vec::new();
+    for pair in path.nodes.windows(2) {
+        let piece = DubinsPath::shortest(&q.position(pair[0]), &q.position(pair[1]), 1.0)?;
+        curve.extend(piece.sample(0.1)?.iter().map(|p| Point::from(p.translation.vector)));
+    }
+    let svg = WorldSvg::new(&world)
+        .poses((0..dubins.node_count() as u32).map(|u| dubins.position(u)))
+        .path(&curve)
+        .start(start)
+        .goal(goal)
+        .title("Dubins roadmap: 1500 Halton poses, directed Dubins edges (turning radius 1)")
+        .to_svg();
+    Ok(write("graph-dubins-prm.svg", svg)?)
 }
 
 /// The six Dubins words between two poses a few turning radii apart, the shortest drawn bold.

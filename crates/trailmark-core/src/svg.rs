@@ -1,4 +1,5 @@
-//! A small SVG writer for grids: blocked and costly cells, explored cells, paths, start and goal.
+//! Small SVG writers: for grids (blocked and costly cells, explored cells, paths, start and
+//! goal) and for polygon worlds (obstacles, grown boundaries, cells, roadmap edges, paths).
 //!
 //! Runs of equal cells in a row are drawn as one rectangle, so a 1024 x 1024 map stays a file of
 //! reasonable size. Coordinates are in cells (the `viewBox`), scaled by [`GridSvg::cell_size`].
@@ -20,7 +21,10 @@
 
 use std::fmt::Write as _;
 
+use crate::freespace::FreeSpace;
+use crate::geometry::{Point, Pose};
 use crate::grid::{Cell, Grid};
+use crate::world::PolygonWorld;
 
 /// The colour of blocked cells.
 const BLOCKED: &str = "#2f3640";
@@ -213,6 +217,207 @@ impl<'a> GridSvg<'a> {
                 x = end;
             }
         }
+    }
+}
+
+/// A picture of a polygon world and what a roadmap builder made of it: the obstacles, the
+/// grown free-space boundary, cells, graph edges and nodes, paths, and start and goal.
+///
+/// World coordinates are drawn with y up, scaled by [`WorldSvg::scale`] pixels per unit.
+///
+/// ```
+/// use trailmark_core::geometry::Point;
+/// use trailmark_core::svg::WorldSvg;
+/// use trailmark_core::world::{Bounds, PolygonWorld};
+///
+/// let square = vec![Point::new(4.0, 4.0), Point::new(6.0, 4.0), Point::new(6.0, 6.0), Point::new(4.0, 6.0)];
+/// let world = PolygonWorld::new(Bounds::new(0.0, 0.0, 10.0, 10.0)?, vec![square], 0.5)?;
+/// let svg = WorldSvg::new(&world)
+///     .free_space(&world.free_space())
+///     .edges([(Point::new(1.0, 1.0), Point::new(3.5, 3.5))])
+///     .path(&[Point::new(1.0, 1.0), Point::new(3.5, 3.5), Point::new(9.0, 9.0)])
+///     .to_svg();
+/// assert!(svg.starts_with("<svg") && svg.contains("<polygon") && svg.contains("<polyline"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct WorldSvg<'a> {
+    world: &'a PolygonWorld,
+    scale: f64,
+    boundary: Vec<(Point, Point)>,
+    cells: Vec<Vec<Point>>,
+    edges: Vec<(Point, Point)>,
+    nodes: Vec<Point>,
+    paths: Vec<Vec<Point>>,
+    poses: Vec<Pose>,
+    start: Option<Point>,
+    goal: Option<Point>,
+    title: Option<String>,
+}
+
+impl<'a> WorldSvg<'a> {
+    /// A picture of `world`'s bounds and obstacles, 20 pixels per unit.
+    pub fn new(world: &'a PolygonWorld) -> Self {
+        WorldSvg {
+            world,
+            scale: 20.0,
+            boundary: Vec::new(),
+            cells: Vec::new(),
+            edges: Vec::new(),
+            nodes: Vec::new(),
+            paths: Vec::new(),
+            poses: Vec::new(),
+            start: None,
+            goal: None,
+            title: None,
+        }
+    }
+
+    /// Pixels per world unit.
+    pub fn scale(mut self, pixels: f64) -> Self {
+        self.scale = pixels;
+        self
+    }
+
+    /// Draws the boundary of `space` (the obstacles grown by the robot radius), dashed.
+    pub fn free_space(mut self, space: &FreeSpace) -> Self {
+        self.boundary.extend((0..space.edges().len()).map(|e| space.edge_points(e)));
+        self
+    }
+
+    /// Draws cells (polygons), lightly shaded.
+    pub fn cells(mut self, cells: impl IntoIterator<Item = Vec<Point>>) -> Self {
+        self.cells.extend(cells);
+        self
+    }
+
+    /// Draws graph edges as thin lines.
+    pub fn edges(mut self, edges: impl IntoIterator<Item = (Point, Point)>) -> Self {
+        self.edges.extend(edges);
+        self
+    }
+
+    /// Draws graph nodes as dots.
+    pub fn nodes(mut self, nodes: impl IntoIterator<Item = Point>) -> Self {
+        self.nodes.extend(nodes);
+        self
+    }
+
+    /// Draws a path as a bold polyline (successive paths in different colours).
+    pub fn path(mut self, points: &[Point]) -> Self {
+        self.paths.push(points.to_vec());
+        self
+    }
+
+    /// Draws poses as short arrows.
+    pub fn poses(mut self, poses: impl IntoIterator<Item = Pose>) -> Self {
+        self.poses.extend(poses);
+        self
+    }
+
+    /// Marks the start.
+    pub fn start(mut self, p: Point) -> Self {
+        self.start = Some(p);
+        self
+    }
+
+    /// Marks the goal.
+    pub fn goal(mut self, p: Point) -> Self {
+        self.goal = Some(p);
+        self
+    }
+
+    /// A title (shown as a tooltip by most viewers).
+    pub fn title(mut self, title: impl Into<String>) -> Self {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// The SVG document.
+    pub fn to_svg(&self) -> String {
+        let (min, max) = (self.world.bounds().min(), self.world.bounds().max());
+        let k = self.scale;
+        let at = |p: Point| format!("{},{}", fmt_num((p.x - min.x) * k), fmt_num((max.y - p.y) * k));
+        let (w, h) = ((max.x - min.x) * k, (max.y - min.y) * k);
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{}" height="{}" viewBox="0 0 {} {}">"#,
+            fmt_num(w),
+            fmt_num(h),
+            fmt_num(w),
+            fmt_num(h)
+        );
+        if let Some(title) = &self.title {
+            let _ = writeln!(out, "<title>{}</title>", escape(title));
+        }
+        let _ = writeln!(
+            out,
+            r#"<rect width="100%" height="100%" fill="white" stroke="{BLOCKED}" stroke-width="2"/>"#
+        );
+        for cell in &self.cells {
+            let points: Vec<String> = cell.iter().map(|&p| at(p)).collect();
+            let _ = writeln!(
+                out,
+                r##"<polygon points="{}" fill="#eaf4fb" stroke="#7fb3d5" stroke-width="0.8"/>"##,
+                points.join(" ")
+            );
+        }
+        for o in self.world.obstacles() {
+            let points: Vec<String> = o.vertices().iter().map(|&p| at(p)).collect();
+            let _ = writeln!(out, r#"<polygon points="{}" fill="{BLOCKED}"/>"#, points.join(" "));
+        }
+        for &(a, b) in &self.boundary {
+            let (a, b) = (at(a), at(b));
+            let _ = writeln!(
+                out,
+                r##"<polyline points="{a} {b}" fill="none" stroke="#7f8c8d" stroke-width="1" stroke-dasharray="3 2"/>"##
+            );
+        }
+        for &(a, b) in &self.edges {
+            let (a, b) = (at(a), at(b));
+            let _ = writeln!(
+                out,
+                r##"<polyline points="{a} {b}" fill="none" stroke="#9fd3f5" stroke-width="0.7"/>"##
+            );
+        }
+        for &p in &self.nodes {
+            let c = at(p);
+            let (x, y) = c.split_once(',').unwrap_or(("0", "0"));
+            let _ = writeln!(out, r##"<circle cx="{x}" cy="{y}" r="1.6" fill="#2e86c1"/>"##);
+        }
+        for pose in &self.poses {
+            let p = Point::from(pose.translation.vector);
+            let heading = pose.rotation.angle();
+            let tip = p + crate::geometry::Vector::new(heading.cos(), heading.sin()) * (8.0 / k);
+            let _ = writeln!(
+                out,
+                r##"<polyline points="{} {}" fill="none" stroke="#2e86c1" stroke-width="1"/>"##,
+                at(p),
+                at(tip)
+            );
+        }
+        for (i, path) in self.paths.iter().enumerate() {
+            let points: Vec<String> = path.iter().map(|&p| at(p)).collect();
+            let _ = writeln!(
+                out,
+                r#"<polyline points="{}" fill="none" stroke="{}" stroke-width="3" stroke-linejoin="round" stroke-linecap="round"/>"#,
+                points.join(" "),
+                PATH_COLOURS[i % PATH_COLOURS.len()]
+            );
+        }
+        for (p, style) in [
+            (self.start, r##"fill="#27ae60""##),
+            (self.goal, r##"fill="none" stroke="#c0392b" stroke-width="2.5""##),
+        ] {
+            if let Some(p) = p {
+                let c = at(p);
+                let (x, y) = c.split_once(',').unwrap_or(("0", "0"));
+                let _ = writeln!(out, r#"<circle cx="{x}" cy="{y}" r="6" {style}/>"#);
+            }
+        }
+        out.push_str("</svg>\n");
+        out
     }
 }
 

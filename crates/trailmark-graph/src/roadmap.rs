@@ -94,6 +94,12 @@ impl<'g, R: Roadmap> RoadmapQuery<'g, R> {
         }
     }
 
+    /// Where each of `nodes` is: a searched path's nodes as the polyline (or pose sequence) the
+    /// robot follows.
+    pub fn positions(&self, nodes: &[u32]) -> Vec<R::Position> {
+        nodes.iter().map(|&n| self.position(n)).collect()
+    }
+
     /// The straight-line distance from `node` to the goal: an admissible, consistent heuristic.
     pub fn heuristic(&self) -> impl Fn(u32) -> Cost + '_ {
         move |node| self.roadmap.lower_bound(self.position(node), self.goal)

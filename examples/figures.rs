@@ -151,7 +151,7 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
         .to_svg();
     write("graph-visibility.svg", svg)?;
 
-    let cells = Trapezoids::new(space.clone());
+    let cells = Trapezoids::new(&space);
     let q = cells.query(start, goal)?;
     let found = dijkstra(&q, q.start(), q.goal())?;
     let path = found.path.as_ref().ok_or("no trapezoid path")?;

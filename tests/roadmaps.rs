@@ -254,7 +254,7 @@ mod trapezoids {
         #[test]
         fn grid_decompositions_tile_the_free_cells(grid in grid_strategy(), picks in any::<[u16; 8]>()) {
             let space = FreeSpace::from_grid(&grid);
-            let cells = Trapezoids::new(space.clone());
+            let cells = Trapezoids::new(&space);
             let free = grid.cells().filter(|&c| grid.is_passable(c)).count() as f64;
             let area: f64 = (0..cells.cell_count()).map(|c| cells.cell(c).area()).sum();
             prop_assert!((area - free).abs() <= 1e-9 * free.max(1.0), "area {area} vs {free} free cells");
@@ -283,7 +283,7 @@ mod trapezoids {
         #[test]
         fn polygon_decompositions_are_sound((world, start, goal, _sampler) in world_strategy(prop_oneof![Just(0.0), 0.1f64..1.0])) {
             let space = world.free_space_with_step(std::f64::consts::PI / 64.0).expect("valid step");
-            let cells = Trapezoids::new(space.clone());
+            let cells = Trapezoids::new(&space);
             let area: f64 = (0..cells.cell_count()).map(|c| cells.cell(c).area()).sum();
             prop_assert!(area <= 40.0 * 40.0 * (1.0 + 1e-12));
             let probes: Vec<Point> = (0..64).map(|k| Point::new(f64::from(k % 8) * 5.3 + 0.7, f64::from(k / 8) * 5.1 + 0.4)).collect();

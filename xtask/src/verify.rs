@@ -227,7 +227,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
         let (mut ok, mut bad, mut messages) = (0u64, 0u64, Vec::new());
         // The trapezoidal decomposition of the same map: its cells tile exactly the free cells,
         // and its paths exist wherever the published ones do and are no shorter.
-        let cells = Trapezoids::new(graph.space().clone());
+        let cells = Trapezoids::new(graph.space());
         let free = grid.cells().filter(|&c| grid.is_passable(c)).count() as f64;
         let area: f64 = (0..cells.cell_count()).map(|c| cells.cell(c).area()).sum();
         if (area - free).abs() > 1e-9 * free {

@@ -694,17 +694,8 @@ impl<S: Steering> Prm<S> {
         if self.states.len() >= u32::MAX as usize - 2 {
             return Err(PrmError::TooManyNodes);
         }
-        let u = self.states.len() as u32;
-        let p = S::point(&state);
-        let neighbours = self.neighbours_of(p, self.states.len() + 1);
-        self.states.push(state);
-        self.tree.add(&[p.x, p.y], u64::from(u));
-        self.out.push(Vec::new());
-        self.parent.push(u);
-        self.components += 1;
-        if S::DIRECTED {
-            self.into.push(Vec::new());
-        }
+        let neighbours = self.neighbours_of(S::point(&state), self.states.len() + 1);
+        let u = self.push_node(state);
         for (v, _) in neighbours {
             self.try_edge(u, v);
             if S::DIRECTED {
@@ -712,6 +703,21 @@ impl<S: Steering> Prm<S> {
             }
         }
         Ok(u)
+    }
+
+    /// Stores `state` as a new node without edges (its own component) and returns its index.
+    fn push_node(&mut self, state: S::State) -> u32 {
+        let u = self.states.len() as u32;
+        let p = S::point(&state);
+        self.states.push(state);
+        self.tree.add(&[p.x, p.y], u64::from(u));
+        self.out.push(Vec::new());
+        if S::DIRECTED {
+            self.into.push(Vec::new());
+        }
+        self.parent.push(u);
+        self.components += 1;
+        u
     }
 
     /// Checks the local path `from -> to` and records it as a candidate.
@@ -929,17 +935,8 @@ impl<S: Steering> Prm<S> {
             if !prm.is_free(&state) || prm.find(&state).is_some() {
                 return Err(PrmError::InvalidNode { index });
             }
-            let u = prm.states.len() as u32;
-            let p = S::point(&state);
-            prm.states.push(state);
-            prm.tree.add(&[p.x, p.y], u64::from(u));
-            prm.out.push(Vec::new());
-            if S::DIRECTED {
-                prm.into.push(Vec::new());
-            }
+            prm.push_node(state);
         }
-        prm.parent = (0..prm.states.len() as u32).collect();
-        prm.components = prm.states.len();
         let n = prm.states.len() as u32;
         for (index, &[from, to, free]) in d.edges.iter().enumerate() {
             if from >= n || to >= n || from == to || free > 1 {

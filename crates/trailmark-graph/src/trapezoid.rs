@@ -28,7 +28,7 @@
 //!
 //! // Blocked cells are unit squares: one block in the middle of a 4 x 3 map.
 //! let grid = Grid::from_rows(&["....", ".@@.", "...."])?;
-//! let cells = Trapezoids::new(FreeSpace::from_grid(&grid));
+//! let cells = Trapezoids::new(&FreeSpace::from_grid(&grid));
 //! assert_eq!(cells.cell_count(), 4); // left, below, above and right of the block
 //! let area: f64 = (0..cells.cell_count()).map(|c| cells.cell(c).area()).sum();
 //! assert_eq!(area, 10.0); // the free cells of the map
@@ -229,7 +229,7 @@ struct Open {
 impl Trapezoids {
     /// Decomposes `space` by a sweep over its vertices: O(n log n + n k) for n vertices and at
     /// most k edges crossing one vertical line.
-    pub fn new(space: FreeSpace) -> Self {
+    pub fn new(space: &FreeSpace) -> Self {
         let edges: Vec<SweepEdge> = (0..space.edges().len())
             .filter_map(|e| {
                 let (p, q) = space.edge_points(e);
@@ -253,7 +253,6 @@ impl Trapezoids {
         let mut ends: Vec<u32> = (0..edges.len() as u32).collect();
         ends.sort_by(|&a, &b| edges[a as usize].side.to.x.total_cmp(&edges[b as usize].side.to.x));
         let mut points: Vec<Point> = space.positions().to_vec();
-        drop(space);
         points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
         let mut verticals_sorted = verticals;
         verticals_sorted.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
@@ -552,7 +551,7 @@ mod tests {
 
     #[test]
     fn a_triangle_splits_the_room_into_five_cells() {
-        let cells = Trapezoids::new(room_with_triangle());
+        let cells = Trapezoids::new(&room_with_triangle());
         // Left of the triangle, below it (its apex extends only upwards), above it (two cells,
         // split at the apex), and right of it.
         assert_eq!(cells.cell_count(), 5);
@@ -570,7 +569,7 @@ mod tests {
 
     #[test]
     fn queries_join_the_ends_and_reject_blocked_points() {
-        let cells = Trapezoids::new(room_with_triangle());
+        let cells = Trapezoids::new(&room_with_triangle());
         let q = cells.query(p(1.0, 1.0), p(1.0, 9.0)).unwrap();
         assert!(q.sees_goal(), "both in the left cell");
         let q = cells.query(p(1.0, 1.0), p(9.0, 9.0)).unwrap();

@@ -119,17 +119,6 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
     // Round corners in quarter-turn steps keep the pictures small.
     let space = world.free_space_with_step(std::f64::consts::FRAC_PI_4)?;
     let (start, goal) = (Point::new(1.5, 20.0), Point::new(38.5, 38.0));
-    fn edges_of<R: Roadmap<Position = Point>>(r: &R) -> Vec<(Point, Point)> {
-        let mut edges = Vec::new();
-        for u in 0..r.node_count() as u32 {
-            r.for_each_out(u, |v, _| {
-                if u < v {
-                    edges.push((r.position(u), r.position(v)));
-                }
-            });
-        }
-        edges
-    }
 
     let visibility = VisibilityGraph::with_edges(space.clone(), Edges::Tangent);
     let q = visibility.query(start, goal)?;
@@ -143,7 +132,7 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
     );
     let svg = WorldSvg::new(&world)
         .free_space(&space)
-        .edges(edges_of(&visibility))
+        .edges(visibility.edge_ends())
         .path(&q.positions(&path.nodes))
         .start(start)
         .goal(goal)
@@ -164,7 +153,7 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
     let svg = WorldSvg::new(&world)
         .free_space(&space)
         .cells((0..cells.cell_count()).map(|c| cells.cell(c).corners().to_vec()))
-        .edges(edges_of(&cells))
+        .edges(cells.edge_ends())
         .path(&q.positions(&path.nodes))
         .start(start)
         .goal(goal)
@@ -187,7 +176,7 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
         found.cost().unwrap_or(f64::NAN)
     );
     let svg = WorldSvg::new(&world)
-        .edges(edges_of(&prm))
+        .edges(prm.edge_ends())
         .nodes((0..prm.node_count() as u32).map(|u| prm.position(u)))
         .path(&q.positions(&path.nodes))
         .start(start)

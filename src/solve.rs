@@ -19,15 +19,26 @@
 //! ```
 
 use std::path::Path;
+use std::time::{Duration, Instant};
 
 use thiserror::Error;
 
+use trailmark_core::Cost;
+use trailmark_core::dubins::DubinsPath;
+use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::grid::{Cell, Grid, GridError, GridHeuristic};
 use trailmark_core::movingai::{self, ReadError};
 use trailmark_core::problem::{
-    GridWorld, IterationRecord, PlannerSpec, Problem, ResultStats, SolveResult, Status, Waypoint, World,
+    GraphKind, GraphStats, GridWorld, IterationRecord, PlannerSpec, Problem, ResultStats, SamplerKind,
+    SolveResult, Status, Waypoint, World,
 };
-use trailmark_graph::{CornerCutting, GridGraph};
+use trailmark_core::svg::{GridSvg, WorldSvg};
+use trailmark_core::world::PolygonWorld;
+use trailmark_graph::prm::{Connection, DubinsSteering, Prm, PrmError, PrmOptions, Sampler, Steering};
+use trailmark_graph::trapezoid::TrapezoidError;
+use trailmark_graph::visibility::{Edges, VisibilityError};
+use trailmark_graph::{CornerCutting, GridGraph, Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
 use trailmark_search::{
     AdStar, AnytimeResult, Budget, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult,
 };
@@ -98,6 +109,62 @@ pub enum SolveError {
     /// The search rejected the query.
     #[error(transparent)]
     Search(#[from] SearchError<Cell>),
+    /// The search of a roadmap rejected the query.
+    #[error(transparent)]
+    RoadmapSearch(#[from] SearchError<u32>),
+    /// A roadmap field in a grid problem.
+    #[error("\"{field}\" applies to polygon worlds only")]
+    NotForGrids {
+        /// The field.
+        field: &'static str,
+    },
+    /// A roadmap parameter the chosen roadmap does not take.
+    #[error("\"{field}\" does not apply to the \"{graph}\" graph")]
+    NotForGraph {
+        /// The field.
+        field: &'static str,
+        /// The graph.
+        graph: &'static str,
+    },
+    /// A heuristic other than the Euclidean distance on a roadmap.
+    #[error("roadmaps are searched with the \"euclidean\" heuristic only, not {heuristic:?}")]
+    NotEuclidean {
+        /// The heuristic asked for.
+        heuristic: GridHeuristic,
+    },
+    /// A start or goal of a polygon world that is not a finite point.
+    #[error("the {which} {value:?} is not a point: the \"{graph}\" graph expects [x, y]")]
+    NotAPoint {
+        /// `"start"` or `"goal"`.
+        which: &'static str,
+        /// The value given.
+        value: Vec<f64>,
+        /// The graph.
+        graph: &'static str,
+    },
+    /// A start or goal of a Dubins roadmap that is not a finite pose.
+    #[error("the {which} {value:?} is not a pose: the \"dubins_prm\" graph expects [x, y, heading]")]
+    NotAPose {
+        /// `"start"` or `"goal"`.
+        which: &'static str,
+        /// The value given.
+        value: Vec<f64>,
+    },
+    /// A Dubins roadmap without a turning radius.
+    #[error("the \"dubins_prm\" graph needs a \"turning_radius\"")]
+    NoTurningRadius,
+    /// Both `k` and `radius`.
+    #[error("give \"k\" (nearest neighbours) or \"radius\" (all within a distance), not both")]
+    KAndRadius,
+    /// The visibility graph rejected the start or goal.
+    #[error(transparent)]
+    Visibility(#[from] VisibilityError),
+    /// The trapezoidal decomposition rejected the start or goal.
+    #[error(transparent)]
+    Trapezoid(#[from] TrapezoidError),
+    /// The roadmap could not be built or rejected the start or goal.
+    #[error(transparent)]
+    Prm(#[from] PrmError),
 }
 
 /// The grid of a grid world, with relative map paths resolved against `base_dir`.
@@ -155,72 +222,358 @@ fn cell_of(which: &'static str, value: &[f64], grid: &Grid) -> Result<Cell, Solv
 
 /// Solves `problem`; relative file paths in it are resolved against `base_dir`.
 pub fn solve(problem: &Problem, base_dir: impl AsRef<Path>) -> Result<SolveResult, SolveError> {
-    let World::Grid(world) = &problem.world;
+    solve_inner(problem, base_dir.as_ref(), None)
+}
+
+/// Solves `problem` as [`solve`] does and draws it: an SVG of the world (the obstacles and, for
+/// polygon worlds, their boundary grown by the robot radius), the roadmap that was searched,
+/// and the path.
+///
+/// ```
+/// use trailmark::problem::Problem;
+/// use trailmark::solve::solve_and_draw;
+///
+/// let problem: Problem = serde_json::from_str(r#"{
+///     "world": {"polygons": {"bounds": [0, 0, 10, 10], "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]]}},
+///     "graph": "visibility", "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}
+/// }"#)?;
+/// let (result, svg) = solve_and_draw(&problem, ".")?;
+/// assert_eq!(result.cost, Some(2.0 * 58f64.sqrt() + 2.0)); // over the wall's top corners
+/// assert!(svg.starts_with("<svg") && svg.contains("<polyline"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn solve_and_draw(
+    problem: &Problem,
+    base_dir: impl AsRef<Path>,
+) -> Result<(SolveResult, String), SolveError> {
+    let mut picture = String::new();
+    let result = solve_inner(problem, base_dir.as_ref(), Some(&mut picture))?;
+    Ok((result, picture))
+}
+
+fn solve_inner(
+    problem: &Problem,
+    base_dir: &Path,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    if let PlannerSpec::AraStar { time_limit_s: Some(t), .. }
+    | PlannerSpec::AdStar { time_limit_s: Some(t), .. } = problem.planner
+        && !(t.is_finite() && t >= 0.0)
+    {
+        return Err(SolveError::TimeLimit(t));
+    }
+    match &problem.world {
+        World::Grid(world) => solve_grid(problem, world, base_dir, picture),
+        World::Polygons(world) => solve_polygons(problem, world, picture),
+    }
+}
+
+fn solve_grid(
+    problem: &Problem,
+    world: &GridWorld,
+    base_dir: &Path,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    if let Some(name) = roadmap_fields(problem).first() {
+        return Err(SolveError::NotForGrids { field: name });
+    }
     let grid = load_grid(world, base_dir)?;
     let start = cell_of("start", &problem.start, &grid)?;
     let goal = cell_of("goal", &problem.goal, &grid)?;
     let graph = grid_graph(world, &grid);
     let natural = GridHeuristic::for_connectivity(world.connectivity);
-    let mut search = Search::new();
-    let found: SearchResult<Cell> = match &problem.planner {
-        PlannerSpec::Bfs {} => search.bfs(&graph, start, goal)?,
-        PlannerSpec::Dfs {} => search.dfs(&graph, start, goal)?,
-        PlannerSpec::Dijkstra {} => search.dijkstra(&graph, start, goal)?,
-        PlannerSpec::AStar { heuristic } => {
-            let kind = admissible(heuristic, natural, world)?;
-            search.astar(&graph, start, goal, graph.heuristic(kind, goal))?
-        }
-        PlannerSpec::WeightedAStar { weight, heuristic } => {
-            let kind = heuristic.unwrap_or(natural);
-            search.weighted_astar(&graph, start, goal, graph.heuristic(kind, goal), *weight)?
-        }
-        PlannerSpec::LpaStar { heuristic } => {
-            let h = graph.heuristic_between(admissible(heuristic, natural, world)?);
-            let mut planner = LpaStar::new(&graph, start, goal, h)?;
-            let stats = planner.compute_shortest_path(&graph)?;
-            SearchResult { path: planner.path(&graph), stats }
-        }
-        PlannerSpec::DStarLite { heuristic } => {
-            let h = graph.heuristic_between(admissible(heuristic, natural, world)?);
-            let mut planner = DStarLite::new(&graph, start, goal, h)?;
-            let stats = planner.compute_shortest_path(&graph)?;
-            SearchResult { path: planner.path(&graph), stats }
-        }
-        PlannerSpec::AraStar { epsilon, epsilon_step, heuristic, time_limit_s, max_expansions } => {
-            let kind = admissible(heuristic, natural, world)?;
-            let schedule = schedule(*epsilon, *epsilon_step);
-            let budget = budget(*time_limit_s, *max_expansions)?;
-            let found = trailmark_search::ara_star(
-                &graph,
-                start,
-                goal,
-                graph.heuristic(kind, goal),
-                schedule,
-                budget,
-            )?;
-            return Ok(anytime_result_of(&found));
-        }
-        PlannerSpec::AdStar { epsilon, epsilon_step, heuristic, time_limit_s, max_expansions } => {
-            let h = graph.heuristic_between(admissible(heuristic, natural, world)?);
-            let mut planner = AdStar::new(&graph, start, goal, h, schedule(*epsilon, *epsilon_step))?;
-            let found = planner.improve(&graph, budget(*time_limit_s, *max_expansions)?)?;
-            return Ok(anytime_result_of(&found));
-        }
-    };
-    Ok(result_of(&found))
-}
-
-/// The heuristic asked for (or the natural one), which must be admissible.
-fn admissible(
-    asked: &Option<GridHeuristic>,
-    natural: GridHeuristic,
-    world: &GridWorld,
-) -> Result<GridHeuristic, SolveError> {
+    let (asked, optimal) = heuristic_of(&problem.planner);
     let kind = asked.unwrap_or(natural);
-    if !kind.is_admissible(world.connectivity) {
+    if optimal && !kind.is_admissible(world.connectivity) {
         return Err(SolveError::Inadmissible { heuristic: kind });
     }
-    Ok(kind)
+    let h = graph.heuristic_between(kind);
+    let result = search(&graph, start, goal, h, &problem.planner, Waypoint::Cell)?;
+    if let Some(picture) = picture {
+        let cells: Vec<Cell> = result
+            .path
+            .iter()
+            .filter_map(|w| match w {
+                Waypoint::Cell(c) => Some(*c),
+                Waypoint::Point(_) => None,
+            })
+            .collect();
+        let scale = (800.0 / f64::from(grid.width().max(grid.height()))).clamp(1.0, 24.0);
+        let svg = GridSvg::new(&grid).cell_size(scale).path(&cells).start(start).goal(goal);
+        *picture = svg.title(format!("{} from {start} to {goal}", problem.planner.name())).to_svg();
+    }
+    Ok(result)
+}
+
+/// The roadmap fields a problem sets, by name.
+fn roadmap_fields(problem: &Problem) -> Vec<&'static str> {
+    [
+        ("graph", problem.graph.is_some()),
+        ("samples", problem.samples.is_some()),
+        ("k", problem.k.is_some()),
+        ("radius", problem.radius.is_some()),
+        ("turning_radius", problem.turning_radius.is_some()),
+        ("sampler", problem.sampler.is_some()),
+    ]
+    .into_iter()
+    .filter_map(|(name, set)| set.then_some(name))
+    .collect()
+}
+
+/// The heuristic a planner asks for, and whether the planner promises least cost (so the
+/// heuristic must be admissible).
+fn heuristic_of(planner: &PlannerSpec) -> (Option<GridHeuristic>, bool) {
+    match planner {
+        PlannerSpec::Bfs {} | PlannerSpec::Dfs {} | PlannerSpec::Dijkstra {} => (None, true),
+        PlannerSpec::WeightedAStar { heuristic, .. } => (*heuristic, false),
+        PlannerSpec::AStar { heuristic }
+        | PlannerSpec::LpaStar { heuristic }
+        | PlannerSpec::DStarLite { heuristic }
+        | PlannerSpec::AraStar { heuristic, .. }
+        | PlannerSpec::AdStar { heuristic, .. } => (*heuristic, true),
+    }
+}
+
+/// Runs `planner` from `start` to `goal` on `graph` with the heuristic `h(a, b)`, and writes
+/// each path node as `waypoint(node)`.
+fn search<G, H>(
+    graph: &G,
+    start: G::Node,
+    goal: G::Node,
+    h: H,
+    planner: &PlannerSpec,
+    waypoint: impl Fn(G::Node) -> Waypoint,
+) -> Result<SolveResult, SearchError<G::Node>>
+where
+    G: Successors + Predecessors + IndexedGraph,
+    H: Fn(G::Node, G::Node) -> Cost + Copy,
+{
+    let to_goal = |n| h(n, goal);
+    let mut search = Search::new();
+    let found = match planner {
+        PlannerSpec::Bfs {} => search.bfs(graph, start, goal)?,
+        PlannerSpec::Dfs {} => search.dfs(graph, start, goal)?,
+        PlannerSpec::Dijkstra {} => search.dijkstra(graph, start, goal)?,
+        PlannerSpec::AStar { .. } => search.astar(graph, start, goal, to_goal)?,
+        PlannerSpec::WeightedAStar { weight, .. } => {
+            search.weighted_astar(graph, start, goal, to_goal, *weight)?
+        }
+        PlannerSpec::LpaStar { .. } => {
+            let mut planner = LpaStar::new(graph, start, goal, h)?;
+            let stats = planner.compute_shortest_path(graph)?;
+            SearchResult { path: planner.path(graph), stats }
+        }
+        PlannerSpec::DStarLite { .. } => {
+            let mut planner = DStarLite::new(graph, start, goal, h)?;
+            let stats = planner.compute_shortest_path(graph)?;
+            SearchResult { path: planner.path(graph), stats }
+        }
+        PlannerSpec::AraStar { epsilon, epsilon_step, time_limit_s, max_expansions, .. } => {
+            let budget = budget(*time_limit_s, *max_expansions);
+            let found = trailmark_search::ara_star(
+                graph,
+                start,
+                goal,
+                to_goal,
+                schedule(*epsilon, *epsilon_step),
+                budget,
+            )?;
+            return Ok(anytime_result_of(&found, waypoint));
+        }
+        PlannerSpec::AdStar { epsilon, epsilon_step, time_limit_s, max_expansions, .. } => {
+            let mut planner = AdStar::new(graph, start, goal, h, schedule(*epsilon, *epsilon_step))?;
+            let found = planner.improve(graph, budget(*time_limit_s, *max_expansions))?;
+            return Ok(anytime_result_of(&found, waypoint));
+        }
+    };
+    Ok(result_of(&found, waypoint))
+}
+
+/// Builds the roadmap a polygon-world problem names, joins its start and goal, and searches it;
+/// draws the world, the roadmap and the path into `picture` when one is given.
+fn solve_polygons(
+    problem: &Problem,
+    world: &PolygonWorld,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    let kind = problem.graph.unwrap_or(GraphKind::Visibility);
+    let sampled = matches!(kind, GraphKind::Prm | GraphKind::DubinsPrm);
+    for field in roadmap_fields(problem) {
+        let applies = match field {
+            "graph" => true,
+            "turning_radius" => kind == GraphKind::DubinsPrm,
+            _ => sampled,
+        };
+        if !applies {
+            return Err(SolveError::NotForGraph { field, graph: kind.name() });
+        }
+    }
+    let (asked, _) = heuristic_of(&problem.planner);
+    if let Some(heuristic) = asked.filter(|&h| h != GridHeuristic::Euclidean) {
+        return Err(SolveError::NotEuclidean { heuristic });
+    }
+    if kind == GraphKind::DubinsPrm {
+        return solve_dubins(problem, world, picture);
+    }
+    let point = |which, value: &[f64]| match *value {
+        [x, y] if x.is_finite() && y.is_finite() => Ok(Point::new(x, y)),
+        _ => Err(SolveError::NotAPoint { which, value: value.to_vec(), graph: kind.name() }),
+    };
+    let (start, goal) = (point("start", &problem.start)?, point("goal", &problem.goal)?);
+    let clock = Instant::now();
+    let (result, svg) = match kind {
+        GraphKind::Visibility => {
+            let graph = VisibilityGraph::with_edges(world.free_space(), Edges::Tangent);
+            let built = clock.elapsed();
+            let result = search_roadmap(problem, &graph.query(start, goal)?, built, clock.elapsed() - built)?;
+            let svg = WorldSvg::new(world).free_space(graph.space()).edges(graph.edge_ends());
+            (result, svg.title("Visibility graph (tangent edges) and the shortest path"))
+        }
+        GraphKind::Trapezoid => {
+            let space = world.free_space();
+            let graph = Trapezoids::new(&space);
+            let built = clock.elapsed();
+            let result = search_roadmap(problem, &graph.query(start, goal)?, built, clock.elapsed() - built)?;
+            let cells = (0..graph.cell_count()).map(|c| graph.cell(c).corners().to_vec());
+            let svg = WorldSvg::new(world).free_space(&space).cells(cells).edges(graph.edge_ends());
+            (result, svg.title("Trapezoidal cells, their centroids and portal midpoints, and a path"))
+        }
+        _ => {
+            let prm = grow(problem, Prm::new(world.clone(), prm_options(problem)?)?)?;
+            let built = clock.elapsed();
+            let result = search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed() - built)?;
+            let nodes = (0..prm.node_count() as u32).map(|u| prm.position(u));
+            let space = world.free_space();
+            let svg = WorldSvg::new(world).free_space(&space).edges(prm.edge_ends()).nodes(nodes);
+            let title = format!("PRM: {} samples, {} edges, and a path", prm.node_count(), prm.edge_count());
+            (result, svg.title(title))
+        }
+    };
+    if let Some(picture) = picture {
+        let path: Vec<Point> = result.path.iter().filter_map(waypoint_point).collect();
+        *picture = svg.path(&path).start(start).goal(goal).to_svg();
+    }
+    Ok(result)
+}
+
+/// [`solve_polygons`] on a Dubins roadmap: poses, directed Dubins edges.
+fn solve_dubins(
+    problem: &Problem,
+    world: &PolygonWorld,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    let pose = |which, value: &[f64]| {
+        DubinsSteering::from_coordinates(value)
+            .ok_or_else(|| SolveError::NotAPose { which, value: value.to_vec() })
+    };
+    let radius = problem.turning_radius.ok_or(SolveError::NoTurningRadius)?;
+    let steering = DubinsSteering::new(radius)?;
+    let (start, goal) = (pose("start", &problem.start)?, pose("goal", &problem.goal)?);
+    let clock = Instant::now();
+    let prm = grow(problem, Prm::with_steering(world.clone(), steering, prm_options(problem)?)?)?;
+    let built = clock.elapsed();
+    let result = search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed() - built)?;
+    if let Some(picture) = picture {
+        let poses: Vec<Pose> = result
+            .path
+            .iter()
+            .filter_map(|w| match w {
+                Waypoint::Point(c) => DubinsSteering::from_coordinates(c),
+                Waypoint::Cell(_) => None,
+            })
+            .collect();
+        let mut curve = Vec::new();
+        for pair in poses.windows(2) {
+            let piece =
+                DubinsPath::shortest(&pair[0], &pair[1], radius).expect("a valid radius and finite poses");
+            let samples = piece.sample(radius / 8.0).expect("a positive step");
+            curve.extend(samples.iter().map(|p| Point::from(p.translation.vector)));
+        }
+        let title =
+            format!("Dubins roadmap: {} poses, turning radius {radius}, and a path", prm.node_count());
+        *picture = WorldSvg::new(world)
+            .free_space(&world.free_space())
+            .poses((0..prm.node_count() as u32).map(|u| prm.position(u)))
+            .path(&curve)
+            .start(Point::from(start.translation.vector))
+            .goal(Point::from(goal.translation.vector))
+            .title(title)
+            .to_svg();
+    }
+    Ok(result)
+}
+
+/// The point of a waypoint (the position of a pose).
+fn waypoint_point(waypoint: &Waypoint) -> Option<Point> {
+    match waypoint {
+        Waypoint::Point(c) if c.len() >= 2 => Some(Point::new(c[0], c[1])),
+        _ => None,
+    }
+}
+
+/// The PRM options of a problem.
+fn prm_options(problem: &Problem) -> Result<PrmOptions, SolveError> {
+    let sampler = match problem.sampler.unwrap_or(SamplerKind::Uniform) {
+        SamplerKind::Uniform => Sampler::Uniform { seed: problem.seed.unwrap_or(0) },
+        SamplerKind::Halton => Sampler::Halton,
+    };
+    let connection = match (problem.k, problem.radius) {
+        (Some(_), Some(_)) => return Err(SolveError::KAndRadius),
+        (Some(k), None) => Connection::Nearest { k },
+        (None, Some(radius)) => Connection::Radius { radius },
+        (None, None) => Connection::PrmStar,
+    };
+    Ok(PrmOptions { sampler, connection, ..PrmOptions::default() })
+}
+
+/// `prm` grown by the problem's number of samples.
+fn grow<S: Steering>(problem: &Problem, mut prm: Prm<S>) -> Result<Prm<S>, SolveError> {
+    prm.grow(problem.samples.unwrap_or(DEFAULT_SAMPLES))?;
+    Ok(prm)
+}
+
+/// The number of samples of a sampled roadmap when the problem gives none.
+pub const DEFAULT_SAMPLES: usize = 1000;
+
+/// Searches a roadmap query and reports the roadmap's size and timings with the result.
+fn search_roadmap<R>(
+    problem: &Problem,
+    query: &RoadmapQuery<'_, R>,
+    built: Duration,
+    joined: Duration,
+) -> Result<SolveResult, SolveError>
+where
+    R: Roadmap,
+    R::Position: Coordinates,
+{
+    let waypoint = |node| Waypoint::Point(query.position(node).coordinates());
+    let mut result =
+        search(query, query.start(), query.goal(), query.heuristic_between(), &problem.planner, waypoint)?;
+    let roadmap = query.roadmap();
+    result.stats.graph = Some(GraphStats {
+        nodes: roadmap.node_count(),
+        edges: roadmap.count_edges(),
+        build_time_s: built.as_secs_f64(),
+        query_time_s: joined.as_secs_f64(),
+    });
+    Ok(result)
+}
+
+/// A roadmap position as the numbers of a result waypoint.
+trait Coordinates {
+    fn coordinates(&self) -> Vec<f64>;
+}
+
+impl Coordinates for Point {
+    fn coordinates(&self) -> Vec<f64> {
+        vec![self.x, self.y]
+    }
+}
+
+impl Coordinates for Pose {
+    fn coordinates(&self) -> Vec<f64> {
+        DubinsSteering::coordinates(self)
+    }
 }
 
 fn schedule(epsilon: Option<f64>, step: Option<f64>) -> EpsilonSchedule {
@@ -228,18 +581,15 @@ fn schedule(epsilon: Option<f64>, step: Option<f64>) -> EpsilonSchedule {
     EpsilonSchedule::new(epsilon.unwrap_or(default.initial), step.unwrap_or(default.step))
 }
 
-fn budget(time_limit_s: Option<f64>, max_expansions: Option<u64>) -> Result<Budget, SolveError> {
-    let time = match time_limit_s {
-        None => None,
-        Some(t) if t.is_finite() && t >= 0.0 => Some(std::time::Duration::from_secs_f64(t)),
-        Some(t) => return Err(SolveError::TimeLimit(t)),
-    };
-    Ok(Budget { time, expansions: max_expansions })
+fn budget(time_limit_s: Option<f64>, max_expansions: Option<u64>) -> Budget {
+    let time = time_limit_s.map(Duration::from_secs_f64);
+    Budget { time, expansions: max_expansions }
 }
 
-/// The result document of an anytime search: the path of its last iteration, every iteration.
-pub fn anytime_result_of(found: &AnytimeResult<Cell>) -> SolveResult {
-    let mut result = result_of(&SearchResult { path: found.path.clone(), stats: found.stats });
+/// The result document of an anytime search: the path of its last iteration, every iteration;
+/// each path node written as `waypoint(node)`.
+pub fn anytime_result_of<N: Copy>(found: &AnytimeResult<N>, waypoint: impl Fn(N) -> Waypoint) -> SolveResult {
+    let mut result = result_of(&SearchResult { path: found.path.clone(), stats: found.stats }, waypoint);
     result.stats.iterations = Some(
         found
             .iterations
@@ -257,13 +607,14 @@ pub fn anytime_result_of(found: &AnytimeResult<Cell>) -> SolveResult {
     result
 }
 
-/// The result document of a grid search.
-pub fn result_of(found: &SearchResult<Cell>) -> SolveResult {
+/// The result document of a search, each path node written as `waypoint(node)`
+/// ([`Waypoint::Cell`] for a grid search).
+pub fn result_of<N: Copy>(found: &SearchResult<N>, waypoint: impl Fn(N) -> Waypoint) -> SolveResult {
     let s = &found.stats;
     SolveResult {
         status: if found.path.is_some() { Status::Solved } else { Status::NoPath },
         cost: found.cost(),
-        path: found.path.iter().flat_map(|p| p.nodes.iter().map(|&c| Waypoint::Cell(c))).collect(),
+        path: found.path.iter().flat_map(|p| p.nodes.iter().map(|&n| waypoint(n))).collect(),
         stats: ResultStats {
             expansions: Some(s.expansions),
             pushes: Some(s.pushes),
@@ -272,6 +623,7 @@ pub fn result_of(found: &SearchResult<Cell>) -> SolveResult {
             time_s: s.elapsed.as_secs_f64(),
             iterations: None,
             bound: None,
+            graph: None,
         },
     }
 }

@@ -8,6 +8,7 @@ use trailmark::core::dubins::DubinsPath;
 use trailmark::core::freespace::Location;
 use trailmark::core::geometry::{Point, Pose, Vector};
 use trailmark::core::world::{Polygon, PolygonWorld};
+use trailmark::graph::Roadmap;
 use trailmark::graph::prm::{Connection, DubinsSteering, Prm, PrmOptions, Sampler};
 use trailmark::graph::visibility::VisibilityGraph;
 use trailmark::prelude::*;
@@ -93,6 +94,10 @@ proptest! {
             });
         }
         prop_assert!(edges >= 2 * prm.edge_count());
+        prop_assert_eq!(prm.count_edges(), prm.edge_count());
+        let ends = prm.edge_ends();
+        prop_assert_eq!(ends.len(), prm.edge_count());
+        prop_assert!(ends.iter().all(|&(a, b)| checker.segment_is_free(a, b)));
     }
 
     /// No roadmap beats the visibility graph, whose paths are the shortest: for a point robot
@@ -104,6 +109,7 @@ proptest! {
     ) {
         let space = world.free_space_with_step(std::f64::consts::PI / 64.0).expect("valid step");
         let graph = VisibilityGraph::new(space);
+        prop_assert_eq!(graph.count_edges(), graph.edge_count());
         let q = graph.query(start, goal).expect("free ends");
         let best = dijkstra(&q, q.start(), q.goal()).expect("valid").cost();
         for connection in [Connection::PrmStar, Connection::Radius { radius: 6.0 }] {

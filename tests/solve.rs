@@ -6,16 +6,11 @@ use trailmark::problem::{GridWorld, PlannerSpec, Problem, Status, Waypoint, Worl
 use trailmark::solve::{SolveError, solve};
 
 fn problem(rows: &[&str], start: Vec<f64>, goal: Vec<f64>, planner: PlannerSpec) -> Problem {
-    Problem {
-        world: World::Grid(GridWorld {
-            rows: Some(rows.iter().map(|r| r.to_string()).collect()),
-            ..Default::default()
-        }),
-        start,
-        goal,
-        planner,
-        seed: None,
-    }
+    let world = World::Grid(GridWorld {
+        rows: Some(rows.iter().map(|r| r.to_string()).collect()),
+        ..Default::default()
+    });
+    Problem::new(world, start, goal, planner)
 }
 
 const ROWS: [&str; 3] = ["....", ".@@.", "...."];
@@ -134,7 +129,7 @@ fn bad_input_gives_typed_errors() {
 
     let with = |edit: &dyn Fn(&mut GridWorld)| {
         let mut p = problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], PlannerSpec::AStar { heuristic: None });
-        let World::Grid(world) = &mut p.world;
+        let World::Grid(world) = &mut p.world else { unreachable!() };
         edit(world);
         p
     };
@@ -188,7 +183,7 @@ fn costs_change_the_route() {
     // The bottom route is cheaper unless its cells cost 10.
     let rows = ["...", ".@.", "..."];
     let mut p = problem(&rows, vec![0.0, 1.0], vec![2.0, 1.0], PlannerSpec::Dijkstra {});
-    let World::Grid(world) = &mut p.world;
+    let World::Grid(world) = &mut p.world else { unreachable!() };
     world.costs = Some(vec![vec![1.0; 3], vec![1.0; 3], vec![10.0; 3]]);
     let result = solve(&p, ".").unwrap();
     assert!(result.path.contains(&Waypoint::Cell([1, 0].into())), "{:?}", result.path);
@@ -228,7 +223,7 @@ proptest! {
             corner_cutting: cut,
             ..Default::default()
         };
-        let p = Problem { world: World::Grid(world), start, goal, planner, seed: None };
+        let p = Problem::new(World::Grid(world), start, goal, planner);
         if let Ok(result) = solve(&p, ".") {
             prop_assert_eq!(result.cost.is_some(), result.status == Status::Solved);
         }

@@ -5,7 +5,8 @@
 //! - `cargo xtask verify movingai DIR` checks every scenario of a MovingAI benchmark folder
 //!   against its published optimal length; `cargo xtask verify anyangle DIR` checks the GPPC
 //!   any-angle track on visibility graphs.
-//! - `cargo xtask solve PROBLEM.json` solves one problem document and prints the result JSON.
+//! - `cargo xtask solve PROBLEM.json` solves one problem document and prints the result JSON;
+//!   `cargo xtask render PROBLEM.json OUT.svg` also draws the world, its graph and the path.
 //! - `cargo xtask navigate` runs a robot through partly known terrain with each incremental
 //!   planner and prints a JSON summary.
 
@@ -22,7 +23,7 @@ mod solve;
 mod verify;
 
 #[derive(Parser)]
-#[command(name = "cargo xtask", about = "The trailmark harness: bench, verify, solve, navigate")]
+#[command(name = "cargo xtask", about = "The trailmark harness: bench, verify, solve, render, navigate")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -41,6 +42,14 @@ enum Command {
     Solve {
         /// The problem JSON file.
         problem: PathBuf,
+    },
+    /// Solves a problem document, prints the result JSON and writes an SVG of the world, the
+    /// graph searched and the path.
+    Render {
+        /// The problem JSON file (or - for standard input).
+        problem: PathBuf,
+        /// The SVG file to write.
+        out: PathBuf,
     },
     /// Runs a robot through partly known terrain with each planner; prints a JSON summary.
     Navigate(navigate::Args),
@@ -96,6 +105,7 @@ fn main() -> ExitCode {
             verify::anyangle(&dir, every, rel, edges)
         }
         Command::Solve { problem } => solve::run(&problem),
+        Command::Render { problem, out } => solve::render(&problem, &out),
         Command::Navigate(args) => navigate::run(&args),
     }
 }

@@ -1,7 +1,8 @@
-//! `cargo xtask solve PROBLEM.json`: one problem in, one result document out.
+//! `cargo xtask solve PROBLEM.json`: one problem in, one result document out; `cargo xtask
+//! render PROBLEM.json OUT.svg`: the same, and a picture of the world, its graph and the path.
 
 use std::io::Read;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use trailmark::problem::{ErrorReport, Problem};
@@ -22,7 +23,36 @@ pub fn run(path: &Path) -> ExitCode {
     }
 }
 
+/// Solves the problem in `path` (or standard input for `-`), writes its picture to `out` and
+/// prints the result; on a bad problem, prints the error report and exits with 2.
+pub fn render(path: &Path, out: &Path) -> ExitCode {
+    let drawn = read(path).and_then(|(problem, base)| {
+        let (result, svg) = trailmark::solve::solve_and_draw(&problem, base).map_err(|e| e.to_string())?;
+        std::fs::write(out, svg).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+        serde_json::to_string(&result).map_err(|e| e.to_string())
+    });
+    match drawn {
+        Ok(json) => {
+            println!("{json}");
+            eprintln!("wrote {}", out.display());
+            ExitCode::SUCCESS
+        }
+        Err(message) => {
+            let report = serde_json::to_string(&ErrorReport::new(message)).expect("a report serializes");
+            println!("{report}");
+            ExitCode::from(2)
+        }
+    }
+}
+
 fn solve(path: &Path) -> Result<String, String> {
+    let (problem, base) = read(path)?;
+    let result = trailmark::solve::solve(&problem, base).map_err(|e| e.to_string())?;
+    serde_json::to_string(&result).map_err(|e| e.to_string())
+}
+
+/// The problem in `path` and the folder its relative paths are relative to.
+fn read(path: &Path) -> Result<(Problem, PathBuf), String> {
     let (text, base) = if path == Path::new("-") {
         let mut text = String::new();
         std::io::stdin().read_to_string(&mut text).map_err(|e| format!("cannot read standard input: {e}"))?;
@@ -34,6 +64,5 @@ fn solve(path: &Path) -> Result<String, String> {
     };
     let problem: Problem =
         serde_json::from_str(&text).map_err(|e| format!("{}: invalid problem: {e}", path.display()))?;
-    let result = trailmark::solve::solve(&problem, base).map_err(|e| e.to_string())?;
-    serde_json::to_string(&result).map_err(|e| e.to_string())
+    Ok((problem, base))
 }

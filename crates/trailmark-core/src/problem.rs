@@ -14,8 +14,28 @@
 //! }"#;
 //! let problem: Problem = serde_json::from_str(json).unwrap();
 //! assert_eq!(problem.planner, PlannerSpec::WeightedAStar { weight: 1.5, heuristic: None });
-//! let World::Grid(grid) = &problem.world;
+//! let World::Grid(grid) = &problem.world else { unreachable!() };
 //! assert_eq!(grid.rows.as_ref().unwrap().len(), 3);
+//! ```
+//!
+//! A polygon world is searched on a roadmap, named by `"graph"` with its parameters beside it:
+//!
+//! ```
+//! use trailmark_core::problem::{GraphKind, Problem, World};
+//!
+//! let json = r#"{
+//!     "world": {"polygons": {"bounds": [0, 0, 10, 10],
+//!                            "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]],
+//!                            "robot_radius": 0.25}},
+//!     "graph": "prm", "samples": 500, "k": 12,
+//!     "start": [1, 1], "goal": [9, 1],
+//!     "planner": {"name": "astar"}
+//! }"#;
+//! let problem: Problem = serde_json::from_str(json).unwrap();
+//! assert_eq!(problem.graph, Some(GraphKind::Prm));
+//! assert_eq!((problem.samples, problem.k), (Some(500), Some(12)));
+//! let World::Polygons(world) = &problem.world else { unreachable!() };
+//! assert_eq!(world.obstacles().len(), 1);
 //! ```
 
 use std::path::PathBuf;
@@ -23,22 +43,100 @@ use std::path::PathBuf;
 use serde::{Deserialize, Serialize};
 
 use crate::grid::{Cell, Connectivity, GridHeuristic};
+use crate::world::PolygonWorld;
 
-/// A planning problem: a world, a start, a goal, a planner and a seed.
+/// A planning problem: a world, a start, a goal, a planner and a seed; for a polygon world,
+/// also the roadmap to search and its parameters.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Problem {
     /// The world to plan in.
     pub world: World,
-    /// The start: `[x, y]` (a cell for grid worlds).
+    /// The start: a cell `[x, y]` of a grid, a point `[x, y]` of a polygon world, or a pose
+    /// `[x, y, θ]` (θ in radians) for a Dubins roadmap.
     pub start: Vec<f64>,
-    /// The goal: `[x, y]` (a cell for grid worlds).
+    /// The goal, as the start.
     pub goal: Vec<f64>,
     /// The planner and its parameters.
     pub planner: PlannerSpec,
-    /// The seed of every random choice (planners that draw none ignore it).
+    /// The seed of every random choice (planners and graphs that draw none ignore it).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
+    /// Polygon worlds: the roadmap to build (default: the visibility graph).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub graph: Option<GraphKind>,
+    /// Sampled roadmaps: the number of samples (default 1000).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub samples: Option<usize>,
+    /// Sampled roadmaps: join each sample to its `k` nearest neighbours (default, without `k`
+    /// or `radius`: PRM*'s k = ⌈e(1 + 1/d) ln n⌉).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub k: Option<usize>,
+    /// Sampled roadmaps: join each sample to every neighbour within this distance instead.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
+    /// Dubins roadmaps: the turning radius (required).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub turning_radius: Option<f64>,
+    /// Sampled roadmaps: how samples are drawn (default uniform, from `seed`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sampler: Option<SamplerKind>,
+}
+
+impl Problem {
+    /// A problem with no seed and no roadmap parameters.
+    pub fn new(world: World, start: Vec<f64>, goal: Vec<f64>, planner: PlannerSpec) -> Self {
+        Problem {
+            world,
+            start,
+            goal,
+            planner,
+            seed: None,
+            graph: None,
+            samples: None,
+            k: None,
+            radius: None,
+            turning_radius: None,
+            sampler: None,
+        }
+    }
+}
+
+/// The roadmap a polygon world is searched on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum GraphKind {
+    /// The visibility graph of the grown obstacles: shortest paths for a disc robot.
+    Visibility,
+    /// The trapezoidal (vertical) cell decomposition: cell centroids and portal midpoints.
+    Trapezoid,
+    /// A probabilistic roadmap of straight segments.
+    Prm,
+    /// A probabilistic roadmap of poses joined by Dubins curves (a car that turns no tighter
+    /// than `turning_radius`).
+    DubinsPrm,
+}
+
+impl GraphKind {
+    /// The name used in problem documents.
+    pub fn name(self) -> &'static str {
+        match self {
+            GraphKind::Visibility => "visibility",
+            GraphKind::Trapezoid => "trapezoid",
+            GraphKind::Prm => "prm",
+            GraphKind::DubinsPrm => "dubins_prm",
+        }
+    }
+}
+
+/// How a sampled roadmap draws its samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SamplerKind {
+    /// Uniform random samples from the problem's seed (default 0).
+    Uniform,
+    /// The deterministic Halton sequence (bases 2, 3 and 5).
+    Halton,
 }
 
 /// The world of a problem. In JSON, an object with one key naming the kind of world.
@@ -47,6 +145,9 @@ pub struct Problem {
 pub enum World {
     /// A grid: `{"grid": {...}}`.
     Grid(GridWorld),
+    /// Polygonal obstacles for a disc robot: `{"polygons": {"bounds": [xmin, ymin, xmax, ymax],
+    /// "obstacles": [[[x, y], ...], ...], "robot_radius": r}}`, checked as it is read.
+    Polygons(PolygonWorld),
 }
 
 /// A grid world: a MovingAI map file or inline rows, with its connectivity and optional costs.
@@ -158,6 +259,23 @@ pub enum PlannerSpec {
     },
 }
 
+impl PlannerSpec {
+    /// The name used in problem documents (`"astar"`, `"dstar_lite"`, ...).
+    pub fn name(&self) -> &'static str {
+        match self {
+            PlannerSpec::Bfs {} => "bfs",
+            PlannerSpec::Dfs {} => "dfs",
+            PlannerSpec::Dijkstra {} => "dijkstra",
+            PlannerSpec::AStar { .. } => "astar",
+            PlannerSpec::WeightedAStar { .. } => "weighted_astar",
+            PlannerSpec::LpaStar { .. } => "lpa_star",
+            PlannerSpec::DStarLite { .. } => "dstar_lite",
+            PlannerSpec::AraStar { .. } => "ara_star",
+            PlannerSpec::AdStar { .. } => "ad_star",
+        }
+    }
+}
+
 /// One iteration of an anytime planner, in a result.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct IterationRecord {
@@ -210,12 +328,28 @@ pub struct ResultStats {
     pub reopenings: Option<u64>,
     /// Wall-clock time of the search alone, in seconds (graph construction excluded).
     pub time_s: f64,
+    /// Roadmaps: the graph that was searched and the time it took to build.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub graph: Option<GraphStats>,
     /// Anytime planners: each iteration, in order.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub iterations: Option<Vec<IterationRecord>>,
     /// Anytime planners: the proven suboptimality bound of the returned path.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bound: Option<f64>,
+}
+
+/// The roadmap a polygon-world problem was searched on.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GraphStats {
+    /// Nodes of the roadmap (start and goal not counted).
+    pub nodes: usize,
+    /// Edges of the roadmap (start and goal links not counted); an undirected edge counts once.
+    pub edges: usize,
+    /// Seconds to build the roadmap.
+    pub build_time_s: f64,
+    /// Seconds to join the start and the goal to it.
+    pub query_time_s: f64,
 }
 
 /// The result of solving a problem.
@@ -293,6 +427,21 @@ mod tests {
         );
         let cell = serde_json::to_string(&Waypoint::Cell(Cell::new(1, 2))).unwrap();
         assert_eq!(cell, "[1,2]");
+        for planner in [
+            PlannerSpec::Bfs {},
+            PlannerSpec::AStar { heuristic: None },
+            PlannerSpec::WeightedAStar { weight: 2.0, heuristic: None },
+            PlannerSpec::AdStar {
+                epsilon: None,
+                epsilon_step: None,
+                heuristic: None,
+                time_limit_s: None,
+                max_expansions: None,
+            },
+        ] {
+            let json = serde_json::to_value(&planner).unwrap();
+            assert_eq!(json["name"], planner.name());
+        }
         assert_eq!(
             serde_json::to_string(&ErrorReport::new("bad")).unwrap(),
             r#"{"status":"error","error":"bad"}"#

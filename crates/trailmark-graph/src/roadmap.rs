@@ -24,6 +24,29 @@ pub trait Roadmap {
     /// Where `node` is.
     fn position(&self, node: u32) -> Self::Position;
 
+    /// The number of edges; an undirected edge counts once.
+    fn count_edges(&self) -> usize {
+        let mut links = 0;
+        for node in 0..self.node_count() as u32 {
+            self.for_each_out(node, |_, _| links += 1);
+        }
+        if Self::DIRECTED { links } else { links / 2 }
+    }
+
+    /// Each edge `u -> v` once (for an undirected roadmap, with `u < v`) as the pair of its end
+    /// positions: what a picture of the roadmap draws.
+    fn edge_ends(&self) -> Vec<(Self::Position, Self::Position)> {
+        let mut edges = Vec::new();
+        for u in 0..self.node_count() as u32 {
+            self.for_each_out(u, |v, _| {
+                if Self::DIRECTED || u < v {
+                    edges.push((self.position(u), self.position(v)));
+                }
+            });
+        }
+        edges
+    }
+
     /// A lower bound on the cost of any path from `a` to `b` (the straight-line distance), for
     /// an A* heuristic.
     fn lower_bound(&self, a: Self::Position, b: Self::Position) -> Cost;
@@ -103,6 +126,12 @@ impl<'g, R: Roadmap> RoadmapQuery<'g, R> {
     /// The straight-line distance from `node` to the goal: an admissible, consistent heuristic.
     pub fn heuristic(&self) -> impl Fn(u32) -> Cost + '_ {
         move |node| self.roadmap.lower_bound(self.position(node), self.goal)
+    }
+
+    /// The straight-line distance between two nodes: the heuristic of the incremental searches
+    /// (LPA*, D* Lite, AD*), admissible and consistent.
+    pub fn heuristic_between(&self) -> impl Fn(u32, u32) -> Cost + Copy + '_ {
+        move |a, b| self.roadmap.lower_bound(self.position(a), self.position(b))
     }
 
     /// Whether an edge joins the start to the goal directly.

@@ -45,8 +45,8 @@ pub struct Args {
     #[arg(long)]
     json: bool,
     /// The sections to run: grid search beside the peers, unknown-terrain navigation
-    /// (incremental planners), anytime planners (comma-separated).
-    #[arg(long, value_enum, value_delimiter = ',', default_value = "grid,navigation,anytime")]
+    /// (incremental planners), anytime planners, geometric roadmaps (comma-separated).
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "grid,navigation,anytime,roadmaps")]
     sections: Vec<Section>,
 }
 
@@ -59,6 +59,8 @@ pub enum Section {
     Navigation,
     /// ARA* and AD*: time to the first solution, cost over time.
     Anytime,
+    /// Visibility graphs, trapezoidal decompositions, PRM* and Dubins curves on polygon worlds.
+    Roadmaps,
 }
 
 /// A benchmark suite.
@@ -221,6 +223,8 @@ struct Report {
     navigation: Vec<crate::bench_replan::NavRow>,
     navigation_ratios: Vec<crate::bench_replan::NavRatio>,
     anytime: Vec<crate::bench_replan::AnytimeRow>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    roadmaps: Option<crate::bench_roadmap::RoadmapReport>,
 }
 
 #[derive(Serialize)]
@@ -565,22 +569,27 @@ pub fn run(args: &Args) -> ExitCode {
     }
     let (generated_n, movingai_n) = args.suite.queries();
     let clock = Instant::now();
-    eprintln!("generating maps and reference costs (seed {})...", args.seed);
-    let mut maps = generated_maps(args.seed, generated_n);
+    // The grid and anytime sections search the maps; the others do not need them.
+    let needs_maps = args.sections.iter().any(|s| matches!(s, Section::Grid | Section::Anytime));
+    let mut maps = Vec::new();
     let default_dir = crate::workspace_root().join("../shared/movingai");
     let dir = args.movingai.clone().unwrap_or(default_dir);
-    if args.no_movingai {
-        eprintln!("MovingAI maps skipped (--no-movingai)");
-    } else if dir.is_dir() {
-        match movingai_maps(&dir, movingai_n) {
-            Ok(m) => maps.extend(m),
-            Err(e) => {
-                eprintln!("error: {e}");
-                return ExitCode::from(2);
+    if needs_maps {
+        eprintln!("generating maps and reference costs (seed {})...", args.seed);
+        maps = generated_maps(args.seed, generated_n);
+        if args.no_movingai {
+            eprintln!("MovingAI maps skipped (--no-movingai)");
+        } else if dir.is_dir() {
+            match movingai_maps(&dir, movingai_n) {
+                Ok(m) => maps.extend(m),
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    return ExitCode::from(2);
+                }
             }
+        } else {
+            eprintln!("MovingAI maps skipped: {} not found", dir.display());
         }
-    } else {
-        eprintln!("MovingAI maps skipped: {} not found", dir.display());
     }
     let mut rows = Vec::new();
     if args.sections.contains(&Section::Grid) {
@@ -620,6 +629,16 @@ pub fn run(args: &Args) -> ExitCode {
             cost_time = Some(crate::bench_replan::cost_time_svg(map));
         }
     }
+    let mut roadmaps = None;
+    if args.sections.contains(&Section::Roadmaps) {
+        match crate::bench_roadmap::bench_roadmaps(args.suite, args.seed, args.runs) {
+            Ok(r) => roadmaps = Some(r),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
     let report = Report {
         suite: args.suite,
         versions: locked_versions(&["trailmark", "pathfinding"]),
@@ -643,12 +662,17 @@ pub fn run(args: &Args) -> ExitCode {
         navigation_ratios: crate::bench_replan::nav_ratios(&navigation),
         navigation,
         anytime,
+        roadmaps,
     };
     let mut text = markdown(&report);
     if let Some(Ok((_, summary))) = &cost_time {
         text.push_str(&format!(
             "\n## Path cost over time\n\n![path cost over time](anytime-cost-time.svg)\n\n{summary}\n"
         ));
+    }
+    if let Some(roadmaps) = &report.roadmaps {
+        text.push('\n');
+        text.push_str(&crate::bench_roadmap::markdown(roadmaps));
     }
     let folder =
         crate::workspace_root().join("target/bench").join(format!("{}-{}", args.suite.name(), report.date));
@@ -682,7 +706,8 @@ pub fn run(args: &Args) -> ExitCode {
             return ExitCode::from(2);
         }
     }
-    let errors: usize = report.results.iter().map(|r| r.cost_errors).sum();
+    let errors: usize = report.results.iter().map(|r| r.cost_errors).sum::<usize>()
+        + report.roadmaps.iter().flat_map(|r| &r.rows).map(|r| r.cost_errors).sum::<usize>();
     if errors > 0 {
         eprintln!("error: {errors} queries broke their planner's cost bound (see the cost errors column)");
         return ExitCode::from(1);

@@ -18,6 +18,7 @@ use trailmark::graph::visibility::Edges;
 
 mod bench;
 mod bench_replan;
+mod bench_roadmap;
 mod navigate;
 mod solve;
 mod verify;

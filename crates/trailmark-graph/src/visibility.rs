@@ -30,7 +30,6 @@
 //! ```
 
 use std::cmp::Ordering;
-use std::collections::BTreeSet;
 
 use thiserror::Error;
 use trailmark_core::cost::Cost;
@@ -379,63 +378,56 @@ enum Target {
 /// An edge crossed by the sweep ray, ordered by its distance from the centre along the ray.
 #[derive(Clone, Copy, Debug)]
 struct Active {
-    centre: Point,
     a: Point,
     b: Point,
+    /// `orient(a, b, centre)`: which side of the edge's line the centre is on (never 0: edges
+    /// in line with the centre never enter the status). Fixed for the whole sweep.
+    side: f64,
     id: u32,
 }
 
-impl PartialEq for Active {
-    fn eq(&self, other: &Self) -> bool {
-        self.id == other.id
+impl Active {
+    fn new(centre: Point, a: Point, b: Point, id: u32) -> Self {
+        Active { a, b, side: orient(a, b, centre), id }
     }
-}
 
-impl Eq for Active {}
-
-impl PartialOrd for Active {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for Active {
-    /// Nearer edges first. Two edges in the tree never cross and both cross the current ray, so
-    /// which is nearer does not depend on the ray: it is decided by which side of one edge's
-    /// line the other edge and the centre lie.
-    fn cmp(&self, other: &Self) -> Ordering {
+    /// Nearer edges first. Two edges in the status never cross and both cross the current
+    /// ray, so which is nearer does not depend on the ray: it is decided by which side of one
+    /// edge's line the other edge and the centre lie. Ties (collinear edges) by id.
+    fn order(&self, other: &Self) -> Ordering {
         if self.id == other.id {
             return Ordering::Equal;
         }
-        nearer(self.centre, (self.a, self.b), (other.a, other.b)).then(self.id.cmp(&other.id))
+        nearer(self, other).then(self.id.cmp(&other.id))
     }
 }
 
-/// `Less` when segment `e` is nearer to `c` than segment `f` along a ray from `c` that crosses
-/// both (segments that do not cross each other).
-fn nearer(c: Point, e: (Point, Point), f: (Point, Point)) -> Ordering {
+/// `Less` when edge `e` is nearer to the centre than edge `f` along a ray from the centre that
+/// crosses both (edges that do not cross each other).
+fn nearer(e: &Active, f: &Active) -> Ordering {
     let same = |x: f64, y: f64| (x > 0.0) == (y > 0.0);
     let verdict = |e_is_nearer: bool| if e_is_nearer { Ordering::Less } else { Ordering::Greater };
-    let (a, b) = e;
-    let (p, q) = f;
-    // A shared endpoint: compare the other ends.
+    let (a, b) = (e.a, e.b);
+    let (p, q) = (f.a, f.b);
+    // A shared endpoint s: compare the other ends, from the line s -> (f's other end), whose
+    // side of the centre is f's own, or its opposite when the line runs q -> p.
     let shared = if a == p {
-        Some((a, b, q))
+        Some((a, b, q, f.side))
     } else if a == q {
-        Some((a, b, p))
+        Some((a, b, p, -f.side))
     } else if b == p {
-        Some((b, a, q))
+        Some((b, a, q, f.side))
     } else if b == q {
-        Some((b, a, p))
+        Some((b, a, p, -f.side))
     } else {
         None
     };
-    if let Some((s, e_other, f_other)) = shared {
+    if let Some((s, e_other, f_other, centre_side)) = shared {
         let side = orient(s, f_other, e_other);
         if side == 0.0 {
             return Ordering::Equal;
         }
-        return verdict(same(side, orient(s, f_other, c)));
+        return verdict(same(side, centre_side));
     }
     let (sa, sb) = (orient(p, q, a), orient(p, q, b));
     if sa * sb >= 0.0 {
@@ -444,7 +436,7 @@ fn nearer(c: Point, e: (Point, Point), f: (Point, Point)) -> Ordering {
         if side == 0.0 {
             return Ordering::Equal;
         }
-        verdict(same(side, orient(p, q, c)))
+        verdict(same(side, f.side))
     } else {
         // e straddles f's line, so f lies on one side of e's line.
         let (sp, sq) = (orient(a, b, p), orient(a, b, q));
@@ -452,7 +444,45 @@ fn nearer(c: Point, e: (Point, Point), f: (Point, Point)) -> Ordering {
         if side == 0.0 {
             return Ordering::Equal;
         }
-        verdict(!same(side, orient(a, b, c)))
+        verdict(!same(side, e.side))
+    }
+}
+
+/// The edges crossed by the sweep ray, nearest first: a sorted vector (it holds few edges, so
+/// shifting beats a tree's allocations and pointer chasing).
+#[derive(Default)]
+struct Status {
+    edges: Vec<Active>,
+}
+
+impl Status {
+    fn clear(&mut self) {
+        self.edges.clear();
+    }
+
+    fn insert(&mut self, edge: Active) {
+        let at = self.edges.partition_point(|x| x.order(&edge) == Ordering::Less);
+        self.edges.insert(at, edge);
+    }
+
+    /// Removes the edge `id`; returns where it was.
+    fn remove(&mut self, id: u32) -> Option<usize> {
+        let at = self.edges.iter().position(|x| x.id == id)?;
+        self.edges.remove(at);
+        Some(at)
+    }
+
+    /// Inserts `edge` at `at`, where the edge it continues (ending at the vertex `edge` starts
+    /// from) was: every other edge crossing the ray is nearer or farther than that vertex, so
+    /// the order is unchanged.
+    fn replace_at(&mut self, at: usize, edge: Active) {
+        debug_assert!(at == 0 || self.edges[at - 1].order(&edge) == Ordering::Less);
+        debug_assert!(self.edges.get(at).is_none_or(|x| x.order(&edge) == Ordering::Greater));
+        self.edges.insert(at, edge);
+    }
+
+    fn first(&self) -> Option<&Active> {
+        self.edges.first()
     }
 }
 
@@ -462,7 +492,7 @@ struct Sweep {
     ignored: Vec<u32>,
     keyed: Vec<((f64, f64), u32)>,
     events: Vec<u32>,
-    status: BTreeSet<Active>,
+    status: Status,
 }
 
 /// A ray from a sweep's centre: toward `through`, or exactly away from it when `reversed`.
@@ -606,7 +636,7 @@ impl Sweep {
                 || (sb < 0.0 && on_ray(a))
                 || (sa < 0.0 && on_ray(b));
             if active {
-                self.status.insert(Active { centre, a, b, id: e as u32 });
+                self.status.insert(Active::new(centre, a, b, e as u32));
             }
         }
 
@@ -622,7 +652,14 @@ impl Sweep {
             start = end;
 
             // Edges ending on this ray leave the tree.
-            update_status(&mut self.status, graph, centre, &self.events[group.clone()], &self.ignored, false);
+            let vacancy = update_status(
+                &mut self.status,
+                graph,
+                centre,
+                &self.events[group.clone()],
+                &self.ignored,
+                None,
+            );
 
             // Visibility along the ray: blocked by the nearest crossing edge, or at a vertex the
             // ray cannot pass through.
@@ -647,37 +684,64 @@ impl Sweep {
             }
 
             // Edges starting on this ray enter the tree.
-            update_status(&mut self.status, graph, centre, &self.events[group], &self.ignored, true);
+            update_status(&mut self.status, graph, centre, &self.events[group], &self.ignored, Some(vacancy));
         }
     }
 }
 
-/// Removes from the sweep tree the edges that end at the vertices `group` (on the current ray)
-/// and lie clockwise of it, or (`entering`) inserts those that start there and lie
-/// counter-clockwise. Edges in `ignored`, and the extra point, are passed over.
+/// Removes from the status the edges that end at the vertices `group` (on the current ray)
+/// and lie clockwise of it (`entering` is `None`), or inserts those that start there and lie
+/// counter-clockwise (`entering` holds what the removal returned). Edges in `ignored`, and the
+/// extra point, are passed over.
+///
+/// The removal returns where its edge was when the group is one vertex with exactly one edge
+/// ending there: the usual case of a ray passing a vertex of a boundary chain, whose one
+/// entering edge then takes that place without a search.
 fn update_status(
-    status: &mut BTreeSet<Active>,
+    status: &mut Status,
     graph: &VisibilityGraph,
     centre: Point,
     group: &[u32],
     ignored: &[u32],
-    entering: bool,
-) {
+    entering: Option<Option<usize>>,
+) -> Option<usize> {
     let space = &graph.space;
     let positions = space.positions();
+    let single = group.len() == 1;
+    let (mut count, mut vacancy, mut entered) = (0, None, None);
     for &id in group.iter().filter(|&&id| (id as usize) < positions.len()) {
         let w = positions[id as usize];
         for &e in graph.incident(id as usize).iter().filter(|e| !ignored.contains(e)) {
             let (a, b) = space.edge_points(e as usize);
             let other = if a == w { b } else { a };
             let side = orient(centre, w, other);
-            if entering && side > 0.0 {
-                status.insert(Active { centre, a, b, id: e });
-            } else if !entering && side < 0.0 {
-                status.remove(&Active { centre, a, b, id: e });
+            match entering {
+                Some(place) if side > 0.0 => {
+                    let edge = Active::new(centre, a, b, e);
+                    count += 1;
+                    match (place, count) {
+                        // Hold the first edge back until it is known to be the only one.
+                        (Some(_), 1) if single => entered = Some(edge),
+                        _ => {
+                            status.insert(edge);
+                            if let Some(held) = entered.take() {
+                                status.insert(held);
+                            }
+                        }
+                    }
+                }
+                None if side < 0.0 => {
+                    count += 1;
+                    vacancy = status.remove(e);
+                }
+                _ => {}
             }
         }
     }
+    if let (Some(edge), Some(Some(at))) = (entered, entering) {
+        status.replace_at(at, edge);
+    }
+    if single && count == 1 { vacancy } else { None }
 }
 
 /// Whether `q` lies on the ray from `centre` through `p`. Exact.

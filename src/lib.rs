@@ -7,7 +7,7 @@
 //! | module | crate | what it holds |
 //! |---|---|---|
 //! | [`core`] | `trailmark-core` | geometry, costs, graph traits, grids, MovingAI files, JSON, SVG |
-//! | [`graph`] | `trailmark-graph` | builders from a world to a graph (grid graphs, visibility graphs) |
+//! | [`graph`] | `trailmark-graph` | builders from a world to a graph: grid graphs, visibility graphs, trapezoidal cells, PRM and Dubins roadmaps, roadmaps of changing worlds |
 //! | [`search`] | `trailmark-search` | BFS, DFS, Dijkstra, A*, weighted A*, ARA*; LPA*, D* Lite, AD*; indexed priority queue |
 //! | [`sample`] | `trailmark-sample` | sampling planners (planned) |
 //!

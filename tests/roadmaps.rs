@@ -9,7 +9,10 @@ use trailmark::core::freespace::Location;
 use trailmark::core::geometry::{Point, Pose, Vector};
 use trailmark::core::world::{Polygon, PolygonWorld};
 use trailmark::graph::Roadmap;
+use trailmark::graph::Trapezoids;
+use trailmark::graph::dynamic::{DynamicRoadmap, Rebuild};
 use trailmark::graph::prm::{Connection, DubinsSteering, Prm, PrmOptions, Sampler};
+use trailmark::graph::visibility::Edges;
 use trailmark::graph::visibility::VisibilityGraph;
 use trailmark::prelude::*;
 
@@ -66,6 +69,46 @@ fn world_strategy(
             let sampler = sampler.map_or(Sampler::Halton, |seed| Sampler::Uniform { seed });
             (usable(start) && usable(goal)).then_some((world, start, goal, sampler))
         })
+}
+
+/// Adds the square `blocks` one by one, then removes one obstacle, repairing D* Lite after
+/// each change; its cost must equal `fresh`'s on the world of the moment.
+fn repair_matches<R: Rebuild>(
+    mut roadmap: DynamicRoadmap<R>,
+    start: Point,
+    goal: Point,
+    blocks: &[(f64, f64, f64)],
+    remove: prop::sample::Index,
+    fresh: impl Fn(&PolygonWorld) -> Option<f64>,
+) -> Result<(), TestCaseError> {
+    let (s, g) = (roadmap.pin(start), roadmap.pin(goal));
+    let mut planner = DStarLite::new(&roadmap, s, g, roadmap.heuristic_between()).unwrap();
+    planner.compute_shortest_path(&roadmap).unwrap();
+    let mut check = |roadmap: &DynamicRoadmap<R>, changes: &[EdgeChange<u32>]| {
+        planner.update_edges(roadmap, changes).unwrap();
+        planner.compute_shortest_path(roadmap).unwrap();
+        match (planner.cost(), fresh(roadmap.world())) {
+            (Some(a), Some(b)) => {
+                prop_assert!((a - b).abs() <= 1e-9 * b.max(1.0), "D* Lite {a} vs fresh {b}")
+            }
+            (a, b) => prop_assert_eq!(a, b),
+        }
+        Ok(())
+    };
+    check(&roadmap, &[])?;
+    for &(x, y, half) in blocks {
+        let square = vec![
+            Point::new(x - half, y - half),
+            Point::new(x + half, y - half),
+            Point::new(x + half, y + half),
+            Point::new(x - half, y + half),
+        ];
+        let changes = roadmap.add_obstacle(square).unwrap();
+        check(&roadmap, &changes)?;
+    }
+    let index = remove.index(roadmap.world().obstacles().len());
+    let changes = roadmap.remove_obstacle(index).unwrap();
+    check(&roadmap, &changes)
 }
 
 proptest! {
@@ -163,6 +206,29 @@ proptest! {
             (Some(a), Some(b)) => prop_assert!((a - b).abs() <= 1e-9 * b.max(1.0), "D* Lite {a} vs Dijkstra {b}"),
             (a, b) => prop_assert_eq!(a, b),
         }
+    }
+
+    /// A visibility graph and a trapezoidal decomposition of a changing world: after each
+    /// obstacle added or removed, D* Lite told only the reported changes finds the cost that
+    /// Dijkstra finds on a query of a roadmap built from scratch for the new world.
+    #[test]
+    fn dynamic_roadmaps_repair_to_fresh_costs(
+        (world, start, goal, _sampler) in world_strategy(prop_oneof![Just(0.0), 0.1f64..1.0]),
+        blocks in prop::collection::vec((2.0f64..38.0, 2.0f64..38.0, 1.0f64..6.0), 1..4),
+        remove in any::<prop::sample::Index>(),
+    ) {
+        let visibility = |w: &PolygonWorld| -> Option<f64> {
+            let graph = VisibilityGraph::with_edges(w.free_space(), Edges::Tangent);
+            let q = graph.query(start, goal).ok()?;
+            dijkstra(&q, q.start(), q.goal()).unwrap().cost()
+        };
+        let cells = |w: &PolygonWorld| -> Option<f64> {
+            let graph = Trapezoids::new(&w.free_space());
+            let q = graph.query(start, goal).ok()?;
+            dijkstra(&q, q.start(), q.goal()).unwrap().cost()
+        };
+        repair_matches(DynamicRoadmap::<VisibilityGraph>::new(world.clone(), Edges::Tangent), start, goal, &blocks, remove, visibility)?;
+        repair_matches(DynamicRoadmap::<Trapezoids>::new(world, ()), start, goal, &blocks, remove, cells)?;
     }
 
     /// Dubins roadmap edges: each is a shortest Dubins path from its tail's pose to its head's,

@@ -1,9 +1,13 @@
 //! Graph builders: turn a world into a graph that every `trailmark-search` algorithm can search.
 //!
-//! This release builds grid graphs ([`grid::GridGraph`]): 4- or 8-connected, with per-cell costs
-//! and a choice of corner-cutting rule; and visibility graphs ([`visibility::VisibilityGraph`])
-//! of a polygonal free space, by Lee's rotational sweep with exact predicates. The graphs implement the traits of
-//! [`trailmark_core::graph`], and nothing here depends on a search algorithm.
+//! Grid graphs ([`grid::GridGraph`]): 4- or 8-connected, with per-cell costs and a choice of
+//! corner-cutting rule. Roadmaps of polygon worlds: visibility graphs
+//! ([`visibility::VisibilityGraph`]) by Lee's rotational sweep with exact predicates, trapezoidal
+//! cell decompositions ([`trapezoid::Trapezoids`]), probabilistic roadmaps of segments or Dubins
+//! curves ([`prm::Prm`]), all queried through [`roadmap::RoadmapQuery`]; and roadmaps of worlds
+//! whose obstacles change, with stable node ids and the changed edges for D* Lite
+//! ([`dynamic::DynamicRoadmap`]). The graphs implement the traits of [`trailmark_core::graph`],
+//! and nothing here depends on a search algorithm.
 //!
 //! ```
 //! use trailmark_core::{Cell, Connectivity, Grid, IndexedGraph, Successors};
@@ -24,12 +28,14 @@
 
 #![deny(missing_docs)]
 
+pub mod dynamic;
 pub mod grid;
 pub mod prm;
 pub mod roadmap;
 pub mod trapezoid;
 pub mod visibility;
 
+pub use dynamic::{DynamicError, DynamicRoadmap};
 pub use grid::{CornerCutting, GridGraph, Neighbours};
 pub use prm::{
     Connection, DubinsPrm, DubinsSteering, Prm, PrmError, PrmOptions, PrmQuery, Sampler, Steering, Straight,

@@ -134,6 +134,12 @@ impl<'g, R: Roadmap> RoadmapQuery<'g, R> {
         move |a, b| self.roadmap.lower_bound(self.position(a), self.position(b))
     }
 
+    /// The edges out of the start and into the goal (by roadmap node, infinite where there is
+    /// none), and the direct edge.
+    pub(crate) fn links(&self) -> (&[Cost], &[Cost], Option<Cost>) {
+        (&self.from_start, &self.to_goal, self.direct)
+    }
+
     /// Whether an edge joins the start to the goal directly.
     pub fn sees_goal(&self) -> bool {
         self.direct.is_some()

@@ -241,6 +241,12 @@ impl VisibilityGraph {
             && (self.edges == Edges::All || (tangent(a, b.at) && tangent(b, a.at)))
     }
 
+    /// Where node `node` is and the boundary corner it stands for.
+    pub(crate) fn corner(&self, node: u32) -> (Point, Corner) {
+        let n = &self.nodes[node as usize];
+        (n.at, n.corner)
+    }
+
     fn nodes_at(&self, position: usize) -> &[u32] {
         &self.nodes_at[self.node_start[position] as usize..self.node_start[position + 1] as usize]
     }

@@ -9,7 +9,7 @@
 //! | [`core`] | `trailmark-core` | geometry, costs, graph traits, grids, MovingAI files, JSON, SVG |
 //! | [`graph`] | `trailmark-graph` | builders from a world to a graph: grid graphs, visibility graphs, trapezoidal cells, PRM and Dubins roadmaps, roadmaps of changing worlds |
 //! | [`search`] | `trailmark-search` | BFS, DFS, Dijkstra, A*, weighted A*, ARA*; LPA*, D* Lite, AD*; indexed priority queue |
-//! | [`sample`] | `trailmark-sample` | sampling planners (planned) |
+//! | [`sample`] | `trailmark-sample` | sampling planners (in progress: state spaces, nearest neighbours) |
 //!
 //! ```
 //! use trailmark::prelude::*;

@@ -1,18 +1,41 @@
 //! Sampling-based planners for continuous spaces: RRT, RRT-Connect and RRT* over pluggable state
 //! spaces (R², Rⁿ, SE(2), Dubins), with exact collision checks and seeded, reproducible runs.
 //!
-//! **Status: planned.** This crate reserves its place in the workspace; its planners arrive in a
-//! later release. Until then it exports only the names of the planners it will provide, so that
-//! code and documentation can refer to them.
+//! **Status: in progress.** This release provides the foundations the planners stand on:
+//! [`space`], the state spaces (sampling, distances, interpolation, steering), and [`nearest`],
+//! exact nearest-neighbour structures for every space (a k-d tree over positions, pruned by the
+//! straight-line lower bound, and brute force). The planners follow.
 //!
 //! ```
-//! use trailmark_sample::PlannerKind;
+//! use rand::SeedableRng;
+//! use rand_chacha::ChaCha8Rng;
+//! use trailmark_core::world::Bounds;
+//! use trailmark_sample::nearest::{Direction, KdNearest, NearestNeighbors};
+//! use trailmark_sample::space::{Dubins, StateSpace};
 //!
-//! assert_eq!(PlannerKind::ALL.len(), 3);
-//! assert_eq!(PlannerKind::RrtConnect.name(), "rrt_connect");
+//! // A car with a turning radius of 1 in a 20 x 20 square: the nearest pose *from which* the
+//! // car reaches a sample soonest (Dubins distances are not symmetric).
+//! let space = Dubins::new(Bounds::new(0.0, 0.0, 20.0, 20.0)?, 1.0)?;
+//! let mut rng = ChaCha8Rng::seed_from_u64(7);
+//! let mut tree = KdNearest::<Dubins, 2>::new(&space)?;
+//! for _ in 0..500 {
+//!     tree.insert(&space, space.sample(&mut rng));
+//! }
+//! let target = space.sample(&mut rng);
+//! let (id, distance) = tree.nearest(&space, &target, Direction::ToQuery).expect("a full tree");
+//! assert_eq!(distance, space.distance(tree.state(id), &target));
+//! let step = space.steer(tree.state(id), &target, 2.0); // at most 2 along the curve
+//! assert!(space.distance(tree.state(id), &step) <= 2.0 + 1e-9);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 #![deny(missing_docs)]
+
+pub mod nearest;
+pub mod space;
+
+pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
+pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};
 
 /// The sampling planners this crate will provide.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

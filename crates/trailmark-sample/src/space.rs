@@ -1,0 +1,404 @@
+//! State spaces: where a sampling planner draws, measures and moves.
+//!
+//! A [`StateSpace`] samples states uniformly, measures the distance from one state to another
+//! (possibly asymmetric: a car cannot reverse), interpolates between them, and steers from one
+//! toward another by at most a step. Four are provided: [`R2`] (a point in the plane), [`Rn`]
+//! (a box of any fixed dimension, such as an arm's joint angles), [`Se2`] (a pose: position and
+//! heading, with a weight on the heading) and [`Dubins`] (a pose of a car that turns no tighter
+//! than a radius: distances and motions along Dubins curves). Users implement the trait for
+//! their own spaces.
+//!
+//! ```
+//! use rand::SeedableRng;
+//! use rand_chacha::ChaCha8Rng;
+//! use trailmark_core::geometry::Point;
+//! use trailmark_core::world::Bounds;
+//! use trailmark_sample::space::{R2, StateSpace};
+//!
+//! let space = R2::new(Bounds::new(0.0, 0.0, 10.0, 10.0)?);
+//! let (a, b) = (Point::new(1.0, 1.0), Point::new(7.0, 9.0));
+//! assert_eq!(space.distance(&a, &b), 10.0);
+//! assert_eq!(space.steer(&a, &b, 5.0), Point::new(4.0, 5.0)); // halfway, 5 units along
+//! let mut rng = ChaCha8Rng::seed_from_u64(1);
+//! assert!(space.bounds().contains(space.sample(&mut rng)));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use std::f64::consts::PI;
+use std::fmt::Debug;
+
+use nalgebra::SVector;
+use rand::RngExt;
+use rand_chacha::ChaCha8Rng;
+use thiserror::Error;
+use trailmark_core::dubins::DubinsPath;
+use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::world::Bounds;
+
+/// Why a space could not be made.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SpaceError {
+    /// A box side with `low >= high` or a bound that is not finite.
+    #[error("axis {axis}: the bounds [{low}, {high}] must be finite with low < high")]
+    InvalidBounds {
+        /// The axis.
+        axis: usize,
+        /// Its lower bound.
+        low: f64,
+        /// Its upper bound.
+        high: f64,
+    },
+    /// A nearest-neighbour structure over positions of a dimension the space does not have.
+    #[error("the space's states have no position with {dimension} coordinates")]
+    NoPosition {
+        /// The dimension asked for.
+        dimension: usize,
+    },
+    /// A weight or turning radius that is not positive and finite.
+    #[error("the {what} must be positive and finite, got {value}")]
+    NotPositive {
+        /// What it is.
+        what: &'static str,
+        /// The value given.
+        value: f64,
+    },
+}
+
+/// A space of states a sampling planner moves in.
+pub trait StateSpace {
+    /// A state.
+    type State: Clone + Debug + PartialEq;
+
+    /// Whether `distance(a, b) == distance(b, a)` for all states.
+    const SYMMETRIC: bool;
+
+    /// The number of coordinates of a state.
+    fn dimension(&self) -> usize;
+
+    /// A state drawn uniformly from the space.
+    fn sample(&self, rng: &mut ChaCha8Rng) -> Self::State;
+
+    /// The distance (the cost of the motion) from `a` to `b`.
+    fn distance(&self, a: &Self::State, b: &Self::State) -> f64;
+
+    /// The state a fraction `t` in `[0, 1]` of the way along the motion from `a` to `b`.
+    fn interpolate(&self, a: &Self::State, b: &Self::State, t: f64) -> Self::State;
+
+    /// `to` when it is within `step` of `from`, else the state `step` along the motion toward it.
+    fn steer(&self, from: &Self::State, to: &Self::State, step: f64) -> Self::State {
+        let d = self.distance(from, to);
+        if d <= step { to.clone() } else { self.interpolate(from, to, step / d) }
+    }
+
+    /// The largest distance between two states (or a bound on it): a planner's default step is
+    /// a fraction of it.
+    fn extent(&self) -> f64;
+
+    /// The volume of the space (the area of a plane region, times 2π for a heading): RRT*'s
+    /// radius grows with it.
+    fn measure(&self) -> f64;
+
+    /// The coordinates of a state, for results and pictures.
+    fn coordinates(&self, state: &Self::State) -> Vec<f64>;
+
+    /// A lower bound on `distance(a, b)` (and on `distance(b, a)`) from the positions only: the
+    /// straight-line distance between `position(a)` and `position(b)` in `D` dimensions. What
+    /// lets a k-d tree over positions answer exact nearest-neighbour queries.
+    fn position<const D: usize>(&self, state: &Self::State) -> Option<[f64; D]>;
+}
+
+/// The plane region of a [`Bounds`]: states are points, distances Euclidean.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct R2 {
+    bounds: Bounds,
+}
+
+impl R2 {
+    /// The points of `bounds`.
+    pub fn new(bounds: Bounds) -> Self {
+        R2 { bounds }
+    }
+
+    /// The bounds.
+    pub fn bounds(&self) -> Bounds {
+        self.bounds
+    }
+}
+
+fn sample_in(bounds: &Bounds, rng: &mut ChaCha8Rng) -> Point {
+    let (lo, hi) = (bounds.min(), bounds.max());
+    Point::new(rng.random_range(lo.x..hi.x), rng.random_range(lo.y..hi.y))
+}
+
+fn diagonal(bounds: &Bounds) -> f64 {
+    (bounds.max() - bounds.min()).norm()
+}
+
+fn area(bounds: &Bounds) -> f64 {
+    let d = bounds.max() - bounds.min();
+    d.x * d.y
+}
+
+fn planar<const D: usize>(p: Point) -> Option<[f64; D]> {
+    (D == 2).then(|| std::array::from_fn(|i| p[i]))
+}
+
+impl StateSpace for R2 {
+    type State = Point;
+    const SYMMETRIC: bool = true;
+
+    fn dimension(&self) -> usize {
+        2
+    }
+
+    fn sample(&self, rng: &mut ChaCha8Rng) -> Point {
+        sample_in(&self.bounds, rng)
+    }
+
+    fn distance(&self, a: &Point, b: &Point) -> f64 {
+        (b - a).norm()
+    }
+
+    fn interpolate(&self, a: &Point, b: &Point, t: f64) -> Point {
+        a + (b - a) * t
+    }
+
+    fn extent(&self) -> f64 {
+        diagonal(&self.bounds)
+    }
+
+    fn measure(&self) -> f64 {
+        area(&self.bounds)
+    }
+
+    fn coordinates(&self, p: &Point) -> Vec<f64> {
+        vec![p.x, p.y]
+    }
+
+    fn position<const D: usize>(&self, p: &Point) -> Option<[f64; D]> {
+        planar(*p)
+    }
+}
+
+/// A box in `N` dimensions (a planar arm's joint angles, say): distances Euclidean.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rn<const N: usize> {
+    low: SVector<f64, N>,
+    high: SVector<f64, N>,
+}
+
+impl<const N: usize> Rn<N> {
+    /// The box `low[i] < x[i] < high[i]`.
+    pub fn new(low: [f64; N], high: [f64; N]) -> Result<Self, SpaceError> {
+        for axis in 0..N {
+            let (l, h) = (low[axis], high[axis]);
+            if !(l.is_finite() && h.is_finite() && l < h) {
+                return Err(SpaceError::InvalidBounds { axis, low: l, high: h });
+            }
+        }
+        Ok(Rn { low: low.into(), high: high.into() })
+    }
+
+    /// The lower corner.
+    pub fn low(&self) -> SVector<f64, N> {
+        self.low
+    }
+
+    /// The upper corner.
+    pub fn high(&self) -> SVector<f64, N> {
+        self.high
+    }
+}
+
+impl<const N: usize> StateSpace for Rn<N> {
+    type State = SVector<f64, N>;
+    const SYMMETRIC: bool = true;
+
+    fn dimension(&self) -> usize {
+        N
+    }
+
+    fn sample(&self, rng: &mut ChaCha8Rng) -> SVector<f64, N> {
+        SVector::from_fn(|i, _| rng.random_range(self.low[i]..self.high[i]))
+    }
+
+    fn distance(&self, a: &SVector<f64, N>, b: &SVector<f64, N>) -> f64 {
+        (b - a).norm()
+    }
+
+    fn interpolate(&self, a: &SVector<f64, N>, b: &SVector<f64, N>, t: f64) -> SVector<f64, N> {
+        a + (b - a) * t
+    }
+
+    fn extent(&self) -> f64 {
+        (self.high - self.low).norm()
+    }
+
+    fn measure(&self) -> f64 {
+        (self.high - self.low).product()
+    }
+
+    fn coordinates(&self, s: &SVector<f64, N>) -> Vec<f64> {
+        s.iter().copied().collect()
+    }
+
+    fn position<const D: usize>(&self, s: &SVector<f64, N>) -> Option<[f64; D]> {
+        (D == N).then(|| std::array::from_fn(|i| s[i]))
+    }
+}
+
+/// The signed difference `b - a` of two headings, in `[-π, π]`.
+fn angle_between(a: &Pose, b: &Pose) -> f64 {
+    (a.rotation.inverse() * b.rotation).angle()
+}
+
+/// A uniform random heading.
+fn sample_pose(bounds: &Bounds, rng: &mut ChaCha8Rng) -> Pose {
+    let p = sample_in(bounds, rng);
+    Pose::new(p.coords, rng.random_range(-PI..PI))
+}
+
+/// Poses in a plane region (position and heading), as OMPL's SE(2): the distance is the
+/// Euclidean distance of the positions plus `heading_weight` times the smaller angle between
+/// the headings; motions move the position in a straight line and turn the heading the short
+/// way round.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Se2 {
+    bounds: Bounds,
+    heading_weight: f64,
+}
+
+impl Se2 {
+    /// The poses over `bounds`, the heading weighted by 0.5 (OMPL's default).
+    pub fn new(bounds: Bounds) -> Self {
+        Se2 { bounds, heading_weight: 0.5 }
+    }
+
+    /// The poses over `bounds`, the heading weighted by `weight` (distance per radian).
+    pub fn with_heading_weight(bounds: Bounds, weight: f64) -> Result<Self, SpaceError> {
+        if !(weight.is_finite() && weight > 0.0) {
+            return Err(SpaceError::NotPositive { what: "heading weight", value: weight });
+        }
+        Ok(Se2 { bounds, heading_weight: weight })
+    }
+
+    /// The bounds of the positions.
+    pub fn bounds(&self) -> Bounds {
+        self.bounds
+    }
+}
+
+impl StateSpace for Se2 {
+    type State = Pose;
+    const SYMMETRIC: bool = true;
+
+    fn dimension(&self) -> usize {
+        3
+    }
+
+    fn sample(&self, rng: &mut ChaCha8Rng) -> Pose {
+        sample_pose(&self.bounds, rng)
+    }
+
+    fn distance(&self, a: &Pose, b: &Pose) -> f64 {
+        (b.translation.vector - a.translation.vector).norm() + self.heading_weight * angle_between(a, b).abs()
+    }
+
+    fn interpolate(&self, a: &Pose, b: &Pose, t: f64) -> Pose {
+        let p = a.translation.vector + (b.translation.vector - a.translation.vector) * t;
+        let heading = a.rotation.angle() + angle_between(a, b) * t;
+        Pose::new(p, heading)
+    }
+
+    fn extent(&self) -> f64 {
+        diagonal(&self.bounds) + self.heading_weight * PI
+    }
+
+    fn measure(&self) -> f64 {
+        area(&self.bounds) * 2.0 * PI
+    }
+
+    fn coordinates(&self, s: &Pose) -> Vec<f64> {
+        vec![s.translation.x, s.translation.y, s.rotation.angle()]
+    }
+
+    fn position<const D: usize>(&self, s: &Pose) -> Option<[f64; D]> {
+        planar(Point::from(s.translation.vector))
+    }
+}
+
+/// Poses of a car that only drives forward and turns no tighter than `turning_radius`: the
+/// distance from `a` to `b` is the length of the shortest Dubins path (not symmetric), and
+/// motions follow it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dubins {
+    bounds: Bounds,
+    turning_radius: f64,
+}
+
+impl Dubins {
+    /// The poses over `bounds` for a car with this turning radius.
+    pub fn new(bounds: Bounds, turning_radius: f64) -> Result<Self, SpaceError> {
+        if !(turning_radius.is_finite() && turning_radius > 0.0) {
+            return Err(SpaceError::NotPositive { what: "turning radius", value: turning_radius });
+        }
+        Ok(Dubins { bounds, turning_radius })
+    }
+
+    /// The turning radius.
+    pub fn turning_radius(&self) -> f64 {
+        self.turning_radius
+    }
+
+    /// The bounds of the positions.
+    pub fn bounds(&self) -> Bounds {
+        self.bounds
+    }
+
+    /// The shortest Dubins path from `a` to `b`.
+    pub fn path(&self, a: &Pose, b: &Pose) -> DubinsPath {
+        DubinsPath::shortest(a, b, self.turning_radius).expect("a valid radius and finite poses")
+    }
+}
+
+impl StateSpace for Dubins {
+    type State = Pose;
+    const SYMMETRIC: bool = false;
+
+    fn dimension(&self) -> usize {
+        3
+    }
+
+    fn sample(&self, rng: &mut ChaCha8Rng) -> Pose {
+        sample_pose(&self.bounds, rng)
+    }
+
+    fn distance(&self, a: &Pose, b: &Pose) -> f64 {
+        DubinsPath::shortest_length(a, b, self.turning_radius).unwrap_or(f64::INFINITY)
+    }
+
+    fn interpolate(&self, a: &Pose, b: &Pose, t: f64) -> Pose {
+        let path = self.path(a, b);
+        if t >= 1.0 {
+            return *b;
+        }
+        path.pose_at((path.length() * t.max(0.0)).min(path.length())).unwrap_or(*b)
+    }
+
+    fn extent(&self) -> f64 {
+        // Any two poses are joined by a turn, a straight line and a turn of at most a circle each.
+        diagonal(&self.bounds) + 4.0 * PI * self.turning_radius
+    }
+
+    fn measure(&self) -> f64 {
+        area(&self.bounds) * 2.0 * PI
+    }
+
+    fn coordinates(&self, s: &Pose) -> Vec<f64> {
+        vec![s.translation.x, s.translation.y, s.rotation.angle()]
+    }
+
+    fn position<const D: usize>(&self, s: &Pose) -> Option<[f64; D]> {
+        planar(Point::from(s.translation.vector))
+    }
+}

@@ -308,35 +308,46 @@ impl Normalised {
     fn params(&self, word: DubinsWord) -> Option<[f64; 3]> {
         let Normalised { d, sa, ca, sb, cb, turns, .. } = *self;
         match word {
-            DubinsWord::Lsl => {
-                let (p2, x, y) = self.same_side(word);
-                if p2 < 0.0 {
-                    return None;
+            DubinsWord::Lsl | DubinsWord::Rsr => {
+                // (x, y) runs along the straight piece and is exactly as long: its length is the
+                // better-conditioned measure of p near 0 (the square's formula cancels terms of
+                // size d² + 2), and shows that these two words always exist.
+                let (_, x, y) = self.same_side(word);
+                let p = (x * x + y * y).sqrt();
+                // t = θ - α (LSL) or α - θ (RSR); the turns add up to `whole` modulo 2π.
+                let (mut t, whole) = if word == DubinsWord::Lsl {
+                    (self.turn_after_alpha(x, y), turns)
+                } else {
+                    (self.turn_before_alpha(x, y), mod_tau(-turns))
+                };
+                // The straight piece's direction is only as good as its coordinates over its
+                // length: when that uncertainty could put t on the wrong side of `whole` (or of
+                // 0), which would add a full turn, keep t in [0, whole]. The end moves by at most
+                // p times the uncertainty.
+                let noise = 1e-14 * (2.0 + d) / p;
+                if t > whole && (t - whole <= noise || TAU - t <= noise) {
+                    t = if t - whole <= TAU - t { whole } else { 0.0 };
                 }
-                let t = self.turn_after_alpha(x, y);
-                Some([t, p2.sqrt(), mod_tau(turns - t)])
+                Some([t, p, mod_tau(whole - t)])
             }
-            DubinsWord::Rsr => {
-                let (p2, x, y) = self.same_side(word);
-                if p2 < 0.0 {
-                    return None;
-                }
-                let t = self.turn_before_alpha(x, y);
-                Some([t, p2.sqrt(), mod_tau(-turns - t)])
-            }
-            DubinsWord::Lsr => {
+            DubinsWord::Lsr | DubinsWord::Rsl => {
                 let p = self.opposite_side(word)?;
-                // θ = atan2(-ca - cb, d + sa + sb) - atan2(-2, p), as the angle of one product.
-                let (x, y) = (d + sa + sb, -ca - cb);
-                let t = self.turn_after_alpha(x * p - 2.0 * y, 2.0 * x + y * p);
-                Some([t, p, mod_tau(t - turns)])
-            }
-            DubinsWord::Rsl => {
-                let p = self.opposite_side(word)?;
-                // θ = atan2(ca + cb, d - sa - sb) - atan2(2, p), as the angle of one product.
-                let (x, y) = (d - sa - sb, ca + cb);
-                let t = self.turn_before_alpha(x * p + 2.0 * y, y * p - 2.0 * x);
-                Some([t, p, mod_tau(t + turns)])
+                // θ = atan2(-ca - cb, d + sa + sb) - atan2(-2, p) for LSR, atan2(ca + cb, d - sa
+                // - sb) - atan2(2, p) for RSL, each as the angle of one product. t = θ - α (LSR)
+                // or α - θ (RSL); q = t - D (LSR) or t + D (RSL).
+                let (t, shift) = if word == DubinsWord::Lsr {
+                    let (x, y) = (d + sa + sb, -ca - cb);
+                    (self.turn_after_alpha(x * p - 2.0 * y, 2.0 * x + y * p), -turns)
+                } else {
+                    let (x, y) = (d - sa - sb, ca + cb);
+                    (self.turn_before_alpha(x * p + 2.0 * y, y * p - 2.0 * x), turns)
+                };
+                // θ moves with p, which rounding blurs most when it is near 0 (the circles
+                // touch): a turn that uncertainty leaves just below 2π is a turn of 0.
+                let noise = self.p_noise(p) + 1e-14 * (1.0 + d);
+                let t = if TAU - t <= noise { 0.0 } else { t };
+                let q = mod_tau(t + shift);
+                if TAU - q <= noise { Some([mod_tau(-shift), p, 0.0]) } else { Some([t, p, q]) }
             }
             DubinsWord::Rlr => {
                 let p = self.middle_turn(word)?;
@@ -351,6 +362,22 @@ impl Normalised {
         }
     }
 
+    /// A bound on the rounding error of the square of a straight piece's normalised length
+    /// (some tens of units in the last place of `(2 + d)²`: the terms cancel down from there). A square that far below 0 is taken as 0:
+    /// poses on one arc, or on two touching circles, come out on either side of it, and
+    /// rejecting them would send the query to a word a full turn longer.
+    #[inline]
+    fn p2_noise(&self) -> f64 {
+        1e-14 * (2.0 + self.d) * (2.0 + self.d)
+    }
+
+    /// The rounding error of a straight piece's normalised length `p`, from its square's.
+    #[inline]
+    fn p_noise(&self, p: f64) -> f64 {
+        let e = self.p2_noise();
+        if p * p <= e { e.sqrt() } else { e / (2.0 * p) }
+    }
+
     /// For `LSR` or `RSL`: the straight piece's normalised length, `None` when the circles
     /// overlap so the word cannot join the poses.
     #[inline]
@@ -358,7 +385,7 @@ impl Normalised {
         let Normalised { d, sa, sb, cab, .. } = *self;
         let sign = if word == DubinsWord::Lsr { 1.0 } else { -1.0 };
         let p2 = -2.0 + d * d + 2.0 * cab + sign * 2.0 * d * (sa + sb);
-        (p2 >= 0.0).then(|| p2.sqrt())
+        (p2 >= -self.p2_noise()).then(|| p2.max(0.0).sqrt())
     }
 
     /// For `RLR` or `LRL`: the middle turn's angle, `None` when the poses are too far apart.
@@ -460,9 +487,12 @@ impl Normalised {
             // The direction of α turned by -θ points along t = α - θ.
             _ => (ca * x + sa * y, sa * x - ca * y, mod_tau(-turns), -sab),
         };
-        if p2 < 0.0 {
-            return Some(None);
+        // A straight piece so short (or a square rounded below 0) that its direction is uncertain beyond the margin below:
+        // let the full evaluation decide.
+        if p2 <= 1e-10 * (1.0 + self.d) * (1.0 + self.d) {
+            return None;
         }
+        let p2 = p2.max(0.0);
         // t and D as the angles of vectors in [0, 2π): u for t, w for D.
         let (u, w) = ((x, y), (cab, sin_turns));
         const CLOSE: f64 = 1e-9;
@@ -729,6 +759,46 @@ mod tests {
         assert_eq!(path.length(), 0.0);
         assert!(close(&path.end(), &p, 1e-12));
         assert_eq!(path.sample(0.5).unwrap().len(), 1);
+    }
+
+    /// A pose a short arc ahead (or one arc then its mirror) is reached along those arcs, not a
+    /// full turn later: the straight piece between them has length ~0 and no reliable
+    /// direction, and its square may round below 0.
+    #[test]
+    fn poses_on_one_or_two_touching_arcs_are_found_despite_rounding() {
+        let mut worst: f64 = 0.0;
+        for i in 0..3000 {
+            let (x, y, h) = (f64::from(i % 37) * 0.37 - 5.0, f64::from(i % 23) * 0.51, f64::from(i) * 0.0137);
+            let a = pose(x, y, h);
+            let r = 0.3 + f64::from(i % 5) * 0.4;
+            for (word, arcs) in [
+                (DubinsWord::Lsl, [0.01, 0.0]),
+                (DubinsWord::Rsr, [0.01, 0.0]),
+                (DubinsWord::Lsl, [0.3, 0.0]),
+                (DubinsWord::Lsl, [2.5, 0.0]),
+                (DubinsWord::Lsr, [0.2, 0.1]),
+                (DubinsWord::Rsl, [0.05, 0.4]),
+            ] {
+                let b = DubinsPath {
+                    start: Start::of(&a),
+                    turning_radius: r,
+                    word,
+                    params: [arcs[0], 0.0, arcs[1]],
+                }
+                .end();
+                let length = DubinsPath::shortest_length(&a, &b, r).unwrap();
+                let shortest = DubinsPath::shortest(&a, &b, r).unwrap();
+                // Such poses are ill-conditioned: a straight piece of length ~0 comes out of a
+                // square root of rounding noise, about √ε of a radius.
+                assert!(
+                    close(&shortest.end(), &b, 1e-7 * r),
+                    "{i} {word}: ends at {:?}, not {b:?}",
+                    shortest.end()
+                );
+                worst = worst.max(length - (arcs[0] + arcs[1]) * r);
+            }
+        }
+        assert!(worst < 1e-6, "{worst}");
     }
 
     #[test]

@@ -7,7 +7,7 @@ use proptest::prelude::*;
 use trailmark::core::dubins::DubinsPath;
 use trailmark::core::freespace::Location;
 use trailmark::core::geometry::{Point, Pose, Vector};
-use trailmark::core::world::{Polygon, PolygonWorld};
+use trailmark::core::world::PolygonWorld;
 use trailmark::graph::Roadmap;
 use trailmark::graph::Trapezoids;
 use trailmark::graph::dynamic::{DynamicRoadmap, Rebuild};
@@ -18,24 +18,6 @@ use trailmark::prelude::*;
 
 mod common;
 
-/// The distance from `p` to a polygon's closed region, by a crossing count and the edges: a
-/// plain reference, no BVH and no segment-to-segment distances.
-fn distance_to(polygon: &Polygon, p: Point) -> f64 {
-    let v = polygon.vertices();
-    let mut inside = false;
-    let mut best = f64::INFINITY;
-    for i in 0..v.len() {
-        let (a, b) = (v[i], v[(i + 1) % v.len()]);
-        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
-            inside = !inside;
-        }
-        let ab = b - a;
-        let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
-        best = best.min((p - (a + ab * t)).norm());
-    }
-    if inside { 0.0 } else { best }
-}
-
 /// Whether the robot's disc, sampled every `step` along `a -> b`, keeps clear of every
 /// obstacle (a rounding allowance of 1e-9) and its centre stays in the bounds.
 fn sampled_free(world: &PolygonWorld, a: Point, b: Point, step: f64) -> bool {
@@ -43,7 +25,7 @@ fn sampled_free(world: &PolygonWorld, a: Point, b: Point, step: f64) -> bool {
     (0..=n).all(|i| {
         let p = a + (b - a) * (i as f64 / n as f64);
         world.bounds().contains(p)
-            && world.obstacles().iter().all(|o| distance_to(o, p) >= world.robot_radius() - 1e-9)
+            && world.obstacles().iter().all(|o| o.distance_to(p) >= world.robot_radius() - 1e-9)
     })
 }
 

@@ -211,6 +211,21 @@ impl Polygon {
         winding_number(p, self.edges()).is_some_and(|w| w != 0)
     }
 
+    /// The distance from `p` to the closed region (0 inside or on the boundary), edge by edge:
+    /// a plain O(n) reference with no bounding-volume hierarchy, for checking faster tests.
+    pub fn distance_to(&self, p: Point) -> f64 {
+        if self.contains_strictly(p) {
+            return 0.0;
+        }
+        self.edges()
+            .map(|(a, b)| {
+                let ab = b - a;
+                let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+                (p - (a + ab * t)).norm()
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
     fn edges(&self) -> impl Iterator<Item = (Point, Point)> + '_ {
         let n = self.vertices.len();
         (0..n).map(move |i| (self.vertices[i], self.vertices[(i + 1) % n]))

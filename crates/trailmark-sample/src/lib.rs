@@ -32,10 +32,14 @@
 #![deny(missing_docs)]
 
 pub mod nearest;
+pub mod rrt;
 pub mod space;
+pub mod validity;
 
 pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
+pub use rrt::{Plan, PlanError, PlanStats, Query, RrtOptions, Termination, rrt, rrt_connect};
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};
+pub use validity::{Sampled, Validity};
 
 /// The sampling planners this crate will provide.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -1,0 +1,412 @@
+//! RRT (LaValle 1998) and RRT-Connect (Kuffner and LaValle 2000) over any [`StateSpace`].
+//!
+//! Both grow trees of valid motions by steering toward random samples, at most `range` at a
+//! time. **RRT** grows one tree from the start and, with probability `goal_bias`, steers toward
+//! the goal itself. **RRT-Connect** grows a tree from each end; after each extension of one tree
+//! the other tries to connect to the new state, and the trees swap roles every iteration. The
+//! goal tree is grown backward: its motions run from the new state *into* the tree and are
+//! checked that way, so asymmetric spaces such as Dubins work.
+//!
+//! Runs are reproducible: the same seed gives the same trees, path and statistics. A run stops
+//! at the first solution or at its [`Termination`]. Without a solution, RRT returns the path to
+//! the state nearest the goal, marked approximate.
+//!
+//! ```
+//! use trailmark_core::geometry::Point;
+//! use trailmark_core::world::{Bounds, PolygonWorld};
+//! use trailmark_sample::nearest::KdNearest;
+//! use trailmark_sample::rrt::{Query, RrtOptions, Termination, rrt_connect};
+//! use trailmark_sample::space::R2;
+//!
+//! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
+//! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
+//! let checker = PolygonWorld::new(bounds, vec![wall], 0.25)?.checker();
+//! let space = R2::new(bounds);
+//! let nearest = KdNearest::<R2, 2>::new(&space)?;
+//! let (start, goal) = (Point::new(1.0, 1.0), Point::new(9.0, 1.0));
+//! let query = Query::new(&space, &checker, start, goal);
+//! let plan = rrt_connect(&query, nearest, &RrtOptions::default(), &Termination::iterations(10_000), 7)?;
+//! let path = plan.path.expect("a way over the wall");
+//! assert_eq!((path[0], *path.last().unwrap()), (start, goal));
+//! assert!(path.windows(2).all(|m| checker.segment_is_free(m[0], m[1])));
+//! assert!(plan.cost.unwrap() >= 2.0 * (9.0f64 + 7.25 * 7.25).sqrt() + 2.0); // over the grown wall
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use std::time::{Duration, Instant};
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use thiserror::Error;
+
+use crate::nearest::{Direction, NearestNeighbors};
+use crate::space::StateSpace;
+use crate::validity::Validity;
+
+/// What to plan: a space, what is valid in it, a start and a goal (OMPL's problem definition).
+#[derive(Debug, Clone)]
+pub struct Query<'a, S: StateSpace, V> {
+    /// The state space.
+    pub space: &'a S,
+    /// The validity of states and motions.
+    pub validity: &'a V,
+    /// Where the robot is.
+    pub start: S::State,
+    /// Where it must go.
+    pub goal: S::State,
+}
+
+impl<'a, S: StateSpace, V> Query<'a, S, V> {
+    /// The query from `start` to `goal`.
+    pub fn new(space: &'a S, validity: &'a V, start: S::State, goal: S::State) -> Self {
+        Query { space, validity, start, goal }
+    }
+}
+
+/// When a planner gives up (whichever comes first). At least one limit must be set.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Termination {
+    /// Iterations (samples drawn).
+    pub max_iterations: Option<u64>,
+    /// Wall-clock time.
+    pub time_limit: Option<Duration>,
+}
+
+impl Termination {
+    /// Stop after `n` iterations.
+    pub fn iterations(n: u64) -> Self {
+        Termination { max_iterations: Some(n), time_limit: None }
+    }
+
+    /// Stop after `limit`.
+    pub fn time(limit: Duration) -> Self {
+        Termination { max_iterations: None, time_limit: Some(limit) }
+    }
+
+    fn reached(&self, iterations: u64, clock: &Instant) -> bool {
+        self.max_iterations.is_some_and(|n| iterations >= n)
+            || self.time_limit.is_some_and(|t| clock.elapsed() >= t)
+    }
+}
+
+/// The settings of RRT and RRT-Connect.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RrtOptions {
+    /// The longest motion added at once (default: 0.2 x the space's extent, as OMPL).
+    pub range: Option<f64>,
+    /// RRT: the probability of steering toward the goal (default 0.05).
+    pub goal_bias: f64,
+    /// RRT: a state within this distance of the goal solves the problem, and the path ends
+    /// there (default 0: the goal itself must be reached).
+    pub goal_tolerance: f64,
+}
+
+impl Default for RrtOptions {
+    fn default() -> Self {
+        RrtOptions { range: None, goal_bias: 0.05, goal_tolerance: 0.0 }
+    }
+}
+
+/// Why a planner did not run.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PlanError {
+    /// The start state is not valid.
+    #[error("the start state is not valid (in collision or out of bounds)")]
+    InvalidStart,
+    /// The goal state is not valid.
+    #[error("the goal state is not valid (in collision or out of bounds)")]
+    InvalidGoal,
+    /// A setting out of its range.
+    #[error("{name} must be {expected}, got {value}")]
+    InvalidOption {
+        /// The setting.
+        name: &'static str,
+        /// Its range.
+        expected: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// A termination condition with no limit.
+    #[error("the termination condition sets no limit (iterations or time)")]
+    NoLimit,
+}
+
+/// What a run did.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PlanStats {
+    /// Iterations (samples drawn).
+    pub iterations: u64,
+    /// States in the start tree, and in the goal tree (RRT-Connect).
+    pub tree_sizes: [usize; 2],
+    /// State and motion validity checks.
+    pub collision_checks: u64,
+    /// Time to the first solution.
+    pub time_to_solution: Option<Duration>,
+    /// Time of the whole run.
+    pub elapsed: Duration,
+}
+
+/// The result of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plan<T> {
+    /// The states from the start to the goal (or, when approximate, to the state nearest the
+    /// goal), each motion valid; `None` when nothing was found.
+    pub path: Option<Vec<T>>,
+    /// The path's cost (the sum of its motions' distances).
+    pub cost: Option<f64>,
+    /// Whether the path stops short of the goal.
+    pub approximate: bool,
+    /// The distance from the path's last state to the goal.
+    pub goal_distance: f64,
+    /// What the run did.
+    pub stats: PlanStats,
+}
+
+/// A tree of states: each with its parent, searched through a nearest-neighbour structure.
+struct Tree<S: StateSpace, N> {
+    nearest: N,
+    parents: Vec<u32>,
+    /// Forward (from the start) or backward (into the goal).
+    direction: Direction,
+    _space: std::marker::PhantomData<fn() -> S>,
+}
+
+const ROOT: u32 = u32::MAX;
+
+enum Extension {
+    Trapped,
+    Advanced(u32),
+    Reached(u32),
+}
+
+impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
+    fn new(space: &S, mut nearest: N, root: S::State, direction: Direction) -> Self {
+        nearest.insert(space, root);
+        Tree { nearest, parents: vec![ROOT], direction, _space: std::marker::PhantomData }
+    }
+
+    fn state(&self, id: u32) -> &S::State {
+        self.nearest.state(id)
+    }
+
+    /// Grows one motion of at most `range` toward `target`.
+    fn extend<V: Validity<S>>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        target: &S::State,
+        range: f64,
+        checks: &mut u64,
+    ) -> Extension {
+        let Some((near, d)) = self.nearest.nearest(space, target, self.direction) else {
+            return Extension::Trapped;
+        };
+        let from = self.state(near).clone();
+        let (new, reached) = if d <= range {
+            (target.clone(), true)
+        } else {
+            match self.direction {
+                // Forward: range along the motion from the tree toward the target.
+                Direction::ToQuery => (space.interpolate(&from, target, range / d), false),
+                // Backward: range before the tree along the motion from the target into it.
+                Direction::FromQuery => (space.interpolate(target, &from, 1.0 - range / d), false),
+            }
+        };
+        if new == from {
+            return Extension::Trapped;
+        }
+        *checks += 1;
+        let valid = match self.direction {
+            Direction::ToQuery => validity.motion_is_valid(space, &from, &new),
+            Direction::FromQuery => validity.motion_is_valid(space, &new, &from),
+        };
+        if !valid {
+            return Extension::Trapped;
+        }
+        let id = self.nearest.insert(space, new);
+        self.parents.push(near);
+        if reached { Extension::Reached(id) } else { Extension::Advanced(id) }
+    }
+
+    /// The states from the root to `id`.
+    fn branch(&self, mut id: u32) -> Vec<S::State> {
+        let mut states = Vec::new();
+        while id != ROOT {
+            states.push(self.state(id).clone());
+            id = self.parents[id as usize];
+        }
+        states.reverse();
+        states
+    }
+}
+
+/// Checks the settings and the ends; returns the range.
+fn prepare<S: StateSpace, V: Validity<S>>(
+    space: &S,
+    validity: &V,
+    start: &S::State,
+    goal: &S::State,
+    options: &RrtOptions,
+    termination: &Termination,
+    checks: &mut u64,
+) -> Result<f64, PlanError> {
+    if termination.max_iterations.is_none() && termination.time_limit.is_none() {
+        return Err(PlanError::NoLimit);
+    }
+    let range = options.range.unwrap_or(0.2 * space.extent());
+    if !(range.is_finite() && range > 0.0) {
+        return Err(PlanError::InvalidOption {
+            name: "range",
+            expected: "positive and finite",
+            value: range,
+        });
+    }
+    if !(0.0..=1.0).contains(&options.goal_bias) {
+        let value = options.goal_bias;
+        return Err(PlanError::InvalidOption { name: "goal_bias", expected: "in [0, 1]", value });
+    }
+    if !(options.goal_tolerance >= 0.0 && options.goal_tolerance.is_finite()) {
+        let value = options.goal_tolerance;
+        return Err(PlanError::InvalidOption { name: "goal_tolerance", expected: ">= 0 and finite", value });
+    }
+    *checks += 2;
+    if !validity.state_is_valid(space, start) {
+        return Err(PlanError::InvalidStart);
+    }
+    if !validity.state_is_valid(space, goal) {
+        return Err(PlanError::InvalidGoal);
+    }
+    Ok(range)
+}
+
+/// The cost of a path: its motions' distances summed.
+fn cost_of<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
+    path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum()
+}
+
+/// RRT for `query`, nearest neighbours from `nearest` (empty), samples from a ChaCha8 generator
+/// seeded with `seed`.
+pub fn rrt<S, V, N>(
+    query: &Query<'_, S, V>,
+    nearest: N,
+    options: &RrtOptions,
+    termination: &Termination,
+    seed: u64,
+) -> Result<Plan<S::State>, PlanError>
+where
+    S: StateSpace,
+    V: Validity<S>,
+    N: NearestNeighbors<S>,
+{
+    let Query { space, validity, .. } = *query;
+    let (start, goal) = (query.start.clone(), query.goal.clone());
+    let clock = Instant::now();
+    let mut stats = PlanStats::default();
+    let range = prepare(space, validity, &start, &goal, options, termination, &mut stats.collision_checks)?;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut tree = Tree::new(space, nearest, start.clone(), Direction::ToQuery);
+    let mut closest = (0u32, space.distance(&start, &goal));
+    let mut solved = closest.1 <= options.goal_tolerance;
+    while !solved && !termination.reached(stats.iterations, &clock) {
+        stats.iterations += 1;
+        let target =
+            if rng.random::<f64>() < options.goal_bias { goal.clone() } else { space.sample(&mut rng) };
+        let id = match tree.extend(space, validity, &target, range, &mut stats.collision_checks) {
+            Extension::Trapped => continue,
+            Extension::Advanced(id) | Extension::Reached(id) => id,
+        };
+        let d = space.distance(tree.state(id), &goal);
+        if d < closest.1 {
+            closest = (id, d);
+        }
+        solved = d <= options.goal_tolerance;
+    }
+    if solved {
+        stats.time_to_solution = Some(clock.elapsed());
+    }
+    let path = tree.branch(closest.0);
+    stats.tree_sizes = [tree.nearest.len(), 0];
+    stats.elapsed = clock.elapsed();
+    let cost = cost_of(space, &path);
+    Ok(Plan { cost: Some(cost), path: Some(path), approximate: !solved, goal_distance: closest.1, stats })
+}
+
+/// RRT-Connect for `query`; arguments as for [`rrt`] (`nearest` is cloned for
+/// the second tree; `goal_bias` and `goal_tolerance` are not used: the trees meet exactly).
+pub fn rrt_connect<S, V, N>(
+    query: &Query<'_, S, V>,
+    nearest: N,
+    options: &RrtOptions,
+    termination: &Termination,
+    seed: u64,
+) -> Result<Plan<S::State>, PlanError>
+where
+    S: StateSpace,
+    V: Validity<S>,
+    N: NearestNeighbors<S> + Clone,
+{
+    let Query { space, validity, .. } = *query;
+    let (start, goal) = (query.start.clone(), query.goal.clone());
+    let clock = Instant::now();
+    let mut stats = PlanStats::default();
+    let range = prepare(space, validity, &start, &goal, options, termination, &mut stats.collision_checks)?;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut trees = [
+        Tree::new(space, nearest.clone(), start.clone(), Direction::ToQuery),
+        Tree::new(space, nearest, goal.clone(), Direction::FromQuery),
+    ];
+    // Which tree grows this iteration; the other connects.
+    let mut grow = 0;
+    let mut meeting = None;
+    if start == goal {
+        meeting = Some((0, 0));
+    }
+    while meeting.is_none() && !termination.reached(stats.iterations, &clock) {
+        stats.iterations += 1;
+        let sample = space.sample(&mut rng);
+        let [a, b] = if grow == 0 { [0, 1] } else { [1, 0] };
+        let (first, second) = if grow == 0 {
+            let (x, y) = trees.split_at_mut(1);
+            (&mut x[0], &mut y[0])
+        } else {
+            let (x, y) = trees.split_at_mut(1);
+            (&mut y[0], &mut x[0])
+        };
+        let new = match first.extend(space, validity, &sample, range, &mut stats.collision_checks) {
+            Extension::Trapped => None,
+            Extension::Advanced(id) | Extension::Reached(id) => Some(id),
+        };
+        if let Some(new) = new {
+            let target = first.state(new).clone();
+            loop {
+                match second.extend(space, validity, &target, range, &mut stats.collision_checks) {
+                    Extension::Trapped => break,
+                    Extension::Advanced(_) => {}
+                    Extension::Reached(id) => {
+                        let mut ids = [0, 0];
+                        ids[a] = new;
+                        ids[b] = id;
+                        meeting = Some((ids[0], ids[1]));
+                        break;
+                    }
+                }
+            }
+        }
+        grow = 1 - grow;
+    }
+    stats.tree_sizes = [trees[0].nearest.len(), trees[1].nearest.len()];
+    let Some((from_start, into_goal)) = meeting else {
+        stats.elapsed = clock.elapsed();
+        let goal_distance = space.distance(&start, &goal);
+        return Ok(Plan { path: None, cost: None, approximate: false, goal_distance, stats });
+    };
+    stats.time_to_solution = Some(clock.elapsed());
+    let mut path = trees[0].branch(from_start);
+    let mut back = trees[1].branch(into_goal);
+    back.reverse();
+    // The meeting state ends the first part and starts the second.
+    path.extend(back.into_iter().skip(1));
+    stats.elapsed = clock.elapsed();
+    let cost = cost_of(space, &path);
+    Ok(Plan { path: Some(path), cost: Some(cost), approximate: false, goal_distance: 0.0, stats })
+}

@@ -1,0 +1,201 @@
+//! RRT and RRT-Connect on generated polygon worlds: every returned path starts and ends where
+//! asked, each motion is valid by the exact checker and by an independent test sampled every
+//! 1e-3, Dubins paths follow Dubins curves of the turning radius, the same seed gives the same
+//! run, and bad input gives typed errors.
+
+use proptest::prelude::*;
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use trailmark_core::generate;
+use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::world::PolygonWorld;
+use trailmark_sample::nearest::{BruteForce, KdNearest, NearestNeighbors};
+use trailmark_sample::rrt::{Plan, PlanError, Query, RrtOptions, Termination, rrt, rrt_connect};
+use trailmark_sample::space::{Dubins, R2, StateSpace};
+
+fn clear(world: &PolygonWorld, p: Point) -> bool {
+    world.bounds().contains(p)
+        && world.obstacles().iter().all(|o| o.distance_to(p) >= world.robot_radius() - 1e-9)
+}
+
+/// A generated world of random convex obstacles (40 x 40) and two free points in it.
+fn world_and_ends(count: usize, radius: f64, seed: u64) -> Option<(PolygonWorld, Point, Point)> {
+    let world = generate::convex_obstacles(40.0, count, 6, radius, seed).ok()?;
+    let checker = world.checker();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut free = || {
+        (0..1000)
+            .map(|_| Point::new(rng.random_range(0.0..40.0), rng.random_range(0.0..40.0)))
+            .find(|&p| checker.point_is_free(p))
+    };
+    Some((world.clone(), free()?, free()?))
+}
+
+fn check_r2(
+    world: &PolygonWorld,
+    plan: &Plan<Point>,
+    start: Point,
+    goal: Point,
+) -> Result<(), TestCaseError> {
+    let checker = world.checker();
+    let path = plan.path.as_ref().expect("a path");
+    prop_assert_eq!(path[0], start);
+    if !plan.approximate {
+        prop_assert_eq!(*path.last().unwrap(), goal);
+    }
+    for m in path.windows(2) {
+        prop_assert!(checker.segment_is_free(m[0], m[1]), "{} -> {} collides", m[0], m[1]);
+        let n = ((m[1] - m[0]).norm() / 1e-3).ceil().max(1.0) as usize;
+        for i in 0..=n {
+            let p = m[0] + (m[1] - m[0]) * (i as f64 / n as f64);
+            prop_assert!(clear(world, p), "{p} on {} -> {} is too close to an obstacle", m[0], m[1]);
+        }
+    }
+    let cost: f64 = path.windows(2).map(|m| (m[1] - m[0]).norm()).sum();
+    prop_assert!((cost - plan.cost.unwrap()).abs() <= 1e-9 * cost.max(1.0));
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    #[test]
+    fn rrt_connect_and_rrt_paths_are_valid((world, start, goal) in (1usize..25, 0.0f64..1.0, any::<u64>()).prop_filter_map("free ends", |(c, r, s)| world_and_ends(c, r, s)), seed in any::<u64>()) {
+        let checker = world.checker();
+        let space = R2::new(world.bounds());
+        let kd = KdNearest::<R2, 2>::new(&space).unwrap();
+        let plan = rrt_connect(&Query::new(&space, &checker, start, goal), kd.clone(), &RrtOptions::default(), &Termination::iterations(5000), seed).unwrap();
+        if plan.path.is_some() {
+            check_r2(&world, &plan, start, goal)?;
+        }
+        let options = RrtOptions { goal_bias: 0.1, ..RrtOptions::default() };
+        let plan = rrt(&Query::new(&space, &checker, start, goal), kd, &options, &Termination::iterations(3000), seed).unwrap();
+        check_r2(&world, &plan, start, goal)?;
+        if plan.approximate {
+            prop_assert!(plan.goal_distance > 0.0);
+        }
+    }
+
+    /// Dubins: each motion of the path is the shortest Dubins curve between its poses, free by
+    /// the exact checker and by its poses sampled every 1e-3; the path starts and ends at the
+    /// requested poses.
+    #[test]
+    fn dubins_rrt_connect_paths_follow_free_dubins_curves((world, start, goal) in (1usize..15, 0.0f64..0.5, any::<u64>()).prop_filter_map("free ends", |(c, r, s)| world_and_ends(c, r, s)), seed in any::<u64>(), headings in any::<[u16; 2]>()) {
+        let space = Dubins::new(world.bounds(), 1.5).unwrap();
+        let checker = world.checker();
+        let heading = |h: u16| f64::from(h) / 65536.0 * std::f64::consts::TAU;
+        let (a, b) = (Pose::new(start.coords, heading(headings[0])), Pose::new(goal.coords, heading(headings[1])));
+        let kd = KdNearest::<Dubins, 2>::new(&space).unwrap();
+        let plan = rrt_connect(&Query::new(&space, &checker, a, b), kd, &RrtOptions::default(), &Termination::iterations(4000), seed).unwrap();
+        let Some(path) = plan.path else { return Ok(()) };
+        prop_assert_eq!(path[0], a);
+        prop_assert_eq!(*path.last().unwrap(), b);
+        for m in path.windows(2) {
+            let curve = space.path(&m[0], &m[1]);
+            prop_assert!(checker.dubins_is_free(&curve));
+            for p in curve.sample(1e-2).unwrap() {
+                prop_assert!(clear(&world, Point::from(p.translation.vector)));
+            }
+        }
+        let cost: f64 = path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
+        prop_assert!((cost - plan.cost.unwrap()).abs() <= 1e-9 * cost.max(1.0));
+    }
+}
+
+/// The same seed gives the same path and counts, with either nearest-neighbour structure.
+#[test]
+fn the_same_seed_gives_the_same_run() {
+    let (world, start, goal) = world_and_ends(20, 0.5, 3).unwrap();
+    let space = R2::new(world.bounds());
+    fn connect<N: NearestNeighbors<R2> + Clone>(
+        space: &R2,
+        world: &PolygonWorld,
+        nearest: N,
+        ends: (Point, Point),
+        seed: u64,
+    ) -> Plan<Point> {
+        let limit = Termination::iterations(5000);
+        rrt_connect(
+            &Query::new(space, &world.checker(), ends.0, ends.1),
+            nearest,
+            &RrtOptions::default(),
+            &limit,
+            seed,
+        )
+        .unwrap()
+    }
+    let run = |seed: u64| {
+        let plan = connect(&space, &world, KdNearest::<R2, 2>::new(&space).unwrap(), (start, goal), seed);
+        let again = connect(&space, &world, BruteForce::<R2>::new(), (start, goal), seed);
+        assert_eq!((&plan.path, plan.cost), (&again.path, again.cost), "k-d tree and brute force agree");
+        let s = plan.stats;
+        (plan.path, plan.cost, s.iterations, s.tree_sizes, s.collision_checks)
+    };
+    assert_eq!(run(11), run(11));
+    assert!(run(11).0.is_some());
+    assert_ne!(run(11).0, run(12).0);
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    let (world, start, goal) = world_and_ends(10, 0.5, 5).unwrap();
+    let checker = world.checker();
+    let space = R2::new(world.bounds());
+    let kd = || KdNearest::<R2, 2>::new(&space).unwrap();
+    let inside = world.obstacles()[0].vertices().iter().fold(Point::origin(), |s, v| s + v.coords / 6.0);
+    let ok = Termination::iterations(10);
+    let plan = |a: Point, b: Point, o: RrtOptions, t: Termination| {
+        rrt_connect(&Query::new(&space, &checker, a, b), kd(), &o, &t, 1)
+    };
+    assert_eq!(plan(inside, goal, RrtOptions::default(), ok).unwrap_err(), PlanError::InvalidStart);
+    assert_eq!(plan(start, inside, RrtOptions::default(), ok).unwrap_err(), PlanError::InvalidGoal);
+    assert_eq!(
+        plan(start, goal, RrtOptions::default(), Termination::default()).unwrap_err(),
+        PlanError::NoLimit
+    );
+    for bad in [
+        RrtOptions { range: Some(0.0), ..RrtOptions::default() },
+        RrtOptions { range: Some(f64::NAN), ..RrtOptions::default() },
+        RrtOptions { goal_bias: 1.5, ..RrtOptions::default() },
+        RrtOptions { goal_tolerance: -1.0, ..RrtOptions::default() },
+    ] {
+        assert!(matches!(plan(start, goal, bad, ok), Err(PlanError::InvalidOption { .. })), "{bad:?}");
+    }
+}
+
+/// A goal inside a closed ring of walls: no path, reported as such (RRT-Connect: none; RRT: the
+/// nearest state, marked approximate), not as an error.
+#[test]
+fn a_walled_off_goal_gives_no_path() {
+    let rect = |x0: f64, y0: f64, x1: f64, y1: f64| {
+        vec![Point::new(x0, y0), Point::new(x1, y0), Point::new(x1, y1), Point::new(x0, y1)]
+    };
+    let walls = vec![
+        rect(10.0, 10.0, 20.0, 11.0),
+        rect(10.0, 19.0, 20.0, 20.0),
+        rect(10.0, 11.0, 11.0, 19.0),
+        rect(19.0, 11.0, 20.0, 19.0),
+    ];
+    let bounds = trailmark_core::world::Bounds::new(0.0, 0.0, 30.0, 30.0).unwrap();
+    let world = PolygonWorld::new(bounds, walls, 0.2).unwrap();
+    let checker = world.checker();
+    let space = R2::new(bounds);
+    let kd = KdNearest::<R2, 2>::new(&space).unwrap();
+    let (start, goal) = (Point::new(2.0, 2.0), Point::new(15.0, 15.0));
+    let limit = Termination::iterations(2000);
+    let plan = rrt_connect(
+        &Query::new(&space, &checker, start, goal),
+        kd.clone(),
+        &RrtOptions::default(),
+        &limit,
+        1,
+    )
+    .unwrap();
+    assert_eq!((plan.path, plan.cost, plan.stats.iterations), (None, None, 2000));
+    let plan =
+        rrt(&Query::new(&space, &checker, start, goal), kd, &RrtOptions::default(), &limit, 1).unwrap();
+    assert!(plan.approximate);
+    let last = *plan.path.unwrap().last().unwrap();
+    assert!(plan.goal_distance >= 5.2 - 1e-9, "{last} is inside the ring"); // the grown outer wall is 5.2 from the goal
+    assert!((plan.goal_distance - (goal - last).norm()).abs() < 1e-12);
+}

@@ -70,20 +70,22 @@ pub struct Termination {
     pub max_iterations: Option<u64>,
     /// Wall-clock time.
     pub time_limit: Option<Duration>,
+    /// RRT*: stop once the best path costs at most this (with a limit above as well).
+    pub target_cost: Option<f64>,
 }
 
 impl Termination {
     /// Stop after `n` iterations.
     pub fn iterations(n: u64) -> Self {
-        Termination { max_iterations: Some(n), time_limit: None }
+        Termination { max_iterations: Some(n), ..Termination::default() }
     }
 
     /// Stop after `limit`.
     pub fn time(limit: Duration) -> Self {
-        Termination { max_iterations: None, time_limit: Some(limit) }
+        Termination { time_limit: Some(limit), ..Termination::default() }
     }
 
-    fn reached(&self, iterations: u64, clock: &Instant) -> bool {
+    pub(crate) fn reached(&self, iterations: u64, clock: &Instant) -> bool {
         self.max_iterations.is_some_and(|n| iterations >= n)
             || self.time_limit.is_some_and(|t| clock.elapsed() >= t)
     }
@@ -158,8 +160,22 @@ pub struct Plan<T> {
     pub approximate: bool,
     /// The distance from the path's last state to the goal.
     pub goal_distance: f64,
+    /// The cost of the best solution each time it improved (one entry for RRT and RRT-Connect,
+    /// which stop at their first solution; empty without one).
+    pub history: Vec<Improvement>,
     /// What the run did.
     pub stats: PlanStats,
+}
+
+/// A new best solution of a run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Improvement {
+    /// The iteration that found it.
+    pub iteration: u64,
+    /// The time since the start of the run.
+    pub time: Duration,
+    /// Its cost.
+    pub cost: f64,
 }
 
 /// A tree of states: each with its parent, searched through a nearest-neighbour structure.
@@ -240,6 +256,41 @@ impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
     }
 }
 
+/// What every run starts with: the ends, its clock and statistics, the checked range, and the
+/// seeded generator.
+pub(crate) struct Run<T> {
+    pub(crate) start: T,
+    pub(crate) goal: T,
+    pub(crate) clock: Instant,
+    pub(crate) stats: PlanStats,
+    pub(crate) range: f64,
+    pub(crate) rng: ChaCha8Rng,
+}
+
+impl<T: Clone> Run<T> {
+    /// Checks `query` and the settings, and starts the clock.
+    pub(crate) fn begin<S: StateSpace<State = T>, V: Validity<S>>(
+        query: &Query<'_, S, V>,
+        options: &RrtOptions,
+        termination: &Termination,
+        seed: u64,
+    ) -> Result<Self, PlanError> {
+        let clock = Instant::now();
+        let mut stats = PlanStats::default();
+        let (start, goal) = (query.start.clone(), query.goal.clone());
+        let range = prepare(
+            query.space,
+            query.validity,
+            &start,
+            &goal,
+            options,
+            termination,
+            &mut stats.collision_checks,
+        )?;
+        Ok(Run { start, goal, clock, stats, range, rng: ChaCha8Rng::seed_from_u64(seed) })
+    }
+}
+
 /// Checks the settings and the ends; returns the range.
 fn prepare<S: StateSpace, V: Validity<S>>(
     space: &S,
@@ -280,7 +331,7 @@ fn prepare<S: StateSpace, V: Validity<S>>(
 }
 
 /// The cost of a path: its motions' distances summed.
-fn cost_of<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
+pub(crate) fn cost_of<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
     path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum()
 }
 
@@ -299,11 +350,8 @@ where
     N: NearestNeighbors<S>,
 {
     let Query { space, validity, .. } = *query;
-    let (start, goal) = (query.start.clone(), query.goal.clone());
-    let clock = Instant::now();
-    let mut stats = PlanStats::default();
-    let range = prepare(space, validity, &start, &goal, options, termination, &mut stats.collision_checks)?;
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let Run { start, goal, clock, mut stats, range, mut rng } =
+        Run::begin(query, options, termination, seed)?;
     let mut tree = Tree::new(space, nearest, start.clone(), Direction::ToQuery);
     let mut closest = (0u32, space.distance(&start, &goal));
     let mut solved = closest.1 <= options.goal_tolerance;
@@ -328,7 +376,19 @@ where
     stats.tree_sizes = [tree.nearest.len(), 0];
     stats.elapsed = clock.elapsed();
     let cost = cost_of(space, &path);
-    Ok(Plan { cost: Some(cost), path: Some(path), approximate: !solved, goal_distance: closest.1, stats })
+    let history = stats
+        .time_to_solution
+        .map(|time| Improvement { iteration: stats.iterations, time, cost })
+        .into_iter()
+        .collect();
+    Ok(Plan {
+        cost: Some(cost),
+        path: Some(path),
+        approximate: !solved,
+        goal_distance: closest.1,
+        history,
+        stats,
+    })
 }
 
 /// RRT-Connect for `query`; arguments as for [`rrt`] (`nearest` is cloned for
@@ -346,11 +406,8 @@ where
     N: NearestNeighbors<S> + Clone,
 {
     let Query { space, validity, .. } = *query;
-    let (start, goal) = (query.start.clone(), query.goal.clone());
-    let clock = Instant::now();
-    let mut stats = PlanStats::default();
-    let range = prepare(space, validity, &start, &goal, options, termination, &mut stats.collision_checks)?;
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let Run { start, goal, clock, mut stats, range, mut rng } =
+        Run::begin(query, options, termination, seed)?;
     let mut trees = [
         Tree::new(space, nearest.clone(), start.clone(), Direction::ToQuery),
         Tree::new(space, nearest, goal.clone(), Direction::FromQuery),
@@ -398,7 +455,14 @@ where
     let Some((from_start, into_goal)) = meeting else {
         stats.elapsed = clock.elapsed();
         let goal_distance = space.distance(&start, &goal);
-        return Ok(Plan { path: None, cost: None, approximate: false, goal_distance, stats });
+        return Ok(Plan {
+            path: None,
+            cost: None,
+            approximate: false,
+            goal_distance,
+            history: Vec::new(),
+            stats,
+        });
     };
     stats.time_to_solution = Some(clock.elapsed());
     let mut path = trees[0].branch(from_start);
@@ -408,5 +472,14 @@ where
     path.extend(back.into_iter().skip(1));
     stats.elapsed = clock.elapsed();
     let cost = cost_of(space, &path);
-    Ok(Plan { path: Some(path), cost: Some(cost), approximate: false, goal_distance: 0.0, stats })
+    let solution =
+        Improvement { iteration: stats.iterations, time: stats.time_to_solution.unwrap_or_default(), cost };
+    Ok(Plan {
+        path: Some(path),
+        cost: Some(cost),
+        approximate: false,
+        goal_distance: 0.0,
+        history: vec![solution],
+        stats,
+    })
 }

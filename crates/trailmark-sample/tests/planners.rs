@@ -199,3 +199,89 @@ fn a_walled_off_goal_gives_no_path() {
     assert!(plan.goal_distance >= 5.2 - 1e-9, "{last} is inside the ring"); // the grown outer wall is 5.2 from the goal
     assert!((plan.goal_distance - (goal - last).norm()).abs() < 1e-12);
 }
+
+mod star {
+    use super::*;
+    use trailmark_sample::rrt_star::{neighbour_count, rrt_star};
+
+    #[test]
+    fn neighbour_count_is_the_published_formula() {
+        // k_rrt = 1.1 · 2^3 · e · 1.5 for d = 2; ⌈k_rrt ln 1000⌉.
+        let k_rrt = 1.1 * 8.0 * std::f64::consts::E * 1.5;
+        assert_eq!(neighbour_count(1000, 2), (k_rrt * 1000f64.ln()).ceil() as usize);
+        assert_eq!(neighbour_count(1, 2), 1);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(8))]
+
+        /// RRT* paths are valid like RRT's; each recorded improvement is cheaper than the last
+        /// and the final path costs what the last one says; the same seed gives the same run.
+        #[test]
+        fn rrt_star_paths_are_valid_and_improve((world, start, goal) in (1usize..20, 0.0f64..1.0, any::<u64>()).prop_filter_map("free ends", |(c, r, s)| world_and_ends(c, r, s)), seed in any::<u64>()) {
+            let checker = world.checker();
+            let space = R2::new(world.bounds());
+            let run = || {
+                let kd = KdNearest::<R2, 2>::new(&space).unwrap();
+                rrt_star(&Query::new(&space, &checker, start, goal), kd, &RrtOptions::default(), &Termination::iterations(1200), seed).unwrap()
+            };
+            let plan = run();
+            check_r2(&world, &plan, start, goal)?;
+            prop_assert!(plan.history.windows(2).all(|w| w[1].cost < w[0].cost && w[1].iteration > w[0].iteration));
+            if let Some(last) = plan.history.last() {
+                prop_assert!(!plan.approximate);
+                prop_assert!((last.cost - plan.cost.unwrap()).abs() <= 1e-9 * last.cost.max(1.0));
+                prop_assert!(plan.cost.unwrap() >= (goal - start).norm() - 1e-9);
+            } else {
+                prop_assert!(plan.approximate);
+            }
+            let again = run();
+            prop_assert_eq!((&plan.path, plan.cost, plan.stats.collision_checks), (&again.path, again.cost, again.stats.collision_checks));
+        }
+    }
+
+    /// A target cost ends the run as soon as a path that cheap is found.
+    #[test]
+    fn a_target_cost_stops_the_run() {
+        let bounds = trailmark_core::world::Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap();
+        let world = PolygonWorld::new(bounds, vec![], 0.0).unwrap();
+        let checker = world.checker();
+        let space = R2::new(bounds);
+        let query = Query::new(&space, &checker, Point::new(1.0, 1.0), Point::new(9.0, 9.0));
+        let limit = Termination { target_cost: Some(20.0), ..Termination::iterations(100_000) };
+        let plan = rrt_star(&query, BruteForce::new(), &RrtOptions::default(), &limit, 3).unwrap();
+        assert!(plan.cost.unwrap() <= 20.0);
+        assert!(plan.stats.iterations < 100_000);
+        assert_eq!(plan.stats.iterations, plan.history.last().unwrap().iteration);
+    }
+
+    /// Dubins RRT*: a chain of free shortest Dubins curves from the start pose to the goal pose.
+    #[test]
+    fn dubins_rrt_star_follows_free_curves() {
+        let (world, start, goal) = world_and_ends(8, 0.3, 9).unwrap();
+        let checker = world.checker();
+        let space = Dubins::new(world.bounds(), 1.0).unwrap();
+        let (a, b) = (Pose::new(start.coords, 0.5), Pose::new(goal.coords, -2.0));
+        let kd = KdNearest::<Dubins, 2>::new(&space).unwrap();
+        let plan = rrt_star(
+            &Query::new(&space, &checker, a, b),
+            kd,
+            &RrtOptions::default(),
+            &Termination::iterations(1500),
+            4,
+        )
+        .unwrap();
+        let path = plan.path.unwrap();
+        assert_eq!(path[0], a);
+        if !plan.approximate {
+            assert_eq!(*path.last().unwrap(), b);
+        }
+        for m in path.windows(2) {
+            let curve = space.path(&m[0], &m[1]);
+            assert!(checker.dubins_is_free(&curve));
+            assert!(
+                curve.sample(1e-2).unwrap().iter().all(|p| clear(&world, Point::from(p.translation.vector)))
+            );
+        }
+    }
+}

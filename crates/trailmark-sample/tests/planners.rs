@@ -11,6 +11,7 @@ use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::PolygonWorld;
 use trailmark_sample::nearest::{BruteForce, KdNearest, NearestNeighbors};
 use trailmark_sample::rrt::{Plan, PlanError, Query, RrtOptions, Termination, rrt, rrt_connect};
+use trailmark_sample::simplify::shortcut;
 use trailmark_sample::space::{Dubins, R2, StateSpace};
 
 fn clear(world: &PolygonWorld, p: Point) -> bool {
@@ -68,6 +69,15 @@ proptest! {
         if plan.path.is_some() {
             check_r2(&world, &plan, start, goal)?;
         }
+        // Shortcuts keep the ends and validity, and never cost more.
+        if let Some(path) = &plan.path {
+            let short = shortcut(&space, &checker, path, 100, seed);
+            let cost = |p: &[Point]| p.windows(2).map(|m| (m[1] - m[0]).norm()).sum::<f64>();
+            let shortened = Plan { path: Some(short.clone()), cost: Some(cost(&short)), ..plan.clone() };
+            check_r2(&world, &shortened, start, goal)?;
+            prop_assert!(cost(&short) <= plan.cost.unwrap() + 1e-9);
+            prop_assert!(short.len() <= path.len());
+        }
         let options = RrtOptions { goal_bias: 0.1, ..RrtOptions::default() };
         let plan = rrt(&Query::new(&space, &checker, start, goal), kd, &options, &Termination::iterations(3000), seed).unwrap();
         check_r2(&world, &plan, start, goal)?;
@@ -99,6 +109,12 @@ proptest! {
         }
         let cost: f64 = path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
         prop_assert!((cost - plan.cost.unwrap()).abs() <= 1e-9 * cost.max(1.0));
+        // Shortcut Dubins paths stay chains of free curves between the same poses.
+        let short = shortcut(&space, &checker, &path, 50, seed);
+        prop_assert_eq!((short[0], *short.last().unwrap()), (a, b));
+        prop_assert!(short.windows(2).all(|m| checker.dubins_is_free(&space.path(&m[0], &m[1]))));
+        let short_cost: f64 = short.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
+        prop_assert!(short_cost <= cost + 1e-9);
     }
 }
 

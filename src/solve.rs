@@ -35,7 +35,9 @@ use trailmark_core::problem::{
 };
 use trailmark_core::svg::{GridSvg, WorldSvg};
 use trailmark_core::world::PolygonWorld;
-use trailmark_graph::prm::{Connection, DubinsSteering, Prm, PrmError, PrmOptions, Sampler, Steering};
+use trailmark_graph::prm::{
+    Connection, DubinsSteering, Prm, PrmError, PrmOptions, Sampler, Steering, Straight,
+};
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::{Edges, VisibilityError};
 use trailmark_graph::{CornerCutting, GridGraph, Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
@@ -566,7 +568,7 @@ trait Coordinates {
 
 impl Coordinates for Point {
     fn coordinates(&self) -> Vec<f64> {
-        vec![self.x, self.y]
+        Straight::coordinates(self)
     }
 }
 

@@ -293,25 +293,47 @@ impl<R: Rebuild> DynamicRoadmap<R> {
             let from = self.ids[u as usize];
             roadmap.for_each_out(u, |v, cost| adjacency[from as usize].push((self.ids[v as usize], cost)));
         }
+        let ids = &self.ids;
         let mut link = |a: u32, b: u32, cost: Cost| {
             adjacency[a as usize].push((b, cost));
             adjacency[b as usize].push((a, cost));
         };
-        for (i, &pin) in self.pins.iter().enumerate() {
-            let at = self.positions[pin as usize];
-            let Some(query) = roadmap.join(at, at) else { continue };
-            let (from_pin, _, _) = query.links();
-            for (v, &cost) in from_pin.iter().enumerate() {
+        let mut link_row = |pin: u32, row: &[Cost]| {
+            for (v, &cost) in row.iter().enumerate() {
                 if cost.is_finite() {
-                    link(pin, self.ids[v], cost);
+                    link(pin, ids[v], cost);
                 }
             }
-            for &other in &self.pins[i + 1..] {
-                let there = self.positions[other as usize];
-                if let Some(cost) = roadmap.join(at, there).and_then(|q| q.links().2) {
-                    link(pin, other, cost);
+        };
+        // One query per pair of pins joins both to the roadmap (the roadmap is undirected, so
+        // the edges into the goal are also out of it) and tells whether they see each other.
+        // A pin in no pair that could be joined (alone, or beside blocked pins) is joined alone.
+        let mut joined = vec![false; self.pins.len()];
+        let mut direct = Vec::new();
+        for (i, &a) in self.pins.iter().enumerate() {
+            for (j, &b) in self.pins.iter().enumerate().skip(i + 1) {
+                let (p, q) = (self.positions[a as usize], self.positions[b as usize]);
+                let Some(query) = roadmap.join(p, q) else { continue };
+                let (from_a, into_b, between) = query.links();
+                if !std::mem::replace(&mut joined[i], true) {
+                    link_row(a, from_a);
+                }
+                if !std::mem::replace(&mut joined[j], true) {
+                    link_row(b, into_b);
+                }
+                if let Some(cost) = between {
+                    direct.push((a, b, cost));
                 }
             }
+        }
+        for (_, &pin) in self.pins.iter().enumerate().filter(|&(i, _)| !joined[i]) {
+            let at = self.positions[pin as usize];
+            if let Some(query) = roadmap.join(at, at) {
+                link_row(pin, query.links().0);
+            }
+        }
+        for (a, b, cost) in direct {
+            link(a, b, cost);
         }
         for edges in &mut adjacency {
             edges.sort_unstable_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));

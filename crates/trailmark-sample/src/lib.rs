@@ -39,7 +39,10 @@ pub mod space;
 pub mod validity;
 
 pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
-pub use rrt::{Improvement, Plan, PlanError, PlanStats, Query, RrtOptions, Termination, rrt, rrt_connect};
+pub use rrt::{
+    Condition, Improvement, Plan, PlanError, PlanStats, Progress, Query, RrtOptions, Termination, rrt,
+    rrt_connect,
+};
 pub use rrt_star::rrt_star;
 pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};

@@ -33,6 +33,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use rand::{RngExt, SeedableRng};
@@ -63,8 +64,23 @@ impl<'a, S: StateSpace, V> Query<'a, S, V> {
     }
 }
 
-/// When a planner gives up (whichever comes first). At least one limit must be set.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+/// When a planner gives up (whichever comes first). At least one limit must be set: iterations,
+/// time or a user condition.
+///
+/// ```
+/// use std::sync::Arc;
+/// use std::sync::atomic::{AtomicBool, Ordering};
+/// use std::time::Duration;
+/// use trailmark_sample::rrt::Termination;
+///
+/// // At most 50,000 iterations or 2 s, and stop early when another thread says so.
+/// let cancel = Arc::new(AtomicBool::new(false));
+/// let flag = Arc::clone(&cancel);
+/// let limit = Termination { time_limit: Some(Duration::from_secs(2)), ..Termination::iterations(50_000) }
+///     .or_when(move |_| flag.load(Ordering::Relaxed));
+/// # let _ = limit;
+/// ```
+#[derive(Clone, Default)]
 pub struct Termination {
     /// Iterations (samples drawn).
     pub max_iterations: Option<u64>,
@@ -72,6 +88,34 @@ pub struct Termination {
     pub time_limit: Option<Duration>,
     /// RRT*: stop once the best path costs at most this (with a limit above as well).
     pub target_cost: Option<f64>,
+    /// A user condition, asked once per iteration: stop when it returns `true`.
+    pub condition: Option<Condition>,
+}
+
+/// A user stopping condition: asked with the run's progress before every iteration.
+pub type Condition = Arc<dyn Fn(&Progress) -> bool + Send + Sync>;
+
+/// How far a run has come, as a [`Condition`] sees it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Progress {
+    /// Iterations done.
+    pub iterations: u64,
+    /// Time since the run began.
+    pub elapsed: Duration,
+    /// The best solution's cost so far (RRT*; `None` before the first solution, and always for
+    /// RRT and RRT-Connect, which stop at their first).
+    pub best_cost: Option<f64>,
+}
+
+impl std::fmt::Debug for Termination {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Termination")
+            .field("max_iterations", &self.max_iterations)
+            .field("time_limit", &self.time_limit)
+            .field("target_cost", &self.target_cost)
+            .field("condition", &self.condition.as_ref().map(|_| "user closure"))
+            .finish()
+    }
 }
 
 impl Termination {
@@ -85,9 +129,30 @@ impl Termination {
         Termination { time_limit: Some(limit), ..Termination::default() }
     }
 
-    pub(crate) fn reached(&self, iterations: u64, clock: &Instant) -> bool {
+    /// Stop when `condition` returns `true` (and at no other limit).
+    pub fn when(condition: impl Fn(&Progress) -> bool + Send + Sync + 'static) -> Self {
+        Termination::default().or_when(condition)
+    }
+
+    /// These limits, and also stop when `condition` returns `true` (replacing any earlier
+    /// condition).
+    pub fn or_when(self, condition: impl Fn(&Progress) -> bool + Send + Sync + 'static) -> Self {
+        Termination { condition: Some(Arc::new(condition)), ..self }
+    }
+
+    /// Whether any limit is set (a target cost alone is not one: it may never be reached).
+    pub fn is_bounded(&self) -> bool {
+        self.max_iterations.is_some() || self.time_limit.is_some() || self.condition.is_some()
+    }
+
+    pub(crate) fn reached(&self, iterations: u64, clock: &Instant, best_cost: Option<f64>) -> bool {
         self.max_iterations.is_some_and(|n| iterations >= n)
             || self.time_limit.is_some_and(|t| clock.elapsed() >= t)
+            || self.target_cost.is_some_and(|t| best_cost.is_some_and(|c| c <= t))
+            || self
+                .condition
+                .as_ref()
+                .is_some_and(|stop| stop(&Progress { iterations, elapsed: clock.elapsed(), best_cost }))
     }
 }
 
@@ -129,7 +194,7 @@ pub enum PlanError {
         value: f64,
     },
     /// A termination condition with no limit.
-    #[error("the termination condition sets no limit (iterations or time)")]
+    #[error("the termination condition sets no limit (iterations, time or a user condition)")]
     NoLimit,
 }
 
@@ -301,7 +366,7 @@ fn prepare<S: StateSpace, V: Validity<S>>(
     termination: &Termination,
     checks: &mut u64,
 ) -> Result<f64, PlanError> {
-    if termination.max_iterations.is_none() && termination.time_limit.is_none() {
+    if !termination.is_bounded() {
         return Err(PlanError::NoLimit);
     }
     let range = options.range.unwrap_or(0.2 * space.extent());
@@ -355,7 +420,7 @@ where
     let mut tree = Tree::new(space, nearest, start.clone(), Direction::ToQuery);
     let mut closest = (0u32, space.distance(&start, &goal));
     let mut solved = closest.1 <= options.goal_tolerance;
-    while !solved && !termination.reached(stats.iterations, &clock) {
+    while !solved && !termination.reached(stats.iterations, &clock, None) {
         stats.iterations += 1;
         let target =
             if rng.random::<f64>() < options.goal_bias { goal.clone() } else { space.sample(&mut rng) };
@@ -393,6 +458,8 @@ where
 
 /// RRT-Connect for `query`; arguments as for [`rrt`] (`nearest` is cloned for
 /// the second tree; `goal_bias` and `goal_tolerance` are not used: the trees meet exactly).
+/// Without a meeting, the plan is the start tree's branch to the state nearest the goal, marked
+/// approximate.
 pub fn rrt_connect<S, V, N>(
     query: &Query<'_, S, V>,
     nearest: N,
@@ -418,7 +485,7 @@ where
     if start == goal {
         meeting = Some((0, 0));
     }
-    while meeting.is_none() && !termination.reached(stats.iterations, &clock) {
+    while meeting.is_none() && !termination.reached(stats.iterations, &clock, None) {
         stats.iterations += 1;
         let sample = space.sample(&mut rng);
         let [a, b] = if grow == 0 { [0, 1] } else { [1, 0] };
@@ -453,12 +520,19 @@ where
     }
     stats.tree_sizes = [trees[0].nearest.len(), trees[1].nearest.len()];
     let Some((from_start, into_goal)) = meeting else {
+        // No meeting: the approximate answer is the start tree's branch to the state nearest
+        // the goal (OMPL's RRTConnect does the same).
+        let (closest, goal_distance) = trees[0]
+            .nearest
+            .nearest(space, &goal, Direction::ToQuery)
+            .unwrap_or((0, space.distance(&start, &goal)));
+        let path = trees[0].branch(closest);
+        let cost = cost_of(space, &path);
         stats.elapsed = clock.elapsed();
-        let goal_distance = space.distance(&start, &goal);
         return Ok(Plan {
-            path: None,
-            cost: None,
-            approximate: false,
+            path: Some(path),
+            cost: Some(cost),
+            approximate: true,
             goal_distance,
             history: Vec::new(),
             stats,

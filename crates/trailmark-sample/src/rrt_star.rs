@@ -80,9 +80,7 @@ where
         at_goal.iter().map(|&g| (g, costs[g as usize])).min_by(|a, b| a.1.total_cmp(&b.1))
     };
     let dimension = space.dimension();
-    while !termination.reached(stats.iterations, &clock)
-        && !termination.target_cost.is_some_and(|t| history.last().is_some_and(|b| b.cost <= t))
-    {
+    while !termination.reached(stats.iterations, &clock, history.last().map(|b| b.cost)) {
         stats.iterations += 1;
         let target =
             if rng.random::<f64>() < options.goal_bias { goal.clone() } else { space.sample(&mut rng) };

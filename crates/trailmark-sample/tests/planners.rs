@@ -236,39 +236,26 @@ fn a_user_condition_stops_the_run() {
     let (world, start, goal) = world_and_ends(10, 0.5, 5).unwrap();
     let checker = world.checker();
     let space = R2::new(world.bounds());
+    let run = |limit: &Termination| {
+        let kd = KdNearest::<R2, 2>::new(&space).unwrap();
+        let query = Query::new(&space, &checker, start, goal);
+        trailmark_sample::rrt_star::rrt_star(&query, kd, &RrtOptions::default(), limit, 2).unwrap()
+    };
     let seen = Arc::new(Mutex::new(Vec::new()));
     let log = Arc::clone(&seen);
-    let limit = Termination::when(move |progress| {
+    let plan = run(&Termination::when(move |progress| {
         log.lock().unwrap().push(progress.iterations);
         progress.iterations >= 300
-    });
-    let kd = KdNearest::<R2, 2>::new(&space).unwrap();
-    let plan = trailmark_sample::rrt_star::rrt_star(
-        &Query::new(&space, &checker, start, goal),
-        kd,
-        &RrtOptions::default(),
-        &limit,
-        2,
-    )
-    .unwrap();
+    }));
     assert_eq!(plan.stats.iterations, 300);
     assert_eq!(*seen.lock().unwrap(), (0..=300).collect::<Vec<u64>>());
     // The best cost reaches the condition once there is one.
     let costs = Arc::new(Mutex::new(Vec::new()));
     let log = Arc::clone(&costs);
-    let limit = Termination::iterations(2000).or_when(move |progress| {
+    let plan = run(&Termination::iterations(2000).or_when(move |progress| {
         log.lock().unwrap().push(progress.best_cost);
         false
-    });
-    let kd = KdNearest::<R2, 2>::new(&space).unwrap();
-    let plan = trailmark_sample::rrt_star::rrt_star(
-        &Query::new(&space, &checker, start, goal),
-        kd,
-        &RrtOptions::default(),
-        &limit,
-        2,
-    )
-    .unwrap();
+    }));
     let costs = costs.lock().unwrap();
     assert_eq!(costs.len(), 2000);
     assert_eq!(costs.last().copied().flatten(), plan.history.last().map(|b| b.cost));

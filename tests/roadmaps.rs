@@ -19,13 +19,13 @@ use trailmark::prelude::*;
 mod common;
 
 /// Whether the robot's disc, sampled every `step` along `a -> b`, keeps clear of every
-/// obstacle (a rounding allowance of 1e-9) and its centre stays in the bounds.
+/// obstacle (a rounding allowance of 1e-9), never strictly inside one (which matters at radius
+/// 0), and its centre stays in the bounds.
 fn sampled_free(world: &PolygonWorld, a: Point, b: Point, step: f64) -> bool {
     let n = ((b - a).norm() / step).ceil().max(1.0) as usize;
     (0..=n).all(|i| {
         let p = a + (b - a) * (i as f64 / n as f64);
-        world.bounds().contains(p)
-            && world.obstacles().iter().all(|o| o.distance_to(p) >= world.robot_radius() - 1e-9)
+        world.reference_is_clear(p, 1e-9)
     })
 }
 

@@ -25,6 +25,7 @@
 #![deny(missing_docs)]
 
 pub mod cost;
+pub mod curve;
 pub mod dubins;
 pub mod freespace;
 pub mod generate;
@@ -34,6 +35,7 @@ pub mod grid;
 pub mod movingai;
 pub mod path;
 pub mod problem;
+pub mod smooth;
 pub mod svg;
 pub mod world;
 

@@ -40,6 +40,7 @@ use parry2d_f64::shape::Segment;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::curve::Bezier;
 use crate::dubins::{DubinsPath, Piece};
 use crate::freespace::{FreeSpace, dedup_ring, on_segment, orient, winding_number};
 use crate::geometry::Point;
@@ -398,6 +399,15 @@ impl PolygonWorld {
         self.robot_radius
     }
 
+    /// Whether the robot at `p` is clear of every obstacle by the plain O(n) distances of
+    /// [`Polygon::distance_to`] (no hierarchy, no exact predicates), within `tolerance` of the
+    /// radius, and its centre is in the bounds: a reference for checking the exact tests.
+    pub fn reference_is_clear(&self, p: Point, tolerance: f64) -> bool {
+        let r = self.robot_radius - tolerance;
+        self.bounds.contains(p)
+            && self.obstacles.iter().all(|o| !o.contains_strictly(p) && o.distance_to(p) >= r)
+    }
+
     /// The margin added to grown obstacles for the rounding of polygon operations: 2^-20 of
     /// the bounds' larger side.
     fn snap_margin(&self) -> f64 {
@@ -597,10 +607,71 @@ impl CollisionChecker {
             }
         })
     }
+
+    /// Whether the robot following the Bézier curve stays collision-free. Conservative and
+    /// exact in what it accepts: a curve is accepted only when the convex hulls of its control
+    /// points (split in halves up to 12 times where needed) are proven free, so a curve grazing
+    /// an obstacle at exactly the robot's radius may be refused, and a refused curve may still
+    /// be free. A straight segment (degree 1) is tested exactly.
+    pub fn bezier_is_free(&self, curve: &Bezier) -> bool {
+        self.bezier_is_free_within(curve, 12)
+    }
+
+    fn bezier_is_free_within(&self, curve: &Bezier, depth: u32) -> bool {
+        let points = curve.control_points();
+        if let [a, b] = points {
+            return self.segment_is_free(*a, *b);
+        }
+        if !self.point_is_free(curve.point(0.5)) {
+            return false;
+        }
+        if self.hull_is_free(points) {
+            return true;
+        }
+        if depth == 0 {
+            return false;
+        }
+        let (before, after) = curve.split(0.5);
+        self.bezier_is_free_within(&before, depth - 1) && self.bezier_is_free_within(&after, depth - 1)
+    }
+
+    /// Whether the robot anywhere in the convex hull of `points` is collision-free: every
+    /// segment between two of the points is free (the hull's edges among them), and no nearby
+    /// obstacle has a vertex in the hull (an obstacle inside the hull whose boundary no edge
+    /// crosses).
+    fn hull_is_free(&self, points: &[Point]) -> bool {
+        let pairs = (0..points.len()).flat_map(|i| (i + 1..points.len()).map(move |j| (i, j)));
+        for (i, j) in pairs {
+            if !self.segment_is_free(points[i], points[j]) {
+                return false;
+            }
+        }
+        let min = points.iter().fold(points[0], |m, p| Point::new(m.x.min(p.x), m.y.min(p.y)));
+        let max = points.iter().fold(points[0], |m, p| Point::new(m.x.max(p.x), m.y.max(p.y)));
+        let n = points.len();
+        let triangles = (0..n).flat_map(|i| (i + 1..n).flat_map(move |j| (j + 1..n).map(move |k| (i, j, k))));
+        let triangles: Vec<_> = triangles.collect();
+        self.near(min, max).into_iter().all(|o| {
+            self.world.obstacles[o].vertices().iter().all(|&v| {
+                !triangles.iter().any(|&(i, j, k)| in_closed_triangle(points[i], points[j], points[k], v))
+            })
+        })
+    }
 }
 
 fn to_parry(p: Point) -> PVector {
     PVector::new(p.x, p.y)
+}
+
+/// Whether `p` lies in the closed triangle `a b c` (a segment or a point when degenerate), by
+/// exact orientation tests.
+fn in_closed_triangle(a: Point, b: Point, c: Point, p: Point) -> bool {
+    let turn = orient(a, b, c);
+    if turn == 0.0 {
+        return on_segment(a, b, p) || on_segment(b, c, p) || on_segment(a, c, p);
+    }
+    let sides = [orient(a, b, p), orient(b, c, p), orient(c, a, p)];
+    sides.iter().all(|&s| s * turn >= 0.0)
 }
 
 fn point_segment_distance(p: Point, a: Point, b: Point) -> f64 {

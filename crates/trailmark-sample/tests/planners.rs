@@ -14,11 +14,6 @@ use trailmark_sample::rrt::{Plan, PlanError, Query, RrtOptions, Termination, rrt
 use trailmark_sample::simplify::shortcut;
 use trailmark_sample::space::{Dubins, R2, StateSpace};
 
-fn clear(world: &PolygonWorld, p: Point) -> bool {
-    world.bounds().contains(p)
-        && world.obstacles().iter().all(|o| o.distance_to(p) >= world.robot_radius() - 1e-9)
-}
-
 /// A generated world of random convex obstacles (40 x 40) and two free points in it.
 fn world_and_ends(count: usize, radius: f64, seed: u64) -> Option<(PolygonWorld, Point, Point)> {
     let world = generate::convex_obstacles(40.0, count, 6, radius, seed).ok()?;
@@ -49,7 +44,12 @@ fn check_r2(
         let n = ((m[1] - m[0]).norm() / 1e-3).ceil().max(1.0) as usize;
         for i in 0..=n {
             let p = m[0] + (m[1] - m[0]) * (i as f64 / n as f64);
-            prop_assert!(clear(world, p), "{p} on {} -> {} is too close to an obstacle", m[0], m[1]);
+            prop_assert!(
+                world.reference_is_clear(p, 1e-9),
+                "{p} on {} -> {} is too close to an obstacle",
+                m[0],
+                m[1]
+            );
         }
     }
     let cost: f64 = path.windows(2).map(|m| (m[1] - m[0]).norm()).sum();
@@ -104,7 +104,7 @@ proptest! {
             let curve = space.path(&m[0], &m[1]);
             prop_assert!(checker.dubins_is_free(&curve));
             for p in curve.sample(1e-2).unwrap() {
-                prop_assert!(clear(&world, Point::from(p.translation.vector)));
+                prop_assert!(world.reference_is_clear(Point::from(p.translation.vector), 1e-9));
             }
         }
         let cost: f64 = path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
@@ -341,7 +341,11 @@ mod star {
             let curve = space.path(&m[0], &m[1]);
             assert!(checker.dubins_is_free(&curve));
             assert!(
-                curve.sample(1e-2).unwrap().iter().all(|p| clear(&world, Point::from(p.translation.vector)))
+                curve
+                    .sample(1e-2)
+                    .unwrap()
+                    .iter()
+                    .all(|p| world.reference_is_clear(Point::from(p.translation.vector), 1e-9))
             );
         }
     }

@@ -18,12 +18,17 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod sampling;
+
+pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
+
 use std::path::Path;
 use std::time::{Duration, Instant};
 
 use thiserror::Error;
 
 use trailmark_core::Cost;
+use trailmark_core::curve::CurveError;
 use trailmark_core::dubins::DubinsPath;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
@@ -41,6 +46,7 @@ use trailmark_graph::prm::{
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::{Edges, VisibilityError};
 use trailmark_graph::{CornerCutting, GridGraph, Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
+use trailmark_sample::{PlanError, SpaceError};
 use trailmark_search::{
     AdStar, AnytimeResult, Budget, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult,
 };
@@ -167,6 +173,47 @@ pub enum SolveError {
     /// The roadmap could not be built or rejected the start or goal.
     #[error(transparent)]
     Prm(#[from] PrmError),
+    /// A field the planner does not take.
+    #[error("\"{field}\" does not apply to the \"{planner}\" planner")]
+    NotForPlanner {
+        /// The field.
+        field: &'static str,
+        /// The planner.
+        planner: &'static str,
+    },
+    /// A field the sampling planner's space does not take.
+    #[error("\"{field}\" does not apply to the \"{space}\" space")]
+    NotForSpace {
+        /// The field.
+        field: &'static str,
+        /// The space.
+        space: &'static str,
+    },
+    /// A sampling planner on a grid.
+    #[error("the \"{planner}\" planner plans over polygon worlds, not grids")]
+    NeedsPolygons {
+        /// The planner.
+        planner: &'static str,
+    },
+    /// A start or goal of a sampling planner that is not a finite state of its space.
+    #[error("the {which} {value:?} is not a state of the \"{space}\" space: expected {}", if *space == "dubins" { "[x, y, heading]" } else { "[x, y]" })]
+    NotAState {
+        /// `"start"` or `"goal"`.
+        which: &'static str,
+        /// The value given.
+        value: Vec<f64>,
+        /// The space.
+        space: &'static str,
+    },
+    /// A sampling planner rejected its settings or the start or goal.
+    #[error(transparent)]
+    Plan(#[from] PlanError),
+    /// The state space could not be made (a turning radius that is not positive).
+    #[error(transparent)]
+    Space(#[from] SpaceError),
+    /// A path could not be smoothed.
+    #[error(transparent)]
+    Curve(#[from] CurveError),
 }
 
 /// The grid of a grid world, with relative map paths resolved against `base_dir`.
@@ -264,9 +311,18 @@ fn solve_inner(
     {
         return Err(SolveError::TimeLimit(t));
     }
-    match &problem.world {
-        World::Grid(world) => solve_grid(problem, world, base_dir, picture),
-        World::Polygons(world) => solve_polygons(problem, world, picture),
+    if let Some(space) = problem.space
+        && problem.planner.sampling().is_none()
+    {
+        let planner = problem.planner.name();
+        let _ = space;
+        return Err(SolveError::NotForPlanner { field: "space", planner });
+    }
+    match (&problem.world, problem.planner.sampling()) {
+        (World::Grid(_), Some(_)) => Err(SolveError::NeedsPolygons { planner: problem.planner.name() }),
+        (World::Grid(world), None) => solve_grid(problem, world, base_dir, picture),
+        (World::Polygons(world), Some(spec)) => sampling::solve_sampling(problem, world, spec, picture),
+        (World::Polygons(world), None) => solve_polygons(problem, world, picture),
     }
 }
 
@@ -327,6 +383,7 @@ fn roadmap_fields(problem: &Problem) -> Vec<&'static str> {
 fn heuristic_of(planner: &PlannerSpec) -> (Option<GridHeuristic>, bool) {
     match planner {
         PlannerSpec::Bfs {} | PlannerSpec::Dfs {} | PlannerSpec::Dijkstra {} => (None, true),
+        PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => (None, false),
         PlannerSpec::WeightedAStar { heuristic, .. } => (*heuristic, false),
         PlannerSpec::AStar { heuristic }
         | PlannerSpec::LpaStar { heuristic }
@@ -386,6 +443,9 @@ where
             let mut planner = AdStar::new(graph, start, goal, h, schedule(*epsilon, *epsilon_step))?;
             let found = planner.improve(graph, budget(*time_limit_s, *max_expansions))?;
             return Ok(anytime_result_of(&found, waypoint));
+        }
+        PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => {
+            unreachable!("solve_inner sends sampling planners to sampling::solve_sampling")
         }
     };
     Ok(result_of(&found, waypoint))
@@ -484,13 +544,7 @@ fn solve_dubins(
                 Waypoint::Cell(_) => None,
             })
             .collect();
-        let mut curve = Vec::new();
-        for pair in poses.windows(2) {
-            let piece =
-                DubinsPath::shortest(&pair[0], &pair[1], radius).expect("a valid radius and finite poses");
-            let samples = piece.sample(radius / 8.0).expect("a positive step");
-            curve.extend(samples.iter().map(|p| Point::from(p.translation.vector)));
-        }
+        let curve = dubins_curve(&poses, radius);
         let title =
             format!("Dubins roadmap: {} poses, turning radius {radius}, and a path", prm.node_count());
         *picture = WorldSvg::new(world)
@@ -503,6 +557,18 @@ fn solve_dubins(
             .to_svg();
     }
     Ok(result)
+}
+
+/// The positions along the shortest Dubins curves joining `poses` (a positive, finite turning
+/// `radius`), every `radius / 8`.
+fn dubins_curve(poses: &[Pose], radius: f64) -> Vec<Point> {
+    let mut curve = Vec::new();
+    for pair in poses.windows(2) {
+        let Ok(piece) = DubinsPath::shortest(&pair[0], &pair[1], radius) else { continue };
+        let samples = piece.sample(radius / 8.0).unwrap_or_default();
+        curve.extend(samples.iter().map(|p| Point::from(p.translation.vector)));
+    }
+    curve
 }
 
 /// The point of a waypoint (the position of a pose).
@@ -623,9 +689,7 @@ pub fn result_of<N: Copy>(found: &SearchResult<N>, waypoint: impl Fn(N) -> Waypo
             decreases: Some(s.decreases),
             reopenings: Some(s.reopenings),
             time_s: s.elapsed.as_secs_f64(),
-            iterations: None,
-            bound: None,
-            graph: None,
+            ..ResultStats::default()
         },
     }
 }

@@ -43,6 +43,7 @@ use std::path::PathBuf;
 use serde::{Deserialize, Serialize};
 
 use crate::grid::{Cell, Connectivity, GridHeuristic};
+use crate::smooth::Smoothing;
 use crate::world::PolygonWorld;
 
 /// A planning problem: a world, a start, a goal, a planner and a seed; for a polygon world,
@@ -81,6 +82,9 @@ pub struct Problem {
     /// Sampled roadmaps: how samples are drawn (default uniform, from `seed`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sampler: Option<SamplerKind>,
+    /// Sampling planners: the state space (default `r2`; `dubins` needs `turning_radius`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub space: Option<SpaceKind>,
 }
 
 impl Problem {
@@ -98,6 +102,7 @@ impl Problem {
             radius: None,
             turning_radius: None,
             sampler: None,
+            space: None,
         }
     }
 }
@@ -137,6 +142,52 @@ pub enum SamplerKind {
     Uniform,
     /// The deterministic Halton sequence (bases 2, 3 and 5).
     Halton,
+}
+
+/// The state space of a sampling planner over a polygon world.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SpaceKind {
+    /// Points `[x, y]` joined by straight motions.
+    R2,
+    /// Poses `[x, y, θ]` of a car joined by shortest Dubins curves of the problem's
+    /// `turning_radius`.
+    Dubins,
+}
+
+impl SpaceKind {
+    /// The name used in problem documents.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpaceKind::R2 => "r2",
+            SpaceKind::Dubins => "dubins",
+        }
+    }
+}
+
+/// The settings of a sampling planner (RRT, RRT-Connect, RRT*). Each has a default.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SamplingSpec {
+    /// The longest motion added at once (default 0.2 x the space's extent).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub range: Option<f64>,
+    /// RRT and RRT*: the probability of steering toward the goal (default 0.05).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goal_bias: Option<f64>,
+    /// Stop after this many iterations (default 10,000 unless `time_limit_s` is given).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_iterations: Option<u64>,
+    /// Stop after this many seconds (default: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time_limit_s: Option<f64>,
+    /// Shortcut the path afterwards (default false).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub simplify: Option<bool>,
+    /// `r2` only: smooth the (simplified) path with `hermite`, `bezier` or `bspline` curves,
+    /// reported beside it (default: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub smooth: Option<Smoothing>,
 }
 
 /// The world of a problem. In JSON, an object with one key naming the kind of world.
@@ -257,9 +308,26 @@ pub enum PlannerSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         max_expansions: Option<u64>,
     },
+    /// RRT over a polygon world: one tree from the start, biased toward the goal.
+    #[serde(rename = "rrt")]
+    Rrt(SamplingSpec),
+    /// RRT-Connect over a polygon world: a tree from each end, grown toward each other.
+    #[serde(rename = "rrt_connect")]
+    RrtConnect(SamplingSpec),
+    /// RRT* over a polygon world: rewiring toward the least cost until its limit.
+    #[serde(rename = "rrt_star")]
+    RrtStar(SamplingSpec),
 }
 
 impl PlannerSpec {
+    /// The settings of a sampling planner, `None` for a graph search.
+    pub fn sampling(&self) -> Option<&SamplingSpec> {
+        match self {
+            PlannerSpec::Rrt(spec) | PlannerSpec::RrtConnect(spec) | PlannerSpec::RrtStar(spec) => Some(spec),
+            _ => None,
+        }
+    }
+
     /// The name used in problem documents (`"astar"`, `"dstar_lite"`, ...).
     pub fn name(&self) -> &'static str {
         match self {
@@ -272,6 +340,9 @@ impl PlannerSpec {
             PlannerSpec::DStarLite { .. } => "dstar_lite",
             PlannerSpec::AraStar { .. } => "ara_star",
             PlannerSpec::AdStar { .. } => "ad_star",
+            PlannerSpec::Rrt(_) => "rrt",
+            PlannerSpec::RrtConnect(_) => "rrt_connect",
+            PlannerSpec::RrtStar(_) => "rrt_star",
         }
     }
 }
@@ -299,6 +370,9 @@ pub enum Status {
     Solved,
     /// The planner proved that no path exists.
     NoPath,
+    /// A sampling planner stopped at its limit without reaching the goal: the path leads to
+    /// the state nearest it (no proof that no path exists).
+    Approximate,
 }
 
 /// A point of a result path: a cell `[x, y]` of a grid, or a point of a continuous space.
@@ -337,6 +411,58 @@ pub struct ResultStats {
     /// Anytime planners: the proven suboptimality bound of the returned path.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bound: Option<f64>,
+    /// Sampling planners: what the run did.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sampling: Option<SamplingStats>,
+}
+
+/// What a sampling planner's run did (`time` fields aside, the same seed gives the same
+/// figures).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct SamplingStats {
+    /// Iterations (samples drawn).
+    pub iterations: u64,
+    /// States in the start tree and in the goal tree (RRT-Connect; 0 for the others).
+    pub tree_sizes: [usize; 2],
+    /// State and motion validity checks.
+    pub collision_checks: u64,
+    /// Seconds to the first solution, `null` without one.
+    pub time_to_solution_s: Option<f64>,
+    /// Each new best solution: the iteration, the seconds since the start, the cost.
+    pub improvements: Vec<ImprovementRecord>,
+    /// The distance from the path's last state to the goal (0 when solved).
+    pub goal_distance: f64,
+    /// The planner's path cost before simplification, `null` without a path.
+    pub planned_cost: Option<f64>,
+    /// Seconds spent simplifying (0 without).
+    pub simplify_time_s: f64,
+    /// The smoothed path, when asked for.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub smoothed: Option<SmoothedRecord>,
+}
+
+/// A new best solution of a sampling planner.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ImprovementRecord {
+    /// The iteration that found it.
+    pub iteration: u64,
+    /// Seconds since the start of the run.
+    pub time_s: f64,
+    /// Its cost.
+    pub cost: f64,
+}
+
+/// A smoothed path in a result: Bézier pieces end to end.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SmoothedRecord {
+    /// The curves used.
+    pub method: Smoothing,
+    /// Its length.
+    pub length: f64,
+    /// Legs or corners left unsmoothed because no curve there was proven free.
+    pub kept: usize,
+    /// Each piece's control points (two for a straight piece).
+    pub pieces: Vec<Vec<[f64; 2]>>,
 }
 
 /// The roadmap a polygon-world problem was searched on.

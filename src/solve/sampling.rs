@@ -1,0 +1,224 @@
+//! The sampling planners of [`solve`](super::solve): `rrt`, `rrt_connect` and `rrt_star` over
+//! a polygon world, in `"space": "r2"` (points) or `"dubins"` (poses of a car).
+
+use std::time::{Duration, Instant};
+
+use trailmark_core::geometry::Point;
+use trailmark_core::problem::{
+    ImprovementRecord, PlannerSpec, Problem, ResultStats, SamplingSpec, SamplingStats, SmoothedRecord,
+    SolveResult, SpaceKind, Status, Waypoint,
+};
+use trailmark_core::smooth::smooth;
+use trailmark_core::svg::WorldSvg;
+use trailmark_core::world::{CollisionChecker, PolygonWorld};
+use trailmark_graph::prm::{DubinsSteering, Steering};
+use trailmark_sample::{
+    Dubins, KdNearest, NearestNeighbors, Plan, Query, R2, RrtOptions, StateSpace, Termination, rrt,
+    rrt_connect, rrt_star, shortcut,
+};
+
+use super::{Coordinates, SolveError, dubins_curve};
+
+/// The iterations of a sampling planner given neither `max_iterations` nor `time_limit_s`.
+pub const DEFAULT_ITERATIONS: u64 = 10_000;
+
+/// Random shortcut attempts when `simplify` is asked for (after the greedy pass).
+pub const SHORTCUT_ATTEMPTS: usize = 100;
+
+/// Solves a sampling-planner problem over `world`.
+pub(super) fn solve_sampling(
+    problem: &Problem,
+    world: &PolygonWorld,
+    spec: &SamplingSpec,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    let planner = problem.planner.name();
+    for (field, set) in [
+        ("graph", problem.graph.is_some()),
+        ("samples", problem.samples.is_some()),
+        ("k", problem.k.is_some()),
+        ("radius", problem.radius.is_some()),
+        ("sampler", problem.sampler.is_some()),
+    ] {
+        if set {
+            return Err(SolveError::NotForPlanner { field, planner });
+        }
+    }
+    let space_kind = problem.space.unwrap_or(SpaceKind::R2);
+    let checker = world.checker();
+    let seed = problem.seed.unwrap_or(0);
+    let run = Run { problem, spec, checker: &checker, seed };
+    match space_kind {
+        SpaceKind::R2 => {
+            if problem.turning_radius.is_some() {
+                return Err(SolveError::NotForSpace { field: "turning_radius", space: "r2" });
+            }
+            let state = |which, value: &[f64]| match *value {
+                [x, y] if x.is_finite() && y.is_finite() => Ok(Point::new(x, y)),
+                _ => Err(SolveError::NotAState { which, value: value.to_vec(), space: "r2" }),
+            };
+            let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
+            let space = R2::new(world.bounds());
+            let (mut result, path) = run.plan(&space, KdNearest::<R2, 2>::new(&space)?, start, goal)?;
+            if let (Some(method), Some(stats)) = (spec.smooth, result.stats.sampling.as_mut()) {
+                let smoothed = smooth(&checker, &path, method)?;
+                stats.smoothed = Some(SmoothedRecord {
+                    method,
+                    length: smoothed.length(),
+                    kept: smoothed.kept,
+                    pieces: smoothed
+                        .pieces
+                        .iter()
+                        .map(|b| b.control_points().iter().map(|p| [p.x, p.y]).collect())
+                        .collect(),
+                });
+                if let Some(picture) = picture {
+                    let curve = smoothed.sample(world_step(world)).unwrap_or_default();
+                    let legs = path.windows(2).map(|m| (m[0], m[1]));
+                    *picture = sketch(world, planner, &curve, start, goal).edges(legs).to_svg();
+                }
+            } else if let Some(picture) = picture {
+                *picture = sketch(world, planner, &path, start, goal).to_svg();
+            }
+            Ok(result)
+        }
+        SpaceKind::Dubins => {
+            if spec.smooth.is_some() {
+                return Err(SolveError::NotForSpace { field: "smooth", space: "dubins" });
+            }
+            let radius = problem.turning_radius.ok_or(SolveError::NoTurningRadius)?;
+            let state = |which, value: &[f64]| {
+                DubinsSteering::from_coordinates(value).ok_or_else(|| SolveError::NotAState {
+                    which,
+                    value: value.to_vec(),
+                    space: "dubins",
+                })
+            };
+            let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
+            let space = Dubins::new(world.bounds(), radius)?;
+            let (result, path) = run.plan(&space, KdNearest::<Dubins, 2>::new(&space)?, start, goal)?;
+            if let Some(picture) = picture {
+                let curve = dubins_curve(&path, radius);
+                let ends = (Point::from(start.translation.vector), Point::from(goal.translation.vector));
+                *picture = sketch(world, planner, &curve, ends.0, ends.1).poses(path).to_svg();
+            }
+            Ok(result)
+        }
+    }
+}
+
+/// A sampling planner's run: the problem, its settings, the world's checker and the seed.
+struct Run<'a> {
+    problem: &'a Problem,
+    spec: &'a SamplingSpec,
+    checker: &'a CollisionChecker,
+    seed: u64,
+}
+
+impl Run<'_> {
+    /// Plans from `start` to `goal` in `space`, simplifies when asked; the result and the path.
+    fn plan<S, N>(
+        &self,
+        space: &S,
+        nearest: N,
+        start: S::State,
+        goal: S::State,
+    ) -> Result<(SolveResult, Vec<S::State>), SolveError>
+    where
+        S: StateSpace,
+        S::State: Coordinates,
+        N: NearestNeighbors<S> + Clone,
+        CollisionChecker: trailmark_sample::Validity<S>,
+    {
+        let spec = self.spec;
+        if let Some(t) = spec.time_limit_s
+            && !(t.is_finite() && t >= 0.0)
+        {
+            return Err(SolveError::TimeLimit(t));
+        }
+        let termination = Termination {
+            max_iterations: spec.max_iterations.or(spec.time_limit_s.is_none().then_some(DEFAULT_ITERATIONS)),
+            time_limit: spec.time_limit_s.map(Duration::from_secs_f64),
+            ..Termination::default()
+        };
+        let defaults = RrtOptions::default();
+        let options = RrtOptions {
+            range: spec.range,
+            goal_bias: spec.goal_bias.unwrap_or(defaults.goal_bias),
+            ..defaults
+        };
+        let query = Query::new(space, self.checker, start, goal);
+        let plan: Plan<S::State> = match self.problem.planner {
+            PlannerSpec::Rrt(_) => rrt(&query, nearest, &options, &termination, self.seed)?,
+            PlannerSpec::RrtConnect(_) => rrt_connect(&query, nearest, &options, &termination, self.seed)?,
+            _ => rrt_star(&query, nearest, &options, &termination, self.seed)?,
+        };
+        let planned = plan.path.clone().unwrap_or_default();
+        let clock = Instant::now();
+        let path = if spec.simplify == Some(true) && planned.len() > 2 {
+            shortcut(space, self.checker, &planned, SHORTCUT_ATTEMPTS, self.seed)
+        } else {
+            planned
+        };
+        let simplify_time_s = clock.elapsed().as_secs_f64();
+        let cost = plan.path.as_ref().map(|_| path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum());
+        let status = match (&plan.path, plan.approximate) {
+            (None, _) => Status::NoPath,
+            (Some(_), true) => Status::Approximate,
+            (Some(_), false) => Status::Solved,
+        };
+        let s = plan.stats;
+        let stats = SamplingStats {
+            iterations: s.iterations,
+            tree_sizes: s.tree_sizes,
+            collision_checks: s.collision_checks,
+            time_to_solution_s: s.time_to_solution.map(|t| t.as_secs_f64()),
+            improvements: plan
+                .history
+                .iter()
+                .map(|b| ImprovementRecord {
+                    iteration: b.iteration,
+                    time_s: b.time.as_secs_f64(),
+                    cost: b.cost,
+                })
+                .collect(),
+            goal_distance: plan.goal_distance,
+            planned_cost: plan.cost,
+            simplify_time_s,
+            smoothed: None,
+        };
+        let result = SolveResult {
+            status,
+            cost,
+            path: path.iter().map(|state| Waypoint::Point(state.coordinates())).collect(),
+            stats: ResultStats {
+                time_s: s.elapsed.as_secs_f64(),
+                sampling: Some(stats),
+                ..ResultStats::default()
+            },
+        };
+        Ok((result, path))
+    }
+}
+
+/// A sampling step for drawing curves in `world`: 1/500 of its larger side.
+fn world_step(world: &PolygonWorld) -> f64 {
+    let size = world.bounds().max() - world.bounds().min();
+    size.x.max(size.y) / 500.0
+}
+
+/// The world with its free space, the drawn path and its ends, titled by the planner.
+fn sketch<'a>(
+    world: &'a PolygonWorld,
+    planner: &str,
+    path: &[Point],
+    start: Point,
+    goal: Point,
+) -> WorldSvg<'a> {
+    WorldSvg::new(world)
+        .free_space(&world.free_space())
+        .path(path)
+        .start(start)
+        .goal(goal)
+        .title(format!("{planner}: the path from start to goal"))
+}

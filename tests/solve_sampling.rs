@@ -1,0 +1,254 @@
+//! Sampling planners through problem documents: `rrt`, `rrt_connect` and `rrt_star` in R² and
+//! Dubins over a polygon world. Paths start and end where asked, every leg is re-checked (exactly
+//! and every 1e-3 against plain distances), no path beats the visibility graph's optimum, the
+//! same seed gives the same document (timings aside), smoothed curves are free, and every kind
+//! of bad input gives its typed error.
+
+use trailmark::core::curve::Bezier;
+use trailmark::core::dubins::{DubinsPath, Piece};
+use trailmark::core::geometry::{Point, Pose};
+use trailmark::core::world::PolygonWorld;
+use trailmark::problem::{Problem, SolveResult, Status, Waypoint, World};
+use trailmark::sample::PlanError;
+use trailmark::solve::{SolveError, solve, solve_and_draw};
+
+/// The wall world of the examples (a wall and a triangle, robot radius 0.3) with `rest`.
+fn document(rest: &str) -> Problem {
+    let json = format!(
+        r#"{{"world": {{"polygons": {{"bounds": [0, 0, 10, 10],
+             "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]], [[1.5, 4], [3, 3.5], [2.5, 6]]],
+             "robot_radius": 0.3}}}}, {rest}}}"#
+    );
+    serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}: {json}"))
+}
+
+fn world(problem: &Problem) -> &PolygonWorld {
+    match &problem.world {
+        World::Polygons(world) => world,
+        World::Grid(_) => panic!("a grid"),
+    }
+}
+
+fn states(result: &SolveResult) -> Vec<Vec<f64>> {
+    result
+        .path
+        .iter()
+        .map(|w| match w {
+            Waypoint::Point(c) => c.clone(),
+            Waypoint::Cell(c) => panic!("a cell {c:?}"),
+        })
+        .collect()
+}
+
+/// The visibility graph's shortest path cost in the same world.
+fn optimum(start: &str, goal: &str) -> f64 {
+    let problem = document(&format!(
+        r#""graph": "visibility", "start": {start}, "goal": {goal}, "planner": {{"name": "astar"}}"#
+    ));
+    solve(&problem, ".").unwrap().cost.unwrap()
+}
+
+/// Every point every 1e-3 along the segment is clear by plain distances.
+fn sampled_clear(world: &PolygonWorld, a: Point, b: Point) -> bool {
+    let n = ((b - a).norm() / 1e-3).ceil().max(1.0) as usize;
+    (0..=n).all(|i| world.reference_is_clear(a + (b - a) * (i as f64 / n as f64), 1e-9))
+}
+
+/// The document without its timings, for comparing runs.
+fn without_times(mut result: SolveResult) -> SolveResult {
+    result.stats.time_s = 0.0;
+    if let Some(s) = result.stats.sampling.as_mut() {
+        s.time_to_solution_s = s.time_to_solution_s.map(|_| 0.0);
+        s.simplify_time_s = 0.0;
+        s.improvements.iter_mut().for_each(|b| b.time_s = 0.0);
+    }
+    result
+}
+
+#[test]
+fn r2_planners_give_valid_paths_no_shorter_than_the_optimum() {
+    let best = optimum("[1, 1]", "[9, 1]");
+    for planner in ["rrt", "rrt_connect", "rrt_star"] {
+        for simplify in [false, true] {
+            for seed in 0..4 {
+                let problem = document(&format!(
+                    r#""seed": {seed}, "start": [1, 1], "goal": [9, 1],
+                       "planner": {{"name": "{planner}", "max_iterations": 1000, "simplify": {simplify}}}"#
+                ));
+                let result = solve(&problem, ".").unwrap();
+                assert_eq!(result.status, Status::Solved, "{planner} seed {seed}");
+                let path: Vec<Point> = states(&result).iter().map(|c| Point::new(c[0], c[1])).collect();
+                assert_eq!((path[0], path[path.len() - 1]), (Point::new(1.0, 1.0), Point::new(9.0, 1.0)));
+                let checker = world(&problem).checker();
+                for leg in path.windows(2) {
+                    assert!(checker.segment_is_free(leg[0], leg[1]), "{planner}: {leg:?}");
+                    assert!(sampled_clear(world(&problem), leg[0], leg[1]), "{planner}: {leg:?}");
+                }
+                let cost = result.cost.unwrap();
+                let length: f64 = path.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+                assert!((cost - length).abs() <= 1e-9 * length);
+                assert!(cost >= best - 1e-9, "{planner}: {cost} < the optimum {best}");
+                let stats = result.stats.sampling.unwrap();
+                assert!(cost <= stats.planned_cost.unwrap() + 1e-9, "simplifying never costs more");
+                assert!(stats.iterations <= 1000 && stats.collision_checks > 0);
+                let last = stats.improvements.last().unwrap().cost;
+                assert!((last - stats.planned_cost.unwrap()).abs() <= 1e-9 * last);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_same_seed_gives_the_same_document() {
+    for planner in ["rrt", "rrt_connect", "rrt_star"] {
+        let run = |seed: u64| {
+            let problem = document(&format!(
+                r#""seed": {seed}, "start": [1, 1], "goal": [9, 1],
+                   "planner": {{"name": "{planner}", "max_iterations": 1500, "simplify": true, "smooth": "bezier"}}"#
+            ));
+            without_times(solve(&problem, ".").unwrap())
+        };
+        assert_eq!(run(5), run(5), "{planner}");
+        assert_ne!(run(5).path, run(6).path, "{planner}");
+    }
+}
+
+#[test]
+fn dubins_paths_chain_shortest_curves_of_the_turning_radius() {
+    let radius = 0.6;
+    for (planner, iterations) in [("rrt", 20_000), ("rrt_connect", 20_000), ("rrt_star", 2_000)] {
+        let problem = document(&format!(
+            r#""space": "dubins", "turning_radius": {radius}, "seed": 2,
+               "start": [1, 1, 1.25], "goal": [9, 1, -1.25],
+               "planner": {{"name": "{planner}", "range": 2.0, "max_iterations": {iterations}, "simplify": true}}"#
+        ));
+        let result = solve(&problem, ".").unwrap();
+        assert_eq!(result.status, Status::Solved, "{planner}");
+        let poses: Vec<Pose> =
+            states(&result).iter().map(|c| Pose::new(Point::new(c[0], c[1]).coords, c[2])).collect();
+        assert_eq!(states(&result)[0], vec![1.0, 1.0, 1.25]);
+        assert_eq!(states(&result).last().unwrap(), &vec![9.0, 1.0, -1.25]);
+        let checker = world(&problem).checker();
+        let mut length = 0.0;
+        for pair in poses.windows(2) {
+            let curve = DubinsPath::shortest(&pair[0], &pair[1], radius).unwrap();
+            assert!(checker.dubins_is_free(&curve));
+            for piece in curve.pieces() {
+                if let Piece::Arc { radius: r, .. } = piece {
+                    assert!((r - radius).abs() <= 1e-12, "an arc of radius {r}");
+                }
+            }
+            for p in curve.sample(1e-3).unwrap() {
+                assert!(world(&problem).reference_is_clear(Point::from(p.translation.vector), 1e-9));
+            }
+            length += curve.length();
+        }
+        assert!((result.cost.unwrap() - length).abs() <= 1e-9 * length);
+        assert!(length >= optimum("[1, 1]", "[9, 1]") - 1e-9);
+    }
+}
+
+#[test]
+fn smoothed_paths_are_free_and_reported() {
+    for method in ["hermite", "bezier", "bspline"] {
+        let problem = document(&format!(
+            r#""seed": 3, "start": [1, 1], "goal": [9, 1],
+               "planner": {{"name": "rrt_connect", "simplify": true, "smooth": "{method}"}}"#
+        ));
+        let (result, svg) = solve_and_draw(&problem, ".").unwrap();
+        let smoothed = result.stats.sampling.unwrap().smoothed.unwrap();
+        assert_eq!(smoothed.method.name(), method);
+        let pieces: Vec<Bezier> = smoothed
+            .pieces
+            .iter()
+            .map(|c| Bezier::new(c.iter().map(|p| Point::new(p[0], p[1])).collect()).unwrap())
+            .collect();
+        assert_eq!(pieces[0].start(), Point::new(1.0, 1.0));
+        assert_eq!(pieces.last().unwrap().end(), Point::new(9.0, 1.0));
+        assert!(pieces.windows(2).all(|w| w[0].end() == w[1].start()));
+        let checker = world(&problem).checker();
+        for piece in &pieces {
+            assert!(checker.bezier_is_free(piece));
+            let samples = piece.sample(1e-3).unwrap();
+            assert!(samples.iter().all(|&p| world(&problem).reference_is_clear(p, 1e-9)));
+        }
+        let length: f64 = pieces.iter().map(Bezier::length).sum();
+        assert!((smoothed.length - length).abs() <= 1e-9 * length);
+        assert!(svg.contains("<polyline"));
+    }
+}
+
+#[test]
+fn no_path_within_the_limit_is_approximate() {
+    // The goal inside a closed box.
+    let json = r#"{"world": {"polygons": {"bounds": [0, 0, 30, 30], "robot_radius": 0.2,
+        "obstacles": [[[10, 10], [20, 10], [20, 11], [10, 11]], [[10, 19], [20, 19], [20, 20], [10, 20]],
+                      [[10, 11], [11, 11], [11, 19], [10, 19]], [[19, 11], [20, 11], [20, 19], [19, 19]]]}},
+        "seed": 1, "start": [2, 2], "goal": [15, 15], "planner": {"name": "rrt_connect", "max_iterations": 500}}"#;
+    let problem: Problem = serde_json::from_str(json).unwrap();
+    let result = solve(&problem, ".").unwrap();
+    assert_eq!(result.status, Status::Approximate);
+    assert_eq!(states(&result)[0], vec![2.0, 2.0]);
+    assert!(result.stats.sampling.unwrap().goal_distance >= 5.2 - 1e-9);
+}
+
+#[test]
+fn bad_sampling_documents_give_typed_errors() {
+    let err = |rest: &str| solve(&document(rest), ".").unwrap_err();
+    let ends = r#""start": [1, 1], "goal": [9, 1]"#;
+    type Expected = fn(&SolveError) -> bool;
+    let cases: Vec<(String, Expected)> = vec![
+        (format!(r#"{ends}, "graph": "prm", "planner": {{"name": "rrt"}}"#), |e| {
+            matches!(e, SolveError::NotForPlanner { field: "graph", planner: "rrt" })
+        }),
+        (format!(r#"{ends}, "space": "r2", "planner": {{"name": "astar"}}"#), |e| {
+            matches!(e, SolveError::NotForPlanner { field: "space", .. })
+        }),
+        (format!(r#"{ends}, "turning_radius": 1, "planner": {{"name": "rrt"}}"#), |e| {
+            matches!(e, SolveError::NotForSpace { field: "turning_radius", space: "r2" })
+        }),
+        (r#""space": "dubins", "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt"}"#.into(), |e| {
+            matches!(e, SolveError::NoTurningRadius)
+        }),
+        (
+            r#""space": "dubins", "turning_radius": 1, "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt", "smooth": "bezier"}"#.into(),
+            |e| matches!(e, SolveError::NotForSpace { field: "smooth", space: "dubins" }),
+        ),
+        (
+            r#""space": "dubins", "turning_radius": -1, "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt"}"#.into(),
+            |e| matches!(e, SolveError::Space(_)),
+        ),
+        (r#""start": [1, 1, 0], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
+            matches!(e, SolveError::NotAState { which: "start", space: "r2", .. })
+        }),
+        (r#""space": "dubins", "turning_radius": 1, "start": [1, 1, 0], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
+            matches!(e, SolveError::NotAState { which: "goal", space: "dubins", .. })
+        }),
+        (format!(r#"{ends}, "planner": {{"name": "rrt", "range": -1}}"#), |e| {
+            matches!(e, SolveError::Plan(PlanError::InvalidOption { name: "range", .. }))
+        }),
+        (format!(r#"{ends}, "planner": {{"name": "rrt_star", "goal_bias": 2}}"#), |e| {
+            matches!(e, SolveError::Plan(PlanError::InvalidOption { name: "goal_bias", .. }))
+        }),
+        (format!(r#"{ends}, "planner": {{"name": "rrt_connect", "time_limit_s": -1}}"#), |e| {
+            matches!(e, SolveError::TimeLimit(_))
+        }),
+        (r#""start": [5, 1], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
+            matches!(e, SolveError::Plan(PlanError::InvalidStart))
+        }),
+    ];
+    for (rest, expected) in cases {
+        let e = err(&rest);
+        assert!(expected(&e), "{rest}: {e:?}");
+        assert!(!e.to_string().is_empty());
+    }
+    let grid: Problem = serde_json::from_str(
+        r#"{"world": {"grid": {"rows": [".."]}}, "start": [0, 0], "goal": [1, 0], "planner": {"name": "rrt"}}"#,
+    )
+    .unwrap();
+    assert!(matches!(solve(&grid, "."), Err(SolveError::NeedsPolygons { planner: "rrt" })));
+    let unknown = format!(
+        r#"{{"world": {{"polygons": {{"bounds": [0, 0, 1, 1], "obstacles": []}}}}, {ends}, "planner": {{"name": "rrt", "weight": 2}}}}"#
+    );
+    assert!(serde_json::from_str::<Problem>(&unknown).is_err(), "a setting the planner does not take");
+}

@@ -87,7 +87,12 @@ fn r2_planners_give_valid_paths_no_shorter_than_the_optimum() {
                 let cost = result.cost.unwrap();
                 let length: f64 = path.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
                 assert!((cost - length).abs() <= 1e-9 * length);
-                assert!(cost >= best - 1e-9, "{planner}: {cost} < the optimum {best}");
+                // The visibility graph goes around chords outside the grown corners (steps of
+                // π/8): the true optimum is at most 1 / cos(π/16) below it.
+                assert!(
+                    cost >= best * (std::f64::consts::PI / 16.0).cos(),
+                    "{planner}: {cost} < the optimum {best}"
+                );
                 let stats = result.stats.sampling.unwrap();
                 assert!(cost <= stats.planned_cost.unwrap() + 1e-9, "simplifying never costs more");
                 assert!(stats.iterations <= 1000 && stats.collision_checks > 0);
@@ -144,7 +149,7 @@ fn dubins_paths_chain_shortest_curves_of_the_turning_radius() {
             length += curve.length();
         }
         assert!((result.cost.unwrap() - length).abs() <= 1e-9 * length);
-        assert!(length >= optimum("[1, 1]", "[9, 1]") - 1e-9);
+        assert!(length >= optimum("[1, 1]", "[9, 1]") * (std::f64::consts::PI / 16.0).cos());
     }
 }
 

@@ -45,8 +45,14 @@ pub struct Args {
     #[arg(long)]
     json: bool,
     /// The sections to run: grid search beside the peers, unknown-terrain navigation
-    /// (incremental planners), anytime planners, geometric roadmaps (comma-separated).
-    #[arg(long, value_enum, value_delimiter = ',', default_value = "grid,navigation,anytime,roadmaps")]
+    /// (incremental planners), anytime planners, geometric roadmaps, sampling planners
+    /// (comma-separated).
+    #[arg(
+        long,
+        value_enum,
+        value_delimiter = ',',
+        default_value = "grid,navigation,anytime,roadmaps,sampling"
+    )]
     sections: Vec<Section>,
 }
 
@@ -61,6 +67,8 @@ pub enum Section {
     Anytime,
     /// Visibility graphs, trapezoidal decompositions, PRM* and Dubins curves on polygon worlds.
     Roadmaps,
+    /// RRT-Connect's success and speed, RRT*'s convergence, on generated polygon worlds.
+    Sampling,
 }
 
 /// A benchmark suite.
@@ -225,6 +233,8 @@ struct Report {
     anytime: Vec<crate::bench_replan::AnytimeRow>,
     #[serde(skip_serializing_if = "Option::is_none")]
     roadmaps: Option<crate::bench_roadmap::RoadmapReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    sampling: Option<crate::bench_sampling::SamplingReport>,
 }
 
 #[derive(Serialize)]
@@ -639,6 +649,16 @@ pub fn run(args: &Args) -> ExitCode {
             }
         }
     }
+    let mut sampling = None;
+    if args.sections.contains(&Section::Sampling) {
+        match crate::bench_sampling::bench_sampling(args.suite, args.seed) {
+            Ok(r) => sampling = Some(r),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
     let report = Report {
         suite: args.suite,
         versions: locked_versions(&["trailmark", "pathfinding"]),
@@ -663,6 +683,7 @@ pub fn run(args: &Args) -> ExitCode {
         navigation,
         anytime,
         roadmaps,
+        sampling,
     };
     let mut text = markdown(&report);
     if let Some(Ok((_, summary))) = &cost_time {
@@ -674,6 +695,10 @@ pub fn run(args: &Args) -> ExitCode {
         text.push('\n');
         text.push_str(&crate::bench_roadmap::markdown(roadmaps));
     }
+    if let Some(sampling) = &report.sampling {
+        text.push('\n');
+        text.push_str(&crate::bench_sampling::markdown(sampling));
+    }
     let folder =
         crate::workspace_root().join("target/bench").join(format!("{}-{}", args.suite.name(), report.date));
     let written = std::fs::create_dir_all(&folder)
@@ -684,6 +709,10 @@ pub fn run(args: &Args) -> ExitCode {
                 eprintln!("warning: no cost-over-time plot: {e}");
                 Ok(())
             }
+            None => Ok(()),
+        })
+        .and_then(|()| match &report.sampling {
+            Some(s) => std::fs::write(folder.join("sampling-convergence.svg"), &s.convergence_svg),
             None => Ok(()),
         })
         .and_then(|()| {
@@ -707,7 +736,8 @@ pub fn run(args: &Args) -> ExitCode {
         }
     }
     let errors: usize = report.results.iter().map(|r| r.cost_errors).sum::<usize>()
-        + report.roadmaps.iter().flat_map(|r| &r.rows).map(|r| r.cost_errors).sum::<usize>();
+        + report.roadmaps.iter().flat_map(|r| &r.rows).map(|r| r.cost_errors).sum::<usize>()
+        + report.sampling.as_ref().map_or(0, |s| s.errors());
     if errors > 0 {
         eprintln!("error: {errors} queries broke their planner's cost bound (see the cost errors column)");
         return ExitCode::from(1);

@@ -19,6 +19,7 @@ use trailmark::graph::visibility::Edges;
 mod bench;
 mod bench_replan;
 mod bench_roadmap;
+mod bench_sampling;
 mod navigate;
 mod solve;
 mod verify;

@@ -1,5 +1,6 @@
-//! Seeded grid generators: random obstacles, mazes and rooms, in the styles of the MovingAI
-//! `random`, `mazes` and `rooms` sets. The same arguments give the same grid on every machine.
+//! Seeded generators: grids of random obstacles, mazes and rooms, in the styles of the MovingAI
+//! `random`, `mazes` and `rooms` sets; polygon worlds of random convex obstacles, a bug trap,
+//! and walls with narrow doors. The same arguments give the same world on every machine.
 //!
 //! ```
 //! use trailmark_core::generate;
@@ -236,6 +237,89 @@ pub fn convex_obstacles(
         {
             obstacles.push(polygon);
         }
+    }
+    Ok(PolygonWorld::new(bounds, obstacles, robot_radius)?)
+}
+
+/// The rectangle from `(x0, y0)` to `(x1, y1)`, counter-clockwise.
+fn rectangle(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<crate::geometry::Point> {
+    use crate::geometry::Point;
+    vec![Point::new(x0, y0), Point::new(x1, y0), Point::new(x1, y1), Point::new(x0, y1)]
+}
+
+/// A square world of side `size` with a bug trap in the middle: a cup of three walls of
+/// thickness `size / 40`, its inside `size / 2` wide and `size / 2` deep, open toward +x
+/// through a mouth of width `size / 8` in the middle of its right wall, so a robot inside must
+/// find the mouth (the classic trap of greedy and sampling planners). The trap's centre,
+/// returned beside the world, is inside it.
+///
+/// ```
+/// use trailmark_core::generate;
+///
+/// let (world, inside) = generate::bug_trap(40.0, 0.25)?;
+/// let checker = world.checker();
+/// assert!(checker.point_is_free(inside));
+/// // The straight way out to the left is walled off.
+/// assert!(!checker.segment_is_free(inside, trailmark_core::geometry::Point::new(2.0, 20.0)));
+/// # Ok::<(), trailmark_core::generate::GenerateError>(())
+/// ```
+pub fn bug_trap(
+    size: f64,
+    robot_radius: f64,
+) -> Result<(crate::world::PolygonWorld, crate::geometry::Point), GenerateError> {
+    use crate::world::{Bounds, PolygonWorld};
+    let bounds = Bounds::new(0.0, 0.0, size, size)?;
+    let (t, c) = (size / 40.0, size / 2.0);
+    let (lo, hi) = (c - size / 4.0, c + size / 4.0);
+    let mouth = size / 16.0;
+    let walls = vec![
+        rectangle(lo - t, lo - t, hi + t, lo), // bottom
+        rectangle(lo - t, hi, hi + t, hi + t), // top
+        rectangle(lo - t, lo, lo, hi),         // left
+        rectangle(hi, lo, hi + t, c - mouth),  // right, below the mouth
+        rectangle(hi, c + mouth, hi + t, hi),  // right, above the mouth
+    ];
+    Ok((PolygonWorld::new(bounds, walls, robot_radius)?, crate::geometry::Point::new(c, c)))
+}
+
+/// A square world of side `size` cut by `walls` evenly spaced vertical walls (thickness
+/// `size / 50`), each with one door of width `door` at a random height: every path from the
+/// left edge to the right goes through every door. The robot radius is `robot_radius`, so the
+/// free width of a door is `door - 2 robot_radius`.
+///
+/// ```
+/// use trailmark_core::generate;
+///
+/// let world = generate::narrow_passages(40.0, 3, 1.0, 0.25, 7)?;
+/// assert_eq!(world.obstacles().len(), 6); // two pieces per wall
+/// assert_eq!(world, generate::narrow_passages(40.0, 3, 1.0, 0.25, 7)?); // reproducible
+/// # Ok::<(), trailmark_core::generate::GenerateError>(())
+/// ```
+pub fn narrow_passages(
+    size: f64,
+    walls: usize,
+    door: f64,
+    robot_radius: f64,
+    seed: u64,
+) -> Result<crate::world::PolygonWorld, GenerateError> {
+    use crate::world::{Bounds, PolygonWorld};
+    let bounds = Bounds::new(0.0, 0.0, size, size)?;
+    if !(door > 0.0 && door < size / 2.0) {
+        return Err(GenerateError::Size {
+            what: "door width",
+            size: door as u32,
+            width: size as usize,
+            height: size as usize,
+        });
+    }
+    let mut rng = rng(seed);
+    let t = size / 50.0;
+    let mut obstacles = Vec::with_capacity(2 * walls);
+    for i in 1..=walls {
+        let x = size * i as f64 / (walls + 1) as f64 - t / 2.0;
+        let y = rng.random_range(size / 8.0..size * 7.0 / 8.0 - door);
+        obstacles.push(rectangle(x, 0.0, x + t, y));
+        obstacles.push(rectangle(x, y + door, x + t, size));
     }
     Ok(PolygonWorld::new(bounds, obstacles, robot_radius)?)
 }

@@ -208,13 +208,16 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
         }
         let at = Self::key(space, query);
         let mut best: Vec<(u32, f64)> = Vec::new();
-        let mut asked = k.min(self.groups.len());
-        let mut measured = HashSet::new();
+        // One candidate more than asked: where the distance is the straight-line one (R², Rⁿ),
+        // the k-th best is then below the bound of the next and one tree query suffices.
+        let mut asked = (k + 1).min(self.groups.len());
+        // The groups measured, kept once a second, wider query is needed.
+        let mut measured: Option<HashSet<u64>> = None;
         loop {
             let candidates = self.tree.nearest_n::<SquaredEuclidean>(&at, asked);
             // Measure the groups not measured before (equal bounds may come in another order).
             for c in &candidates {
-                if measured.insert(c.item) {
+                if measured.as_mut().is_none_or(|m| m.insert(c.item)) {
                     for &id in &self.groups[c.item as usize] {
                         best.push((id, measure(space, &self.states[id as usize], query, direction)));
                     }
@@ -230,6 +233,7 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
             if best.len() == k && best[k - 1].1 < bound {
                 return best;
             }
+            measured.get_or_insert_with(|| candidates.iter().map(|c| c.item).collect());
             asked = (asked * 2).min(self.groups.len());
         }
     }

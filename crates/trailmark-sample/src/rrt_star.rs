@@ -98,10 +98,13 @@ where
         }
         into.sort_by(|a, b| (costs[a.0 as usize] + a.1).total_cmp(&(costs[b.0 as usize] + b.1)));
         let mut parent = None;
-        for &(id, dist) in &into {
+        // How many of `into` were checked before the parent: their motions are invalid.
+        let mut refused = into.len();
+        for (i, &(id, dist)) in into.iter().enumerate() {
             stats.collision_checks += 1;
             if validity.motion_is_valid(space, nearest.state(id), &new) {
                 parent = Some((id, costs[id as usize] + dist));
+                refused = i;
                 break;
             }
         }
@@ -112,7 +115,14 @@ where
         children.push(Vec::new());
         children[parent as usize].push(id);
         // Rewire: the new state as a cheaper parent of its neighbours (motions from it).
-        for (nb, dist) in nearest.k_nearest(space, &new, k + 1, Direction::FromQuery) {
+        // In a symmetric space the neighbours are the same both ways, and the motions refused
+        // as parents are refused the other way too (OMPL reuses them likewise).
+        let neighbours = if S::SYMMETRIC {
+            into.drain(refused..).collect()
+        } else {
+            nearest.k_nearest(space, &new, k + 1, Direction::FromQuery)
+        };
+        for (nb, dist) in neighbours {
             if nb == id || nb == parent || nb == 0 {
                 continue;
             }

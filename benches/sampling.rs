@@ -1,0 +1,134 @@
+//! The inner loops of the sampling planners, seeded: nearest-neighbour queries (the k-d tree
+//! against brute force, in R² and Dubins) and collision checks on a world of 60 random convex
+//! hexagons in a 40 x 40 square, robot radius 0.25 (states, segments, Dubins curves, Bézier
+//! curves). Run: `cargo bench --bench sampling`. `cargo xtask bench --sections sampling`
+//! measures the planners themselves.
+
+use std::hint::black_box;
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use trailmark::core::curve::CubicHermite;
+use trailmark::core::dubins::DubinsPath;
+use trailmark::core::generate;
+use trailmark::core::geometry::{Point, Vector};
+use trailmark::sample::{BruteForce, Direction, Dubins, KdNearest, NearestNeighbors, R2, StateSpace};
+
+/// Queries per measured batch.
+const BATCH: usize = 1000;
+
+fn filled<S: StateSpace, N: NearestNeighbors<S>>(space: &S, mut set: N, n: usize, rng: &mut ChaCha8Rng) -> N {
+    for _ in 0..n {
+        set.insert(space, space.sample(rng));
+    }
+    set
+}
+
+fn nearest(c: &mut Criterion) {
+    let mut group = c.benchmark_group("nearest");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    let bounds = generate::convex_obstacles(40.0, 1, 6, 0.0, 1).expect("valid").bounds();
+    let r2 = R2::new(bounds);
+    let dubins = Dubins::new(bounds, 1.0).expect("a positive radius");
+    for n in [1_000, 10_000, 100_000] {
+        let mut rng = ChaCha8Rng::seed_from_u64(n as u64);
+        let kd = filled(&r2, KdNearest::<R2, 2>::new(&r2).expect("R2 has positions"), n, &mut rng);
+        let queries: Vec<Point> = (0..BATCH).map(|_| r2.sample(&mut rng)).collect();
+        group.bench_with_input(BenchmarkId::new("r2_kdtree_nearest", n), &queries, |b, qs| {
+            b.iter(|| {
+                qs.iter()
+                    .map(|q| kd.nearest(&r2, black_box(q), Direction::ToQuery).map_or(0, |x| x.0))
+                    .sum::<u32>()
+            })
+        });
+        group.bench_with_input(BenchmarkId::new("r2_kdtree_30_nearest", n), &queries, |b, qs| {
+            b.iter(|| {
+                qs.iter()
+                    .map(|q| kd.k_nearest(&r2, black_box(q), 30, Direction::ToQuery).len())
+                    .sum::<usize>()
+            })
+        });
+        if n <= 10_000 {
+            let brute = filled(&r2, BruteForce::new(), n, &mut ChaCha8Rng::seed_from_u64(n as u64));
+            group.bench_with_input(BenchmarkId::new("r2_brute_force_nearest", n), &queries, |b, qs| {
+                b.iter(|| {
+                    qs.iter()
+                        .map(|q| brute.nearest(&r2, black_box(q), Direction::ToQuery).map_or(0, |x| x.0))
+                        .sum::<u32>()
+                })
+            });
+            let kd = filled(
+                &dubins,
+                KdNearest::<Dubins, 2>::new(&dubins).expect("poses have positions"),
+                n,
+                &mut rng,
+            );
+            let poses: Vec<_> = (0..BATCH).map(|_| dubins.sample(&mut rng)).collect();
+            group.bench_with_input(BenchmarkId::new("dubins_kdtree_nearest", n), &poses, |b, qs| {
+                b.iter(|| {
+                    qs.iter()
+                        .map(|q| kd.nearest(&dubins, black_box(q), Direction::ToQuery).map_or(0, |x| x.0))
+                        .sum::<u32>()
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+fn collision(c: &mut Criterion) {
+    let mut group = c.benchmark_group("collision");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    let world = generate::convex_obstacles(40.0, 60, 6, 0.25, 3).expect("valid");
+    let checker = world.checker();
+    let mut rng = ChaCha8Rng::seed_from_u64(9);
+    let mut point = || Point::new(rng.random_range(0.0..40.0), rng.random_range(0.0..40.0));
+    let points: Vec<Point> = (0..BATCH).map(|_| point()).collect();
+    // Segments of length up to 8 (RRT's default range here is 11.3), from free points.
+    let segments: Vec<(Point, Point)> = points
+        .iter()
+        .filter(|&&p| checker.point_is_free(p))
+        .cycle()
+        .zip((0..).map(|i| f64::from(i) * 2.399))
+        .map(|(&p, angle)| {
+            (p, p + Vector::new(angle.cos(), angle.sin()) * (1.0 + (angle * 7.0).sin().abs() * 7.0))
+        })
+        .take(BATCH)
+        .collect();
+    group.bench_function("point", |b| {
+        b.iter(|| points.iter().filter(|&&p| checker.point_is_free(black_box(p))).count())
+    });
+    group.bench_function("segment", |b| {
+        b.iter(|| {
+            segments.iter().filter(|&&(p, q)| checker.segment_is_free(black_box(p), black_box(q))).count()
+        })
+    });
+    let curves: Vec<DubinsPath> = segments
+        .iter()
+        .enumerate()
+        .map(|(i, &(p, q))| {
+            let (a, b) = (i as f64, i as f64 * 1.7);
+            let from = trailmark::core::geometry::Pose::new(p.coords, a);
+            let to = trailmark::core::geometry::Pose::new(q.coords, b);
+            DubinsPath::shortest(&from, &to, 1.0).expect("finite poses")
+        })
+        .collect();
+    group.bench_function("dubins", |b| {
+        b.iter(|| curves.iter().filter(|c| checker.dubins_is_free(black_box(c))).count())
+    });
+    let beziers: Vec<_> = segments
+        .iter()
+        .map(|&(p, q)| {
+            let bend = Vector::new(q.y - p.y, p.x - q.x) * 0.5;
+            CubicHermite::new(p, q - p + bend, q, q - p - bend).to_bezier()
+        })
+        .collect();
+    group.bench_function("bezier", |b| {
+        b.iter(|| beziers.iter().filter(|c| checker.bezier_is_free(black_box(c))).count())
+    });
+    group.finish();
+}
+
+criterion_group!(benches, nearest, collision);
+criterion_main!(benches);

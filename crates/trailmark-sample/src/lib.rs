@@ -1,10 +1,12 @@
 //! Sampling-based planners for continuous spaces: RRT, RRT-Connect and RRT* over pluggable state
 //! spaces (R², Rⁿ, SE(2), Dubins), with exact collision checks and seeded, reproducible runs.
 //!
-//! **Status: in progress.** This release provides the foundations the planners stand on:
-//! [`space`], the state spaces (sampling, distances, interpolation, steering), and [`nearest`],
-//! exact nearest-neighbour structures for every space (a k-d tree over positions, pruned by the
-//! straight-line lower bound, and brute force). The planners follow.
+//! - [`space`]: the state spaces (sampling, distances, interpolation, steering);
+//! - [`nearest`]: exact nearest-neighbour structures for every space (a k-d tree over positions,
+//!   pruned by the straight-line lower bound, and brute force);
+//! - [`validity`]: exact checks against polygon worlds, sampled checks for your own spaces;
+//! - [`rrt`] (RRT, RRT-Connect, termination conditions, plans and statistics) and [`rrt_star`];
+//! - [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
 //!
 //! ```
 //! use rand::SeedableRng;
@@ -48,7 +50,7 @@ pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};
 pub use validity::{Sampled, Validity};
 
-/// The sampling planners this crate will provide.
+/// The sampling planners of this crate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum PlannerKind {
     /// Rapidly-exploring random tree (LaValle 1998).

@@ -5,7 +5,8 @@
 //! - [`nearest`]: exact nearest-neighbour structures for every space (a k-d tree over positions,
 //!   pruned by the straight-line lower bound, and brute force);
 //! - [`validity`]: exact checks against polygon worlds, sampled checks for your own spaces;
-//! - [`rrt`] (RRT, RRT-Connect, termination conditions, plans and statistics) and [`rrt_star`];
+//! - [`rrt`](mod@rrt) (RRT, RRT-Connect, termination conditions, plans and statistics) and
+//!   [`rrt_star`](mod@rrt_star);
 //! - [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
 //!
 //! ```

@@ -111,8 +111,8 @@ pub enum SolveError {
         /// The heuristic asked for.
         heuristic: GridHeuristic,
     },
-    /// A time limit that is negative or not a number.
-    #[error("\"time_limit_s\" is {0}; it must be a number of seconds >= 0")]
+    /// A time limit that is negative, not a number, or too large.
+    #[error("\"time_limit_s\" is {0}; it must be a number of seconds >= 0 (and below 1.8e19)")]
     TimeLimit(f64),
     /// The search rejected the query.
     #[error(transparent)]
@@ -305,18 +305,17 @@ fn solve_inner(
     base_dir: &Path,
     picture: Option<&mut String>,
 ) -> Result<SolveResult, SolveError> {
-    if let PlannerSpec::AraStar { time_limit_s: Some(t), .. }
-    | PlannerSpec::AdStar { time_limit_s: Some(t), .. } = problem.planner
-        && !(t.is_finite() && t >= 0.0)
+    let time_limit = match &problem.planner {
+        PlannerSpec::AraStar { time_limit_s, .. } | PlannerSpec::AdStar { time_limit_s, .. } => *time_limit_s,
+        planner => planner.sampling().and_then(|spec| spec.time_limit_s),
+    };
+    if let Some(t) = time_limit
+        && Duration::try_from_secs_f64(t).is_err()
     {
         return Err(SolveError::TimeLimit(t));
     }
-    if let Some(space) = problem.space
-        && problem.planner.sampling().is_none()
-    {
-        let planner = problem.planner.name();
-        let _ = space;
-        return Err(SolveError::NotForPlanner { field: "space", planner });
+    if problem.space.is_some() && problem.planner.sampling().is_none() {
+        return Err(SolveError::NotForPlanner { field: "space", planner: problem.planner.name() });
     }
     match (&problem.world, problem.planner.sampling()) {
         (World::Grid(_), Some(_)) => Err(SolveError::NeedsPolygons { planner: problem.planner.name() }),
@@ -650,7 +649,8 @@ fn schedule(epsilon: Option<f64>, step: Option<f64>) -> EpsilonSchedule {
 }
 
 fn budget(time_limit_s: Option<f64>, max_expansions: Option<u64>) -> Budget {
-    let time = time_limit_s.map(Duration::from_secs_f64);
+    // Checked by solve_inner: a limit too large for a Duration has been refused already.
+    let time = time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
     Budget { time, expansions: max_expansions }
 }
 

@@ -216,10 +216,10 @@ fn bad_polygon_documents_give_typed_errors() {
         err(0.0, &format!(r#"{ends}, "planner": {{"name": "astar", "heuristic": "octile"}}"#)),
         SolveError::NotEuclidean { .. }
     ));
-    assert!(matches!(
-        err(0.0, &format!(r#"{ends}, "planner": {{"name": "ara_star", "time_limit_s": -1}}"#)),
-        SolveError::TimeLimit(_)
-    ));
+    for limit in ["-1", "1e20"] {
+        let planner = format!(r#"{ends}, "planner": {{"name": "ara_star", "time_limit_s": {limit}}}"#);
+        assert!(matches!(err(0.0, &planner), SolveError::TimeLimit(_)), "{limit}");
+    }
     // Roadmap fields on a grid problem.
     let grid = r#"{"world": {"grid": {"rows": [".."]}}, "graph": "prm", "start": [0, 0], "goal": [1, 0],
                    "planner": {"name": "astar"}}"#;

@@ -238,6 +238,9 @@ fn bad_sampling_documents_give_typed_errors() {
         (format!(r#"{ends}, "planner": {{"name": "rrt_connect", "time_limit_s": -1}}"#), |e| {
             matches!(e, SolveError::TimeLimit(_))
         }),
+        (format!(r#"{ends}, "planner": {{"name": "rrt_star", "time_limit_s": 1e20}}"#), |e| {
+            matches!(e, SolveError::TimeLimit(_))
+        }),
         (r#""start": [5, 1], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
             matches!(e, SolveError::Plan(PlanError::InvalidStart))
         }),

@@ -11,7 +11,7 @@ use trailmark_core::problem::{
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
-use trailmark_graph::prm::{DubinsSteering, Steering};
+use trailmark_graph::prm::{DubinsSteering, Steering, Straight};
 use trailmark_sample::{
     Dubins, KdNearest, NearestNeighbors, Plan, Query, R2, RrtOptions, StateSpace, Termination, rrt,
     rrt_connect, rrt_star, shortcut,
@@ -53,9 +53,12 @@ pub(super) fn solve_sampling(
             if problem.turning_radius.is_some() {
                 return Err(SolveError::NotForSpace { field: "turning_radius", space: "r2" });
             }
-            let state = |which, value: &[f64]| match *value {
-                [x, y] if x.is_finite() && y.is_finite() => Ok(Point::new(x, y)),
-                _ => Err(SolveError::NotAState { which, value: value.to_vec(), space: "r2" }),
+            let state = |which, value: &[f64]| {
+                Straight::from_coordinates(value).ok_or_else(|| SolveError::NotAState {
+                    which,
+                    value: value.to_vec(),
+                    space: "r2",
+                })
             };
             let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
             let space = R2::new(world.bounds());
@@ -131,14 +134,11 @@ impl Run<'_> {
         CollisionChecker: trailmark_sample::Validity<S>,
     {
         let spec = self.spec;
-        if let Some(t) = spec.time_limit_s
-            && !(t.is_finite() && t >= 0.0)
-        {
-            return Err(SolveError::TimeLimit(t));
-        }
+        // A limit too large for a Duration has been refused by solve_inner.
+        let time_limit = spec.time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
         let termination = Termination {
-            max_iterations: spec.max_iterations.or(spec.time_limit_s.is_none().then_some(DEFAULT_ITERATIONS)),
-            time_limit: spec.time_limit_s.map(Duration::from_secs_f64),
+            max_iterations: spec.max_iterations.or(time_limit.is_none().then_some(DEFAULT_ITERATIONS)),
+            time_limit,
             ..Termination::default()
         };
         let defaults = RrtOptions::default();

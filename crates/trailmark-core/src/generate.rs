@@ -30,6 +30,14 @@ pub enum GenerateError {
     /// A polygon world could not be made from the arguments.
     #[error(transparent)]
     World(#[from] crate::world::WorldError),
+    /// A door width that is not positive or not below half the world's side.
+    #[error("a door width of {door} must be positive and below half the side {size}")]
+    Door {
+        /// The door width given.
+        door: f64,
+        /// The world's side.
+        size: f64,
+    },
     /// A corridor or room size of zero, or too large for the grid.
     #[error("a {what} of {size} does not fit a {width} x {height} grid")]
     Size {

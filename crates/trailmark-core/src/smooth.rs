@@ -15,11 +15,12 @@
 //!   which cuts every corner and is curvature-continuous. Where a span collides, the waypoints
 //!   that shape it are flanked by control points on their legs, half the shorter leg away and
 //!   halving up to three times, which pulls the curve toward the corner; at last a waypoint is
-//!   repeated three times, which puts it on the curve with straight legs on either side.
+//!   pinned: the curve passes through it and splits there, each part its own B-spline, and a
+//!   part between two neighbouring pinned waypoints is the input's own leg.
 //!
-//! Every curved piece is accepted only when [`CollisionChecker::bezier_is_free`] proves it free;
-//! the pieces left as they were are the input's own legs, so a collision-free input gives a
-//! collision-free result, starting and ending at the same points.
+//! Every curved piece is accepted only when [`CollisionChecker::bezier_is_free`] proves it free,
+//! and every straight piece is either tested exactly or is one of the input's own legs, so a
+//! collision-free input gives a collision-free result, starting and ending at the same points.
 //!
 //! ```
 //! use trailmark_core::geometry::Point;
@@ -48,6 +49,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::curve::{BSpline, Bezier, CubicHermite, CurveError};
+use crate::freespace::orient;
 use crate::geometry::{Point, Vector};
 use crate::world::CollisionChecker;
 
@@ -180,82 +182,121 @@ fn hermite(checker: &CollisionChecker, points: &[Point]) -> Smoothed {
 }
 
 fn round_corners(checker: &CollisionChecker, points: &[Point]) -> Smoothed {
-    let mut pieces = Vec::new();
-    let mut kept = 0;
-    // Where the straight part of the current leg starts.
-    let mut from = points[0];
-    for corner in points.windows(3) {
-        let (before, at, after) = (corner[0], corner[1], corner[2]);
-        let (incoming, outgoing) = (at - before, after - at);
-        let cut = 0.5 * incoming.norm().min(outgoing.norm());
-        let (u, v) = (incoming.normalize(), outgoing.normalize());
-        if u.perp(&v).abs() <= 1e-12 && u.dot(&v) > 0.0 {
-            continue; // no corner: the leg goes straight on
-        }
-        let round = (0..SHRINKS).map(|k| cut * 0.5f64.powi(k as i32)).find_map(|d| {
-            // Where the last corner's cut took the leg's other half, start exactly there.
-            let a = at - u * d;
-            let a = if (a - from).norm() <= 1e-9 * incoming.norm() { from } else { a };
-            let curve = Bezier::new(vec![a, at, at + v * d]).ok()?;
-            checker.bezier_is_free(&curve).then_some(curve)
-        });
-        match round {
-            Some(curve) => {
-                if curve.start() != from {
-                    pieces.push(Bezier::line(from, curve.start()));
+    let n = points.len();
+    // Corners kept sharp because a straight connector beside them was not proven free.
+    let mut sharp = vec![false; n];
+    loop {
+        let mut pieces = Vec::new();
+        let mut kept = 0;
+        // Where the straight part of the current leg starts, and at which waypoint's corner.
+        let (mut from, mut from_corner) = (points[0], 0);
+        // The straight connectors: their piece, and the waypoints from their start to their end.
+        let mut connectors = Vec::new();
+        for i in 1..n - 1 {
+            let (before, at, after) = (points[i - 1], points[i], points[i + 1]);
+            let (incoming, outgoing) = (at - before, after - at);
+            let straight = orient(before, at, after) == 0.0 && incoming.dot(&outgoing) > 0.0;
+            if straight && !sharp[i] {
+                continue; // no corner: the leg goes straight on
+            }
+            let (u, v) = (incoming.normalize(), outgoing.normalize());
+            let cut = 0.5 * incoming.norm().min(outgoing.norm());
+            let round =
+                (0..SHRINKS).filter(|_| !sharp[i]).map(|k| cut * 0.5f64.powi(k as i32)).find_map(|d| {
+                    // Where the last corner's cut took the leg's other half, start exactly there.
+                    let a = at - u * d;
+                    let a = if (a - from).norm() <= 1e-9 * incoming.norm() { from } else { a };
+                    let curve = Bezier::new(vec![a, at, at + v * d]).ok()?;
+                    checker.bezier_is_free(&curve).then_some(curve)
+                });
+            let next = round.as_ref().map_or(at, Bezier::start);
+            if next != from {
+                connectors.push((pieces.len(), from_corner, i));
+                pieces.push(Bezier::line(from, next));
+            }
+            from_corner = i;
+            match round {
+                Some(curve) => {
+                    from = curve.end();
+                    pieces.push(curve);
                 }
-                from = curve.end();
-                pieces.push(curve);
-            }
-            None => {
-                kept += 1;
-                pieces.push(Bezier::line(from, at));
-                from = at;
+                None => {
+                    kept += usize::from(!straight);
+                    from = at;
+                }
             }
         }
+        let last = points[n - 1];
+        if from != last {
+            connectors.push((pieces.len(), from_corner, n - 1));
+            pieces.push(Bezier::line(from, last));
+        }
+        // A connector not proven free (rounding puts its computed ends a hair off the leg):
+        // keep the corners it spans sharp and start again. Between two sharp corners it is the
+        // input's own leg.
+        let mut sharpened = false;
+        for &(k, first, end) in &connectors {
+            if !checker.segment_is_free(pieces[k].start(), pieces[k].end()) {
+                for corner in sharp.iter_mut().take(end.min(n - 2) + 1).skip(first.max(1)) {
+                    sharpened |= !*corner;
+                    *corner = true;
+                }
+            }
+        }
+        if !sharpened {
+            return Smoothed { pieces, kept };
+        }
     }
-    let last = points[points.len() - 1];
-    if from != last {
-        pieces.push(Bezier::line(from, last));
-    }
-    Smoothed { pieces, kept }
 }
 
 fn bspline(checker: &CollisionChecker, points: &[Point]) -> Result<Smoothed, CurveError> {
     let n = points.len();
     let pinned = SHRINKS + 1;
     // How tightly each waypoint holds the curve: 0 alone; 1..=SHRINKS flanked by control points
-    // on its legs, half a shorter leg from it at 1 and halving at each level; pinned: three
-    // times over, so the curve passes through it.
+    // on its legs, half a shorter leg from it at 1 and halving at each level; pinned: on the
+    // curve, which splits there (the ends are pinned).
     let mut level = vec![0usize; n];
+    level[0] = pinned;
+    level[n - 1] = pinned;
     loop {
-        let mut control = vec![points[0]];
-        let mut owner = vec![0];
-        for i in 1..n - 1 {
-            let (at, u, v) = (points[i], points[i] - points[i - 1], points[i + 1] - points[i]);
-            let flank = 0.5 * u.norm().min(v.norm()) * 0.5f64.powi(level[i] as i32 - 1);
-            let around: Vec<Point> = match level[i] {
-                0 => vec![at],
-                l if l == pinned => vec![at; 3],
-                _ => vec![at - u.normalize() * flank, at, at + v.normalize() * flank],
-            };
-            owner.extend(std::iter::repeat_n(i, around.len()));
-            control.extend(around);
-        }
-        control.push(points[n - 1]);
-        owner.push(n - 1);
-        let degree = 3.min(control.len() - 1);
-        let pieces = BSpline::clamped_uniform(degree, control)?.to_beziers();
-        // Span j is shaped by control points j..=j + degree: tighten their waypoints.
+        let mut pieces = Vec::new();
         let mut tighten = vec![false; n];
-        for j in (0..pieces.len()).filter(|&j| !checker.bezier_is_free(&pieces[j])) {
-            for &w in &owner[j..=j + degree] {
-                tighten[w] = w > 0 && w < n - 1 && level[w] < pinned;
+        let pins: Vec<usize> = (0..n).filter(|&i| level[i] == pinned).collect();
+        for stretch in pins.windows(2) {
+            let (first, last) = (stretch[0], stretch[1]);
+            if last == first + 1 {
+                pieces.push(Bezier::line(points[first], points[last])); // the input's own leg
+                continue;
+            }
+            let mut control = vec![points[first]];
+            let mut owner = vec![first];
+            for i in first + 1..last {
+                let (at, u, v) = (points[i], points[i] - points[i - 1], points[i + 1] - points[i]);
+                let flank = 0.5 * u.norm().min(v.norm()) * 0.5f64.powi(level[i] as i32 - 1);
+                let around = match level[i] {
+                    0 => vec![at],
+                    _ => vec![at - u.normalize() * flank, at, at + v.normalize() * flank],
+                };
+                owner.extend(std::iter::repeat_n(i, around.len()));
+                control.extend(around);
+            }
+            control.push(points[last]);
+            owner.push(last);
+            let degree = 3.min(control.len() - 1);
+            // Span j is shaped by control points j..=j + degree, among which is always a
+            // waypoint between the stretch's ends: tighten those of a span not proven free.
+            for (j, piece) in BSpline::clamped_uniform(degree, control)?.to_beziers().into_iter().enumerate()
+            {
+                if !checker.bezier_is_free(&piece) {
+                    for &w in &owner[j..=j + degree] {
+                        tighten[w] = w != first && w != last;
+                    }
+                }
+                pieces.push(piece);
             }
         }
         if !tighten.contains(&true) {
-            // Every span is free, or lies on a leg of the input already.
-            let kept = level.iter().filter(|&&l| l == pinned).count();
+            let kept = level[1..n - 1].iter().filter(|&&l| l == pinned).count();
             let pieces =
                 pieces.into_iter().filter(|b| b.control_points().iter().any(|&p| p != b.start())).collect();
             return Ok(Smoothed { pieces, kept });

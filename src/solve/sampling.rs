@@ -17,7 +17,7 @@ use trailmark_sample::{
     rrt_connect, rrt_star, shortcut,
 };
 
-use super::{Coordinates, SolveError, dubins_curve};
+use super::{Coordinates, SolveError, dubins_curve, roadmap_fields};
 
 /// The iterations of a sampling planner given neither `max_iterations` nor `time_limit_s`.
 pub const DEFAULT_ITERATIONS: u64 = 10_000;
@@ -33,16 +33,9 @@ pub(super) fn solve_sampling(
     picture: Option<&mut String>,
 ) -> Result<SolveResult, SolveError> {
     let planner = problem.planner.name();
-    for (field, set) in [
-        ("graph", problem.graph.is_some()),
-        ("samples", problem.samples.is_some()),
-        ("k", problem.k.is_some()),
-        ("radius", problem.radius.is_some()),
-        ("sampler", problem.sampler.is_some()),
-    ] {
-        if set {
-            return Err(SolveError::NotForPlanner { field, planner });
-        }
+    // The roadmap's fields, except the turning radius, which a Dubins space takes too.
+    if let Some(&field) = roadmap_fields(problem).iter().find(|&&f| f != "turning_radius") {
+        return Err(SolveError::NotForPlanner { field, planner });
     }
     let space_kind = problem.space.unwrap_or(SpaceKind::R2);
     let checker = world.checker();

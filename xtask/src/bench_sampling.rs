@@ -18,7 +18,7 @@ use serde::Serialize;
 use trailmark::core::freespace::Location;
 use trailmark::core::generate;
 use trailmark::core::geometry::Point;
-use trailmark::core::world::PolygonWorld;
+use trailmark::core::world::{CollisionChecker, PolygonWorld};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::prelude::*;
 use trailmark::sample::{KdNearest, Plan, Query, R2, RrtOptions, Termination, rrt_connect, rrt_star};
@@ -48,6 +48,8 @@ const ARC_STEP: f64 = std::f64::consts::PI / 64.0;
 struct World {
     name: String,
     world: PolygonWorld,
+    /// The world's exact checker, built once.
+    checker: CollisionChecker,
     ends: Ends,
     visibility: VisibilityGraph,
 }
@@ -67,12 +69,12 @@ impl World {
     fn new(name: String, world: PolygonWorld, ends: Ends) -> Result<Self, String> {
         let space = world.free_space_with_step(ARC_STEP).map_err(|e| format!("{name}: {e}"))?;
         let visibility = VisibilityGraph::with_edges(space, Edges::Tangent);
-        Ok(World { name, world, ends, visibility })
+        Ok(World { name, checker: world.checker(), world, ends, visibility })
     }
 
     /// `n` seeded queries whose ends are free, with their shortest cost (`None`: no path).
     fn queries(&self, n: usize, seed: u64) -> Result<Vec<(Point, Point, Option<f64>)>, String> {
-        let checker = self.world.checker();
+        let checker = &self.checker;
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let mut free = |ok: &dyn Fn(Point) -> bool| loop {
             let p = Point::new(rng.random_range(0.0..SIZE), rng.random_range(0.0..SIZE));
@@ -103,7 +105,7 @@ impl World {
 
     /// Whether `plan` is a valid path from `a` to `b` no shorter than the reference allows.
     fn checks(&self, plan: &Plan<Point>, a: Point, b: Point, best: f64) -> bool {
-        let checker = self.world.checker();
+        let checker = &self.checker;
         let Some(path) = plan.path.as_ref() else { return false };
         let cost = plan.cost.unwrap_or(0.0);
         path.first() == Some(&a)
@@ -250,14 +252,14 @@ fn bench_connect(
     seed: u64,
 ) -> Result<ConnectRow, String> {
     let space = R2::new(w.world.bounds());
-    let checker = w.world.checker();
+    let checker = &w.checker;
     let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
     let limit = Termination::iterations(CONNECT_ITERATIONS);
     let (mut times, mut iterations, mut checks, mut ratios) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let (mut solvable, mut solved, mut invalid) = (0, 0, 0);
     for (i, &(a, b, best)) in queries.iter().enumerate() {
-        let query = Query::new(&space, &checker, a, b);
+        let query = Query::new(&space, checker, a, b);
         let clock = Instant::now();
         let plan = rrt_connect(&query, nearest.clone(), &RrtOptions::default(), &limit, seed + i as u64)
             .map_err(|e| format!("{}: {e}", w.name))?;
@@ -296,13 +298,13 @@ fn bench_connect(
 
 fn bench_star(w: &World, a: Point, b: Point, best: f64, runs: usize, seed: u64) -> Result<StarRow, String> {
     let space = R2::new(w.world.bounds());
-    let checker = w.world.checker();
+    let checker = &w.checker;
     let limit = Termination::iterations(STAR_ITERATIONS);
     let (mut finals, mut times, mut firsts, mut invalid) = (Vec::new(), Vec::new(), Vec::new(), 0);
     let mut at_checkpoints: Vec<Vec<f64>> = vec![Vec::new(); CHECKPOINTS.len()];
     for run in 0..runs {
         let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
-        let query = Query::new(&space, &checker, a, b);
+        let query = Query::new(&space, checker, a, b);
         let plan = rrt_star(&query, nearest, &RrtOptions::default(), &limit, seed + run as u64)
             .map_err(|e| format!("{}: {e}", w.name))?;
         times.push(plan.stats.elapsed.as_secs_f64());

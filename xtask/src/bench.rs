@@ -54,6 +54,11 @@ pub struct Args {
         default_value = "grid,navigation,anytime,roadmaps,sampling"
     )]
     sections: Vec<Section>,
+    /// Also run OMPL's planners on the sampling section's problems (needs libompl-dev and
+    /// nlohmann-json3-dev; compiles benches/ompl/driver.cpp). Without them: a message, and
+    /// the OMPL runs are skipped.
+    #[arg(long)]
+    with_ompl: bool,
 }
 
 /// A section of the benchmark.
@@ -651,7 +656,18 @@ pub fn run(args: &Args) -> ExitCode {
     }
     let mut sampling = None;
     if args.sections.contains(&Section::Sampling) {
-        match crate::bench_sampling::bench_sampling(args.suite, args.seed) {
+        let driver = if args.with_ompl {
+            match crate::ompl::Driver::build() {
+                Ok(d) => Some(d),
+                Err(e) => {
+                    eprintln!("OMPL runs skipped: {e}");
+                    None
+                }
+            }
+        } else {
+            None
+        };
+        match crate::bench_sampling::bench_sampling(args.suite, args.seed, driver.as_ref()) {
             Ok(r) => sampling = Some(r),
             Err(e) => {
                 eprintln!("error: {e}");
@@ -713,6 +729,16 @@ pub fn run(args: &Args) -> ExitCode {
         })
         .and_then(|()| match &report.sampling {
             Some(s) => std::fs::write(folder.join("sampling-convergence.svg"), &s.convergence_svg),
+            None => Ok(()),
+        })
+        .and_then(|()| match report.sampling.as_ref().filter(|s| !s.equal_time.is_empty()) {
+            Some(s) => match crate::bench_sampling::cost_time_svg(&s.equal_time) {
+                Ok(svg) => std::fs::write(folder.join("sampling-cost-time.svg"), svg),
+                Err(e) => {
+                    eprintln!("warning: no RRT* cost-over-time plot: {e}");
+                    Ok(())
+                }
+            },
             None => Ok(()),
         })
         .and_then(|()| {

@@ -9,7 +9,7 @@
 //! optimum by more than its approximation allows; a path that fails either is an error that
 //! fails the run.
 
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use plotters::prelude::*;
 use rand::{RngExt, SeedableRng};
@@ -24,6 +24,7 @@ use trailmark::prelude::*;
 use trailmark::sample::{KdNearest, Plan, Query, R2, RrtOptions, Termination, rrt_connect, rrt_star};
 
 use crate::bench::{Suite, median};
+use crate::ompl::Driver;
 
 /// The side of the square worlds.
 const SIZE: f64 = 40.0;
@@ -105,12 +106,16 @@ impl World {
 
     /// Whether `plan` is a valid path from `a` to `b` no shorter than the reference allows.
     fn checks(&self, plan: &Plan<Point>, a: Point, b: Point, best: f64) -> bool {
-        let checker = &self.checker;
-        let Some(path) = plan.path.as_ref() else { return false };
-        let cost = plan.cost.unwrap_or(0.0);
+        plan.path.as_ref().is_some_and(|path| self.checks_path(path, a, b, best))
+    }
+
+    /// Whether `path` runs from `a` to `b`, every motion free, no shorter than the reference
+    /// allows (its cost recomputed here).
+    fn checks_path(&self, path: &[Point], a: Point, b: Point, best: f64) -> bool {
+        let cost: f64 = path.windows(2).map(|m| (m[1] - m[0]).norm()).sum();
         path.first() == Some(&a)
             && path.last() == Some(&b)
-            && path.windows(2).all(|m| checker.segment_is_free(m[0], m[1]))
+            && path.windows(2).all(|m| self.checker.segment_is_free(m[0], m[1]))
             && cost >= best * (ARC_STEP / 2.0).cos()
     }
 }
@@ -138,7 +143,7 @@ fn worlds(seed: u64) -> Result<Vec<World>, String> {
     ])
 }
 
-/// RRT-Connect on one world.
+/// RRT-Connect on one world, trailmark's and (with `--with-ompl`) OMPL's.
 #[derive(Debug, Clone, Serialize)]
 pub struct ConnectRow {
     /// The world.
@@ -147,18 +152,112 @@ pub struct ConnectRow {
     pub queries: usize,
     /// Queries with a path (by the visibility graph).
     pub solvable: usize,
-    /// Solvable queries RRT-Connect solved within its iterations.
+    /// trailmark's RRT-Connect.
+    pub trailmark: ConnectStats,
+    /// OMPL's RRTConnect on the same queries, with the same limits and collision checks.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ompl: Option<ConnectStats>,
+}
+
+impl ConnectRow {
+    /// OMPL's median time over trailmark's.
+    pub fn speedup(&self) -> Option<f64> {
+        self.ompl.as_ref().map(|o| o.median_ms / self.trailmark.median_ms)
+    }
+}
+
+/// One library's RRT-Connect on a world's queries.
+#[derive(Debug, Clone, Serialize)]
+pub struct ConnectStats {
+    /// Solvable queries solved within the iterations.
     pub solved: usize,
-    /// Median time per query, milliseconds.
+    /// Median time per solvable query (failures included), milliseconds.
     pub median_ms: f64,
-    /// Median iterations per query.
+    /// Median iterations per solvable query.
     pub median_iterations: f64,
-    /// Median collision checks per query.
+    /// Median collision checks per solvable query.
     pub median_checks: f64,
     /// Median path cost over the optimum.
     pub median_cost_ratio: f64,
     /// Paths that failed the re-check, or solutions where the visibility graph has no path
     /// (must be 0).
+    pub invalid: usize,
+}
+
+/// Runs of one planner on a world's queries, as they come.
+#[derive(Default)]
+struct Tally {
+    times: Vec<f64>,
+    iterations: Vec<f64>,
+    checks: Vec<f64>,
+    ratios: Vec<f64>,
+    solvable: usize,
+    solved: usize,
+    invalid: usize,
+}
+
+impl Tally {
+    /// One run on a query of optimum `best` (`None`: no path): its time, iterations and checks,
+    /// whether it found an exact path, and `cost_if_valid`, the re-checked path's cost or
+    /// `None` when it fails the re-check.
+    fn add(
+        &mut self,
+        best: Option<f64>,
+        (ms, iterations, checks): (f64, u64, u64),
+        exact: bool,
+        cost_if_valid: impl FnOnce(f64) -> Option<f64>,
+    ) {
+        let Some(best) = best else {
+            // No path by the visibility graph: a solution here would be an error of one of them.
+            self.invalid += usize::from(exact);
+            return;
+        };
+        self.solvable += 1;
+        self.times.push(ms);
+        self.iterations.push(iterations as f64);
+        self.checks.push(checks as f64);
+        if !exact {
+            return;
+        }
+        self.solved += 1;
+        match cost_if_valid(best) {
+            Some(cost) => self.ratios.push(cost / best),
+            None => self.invalid += 1,
+        }
+    }
+
+    fn stats(self) -> ConnectStats {
+        ConnectStats {
+            solved: self.solved,
+            median_ms: median(&sorted(self.times)),
+            median_iterations: median(&sorted(self.iterations)),
+            median_checks: median(&sorted(self.checks)),
+            median_cost_ratio: median(&sorted(self.ratios)),
+            invalid: self.invalid,
+        }
+    }
+}
+
+/// RRT* of both libraries with the same time per run, on one world.
+#[derive(Debug, Clone, Serialize)]
+pub struct EqualTimeRow {
+    /// The world.
+    pub world: String,
+    /// The time of every run, seconds.
+    pub time_limit_s: f64,
+    /// Runs per library.
+    pub runs: usize,
+    /// trailmark's median final cost over the optimum.
+    pub trailmark_ratio: f64,
+    /// OMPL's median final cost over the optimum.
+    pub ompl_ratio: f64,
+    /// trailmark's median iterations in the time.
+    pub trailmark_iterations: f64,
+    /// OMPL's median iterations in the time.
+    pub ompl_iterations: f64,
+    /// Median best cost over the optimum at each time (seconds): trailmark, OMPL.
+    pub over_time: Vec<(f64, f64, f64)>,
+    /// Paths of either library that failed the re-check (must be 0).
     pub invalid: usize,
 }
 
@@ -196,6 +295,11 @@ pub struct SamplingReport {
     pub connect: Vec<ConnectRow>,
     /// RRT* per world.
     pub star: Vec<StarRow>,
+    /// RRT* of trailmark and OMPL with equal time (with `--with-ompl`).
+    pub equal_time: Vec<EqualTimeRow>,
+    /// The OMPL version measured (with `--with-ompl`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ompl_version: Option<String>,
     /// The cost-vs-iterations plot (SVG), not serialized.
     #[serde(skip)]
     pub convergence_svg: String,
@@ -204,8 +308,12 @@ pub struct SamplingReport {
 impl SamplingReport {
     /// Paths that failed their re-check.
     pub fn errors(&self) -> usize {
-        self.connect.iter().map(|r| r.invalid).sum::<usize>()
+        self.connect
+            .iter()
+            .map(|r| r.trailmark.invalid + r.ompl.as_ref().map_or(0, |o| o.invalid))
+            .sum::<usize>()
             + self.star.iter().map(|r| r.invalid).sum::<usize>()
+            + self.equal_time.iter().map(|r| r.invalid).sum::<usize>()
     }
 }
 
@@ -215,18 +323,24 @@ fn sorted(mut v: Vec<f64>) -> Vec<f64> {
 }
 
 /// Runs the section.
-pub fn bench_sampling(suite: Suite, seed: u64) -> Result<SamplingReport, String> {
-    let (queries, star_runs) = match suite {
-        Suite::Quick => (200, 5),
-        Suite::Full => (1000, 15),
+pub fn bench_sampling(suite: Suite, seed: u64, ompl: Option<&Driver>) -> Result<SamplingReport, String> {
+    let (queries, star_runs, equal_time) = match suite {
+        Suite::Quick => (200, 5, Duration::from_millis(500)),
+        Suite::Full => (1000, 15, Duration::from_secs(2)),
     };
     let worlds = worlds(seed)?;
     let mut connect = Vec::new();
     let mut star = Vec::new();
+    let mut equal_times = Vec::new();
     for (i, w) in worlds.iter().enumerate() {
         eprintln!("[sampling {}/{}] {}: RRT-Connect, {queries} queries", i + 1, worlds.len(), w.name);
         let qs = w.queries(queries, seed ^ 0x5a5a)?;
-        connect.push(bench_connect(w, &qs, seed)?);
+        let mut row = bench_connect(w, &qs, seed)?;
+        if let Some(driver) = ompl {
+            eprintln!("[sampling {}/{}] {}: OMPL RRTConnect, {queries} queries", i + 1, worlds.len(), w.name);
+            row.ompl = Some(ompl_connect(w, &qs, seed, driver)?);
+        }
+        connect.push(row);
         eprintln!(
             "[sampling {}/{}] {}: RRT*, {star_runs} runs of {STAR_ITERATIONS}",
             i + 1,
@@ -240,10 +354,27 @@ pub fn bench_sampling(suite: Suite, seed: u64) -> Result<SamplingReport, String>
             .filter(|q| q.2.is_some())
             .max_by(|x, y| x.2.unwrap_or(0.0).total_cmp(&y.2.unwrap_or(0.0)))
             .ok_or_else(|| format!("{}: no solvable query", w.name))?;
-        star.push(bench_star(w, a, b, best.unwrap_or(f64::NAN), star_runs, seed)?);
+        let best = best.unwrap_or(f64::NAN);
+        star.push(bench_star(w, a, b, best, star_runs, seed)?);
+        if let Some(driver) = ompl {
+            eprintln!(
+                "[sampling {}/{}] {}: RRT* of both libraries, {star_runs} runs of {:.1} s each",
+                i + 1,
+                worlds.len(),
+                w.name,
+                equal_time.as_secs_f64()
+            );
+            equal_times.push(star_equal_time(w, a, b, best, star_runs, equal_time, seed, driver)?);
+        }
     }
     let convergence_svg = convergence_svg(&star)?;
-    Ok(SamplingReport { connect, star, convergence_svg })
+    Ok(SamplingReport {
+        connect,
+        star,
+        equal_time: equal_times,
+        ompl_version: ompl.map(|d| d.version.clone()),
+        convergence_svg,
+    })
 }
 
 fn bench_connect(
@@ -255,43 +386,134 @@ fn bench_connect(
     let checker = &w.checker;
     let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
     let limit = Termination::iterations(CONNECT_ITERATIONS);
-    let (mut times, mut iterations, mut checks, mut ratios) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    let (mut solvable, mut solved, mut invalid) = (0, 0, 0);
+    let mut tally = Tally::default();
     for (i, &(a, b, best)) in queries.iter().enumerate() {
         let query = Query::new(&space, checker, a, b);
         let clock = Instant::now();
         let plan = rrt_connect(&query, nearest.clone(), &RrtOptions::default(), &limit, seed + i as u64)
             .map_err(|e| format!("{}: {e}", w.name))?;
         let ms = clock.elapsed().as_secs_f64() * 1e3;
-        let Some(best) = best else {
-            // No path by the visibility graph: a solution here would be an error of one of them.
-            invalid += usize::from(!plan.approximate);
-            continue;
-        };
-        solvable += 1;
-        times.push(ms);
-        iterations.push(plan.stats.iterations as f64);
-        checks.push(plan.stats.collision_checks as f64);
-        if plan.approximate {
-            continue;
-        }
-        solved += 1;
-        if w.checks(&plan, a, b, best) {
-            ratios.push(plan.cost.unwrap_or(f64::NAN) / best);
-        } else {
-            invalid += 1;
-        }
+        let counts = (ms, plan.stats.iterations, plan.stats.collision_checks);
+        tally.add(best, counts, !plan.approximate, |best| {
+            w.checks(&plan, a, b, best).then(|| plan.cost.unwrap_or(f64::NAN))
+        });
     }
     Ok(ConnectRow {
         world: w.name.clone(),
         queries: queries.len(),
-        solvable,
-        solved,
-        median_ms: median(&sorted(times)),
-        median_iterations: median(&sorted(iterations)),
-        median_checks: median(&sorted(checks)),
-        median_cost_ratio: median(&sorted(ratios)),
+        solvable: tally.solvable,
+        trailmark: tally.stats(),
+        ompl: None,
+    })
+}
+
+fn points(path: &[[f64; 2]]) -> Vec<Point> {
+    path.iter().map(|&[x, y]| Point::new(x, y)).collect()
+}
+
+/// OMPL's RRTConnect on the same queries, with the same iteration limit, each path re-checked
+/// as trailmark's are.
+fn ompl_connect(
+    w: &World,
+    queries: &[(Point, Point, Option<f64>)],
+    seed: u64,
+    driver: &Driver,
+) -> Result<ConnectStats, String> {
+    let input = crate::ompl::Input {
+        world: &w.world,
+        planner: "rrt_connect",
+        queries: queries.iter().map(|(a, b, _)| [a.x, a.y, b.x, b.y]).collect(),
+        runs: 1,
+        seed,
+        max_iterations: CONNECT_ITERATIONS,
+        time_limit_s: 60.0,
+    };
+    let mut tally = Tally::default();
+    for run in driver.run(&input).map_err(|e| format!("{}: {e}", w.name))? {
+        let &(a, b, best) = queries.get(run.query).ok_or("the OMPL driver answered an unknown query")?;
+        let counts = (run.time_s * 1e3, run.iterations, run.collision_checks);
+        tally.add(best, counts, run.exact(), |best| {
+            w.checks_path(&points(&run.path), a, b, best).then(|| run.cost.unwrap_or(f64::NAN))
+        });
+    }
+    Ok(tally.stats())
+}
+
+/// The best cost at `t` seconds of a run whose improvements are `(seconds, cost)`.
+fn cost_at(improvements: &[(f64, f64)], t: f64) -> f64 {
+    improvements.iter().take_while(|i| i.0 <= t).last().map_or(f64::INFINITY, |i| i.1)
+}
+
+/// RRT* of trailmark and of OMPL on one query, `runs` runs each of `limit`, with the median
+/// final cost and the median best cost over time.
+#[allow(clippy::too_many_arguments)]
+fn star_equal_time(
+    w: &World,
+    a: Point,
+    b: Point,
+    best: f64,
+    runs: usize,
+    limit: Duration,
+    seed: u64,
+    driver: &Driver,
+) -> Result<EqualTimeRow, String> {
+    let space = R2::new(w.world.bounds());
+    let termination = Termination::time(limit);
+    let mut invalid = 0;
+    let mut ours: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
+    let mut our_iterations = Vec::new();
+    for run in 0..runs {
+        let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
+        let query = Query::new(&space, &w.checker, a, b);
+        let plan = rrt_star(&query, nearest, &RrtOptions::default(), &termination, seed + run as u64)
+            .map_err(|e| format!("{}: {e}", w.name))?;
+        invalid += usize::from(!plan.approximate && !w.checks(&plan, a, b, best));
+        our_iterations.push(plan.stats.iterations as f64);
+        let history = plan.history.iter().map(|h| (h.time.as_secs_f64(), h.cost)).collect();
+        ours.push((
+            if plan.approximate { f64::INFINITY } else { plan.cost.unwrap_or(f64::INFINITY) },
+            history,
+        ));
+    }
+    let input = crate::ompl::Input {
+        world: &w.world,
+        planner: "rrt_star",
+        queries: vec![[a.x, a.y, b.x, b.y]],
+        runs,
+        seed,
+        max_iterations: 0,
+        time_limit_s: limit.as_secs_f64(),
+    };
+    let mut theirs: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
+    let mut their_iterations = Vec::new();
+    for run in driver.run(&input).map_err(|e| format!("{}: {e}", w.name))? {
+        let exact = run.exact();
+        invalid += usize::from(exact && !w.checks_path(&points(&run.path), a, b, best));
+        their_iterations.push(run.iterations as f64);
+        theirs
+            .push((if exact { run.cost.unwrap_or(f64::INFINITY) } else { f64::INFINITY }, run.improvements));
+    }
+    let final_ratio =
+        |runs: &[(f64, Vec<(f64, f64)>)]| median(&sorted(runs.iter().map(|r| r.0 / best).collect()));
+    let at = |runs: &[(f64, Vec<(f64, f64)>)], t: f64| {
+        median(&sorted(runs.iter().map(|r| cost_at(&r.1, t) / best).collect()))
+    };
+    let end = limit.as_secs_f64();
+    let over_time = [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0]
+        .into_iter()
+        .filter(|&t| t < end)
+        .chain([end])
+        .map(|t| (t, at(&ours, t), at(&theirs, t)))
+        .collect();
+    Ok(EqualTimeRow {
+        world: w.name.clone(),
+        time_limit_s: end,
+        runs,
+        trailmark_ratio: final_ratio(&ours),
+        ompl_ratio: final_ratio(&theirs),
+        trailmark_iterations: median(&sorted(our_iterations)),
+        ompl_iterations: median(&sorted(their_iterations)),
+        over_time,
         invalid,
     })
 }
@@ -337,12 +559,29 @@ fn bench_star(w: &World, a: Point, b: Point, best: f64, runs: usize, seed: u64) 
     })
 }
 
-/// Median RRT* cost over the optimum against iterations, one line per world (log x axis).
-fn convergence_svg(rows: &[StarRow]) -> Result<String, String> {
+/// The colours of the worlds' lines.
+const COLOURS: [RGBColor; 5] = [
+    RGBColor(225, 48, 108),
+    RGBColor(22, 160, 133),
+    RGBColor(41, 128, 185),
+    RGBColor(243, 156, 18),
+    RGBColor(142, 68, 173),
+];
+
+/// A line of a plot: its legend, colour, whether dashed, and points.
+struct Line {
+    label: String,
+    colour: RGBColor,
+    dashed: bool,
+    points: Vec<(f64, f64)>,
+}
+
+/// Cost over the optimum against a log-scaled x axis, one line each, with the 5% goal.
+fn lines_svg(caption: &str, x_desc: &str, x: (f64, f64), lines: &[Line]) -> Result<String, String> {
     let e = |e: &dyn std::fmt::Display| e.to_string();
-    let top = rows
+    let top = lines
         .iter()
-        .flat_map(|r| r.convergence.iter().map(|c| c.1))
+        .flat_map(|l| l.points.iter().map(|p| p.1))
         .filter(|c| c.is_finite())
         .fold(1.1f64, f64::max)
         .min(2.0);
@@ -350,40 +589,33 @@ fn convergence_svg(rows: &[StarRow]) -> Result<String, String> {
     {
         let root = SVGBackend::with_string(&mut svg, (720, 420)).into_drawing_area();
         root.fill(&WHITE).map_err(|x| e(&x))?;
-        let first = CHECKPOINTS[0] as f64;
-        let last = CHECKPOINTS[CHECKPOINTS.len() - 1] as f64;
         let mut chart = ChartBuilder::on(&root)
-            .caption("RRT*: median path cost over the optimum, by iterations", ("sans-serif", 16))
+            .caption(caption, ("sans-serif", 16))
             .margin(12)
             .x_label_area_size(36)
             .y_label_area_size(56)
-            .build_cartesian_2d((first..last).log_scale(), 0.99..top)
+            .build_cartesian_2d((x.0..x.1).log_scale(), 0.99..top)
             .map_err(|x| e(&x))?;
-        chart.configure_mesh().x_desc("iterations").y_desc("cost / optimum").draw().map_err(|x| e(&x))?;
+        chart.configure_mesh().x_desc(x_desc).y_desc("cost / optimum").draw().map_err(|x| e(&x))?;
         let goal = RGBColor(120, 120, 120);
         chart
-            .draw_series(LineSeries::new([(first, STAR_GOAL), (last, STAR_GOAL)], goal.stroke_width(1)))
+            .draw_series(LineSeries::new([(x.0, STAR_GOAL), (x.1, STAR_GOAL)], goal.stroke_width(1)))
             .map_err(|x| e(&x))?
             .label("goal: 5% above the optimum")
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], goal.stroke_width(1)));
-        let colours = [
-            RGBColor(225, 48, 108),
-            RGBColor(22, 160, 133),
-            RGBColor(41, 128, 185),
-            RGBColor(243, 156, 18),
-            RGBColor(142, 68, 173),
-        ];
-        for (row, &colour) in rows.iter().zip(colours.iter().cycle()) {
-            let points: Vec<(f64, f64)> = row
-                .convergence
-                .iter()
-                .filter(|c| c.1.is_finite())
-                .map(|&(i, c)| (i as f64, c.min(top)))
-                .collect();
-            chart
-                .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))
+        for line in lines {
+            let points: Vec<(f64, f64)> =
+                line.points.iter().filter(|c| c.1.is_finite()).map(|&(x, c)| (x, c.min(top))).collect();
+            let style = line.colour.stroke_width(2);
+            let colour = line.colour;
+            let series = if line.dashed {
+                chart.draw_series(DashedLineSeries::new(points.clone(), 6, 4, style))
+            } else {
+                chart.draw_series(LineSeries::new(points.clone(), style))
+            };
+            series
                 .map_err(|x| e(&x))?
-                .label(row.world.clone())
+                .label(line.label.clone())
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2)));
             chart
                 .draw_series(points.into_iter().map(|p| Circle::new(p, 3, colour.filled())))
@@ -400,6 +632,49 @@ fn convergence_svg(rows: &[StarRow]) -> Result<String, String> {
     Ok(svg)
 }
 
+/// Median RRT* cost over the optimum against iterations, one line per world (log x axis).
+fn convergence_svg(rows: &[StarRow]) -> Result<String, String> {
+    let lines: Vec<Line> = rows
+        .iter()
+        .zip(COLOURS.iter().cycle())
+        .map(|(row, &colour)| Line {
+            label: row.world.clone(),
+            colour,
+            dashed: false,
+            points: row.convergence.iter().map(|&(i, c)| (i as f64, c)).collect(),
+        })
+        .collect();
+    let x = (CHECKPOINTS[0] as f64, CHECKPOINTS[CHECKPOINTS.len() - 1] as f64);
+    lines_svg("RRT*: median path cost over the optimum, by iterations", "iterations", x, &lines)
+}
+
+/// Median best cost over the optimum against time, trailmark solid and OMPL dashed.
+pub fn cost_time_svg(rows: &[EqualTimeRow]) -> Result<String, String> {
+    let mut lines = Vec::new();
+    for (row, &colour) in rows.iter().zip(COLOURS.iter().cycle()) {
+        let series = |ompl: bool| row.over_time.iter().map(move |&(t, a, b)| (t, if ompl { b } else { a }));
+        lines.push(Line {
+            label: format!("{} trailmark", row.world),
+            colour,
+            dashed: false,
+            points: series(false).collect(),
+        });
+        lines.push(Line {
+            label: format!("{} OMPL", row.world),
+            colour,
+            dashed: true,
+            points: series(true).collect(),
+        });
+    }
+    let end = rows.iter().map(|r| r.time_limit_s).fold(0.01, f64::max);
+    lines_svg(
+        "RRT*: median best cost over the optimum by time, trailmark (solid) and OMPL (dashed)",
+        "seconds",
+        (0.002, end),
+        &lines,
+    )
+}
+
 /// The section of the report.
 pub fn markdown(report: &SamplingReport) -> String {
     let mut s = String::from("## Sampling planners\n\n");
@@ -409,43 +684,7 @@ pub fn markdown(report: &SamplingReport) -> String {
          costs: the visibility graph with corners in steps of π/64. Every path is re-checked exactly.\n\n",
         DOOR - 2.0 * ROBOT_RADIUS
     ));
-    s.push_str(&format!(
-        "### RRT-Connect ({CONNECT_ITERATIONS} iterations at most, default range)\n\n\
-         | world | queries | solvable | solved | median ms | median iterations | median checks | median cost / optimum | invalid |\n\
-         |---|---:|---:|---:|---:|---:|---:|---:|---:|\n"
-    ));
-    for r in &report.connect {
-        s.push_str(&format!(
-            "| {} | {} | {} | {} ({:.1}%) | {:.3} | {:.0} | {:.0} | {:.3} | {} |\n",
-            r.world,
-            r.queries,
-            r.solvable,
-            r.solved,
-            100.0 * r.solved as f64 / r.solvable.max(1) as f64,
-            r.median_ms,
-            r.median_iterations,
-            r.median_checks,
-            r.median_cost_ratio,
-            r.invalid
-        ));
-    }
-    let share = |r: &ConnectRow| r.solved as f64 / r.solvable.max(1) as f64;
-    let missed: Vec<String> = report
-        .connect
-        .iter()
-        .filter(|r| share(r) < CONNECT_GOAL)
-        .map(|r| {
-            format!("{} ({:.1}%, median {:.0} iterations)", r.world, share(r) * 100.0, r.median_iterations)
-        })
-        .collect();
-    s.push_str(&format!(
-        "\nGoal: RRT-Connect solves at least {:.0}% of the solvable queries of each world within \
-         {CONNECT_ITERATIONS} iterations. Measured: met on {} of {} worlds{}.\n\n",
-        CONNECT_GOAL * 100.0,
-        report.connect.len() - missed.len(),
-        report.connect.len(),
-        if missed.is_empty() { String::new() } else { format!("; not met on {}", missed.join(", ")) }
-    ));
+    s.push_str(&connect_markdown(report));
     s.push_str(&format!(
         "### RRT* ({STAR_ITERATIONS} iterations, default range and k-nearest rewiring)\n\n\
          | world | query | optimum | runs | median cost / optimum | worst | median first solution (ms) | median run (s) | invalid |\n\
@@ -476,5 +715,123 @@ pub fn markdown(report: &SamplingReport) -> String {
         (worst - 1.0) * 100.0,
         if worst <= STAR_GOAL { "met" } else { "not met" }
     ));
+    if !report.equal_time.is_empty() {
+        s.push_str(&equal_time_markdown(report));
+    }
+    s
+}
+
+/// The goal for RRT-Connect against OMPL's RRTConnect: at least this much faster.
+const CONNECT_SPEEDUP_GOAL: f64 = 2.0;
+
+/// The RRT-Connect table, OMPL's rows beside trailmark's when it ran, and the goals.
+fn connect_markdown(report: &SamplingReport) -> String {
+    let with_ompl = report.connect.iter().any(|r| r.ompl.is_some());
+    let mut s = format!("### RRT-Connect ({CONNECT_ITERATIONS} iterations at most, default range)\n\n");
+    if with_ompl {
+        s.push_str(&format!(
+            "Beside OMPL {} RRTConnect: the same queries, the same iteration limit, default ranges \
+             (0.2 x the space's extent in both), both validating states and motions with trailmark's \
+             exact checker (OMPL through a C interface, so each collision question costs both the same). \
+             OMPL's time is `Planner::solve` alone; trailmark's includes building its trees.\n\n",
+            report.ompl_version.as_deref().unwrap_or("?")
+        ));
+    }
+    s.push_str(
+        "| world | library | queries | solvable | solved | median ms | median iterations | median checks | median cost / optimum | invalid | speedup (OMPL / trailmark) |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+    );
+    for r in &report.connect {
+        let rows = [("trailmark", Some(&r.trailmark)), ("OMPL", r.ompl.as_ref())];
+        for (library, stats) in rows {
+            let Some(o) = stats else { continue };
+            let speedup = match (library, r.speedup()) {
+                ("trailmark", Some(x)) => format!("**{x:.2}x**"),
+                _ => String::new(),
+            };
+            s.push_str(&format!(
+                "| {} | {library} | {} | {} | {} ({:.1}%) | {:.3} | {:.0} | {:.0} | {:.3} | {} | {speedup} |\n",
+                r.world,
+                r.queries,
+                r.solvable,
+                o.solved,
+                100.0 * o.solved as f64 / r.solvable.max(1) as f64,
+                o.median_ms,
+                o.median_iterations,
+                o.median_checks,
+                o.median_cost_ratio,
+                o.invalid,
+            ));
+        }
+    }
+    let share = |o: &ConnectStats, r: &ConnectRow| o.solved as f64 / r.solvable.max(1) as f64;
+    let missed: Vec<String> = report
+        .connect
+        .iter()
+        .filter(|r| share(&r.trailmark, r) < CONNECT_GOAL)
+        .map(|r| {
+            let ompl =
+                r.ompl.as_ref().map_or(String::new(), |o| format!("; OMPL {:.1}%", share(o, r) * 100.0));
+            format!(
+                "{} ({:.1}%, median {:.0} iterations{ompl})",
+                r.world,
+                share(&r.trailmark, r) * 100.0,
+                r.trailmark.median_iterations
+            )
+        })
+        .collect();
+    s.push_str(&format!(
+        "\nGoal: RRT-Connect solves at least {:.0}% of the solvable queries of each world within \
+         {CONNECT_ITERATIONS} iterations. Measured: met on {} of {} worlds{}.\n",
+        CONNECT_GOAL * 100.0,
+        report.connect.len() - missed.len(),
+        report.connect.len(),
+        if missed.is_empty() { String::new() } else { format!("; not met on {}", missed.join(", ")) }
+    ));
+    if with_ompl {
+        let slow: Vec<String> = report
+            .connect
+            .iter()
+            .filter_map(|r| {
+                r.speedup().filter(|&x| x < CONNECT_SPEEDUP_GOAL).map(|x| format!("{} ({x:.2}x)", r.world))
+            })
+            .collect();
+        s.push_str(&format!(
+            "\nGoal: RRT-Connect at least {CONNECT_SPEEDUP_GOAL}x faster than OMPL's. Measured: {}.\n",
+            if slow.is_empty() {
+                "met on every world".to_string()
+            } else {
+                format!("not met on {}", slow.join(", "))
+            }
+        ));
+    }
+    s.push('\n');
+    s
+}
+
+/// The RRT* comparison with OMPL at equal time.
+fn equal_time_markdown(report: &SamplingReport) -> String {
+    let version = report.ompl_version.as_deref().unwrap_or("?");
+    let mut s = format!(
+        "\n### RRT* beside OMPL {version} RRTstar at equal time\n\nThe query of the table above, the \
+         same time for every run of both (default settings: k-nearest rewiring, range 0.2 x extent, \
+         goal bias 0.05), the exact checker in both. Cost is the final path's over the optimum.\n\n\
+         | world | s/run | runs | trailmark median cost / optimum | OMPL median cost / optimum | trailmark iterations | OMPL iterations | invalid |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|\n"
+    );
+    for r in &report.equal_time {
+        s.push_str(&format!(
+            "| {} | {:.2} | {} | {:.4} | {:.4} | {:.0} | {:.0} | {} |\n",
+            r.world,
+            r.time_limit_s,
+            r.runs,
+            r.trailmark_ratio,
+            r.ompl_ratio,
+            r.trailmark_iterations,
+            r.ompl_iterations,
+            r.invalid
+        ));
+    }
+    s.push_str("\n![RRT* cost over time beside OMPL](sampling-cost-time.svg)\n");
     s
 }

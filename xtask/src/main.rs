@@ -21,6 +21,7 @@ mod bench_replan;
 mod bench_roadmap;
 mod bench_sampling;
 mod navigate;
+mod ompl;
 mod solve;
 mod verify;
 

@@ -1,0 +1,239 @@
+// The OMPL peer of `cargo xtask bench --with-ompl`: runs OMPL's RRT, RRTConnect and RRTstar on
+// the harness's polygon worlds and prints every run as JSON, for the harness to set beside
+// trailmark's own runs on the same queries.
+//
+// States and motions are validated by trailmark's exact checker through its C interface
+// (benches/ompl/checker), so both libraries answer the same collision questions at the same
+// cost per question; what differs is the planner. xtask compiles this file with
+// `g++ $(pkg-config --cflags --libs ompl)` and links the checker's static library.
+//
+// Usage: ompl-driver INPUT.json > RUNS.json, where INPUT.json is
+//   {"world": {"bounds": [...], "obstacles": [...], "robot_radius": r},
+//    "planner": "rrt" | "rrt_connect" | "rrt_star",
+//    "queries": [[ax, ay, bx, by], ...], "runs": 1, "seed": 1,
+//    "max_iterations": 10000 (0: no limit), "time_limit_s": 10.0}
+// and every run prints as {"query", "run", "status": "exact" | "approximate" | "none",
+// "time_s", "iterations", "collision_checks", "states", "cost", "path", "improvements"}.
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <ompl/base/MotionValidator.h>
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/StateValidityChecker.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/config.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+extern "C" {
+struct TmChecker;
+TmChecker *tm_checker_new(const char *json);
+void tm_checker_free(TmChecker *checker);
+bool tm_point_is_free(const TmChecker *checker, double x, double y);
+bool tm_segment_is_free(const TmChecker *checker, double ax, double ay, double bx, double by);
+}
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+using json = nlohmann::json;
+
+namespace {
+
+// Collision questions asked during the current run.
+std::atomic<unsigned long> g_checks{0};
+
+const double *xy(const ob::State *s) { return s->as<ob::RealVectorStateSpace::StateType>()->values; }
+
+class StateChecker : public ob::StateValidityChecker {
+  public:
+    StateChecker(const ob::SpaceInformationPtr &si, const TmChecker *c) : ob::StateValidityChecker(si), c_(c) {}
+    bool isValid(const ob::State *s) const override {
+        ++g_checks;
+        const double *p = xy(s);
+        return tm_point_is_free(c_, p[0], p[1]);
+    }
+
+  private:
+    const TmChecker *c_;
+};
+
+// Exact straight-line motions, as trailmark checks them (no fixed-resolution sampling).
+class SegmentValidator : public ob::MotionValidator {
+  public:
+    SegmentValidator(const ob::SpaceInformationPtr &si, const TmChecker *c) : ob::MotionValidator(si), c_(c) {}
+    bool checkMotion(const ob::State *s1, const ob::State *s2) const override {
+        ++g_checks;
+        const double *a = xy(s1);
+        const double *b = xy(s2);
+        bool ok = tm_segment_is_free(c_, a[0], a[1], b[0], b[1]);
+        if (ok) {
+            ++valid_;
+        } else {
+            ++invalid_;
+        }
+        return ok;
+    }
+    // Planners of this driver never ask for the last valid state; answer conservatively.
+    bool checkMotion(const ob::State *s1, const ob::State *s2, std::pair<ob::State *, double> &last) const override {
+        if (checkMotion(s1, s2)) {
+            return true;
+        }
+        if (last.first != nullptr) {
+            si_->copyState(last.first, s1);
+        }
+        last.second = 0.0;
+        return false;
+    }
+
+  private:
+    const TmChecker *c_;
+};
+
+ob::PlannerPtr make_planner(const std::string &name, const ob::SpaceInformationPtr &si) {
+    if (name == "rrt") {
+        return std::make_shared<og::RRT>(si);
+    }
+    if (name == "rrt_connect") {
+        return std::make_shared<og::RRTConnect>(si);
+    }
+    if (name == "rrt_star") {
+        return std::make_shared<og::RRTstar>(si);
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    if (argc != 2) {
+        std::cerr << "usage: " << argv[0] << " INPUT.json\n";
+        return 2;
+    }
+    std::ifstream file(argv[1]);
+    if (!file) {
+        std::cerr << "cannot read " << argv[1] << "\n";
+        return 2;
+    }
+    json input;
+    try {
+        input = json::parse(file);
+    } catch (const std::exception &e) {
+        std::cerr << "bad input: " << e.what() << "\n";
+        return 2;
+    }
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    ompl::RNG::setSeed(input.value("seed", 1UL));
+
+    std::string world_text = input.at("world").dump();
+    TmChecker *checker = tm_checker_new(world_text.c_str());
+    if (checker == nullptr) {
+        std::cerr << "bad world\n";
+        return 2;
+    }
+    std::vector<double> bounds = input.at("world").at("bounds").get<std::vector<double>>();
+    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+    ob::RealVectorBounds b(2);
+    b.setLow(0, bounds[0]);
+    b.setLow(1, bounds[1]);
+    b.setHigh(0, bounds[2]);
+    b.setHigh(1, bounds[3]);
+    space->setBounds(b);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker(std::make_shared<StateChecker>(si, checker));
+    si->setMotionValidator(std::make_shared<SegmentValidator>(si, checker));
+    si->setup();
+
+    std::string name = input.at("planner").get<std::string>();
+    unsigned int max_iterations = input.value("max_iterations", 0U);
+    double time_limit = input.value("time_limit_s", 10.0);
+    int runs = input.value("runs", 1);
+    json out = json::array();
+    const auto &queries = input.at("queries");
+    for (size_t q = 0; q < queries.size(); ++q) {
+        std::vector<double> ends = queries[q].get<std::vector<double>>();
+        for (int run = 0; run < runs; ++run) {
+            ob::PlannerPtr planner = make_planner(name, si);
+            if (!planner) {
+                std::cerr << "unknown planner " << name << "\n";
+                return 2;
+            }
+            auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+            ob::ScopedState<> start(space), goal(space);
+            start[0] = ends[0];
+            start[1] = ends[1];
+            goal[0] = ends[2];
+            goal[1] = ends[3];
+            pdef->setStartAndGoalStates(start, goal);
+            pdef->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+            json improvements = json::array();
+            auto clock = std::chrono::steady_clock::now();
+            auto seconds = [&clock] {
+                return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+            };
+            pdef->setIntermediateSolutionCallback(
+                [&](const ob::Planner *, const std::vector<const ob::State *> &, const ob::Cost cost) {
+                    improvements.push_back({seconds(), cost.value()});
+                });
+            planner->setProblemDefinition(pdef);
+            planner->setup();
+            // The iteration limit: the termination condition is asked once per iteration.
+            ob::IterationTerminationCondition iterations(max_iterations > 0 ? max_iterations : ~0U);
+            ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
+                ob::PlannerTerminationCondition(iterations), ob::timedPlannerTerminationCondition(time_limit));
+            g_checks = 0;
+            clock = std::chrono::steady_clock::now();
+            ob::PlannerStatus status = planner->solve(ptc);
+            double elapsed = seconds();
+            json row;
+            row["query"] = q;
+            row["run"] = run;
+            row["time_s"] = elapsed;
+            row["iterations"] = iterations.getTimesCalled();
+            row["collision_checks"] = g_checks.load();
+            bool exact = status == ob::PlannerStatus::EXACT_SOLUTION && pdef->hasExactSolution();
+            bool approximate = status == ob::PlannerStatus::APPROXIMATE_SOLUTION;
+            row["status"] = exact ? "exact" : (approximate ? "approximate" : "none");
+            ob::PlannerData data(si);
+            planner->getPlannerData(data);
+            row["states"] = data.numVertices();
+            json path = json::array();
+            if (exact || approximate) {
+                auto *geometric = pdef->getSolutionPath()->as<og::PathGeometric>();
+                for (const ob::State *s : geometric->getStates()) {
+                    path.push_back({xy(s)[0], xy(s)[1]});
+                }
+                row["cost"] = geometric->length();
+            } else {
+                row["cost"] = nullptr;
+            }
+            row["path"] = path;
+            row["improvements"] = improvements;
+            out.push_back(row);
+        }
+    }
+    tm_checker_free(checker);
+    json doc;
+    doc["ompl_version"] = std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) + "." +
+                          std::to_string(OMPL_PATCH_VERSION);
+    doc["runs"] = out;
+    std::cout << doc.dump() << "\n";
+    return 0;
+}

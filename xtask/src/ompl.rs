@@ -1,0 +1,157 @@
+//! The OMPL peer of `cargo xtask bench --with-ompl`: builds `benches/ompl/driver.cpp` against
+//! the system's OMPL (found with pkg-config) and trailmark's exact checker
+//! (`benches/ompl/checker`, a static library), then runs OMPL's planners on the harness's own
+//! worlds and queries.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use serde::{Deserialize, Serialize};
+use trailmark::core::world::PolygonWorld;
+
+/// How to get what the driver needs, for the message shown when it is missing.
+pub const INSTALL: &str = "install OMPL and nlohmann-json with `sudo apt-get install libompl-dev \
+                           nlohmann-json3-dev` (Debian, Ubuntu) and run again";
+
+/// The compiled driver.
+pub struct Driver {
+    program: PathBuf,
+    /// The OMPL version pkg-config reports.
+    pub version: String,
+}
+
+/// What the driver is asked to run.
+#[derive(Serialize)]
+pub struct Input<'a> {
+    /// The world (the same document trailmark reads).
+    pub world: &'a PolygonWorld,
+    /// `rrt`, `rrt_connect` or `rrt_star`.
+    pub planner: &'a str,
+    /// `[ax, ay, bx, by]` per query.
+    pub queries: Vec<[f64; 4]>,
+    /// Runs per query.
+    pub runs: usize,
+    /// OMPL's global seed.
+    pub seed: u64,
+    /// The iteration limit (0: none).
+    pub max_iterations: u64,
+    /// The time limit per run, seconds.
+    pub time_limit_s: f64,
+}
+
+/// One run of an OMPL planner.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+pub struct Run {
+    /// The index of the query.
+    pub query: usize,
+    /// The run of that query.
+    pub run: usize,
+    /// `exact`, `approximate` or `none`.
+    pub status: String,
+    /// The time of `Planner::solve`, seconds.
+    pub time_s: f64,
+    /// The times the termination condition was asked (once per iteration).
+    pub iterations: u64,
+    /// State and motion checks.
+    pub collision_checks: u64,
+    /// The vertices of the planner's data (tree or graph states).
+    pub states: u64,
+    /// The path length (`None` without a path).
+    pub cost: Option<f64>,
+    /// The path's states.
+    pub path: Vec<[f64; 2]>,
+    /// `(seconds, cost)` at every improvement the planner reported.
+    pub improvements: Vec<(f64, f64)>,
+}
+
+impl Run {
+    /// Whether OMPL found an exact solution.
+    pub fn exact(&self) -> bool {
+        self.status == "exact"
+    }
+}
+
+#[derive(Deserialize)]
+struct Output {
+    runs: Vec<Run>,
+}
+
+fn run_tool(command: &mut Command, what: &str) -> Result<String, String> {
+    let out = command.output().map_err(|e| format!("cannot run {what}: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("{what} failed:\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    Ok(String::from_utf8_lossy(&out.stdout).trim().to_string())
+}
+
+fn pkg_config(args: &[&str]) -> Result<String, String> {
+    run_tool(Command::new("pkg-config").args(args), &format!("pkg-config {}", args.join(" ")))
+}
+
+fn newer(a: &Path, b: &Path) -> bool {
+    let time = |p: &Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
+    match (time(a), time(b)) {
+        (Some(a), Some(b)) => a > b,
+        _ => true,
+    }
+}
+
+impl Driver {
+    /// Builds the driver (when its source or the checker changed); an error that says what to
+    /// install when OMPL or nlohmann-json is missing.
+    pub fn build() -> Result<Driver, String> {
+        let version =
+            pkg_config(&["--modversion", "ompl"]).map_err(|_| format!("OMPL not found: {INSTALL}"))?;
+        pkg_config(&["--exists", "nlohmann_json"])
+            .map_err(|_| format!("nlohmann-json not found: {INSTALL}"))?;
+        let root = crate::workspace_root();
+        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+        run_tool(
+            Command::new(cargo).current_dir(&root).args([
+                "build",
+                "--quiet",
+                "--release",
+                "--package",
+                "trailmark-ompl-checker",
+            ]),
+            "cargo build of the checker library",
+        )?;
+        let library = root.join("target/release/libtrailmark_ompl_checker.a");
+        let source = root.join("benches/ompl/driver.cpp");
+        let folder = root.join("target/ompl");
+        let program = folder.join("ompl-driver");
+        if newer(&source, &program) || newer(&library, &program) {
+            std::fs::create_dir_all(&folder).map_err(|e| e.to_string())?;
+            let cflags = pkg_config(&["--cflags", "ompl", "nlohmann_json"])?;
+            // Only the -l part: Debian's ompl.pc names Boost files its runtime does not need.
+            let libs = pkg_config(&["--libs-only-l", "ompl"])?;
+            let compiler = std::env::var("CXX").unwrap_or_else(|_| "c++".into());
+            eprintln!("compiling the OMPL driver ({compiler}, OMPL {version})...");
+            let mut command = Command::new(&compiler);
+            command
+                .args(["-O2", "-DNDEBUG"])
+                .args(cflags.split_whitespace())
+                .arg("-std=c++17")
+                .arg(&source)
+                .arg("-o")
+                .arg(&program)
+                .arg(&library)
+                .args(libs.split_whitespace())
+                .args(["-ldl", "-lm"]);
+            run_tool(&mut command, "the C++ compiler")?;
+        }
+        Ok(Driver { program, version })
+    }
+
+    /// Runs `input` and returns the runs, query by query.
+    pub fn run(&self, input: &Input<'_>) -> Result<Vec<Run>, String> {
+        let file = self.program.with_file_name(format!("input-{}.json", std::process::id()));
+        let text = serde_json::to_string(input).map_err(|e| e.to_string())?;
+        std::fs::write(&file, text).map_err(|e| format!("cannot write {}: {e}", file.display()))?;
+        let out = run_tool(Command::new(&self.program).arg(&file), "the OMPL driver");
+        let _ = std::fs::remove_file(&file);
+        let out: Output =
+            serde_json::from_str(&out?).map_err(|e| format!("the OMPL driver's output: {e}"))?;
+        Ok(out.runs)
+    }
+}

@@ -112,7 +112,7 @@ impl<S: StateSpace> BruteForce<S> {
             .enumerate()
             .map(|(i, s)| (i as u32, measure(space, s, query, direction)))
             .collect();
-        all.sort_by(by_distance);
+        all.sort_unstable_by(by_distance);
         all
     }
 }
@@ -223,7 +223,7 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
                     }
                 }
             }
-            best.sort_by(by_distance);
+            best.sort_unstable_by(by_distance);
             best.truncate(k);
             if candidates.len() == self.groups.len() {
                 return best;
@@ -254,7 +254,7 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
                 }
             }
         }
-        found.sort_by(by_distance);
+        found.sort_unstable_by(by_distance);
         found
     }
 }

@@ -1,6 +1,8 @@
 //! RRT* (Karaman and Frazzoli 2011): RRT that keeps improving its path.
 //!
-//! Each new state is joined to its cheapest valid parent among its `k` nearest neighbours,
+//! Each sample is steered from its nearest state, as in RRT, and kept only when that motion is
+//! valid (one check for a blocked sample). The new state is then joined to its cheapest valid
+//! parent among its `k` nearest neighbours,
 //! k = ⌈k_rrt ln n⌉ with k_rrt = 1.1 · 2^(d+1) · e · (1 + 1/d) (OMPL's choice), and then offers
 //! itself as a cheaper parent to those neighbours (*rewiring*); a rewired node's new cost flows
 //! down to all its descendants. The run goes on after the first solution until its
@@ -90,19 +92,34 @@ where
         if new == from || (new == goal && at_goal.iter().any(|&g| *nearest.state(g) == goal)) {
             continue;
         }
-        // The cheapest valid parent among the k nearest (the nearest included).
+        // As in Karaman and Frazzoli's RRT*, the new state joins only when the motion from the
+        // nearest state is valid: a blocked sample costs one check, not a neighbour search.
+        stats.collision_checks += 1;
+        if !validity.motion_is_valid(space, &from, &new) {
+            continue;
+        }
+        // The cheapest valid parent among the k nearest (the nearest included, known valid).
         let k = neighbour_count(nearest.len() + 1, dimension);
         let mut into = nearest.k_nearest(space, &new, k, Direction::ToQuery);
         if !into.iter().any(|&(id, _)| id == near) {
             into.push((near, space.distance(&from, &new)));
         }
-        into.sort_by(|a, b| (costs[a.0 as usize] + a.1).total_cmp(&(costs[b.0 as usize] + b.1)));
+        // By cost through each; ties in the order of distance, then id.
+        into.sort_unstable_by(|a, b| {
+            (costs[a.0 as usize] + a.1)
+                .total_cmp(&(costs[b.0 as usize] + b.1))
+                .then(a.1.total_cmp(&b.1))
+                .then(a.0.cmp(&b.0))
+        });
         let mut parent = None;
         // How many of `into` were checked before the parent: their motions are invalid.
         let mut refused = into.len();
         for (i, &(id, dist)) in into.iter().enumerate() {
-            stats.collision_checks += 1;
-            if validity.motion_is_valid(space, nearest.state(id), &new) {
+            let valid = id == near || {
+                stats.collision_checks += 1;
+                validity.motion_is_valid(space, nearest.state(id), &new)
+            };
+            if valid {
                 parent = Some((id, costs[id as usize] + dist));
                 refused = i;
                 break;

@@ -534,9 +534,11 @@ impl CollisionChecker {
         &self.world
     }
 
-    fn near(&self, min: Point, max: Point) -> Vec<usize> {
+    /// Whether `test` holds for every obstacle whose grown box meets the box `min`-`max`
+    /// (through the bounding-volume hierarchy, without allocating).
+    fn all_near(&self, min: Point, max: Point, mut test: impl FnMut(&Polygon) -> bool) -> bool {
         let query = Aabb::new(PVector::new(min.x, min.y), PVector::new(max.x, max.y));
-        self.bvh.intersect_aabb(&query).map(|i| i as usize).collect()
+        self.bvh.intersect_aabb(&query).all(|i| test(&self.world.obstacles[i as usize]))
     }
 
     /// Whether the robot at `p` is collision-free.
@@ -545,27 +547,31 @@ impl CollisionChecker {
             return false;
         }
         let r = self.world.robot_radius;
-        self.near(p, p).into_iter().all(|i| {
-            let o = &self.world.obstacles[i];
+        self.all_near(p, p, |o| {
             !o.contains_strictly(p) && o.edges().all(|(a, b)| point_segment_distance(p, a, b) >= r)
         })
     }
 
-    /// Whether the robot moving in a straight line from `a` to `b` stays collision-free.
+    /// Whether the robot moving in a straight line from `a` to `b` stays collision-free: both
+    /// ends in the bounds (which are convex), and for every obstacle near the segment, the start
+    /// not strictly inside and, for a disc, every edge at least the radius from the segment
+    /// (which covers the ends' own clearance); for a point robot, neither end inside and no
+    /// stretch of the segment in the obstacle's interior. One pass through the hierarchy.
     pub fn segment_is_free(&self, a: Point, b: Point) -> bool {
-        if !(self.point_is_free(a) && self.point_is_free(b)) {
+        let finite = [a.x, a.y, b.x, b.y].iter().all(|v| v.is_finite());
+        if !(finite && self.world.bounds.contains(a) && self.world.bounds.contains(b)) {
             return false;
         }
         let r = self.world.robot_radius;
         let min = Point::new(a.x.min(b.x), a.y.min(b.y));
         let max = Point::new(a.x.max(b.x), a.y.max(b.y));
-        self.near(min, max).into_iter().all(|i| {
-            let o = &self.world.obstacles[i];
+        self.all_near(min, max, |o| {
             if r > 0.0 {
-                // The start is outside, so the segment can only get in through the boundary.
-                o.edges().all(|(p, q)| segment_distance(a, b, p, q) >= r)
+                // With the start outside, the segment can only get in (and the end can only be
+                // inside) through the boundary, which every edge's distance rules out.
+                !o.contains_strictly(a) && o.edges().all(|(p, q)| segment_distance(a, b, p, q) >= r)
             } else {
-                !segment_enters(o, a, b)
+                !(o.contains_strictly(a) || o.contains_strictly(b) || segment_enters(o, a, b))
             }
         })
     }
@@ -591,8 +597,7 @@ impl CollisionChecker {
         let reach = radius + r;
         let (min, max) =
             (center - nalgebra::Vector2::new(reach, reach), center + nalgebra::Vector2::new(reach, reach));
-        self.near(min, max).into_iter().all(|i| {
-            let o = &self.world.obstacles[i];
+        self.all_near(min, max, |o| {
             o.edges().all(|(p, q)| arc.distance_to_segment(p, q) >= r.max(f64::MIN_POSITIVE))
         })
     }
@@ -651,8 +656,8 @@ impl CollisionChecker {
         let n = points.len();
         let triangles = (0..n).flat_map(|i| (i + 1..n).flat_map(move |j| (j + 1..n).map(move |k| (i, j, k))));
         let triangles: Vec<_> = triangles.collect();
-        self.near(min, max).into_iter().all(|o| {
-            self.world.obstacles[o].vertices().iter().all(|&v| {
+        self.all_near(min, max, |o| {
+            o.vertices().iter().all(|&v| {
                 !triangles.iter().any(|&(i, j, k)| in_closed_triangle(points[i], points[j], points[k], v))
             })
         })

@@ -238,6 +238,34 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
         }
     }
 
+    /// The tree's nearest position first; then every other position whose lower bound is
+    /// within the best true distance found (usually none but ties), measured too.
+    fn nearest(&self, space: &S, query: &S::State, direction: Direction) -> Option<(u32, f64)> {
+        if self.states.is_empty() {
+            return None;
+        }
+        let at = Self::key(space, query);
+        let first = self.tree.nearest_one::<SquaredEuclidean>(&at).item;
+        let consider = |best: &mut Option<(u32, f64)>, group: u64| {
+            for &id in &self.groups[group as usize] {
+                let candidate = (id, measure(space, &self.states[id as usize], query, direction));
+                if best.is_none_or(|b| by_distance(&candidate, &b).is_lt()) {
+                    *best = Some(candidate);
+                }
+            }
+        };
+        let mut best = None;
+        consider(&mut best, first);
+        let reach = best.map_or(0.0, |b: (u32, f64)| b.1);
+        // Widened by a rounding allowance, as in `within`: the true distance decides.
+        for c in self.tree.within_unsorted::<SquaredEuclidean>(&at, reach * reach * (1.0 + 1e-9)) {
+            if c.item != first {
+                consider(&mut best, c.item);
+            }
+        }
+        best
+    }
+
     fn within(&self, space: &S, query: &S::State, radius: f64, direction: Direction) -> Vec<(u32, f64)> {
         if radius.is_nan() || radius < 0.0 || self.states.is_empty() {
             return Vec::new();

@@ -667,7 +667,7 @@ pub fn run(args: &Args) -> ExitCode {
         } else {
             None
         };
-        match crate::bench_sampling::bench_sampling(args.suite, args.seed, driver.as_ref()) {
+        match crate::bench_sampling::bench_sampling(args.suite, args.seed, driver.as_ref(), &today()) {
             Ok(r) => sampling = Some(r),
             Err(e) => {
                 eprintln!("error: {e}");
@@ -730,6 +730,17 @@ pub fn run(args: &Args) -> ExitCode {
         .and_then(|()| match &report.sampling {
             Some(s) => std::fs::write(folder.join("sampling-convergence.svg"), &s.convergence_svg),
             None => Ok(()),
+        })
+        .and_then(|()| {
+            // One OMPL benchmark log per sampling world, for ompl_benchmark_statistics and
+            // Planner Arena.
+            let logs = report.sampling.iter().flat_map(|s| &s.logs);
+            let folder = folder.join("ompl");
+            std::fs::create_dir_all(&folder)?;
+            for e in logs {
+                std::fs::write(folder.join(format!("{}.log", e.name)), crate::ompl_log::write(e))?;
+            }
+            Ok(())
         })
         .and_then(|()| match report.sampling.as_ref().filter(|s| !s.equal_time.is_empty()) {
             Some(s) => match crate::bench_sampling::cost_time_svg(&s.equal_time) {

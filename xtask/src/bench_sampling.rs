@@ -25,6 +25,7 @@ use trailmark::sample::{KdNearest, Plan, Query, R2, RrtOptions, Termination, rrt
 
 use crate::bench::{Suite, median};
 use crate::ompl::Driver;
+use crate::ompl_log::{Experiment, LogRun, PlannerRuns};
 
 /// The side of the square worlds.
 const SIZE: f64 = 40.0;
@@ -303,6 +304,9 @@ pub struct SamplingReport {
     /// The cost-vs-iterations plot (SVG), not serialized.
     #[serde(skip)]
     pub convergence_svg: String,
+    /// Every run, one experiment per world, for the OMPL-format logs (not serialized).
+    #[serde(skip)]
+    pub logs: Vec<Experiment>,
 }
 
 impl SamplingReport {
@@ -323,7 +327,12 @@ fn sorted(mut v: Vec<f64>) -> Vec<f64> {
 }
 
 /// Runs the section.
-pub fn bench_sampling(suite: Suite, seed: u64, ompl: Option<&Driver>) -> Result<SamplingReport, String> {
+pub fn bench_sampling(
+    suite: Suite,
+    seed: u64,
+    ompl: Option<&Driver>,
+    date: &str,
+) -> Result<SamplingReport, String> {
     let (queries, star_runs, equal_time) = match suite {
         Suite::Quick => (200, 5, Duration::from_millis(500)),
         Suite::Full => (1000, 15, Duration::from_secs(2)),
@@ -332,13 +341,15 @@ pub fn bench_sampling(suite: Suite, seed: u64, ompl: Option<&Driver>) -> Result<
     let mut connect = Vec::new();
     let mut star = Vec::new();
     let mut equal_times = Vec::new();
+    let mut logs = Vec::new();
     for (i, w) in worlds.iter().enumerate() {
         eprintln!("[sampling {}/{}] {}: RRT-Connect, {queries} queries", i + 1, worlds.len(), w.name);
         let qs = w.queries(queries, seed ^ 0x5a5a)?;
-        let mut row = bench_connect(w, &qs, seed)?;
+        let mut planners = Vec::new();
+        let mut row = bench_connect(w, &qs, seed, &mut planners)?;
         if let Some(driver) = ompl {
             eprintln!("[sampling {}/{}] {}: OMPL RRTConnect, {queries} queries", i + 1, worlds.len(), w.name);
-            row.ompl = Some(ompl_connect(w, &qs, seed, driver)?);
+            row.ompl = Some(ompl_connect(w, &qs, seed, driver, &mut planners)?);
         }
         connect.push(row);
         eprintln!(
@@ -355,7 +366,7 @@ pub fn bench_sampling(suite: Suite, seed: u64, ompl: Option<&Driver>) -> Result<
             .max_by(|x, y| x.2.unwrap_or(0.0).total_cmp(&y.2.unwrap_or(0.0)))
             .ok_or_else(|| format!("{}: no solvable query", w.name))?;
         let best = best.unwrap_or(f64::NAN);
-        star.push(bench_star(w, a, b, best, star_runs, seed)?);
+        star.push(bench_star(w, a, b, best, star_runs, seed, &mut planners)?);
         if let Some(driver) = ompl {
             eprintln!(
                 "[sampling {}/{}] {}: RRT* of both libraries, {star_runs} runs of {:.1} s each",
@@ -364,8 +375,31 @@ pub fn bench_sampling(suite: Suite, seed: u64, ompl: Option<&Driver>) -> Result<
                 w.name,
                 equal_time.as_secs_f64()
             );
-            equal_times.push(star_equal_time(w, a, b, best, star_runs, equal_time, seed, driver)?);
+            equal_times.push(star_equal_time(
+                w,
+                a,
+                b,
+                best,
+                star_runs,
+                equal_time,
+                seed,
+                driver,
+                &mut planners,
+            )?);
         }
+        logs.push(Experiment {
+            name: w.name.clone(),
+            setup: format!(
+                "{}: {SIZE} x {SIZE} polygon world, robot radius {ROBOT_RADIUS}; RRT-Connect on {queries} seeded queries \
+                 (at most {CONNECT_ITERATIONS} iterations each); RRT* on the query ({:.3}, {:.3}) -> ({:.3}, {:.3}) \
+                 whose shortest path is {best:.6}",
+                w.name, a.x, a.y, b.x, b.y
+            ),
+            seed,
+            time_limit_s: 60.0,
+            date: date.to_string(),
+            planners,
+        });
     }
     let convergence_svg = convergence_svg(&star)?;
     Ok(SamplingReport {
@@ -374,6 +408,7 @@ pub fn bench_sampling(suite: Suite, seed: u64, ompl: Option<&Driver>) -> Result<
         equal_time: equal_times,
         ompl_version: ompl.map(|d| d.version.clone()),
         convergence_svg,
+        logs,
     })
 }
 
@@ -381,23 +416,28 @@ fn bench_connect(
     w: &World,
     queries: &[(Point, Point, Option<f64>)],
     seed: u64,
+    log: &mut Vec<PlannerRuns>,
 ) -> Result<ConnectRow, String> {
     let space = R2::new(w.world.bounds());
     let checker = &w.checker;
     let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
     let limit = Termination::iterations(CONNECT_ITERATIONS);
     let mut tally = Tally::default();
+    let mut runs = Vec::with_capacity(queries.len());
     for (i, &(a, b, best)) in queries.iter().enumerate() {
         let query = Query::new(&space, checker, a, b);
+        let memory = crate::memory::mark();
         let clock = Instant::now();
         let plan = rrt_connect(&query, nearest.clone(), &RrtOptions::default(), &limit, seed + i as u64)
             .map_err(|e| format!("{}: {e}", w.name))?;
         let ms = clock.elapsed().as_secs_f64() * 1e3;
+        runs.push(log_run(&plan, ms / 1e3, crate::memory::peak_since(memory)));
         let counts = (ms, plan.stats.iterations, plan.stats.collision_checks);
         tally.add(best, counts, !plan.approximate, |best| {
             w.checks(&plan, a, b, best).then(|| plan.cost.unwrap_or(f64::NAN))
         });
     }
+    log.push(PlannerRuns { name: "trailmark_RRTConnect".into(), optimizing: false, runs });
     Ok(ConnectRow {
         world: w.name.clone(),
         queries: queries.len(),
@@ -411,6 +451,36 @@ fn points(path: &[[f64; 2]]) -> Vec<Point> {
     path.iter().map(|&[x, y]| Point::new(x, y)).collect()
 }
 
+/// A trailmark run for the OMPL-format log.
+fn log_run(plan: &Plan<Point>, time_s: f64, memory_bytes: usize) -> LogRun {
+    LogRun {
+        time_s,
+        solved: !plan.approximate,
+        approximate: plan.approximate && plan.path.is_some(),
+        memory_bytes: Some(memory_bytes),
+        graph_states: plan.stats.tree_sizes.iter().map(|&n| n as u64).sum(),
+        solution_length: plan.cost.filter(|_| !plan.approximate),
+        iterations: plan.stats.iterations,
+        collision_checks: plan.stats.collision_checks,
+        progress: plan.history.iter().map(|h| (h.time.as_secs_f64(), h.cost)).collect(),
+    }
+}
+
+/// An OMPL run for the OMPL-format log.
+fn ompl_log_run(run: &crate::ompl::Run) -> LogRun {
+    LogRun {
+        time_s: run.time_s,
+        solved: run.exact(),
+        approximate: run.status == "approximate",
+        memory_bytes: None,
+        graph_states: run.states,
+        solution_length: run.cost.filter(|_| run.exact()),
+        iterations: run.iterations,
+        collision_checks: run.collision_checks,
+        progress: run.improvements.clone(),
+    }
+}
+
 /// OMPL's RRTConnect on the same queries, with the same iteration limit, each path re-checked
 /// as trailmark's are.
 fn ompl_connect(
@@ -418,6 +488,7 @@ fn ompl_connect(
     queries: &[(Point, Point, Option<f64>)],
     seed: u64,
     driver: &Driver,
+    log: &mut Vec<PlannerRuns>,
 ) -> Result<ConnectStats, String> {
     let input = crate::ompl::Input {
         world: &w.world,
@@ -429,7 +500,13 @@ fn ompl_connect(
         time_limit_s: 60.0,
     };
     let mut tally = Tally::default();
-    for run in driver.run(&input).map_err(|e| format!("{}: {e}", w.name))? {
+    let runs = driver.run(&input).map_err(|e| format!("{}: {e}", w.name))?;
+    log.push(PlannerRuns {
+        name: "OMPL_RRTConnect".into(),
+        optimizing: false,
+        runs: runs.iter().map(ompl_log_run).collect(),
+    });
+    for run in runs {
         let &(a, b, best) = queries.get(run.query).ok_or("the OMPL driver answered an unknown query")?;
         let counts = (run.time_s * 1e3, run.iterations, run.collision_checks);
         tally.add(best, counts, run.exact(), |best| {
@@ -456,17 +533,21 @@ fn star_equal_time(
     limit: Duration,
     seed: u64,
     driver: &Driver,
+    log: &mut Vec<PlannerRuns>,
 ) -> Result<EqualTimeRow, String> {
     let space = R2::new(w.world.bounds());
     let termination = Termination::time(limit);
     let mut invalid = 0;
     let mut ours: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
     let mut our_iterations = Vec::new();
+    let mut our_log = Vec::new();
     for run in 0..runs {
         let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
         let query = Query::new(&space, &w.checker, a, b);
+        let memory = crate::memory::mark();
         let plan = rrt_star(&query, nearest, &RrtOptions::default(), &termination, seed + run as u64)
             .map_err(|e| format!("{}: {e}", w.name))?;
+        our_log.push(log_run(&plan, plan.stats.elapsed.as_secs_f64(), crate::memory::peak_since(memory)));
         invalid += usize::from(!plan.approximate && !w.checks(&plan, a, b, best));
         our_iterations.push(plan.stats.iterations as f64);
         let history = plan.history.iter().map(|h| (h.time.as_secs_f64(), h.cost)).collect();
@@ -486,7 +567,15 @@ fn star_equal_time(
     };
     let mut theirs: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
     let mut their_iterations = Vec::new();
-    for run in driver.run(&input).map_err(|e| format!("{}: {e}", w.name))? {
+    let their_runs = driver.run(&input).map_err(|e| format!("{}: {e}", w.name))?;
+    let name = |library: &str| format!("{library}_RRTstar_{}s", limit.as_secs_f64());
+    log.push(PlannerRuns { name: name("trailmark"), optimizing: true, runs: our_log });
+    log.push(PlannerRuns {
+        name: name("OMPL"),
+        optimizing: true,
+        runs: their_runs.iter().map(ompl_log_run).collect(),
+    });
+    for run in their_runs {
         let exact = run.exact();
         invalid += usize::from(exact && !w.checks_path(&points(&run.path), a, b, best));
         their_iterations.push(run.iterations as f64);
@@ -518,17 +607,29 @@ fn star_equal_time(
     })
 }
 
-fn bench_star(w: &World, a: Point, b: Point, best: f64, runs: usize, seed: u64) -> Result<StarRow, String> {
+#[allow(clippy::too_many_arguments)]
+fn bench_star(
+    w: &World,
+    a: Point,
+    b: Point,
+    best: f64,
+    runs: usize,
+    seed: u64,
+    log: &mut Vec<PlannerRuns>,
+) -> Result<StarRow, String> {
     let space = R2::new(w.world.bounds());
     let checker = &w.checker;
     let limit = Termination::iterations(STAR_ITERATIONS);
     let (mut finals, mut times, mut firsts, mut invalid) = (Vec::new(), Vec::new(), Vec::new(), 0);
     let mut at_checkpoints: Vec<Vec<f64>> = vec![Vec::new(); CHECKPOINTS.len()];
+    let mut log_runs = Vec::new();
     for run in 0..runs {
         let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
         let query = Query::new(&space, checker, a, b);
+        let memory = crate::memory::mark();
         let plan = rrt_star(&query, nearest, &RrtOptions::default(), &limit, seed + run as u64)
             .map_err(|e| format!("{}: {e}", w.name))?;
+        log_runs.push(log_run(&plan, plan.stats.elapsed.as_secs_f64(), crate::memory::peak_since(memory)));
         times.push(plan.stats.elapsed.as_secs_f64());
         firsts.push(plan.stats.time_to_solution.map_or(f64::INFINITY, |t| t.as_secs_f64() * 1e3));
         if plan.approximate || !w.checks(&plan, a, b, best) {
@@ -542,6 +643,11 @@ fn bench_star(w: &World, a: Point, b: Point, best: f64, runs: usize, seed: u64) 
             at_checkpoints[k].push(cost.map_or(f64::INFINITY, |c| c / best));
         }
     }
+    log.push(PlannerRuns {
+        name: format!("trailmark_RRTstar_{STAR_ITERATIONS}_iterations"),
+        optimizing: true,
+        runs: log_runs,
+    });
     let finals = sorted(finals);
     let convergence = CHECKPOINTS.iter().zip(at_checkpoints).map(|(&c, v)| (c, median(&sorted(v)))).collect();
     Ok(StarRow {

@@ -20,8 +20,10 @@ mod bench;
 mod bench_replan;
 mod bench_roadmap;
 mod bench_sampling;
+mod memory;
 mod navigate;
 mod ompl;
+mod ompl_log;
 mod solve;
 mod verify;
 
@@ -95,6 +97,10 @@ pub enum VerifyAlgo {
     /// Dijkstra's algorithm.
     Dijkstra,
 }
+
+/// Every allocation is counted, for the benchmark's peak-memory figures.
+#[global_allocator]
+static ALLOCATOR: memory::Counting = memory::Counting;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();

@@ -149,8 +149,9 @@ pub fn nav_cases(suite: Suite, seed: u64, movingai_dir: Option<&Path>) -> Result
 /// same knowledge, so all of them solve exactly the same sequence of problems.
 pub fn bench_navigation(cases: &[NavCase], runs: u32) -> Result<Vec<NavRow>, String> {
     let mut rows = Vec::new();
-    for (i, case) in cases.iter().enumerate() {
-        eprintln!("[nav {}/{}] {} radius {}", i + 1, cases.len(), case.name, case.radius);
+    let mut progress = crate::progress::Progress::new("navigation", cases.len());
+    for case in cases {
+        progress.step(format!("{} radius {}", case.name, case.radius));
         let prior =
             Grid::new(case.grid.width() as usize, case.grid.height() as usize).map_err(|e| e.to_string())?;
         let config = Navigation {
@@ -255,8 +256,9 @@ const ANYTIME: EpsilonSchedule = EpsilonSchedule { initial: 3.0, step: 0.5 };
 /// ARA* and AD* on the queries of `maps` (the first `n` of each), against A*.
 pub fn bench_anytime(maps: &[&Map], n: usize, runs: u32) -> Vec<AnytimeRow> {
     let mut rows = Vec::new();
+    let mut progress = crate::progress::Progress::new("anytime", maps.len());
     for map in maps {
-        eprintln!("[anytime] {}", map.name);
+        progress.step(&map.name);
         let graph = GridGraph::new(&map.grid, Connectivity::Eight);
         let between = graph.heuristic_between(GridHeuristic::Octile);
         let mut search = Search::new();

@@ -120,8 +120,9 @@ pub fn bench_roadmaps(suite: Suite, seed: u64, runs: u32) -> Result<RoadmapRepor
         Suite::Full => (&[10, 20, 50, 100, 200, 300, 500], 100),
     };
     let mut rows = Vec::new();
-    for (i, &count) in counts.iter().enumerate() {
-        eprintln!("[roadmaps {}/{}] {count} obstacles", i + 1, counts.len());
+    let mut progress = crate::progress::Progress::new("roadmaps", counts.len());
+    for &count in counts {
+        progress.step(format!("{count} obstacles"));
         rows.push(bench_world(count, seed, runs, queries)?);
     }
     let samples: Vec<(f64, f64)> =

@@ -342,22 +342,18 @@ pub fn bench_sampling(
     let mut star = Vec::new();
     let mut equal_times = Vec::new();
     let mut logs = Vec::new();
-    for (i, w) in worlds.iter().enumerate() {
-        eprintln!("[sampling {}/{}] {}: RRT-Connect, {queries} queries", i + 1, worlds.len(), w.name);
+    let mut progress = crate::progress::Progress::new("sampling", worlds.len());
+    for w in &worlds {
+        progress.step(format!("{}: RRT-Connect, {queries} queries", w.name));
         let qs = w.queries(queries, seed ^ 0x5a5a)?;
         let mut planners = Vec::new();
         let mut row = bench_connect(w, &qs, seed, &mut planners)?;
         if let Some(driver) = ompl {
-            eprintln!("[sampling {}/{}] {}: OMPL RRTConnect, {queries} queries", i + 1, worlds.len(), w.name);
+            progress.note(format!("{}: OMPL RRTConnect, {queries} queries", w.name));
             row.ompl = Some(ompl_connect(w, &qs, seed, driver, &mut planners)?);
         }
         connect.push(row);
-        eprintln!(
-            "[sampling {}/{}] {}: RRT*, {star_runs} runs of {STAR_ITERATIONS}",
-            i + 1,
-            worlds.len(),
-            w.name
-        );
+        progress.note(format!("{}: RRT*, {star_runs} runs of {STAR_ITERATIONS}", w.name));
         // For RRT*: the longest of the first ten queries that have a path.
         let &(a, b, best) = qs
             .iter()
@@ -368,13 +364,11 @@ pub fn bench_sampling(
         let best = best.unwrap_or(f64::NAN);
         star.push(bench_star(w, a, b, best, star_runs, seed, &mut planners)?);
         if let Some(driver) = ompl {
-            eprintln!(
-                "[sampling {}/{}] {}: RRT* of both libraries, {star_runs} runs of {:.1} s each",
-                i + 1,
-                worlds.len(),
+            progress.note(format!(
+                "{}: RRT* of both libraries, {star_runs} runs of {:.1} s each",
                 w.name,
                 equal_time.as_secs_f64()
-            );
+            ));
             equal_times.push(star_equal_time(
                 w,
                 a,

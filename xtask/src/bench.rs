@@ -509,8 +509,8 @@ fn geometric_mean(values: impl Iterator<Item = f64>) -> f64 {
     (sum / n.max(1) as f64).exp()
 }
 
-/// One goal of the report: what, the figures measured, and whether it holds (`None`: not
-/// measured in this run).
+/// One goal of the report: what, the figures measured (none: not measured in this run, and
+/// `missing` says how to measure it), and whether the lowest reaches `target`.
 fn goal_row(goal: &str, figures: &[(String, f64)], target: f64, unit: &str, missing: &str) -> String {
     if figures.is_empty() {
         return format!("| {goal} | not measured: {missing} | - |\n");

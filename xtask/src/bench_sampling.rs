@@ -105,6 +105,25 @@ impl World {
         Ok(out)
     }
 
+    /// One seeded RRT* run from `a` to `b` until `termination`, and its record for the log
+    /// (with the run's peak memory).
+    fn star_run(
+        &self,
+        a: Point,
+        b: Point,
+        termination: &Termination,
+        seed: u64,
+    ) -> Result<(Plan<Point>, LogRun), String> {
+        let space = R2::new(self.world.bounds());
+        let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
+        let query = Query::new(&space, &self.checker, a, b);
+        let memory = crate::memory::mark();
+        let plan = rrt_star(&query, nearest, &RrtOptions::default(), termination, seed)
+            .map_err(|e| format!("{}: {e}", self.name))?;
+        let logged = log_run(&plan, plan.stats.elapsed.as_secs_f64(), crate::memory::peak_since(memory));
+        Ok((plan, logged))
+    }
+
     /// Whether `plan` is a valid path from `a` to `b` no shorter than the reference allows.
     fn checks(&self, plan: &Plan<Point>, a: Point, b: Point, best: f64) -> bool {
         plan.path.as_ref().is_some_and(|path| self.checks_path(path, a, b, best))
@@ -529,26 +548,18 @@ fn star_equal_time(
     driver: &Driver,
     log: &mut Vec<PlannerRuns>,
 ) -> Result<EqualTimeRow, String> {
-    let space = R2::new(w.world.bounds());
     let termination = Termination::time(limit);
     let mut invalid = 0;
     let mut ours: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
     let mut our_iterations = Vec::new();
     let mut our_log = Vec::new();
     for run in 0..runs {
-        let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
-        let query = Query::new(&space, &w.checker, a, b);
-        let memory = crate::memory::mark();
-        let plan = rrt_star(&query, nearest, &RrtOptions::default(), &termination, seed + run as u64)
-            .map_err(|e| format!("{}: {e}", w.name))?;
-        our_log.push(log_run(&plan, plan.stats.elapsed.as_secs_f64(), crate::memory::peak_since(memory)));
+        let (plan, logged) = w.star_run(a, b, &termination, seed + run as u64)?;
         invalid += usize::from(!plan.approximate && !w.checks(&plan, a, b, best));
         our_iterations.push(plan.stats.iterations as f64);
-        let history = plan.history.iter().map(|h| (h.time.as_secs_f64(), h.cost)).collect();
-        ours.push((
-            if plan.approximate { f64::INFINITY } else { plan.cost.unwrap_or(f64::INFINITY) },
-            history,
-        ));
+        let cost = if plan.approximate { f64::INFINITY } else { plan.cost.unwrap_or(f64::INFINITY) };
+        ours.push((cost, logged.progress.clone()));
+        our_log.push(logged);
     }
     let input = crate::ompl::Input {
         world: &w.world,
@@ -611,19 +622,13 @@ fn bench_star(
     seed: u64,
     log: &mut Vec<PlannerRuns>,
 ) -> Result<StarRow, String> {
-    let space = R2::new(w.world.bounds());
-    let checker = &w.checker;
     let limit = Termination::iterations(STAR_ITERATIONS);
     let (mut finals, mut times, mut firsts, mut invalid) = (Vec::new(), Vec::new(), Vec::new(), 0);
     let mut at_checkpoints: Vec<Vec<f64>> = vec![Vec::new(); CHECKPOINTS.len()];
     let mut log_runs = Vec::new();
     for run in 0..runs {
-        let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
-        let query = Query::new(&space, checker, a, b);
-        let memory = crate::memory::mark();
-        let plan = rrt_star(&query, nearest, &RrtOptions::default(), &limit, seed + run as u64)
-            .map_err(|e| format!("{}: {e}", w.name))?;
-        log_runs.push(log_run(&plan, plan.stats.elapsed.as_secs_f64(), crate::memory::peak_since(memory)));
+        let (plan, logged) = w.star_run(a, b, &limit, seed + run as u64)?;
+        log_runs.push(logged);
         times.push(plan.stats.elapsed.as_secs_f64());
         firsts.push(plan.stats.time_to_solution.map_or(f64::INFINITY, |t| t.as_secs_f64() * 1e3));
         if plan.approximate || !w.checks(&plan, a, b, best) {

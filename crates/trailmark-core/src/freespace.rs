@@ -128,6 +128,10 @@ pub(crate) fn on_segment(a: Point, b: Point, p: Point) -> bool {
 pub(crate) fn winding_number(p: Point, edges: impl IntoIterator<Item = (Point, Point)>) -> Option<i64> {
     let mut winding = 0i64;
     for (a, b) in edges {
+        // An edge wholly above or below `p` neither holds it nor crosses its ray.
+        if (a.y > p.y && b.y > p.y) || (a.y < p.y && b.y < p.y) {
+            continue;
+        }
         let side = orient(a, b, p);
         if side == 0.0 && on_segment(a, b, p) {
             return None;

@@ -548,7 +548,8 @@ impl CollisionChecker {
         }
         let r = self.world.robot_radius;
         self.all_near(p, p, |o| {
-            !o.contains_strictly(p) && o.edges().all(|(a, b)| point_segment_distance(p, a, b) >= r)
+            !o.contains_strictly(p)
+                && o.edges().all(|(a, b)| apart(p, p, a, b, r) || point_segment_distance(p, a, b) >= r)
         })
     }
 
@@ -569,7 +570,8 @@ impl CollisionChecker {
             if r > 0.0 {
                 // With the start outside, the segment can only get in (and the end can only be
                 // inside) through the boundary, which every edge's distance rules out.
-                !o.contains_strictly(a) && o.edges().all(|(p, q)| segment_distance(a, b, p, q) >= r)
+                !o.contains_strictly(a)
+                    && o.edges().all(|(p, q)| apart(min, max, p, q, r) || segment_distance(a, b, p, q) >= r)
             } else {
                 !(o.contains_strictly(a) || o.contains_strictly(b) || segment_enters(o, a, b))
             }
@@ -677,6 +679,19 @@ fn in_closed_triangle(a: Point, b: Point, c: Point, p: Point) -> bool {
     }
     let sides = [orient(a, b, p), orient(b, c, p), orient(c, a, p)];
     sides.iter().all(|&s| s * turn >= 0.0)
+}
+
+/// Whether the segment `p-q` lies wholly beyond one side of the box `min`-`max` by more than
+/// `r` (and a rounding allowance), so that everything in the box is farther than `r` from it: a
+/// few comparisons that spare most exact distances, and never spare a close one.
+#[inline]
+fn apart(min: Point, max: Point, p: Point, q: Point, r: f64) -> bool {
+    let scale = min.x.abs().max(min.y.abs()).max(max.x.abs()).max(max.y.abs());
+    let reach = r + 1e-9 * (r + scale);
+    min.x - p.x.max(q.x) > reach
+        || p.x.min(q.x) - max.x > reach
+        || min.y - p.y.max(q.y) > reach
+        || p.y.min(q.y) - max.y > reach
 }
 
 fn point_segment_distance(p: Point, a: Point, b: Point) -> f64 {

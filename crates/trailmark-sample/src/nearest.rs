@@ -30,7 +30,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 use kiddo::SquaredEuclidean;
 use rand::SeedableRng;
@@ -152,10 +152,20 @@ impl<S: StateSpace> NearestNeighbors<S> for BruteForce<S> {
 pub struct KdNearest<S: StateSpace, const D: usize> {
     states: Vec<S::State>,
     tree: kiddo::KdTree<f64, D>,
-    /// The ids at each tree entry's position.
-    groups: Vec<Vec<u32>>,
-    group_of: HashMap<[u64; D], u32>,
+    /// The last id stored at each tree entry's position; the others follow through `next`
+    /// (a list per entry, so that storing a state allocates nothing of its own).
+    head: Vec<u32>,
+    /// The id stored before each id at the same position, or `NONE`.
+    next: Vec<u32>,
+    /// The tree entry of each position stored (by the bits of its coordinates).
+    group_of: foldhash::HashMap<[u64; D], u32>,
 }
+
+/// Up to this many states, [`KdNearest::nearest`] measures them all instead of asking the tree.
+const SCAN: usize = 32;
+
+/// The end of a list of ids.
+const NONE: u32 = u32::MAX;
 
 impl<S: StateSpace, const D: usize> KdNearest<S, D> {
     /// An empty set for states of `space`, whose positions must have `D` coordinates
@@ -168,9 +178,23 @@ impl<S: StateSpace, const D: usize> KdNearest<S, D> {
         Ok(KdNearest {
             states: Vec::new(),
             tree: kiddo::KdTree::new(),
-            groups: Vec::new(),
-            group_of: HashMap::new(),
+            head: Vec::new(),
+            next: Vec::new(),
+            group_of: foldhash::HashMap::default(),
         })
+    }
+
+    /// The nearest of all states, each measured: for a few states, quicker than the tree.
+    fn scan(&self, space: &S, query: &S::State, direction: Direction) -> Option<(u32, f64)> {
+        let measured =
+            self.states.iter().enumerate().map(|(id, s)| (id as u32, measure(space, s, query, direction)));
+        measured.min_by(by_distance)
+    }
+
+    /// The ids stored at tree entry `group`.
+    fn members(&self, group: u64) -> impl Iterator<Item = u32> + '_ {
+        let listed = |id: u32| (id != NONE).then_some(id);
+        std::iter::successors(listed(self.head[group as usize]), move |&id| listed(self.next[id as usize]))
     }
 
     fn key(space: &S, state: &S::State) -> [f64; D] {
@@ -183,13 +207,14 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
         let id = self.states.len() as u32;
         let at = Self::key(space, &state);
         let bits = at.map(|c| (c + 0.0).to_bits());
-        let next = self.groups.len() as u32;
-        let group = *self.group_of.entry(bits).or_insert(next);
-        if group == next {
-            self.groups.push(Vec::new());
+        let fresh = self.head.len() as u32;
+        let group = *self.group_of.entry(bits).or_insert(fresh);
+        if group == fresh {
+            self.head.push(NONE);
             self.tree.add(&at, u64::from(group));
         }
-        self.groups[group as usize].push(id);
+        self.next.push(self.head[group as usize]);
+        self.head[group as usize] = id;
         self.states.push(state);
         id
     }
@@ -210,7 +235,7 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
         let mut best: Vec<(u32, f64)> = Vec::new();
         // One candidate more than asked: where the distance is the straight-line one (R², Rⁿ),
         // the k-th best is then below the bound of the next and one tree query suffices.
-        let mut asked = (k + 1).min(self.groups.len());
+        let mut asked = (k + 1).min(self.head.len());
         // The groups measured, kept once a second, wider query is needed.
         let mut measured: Option<HashSet<u64>> = None;
         loop {
@@ -218,14 +243,14 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
             // Measure the groups not measured before (equal bounds may come in another order).
             for c in &candidates {
                 if measured.as_mut().is_none_or(|m| m.insert(c.item)) {
-                    for &id in &self.groups[c.item as usize] {
+                    for id in self.members(c.item) {
                         best.push((id, measure(space, &self.states[id as usize], query, direction)));
                     }
                 }
             }
             best.sort_unstable_by(by_distance);
             best.truncate(k);
-            if candidates.len() == self.groups.len() {
+            if candidates.len() == self.head.len() {
                 return best;
             }
             // Every group not returned is at least this far by the lower bound.
@@ -234,7 +259,7 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
                 return best;
             }
             measured.get_or_insert_with(|| candidates.iter().map(|c| c.item).collect());
-            asked = (asked * 2).min(self.groups.len());
+            asked = (asked * 2).min(self.head.len());
         }
     }
 
@@ -244,10 +269,13 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
         if self.states.is_empty() {
             return None;
         }
+        if self.states.len() <= SCAN {
+            return self.scan(space, query, direction);
+        }
         let at = Self::key(space, query);
         let first = self.tree.nearest_one::<SquaredEuclidean>(&at).item;
         let consider = |best: &mut Option<(u32, f64)>, group: u64| {
-            for &id in &self.groups[group as usize] {
+            for id in self.members(group) {
                 let candidate = (id, measure(space, &self.states[id as usize], query, direction));
                 if best.is_none_or(|b| by_distance(&candidate, &b).is_lt()) {
                     *best = Some(candidate);
@@ -275,7 +303,7 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
         // A true distance within the radius has its lower bound within it too (the tree's
         // radius is widened by a rounding allowance; the true distance decides).
         for c in self.tree.within_unsorted::<SquaredEuclidean>(&at, radius * radius * (1.0 + 1e-9)) {
-            for &id in &self.groups[c.item as usize] {
+            for id in self.members(c.item) {
                 let d = measure(space, &self.states[id as usize], query, direction);
                 if d <= radius {
                     found.push((id, d));

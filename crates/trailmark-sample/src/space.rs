@@ -155,10 +155,12 @@ impl StateSpace for R2 {
         sample_in(&self.bounds, rng)
     }
 
+    #[inline]
     fn distance(&self, a: &Point, b: &Point) -> f64 {
         (b - a).norm()
     }
 
+    #[inline]
     fn interpolate(&self, a: &Point, b: &Point, t: f64) -> Point {
         a + (b - a) * t
     }

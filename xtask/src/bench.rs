@@ -38,7 +38,8 @@ pub struct Args {
     /// Skip the MovingAI maps even when the folder exists.
     #[arg(long)]
     no_movingai: bool,
-    /// Run only these planners (comma-separated names from the report).
+    /// Run only these planners (comma-separated names from the report: the grid planners, and
+    /// `rrt`, `rrt_connect`, `rrt_star` of the sampling section).
     #[arg(long, value_delimiter = ',')]
     only: Vec<String>,
     /// Print the results as JSON on standard output instead of the table.
@@ -72,7 +73,7 @@ pub enum Section {
     Anytime,
     /// Visibility graphs, trapezoidal decompositions, PRM* and Dubins curves on polygon worlds.
     Roadmaps,
-    /// RRT-Connect's success and speed, RRT*'s convergence, on generated polygon worlds.
+    /// RRT's and RRT-Connect's success and speed, RRT*'s convergence, on generated polygon worlds.
     Sampling,
 }
 
@@ -209,6 +210,10 @@ struct Row {
     cost_errors: usize,
     /// Bytes held by the search workspace after the map (trailmark planners only).
     workspace_bytes: Option<usize>,
+    /// Each query's time (its median over the rounds), µs, sorted (for the plots; not
+    /// serialized).
+    #[serde(skip)]
+    times_us: Vec<f64>,
 }
 
 /// The speed of a trailmark planner against its peer on one map.
@@ -451,6 +456,7 @@ fn bench_map(map: &Map, planners: &[Planner], runs: u32) -> Vec<Row> {
                 mean_cost_ratio: ratio_sum / solved.max(1) as f64,
                 cost_errors,
                 workspace_bytes: tm.then(|| searches[k].memory_bytes()),
+                times_us: per_query.iter().map(|t| t * 1e6).collect(),
             }
         })
         .collect()
@@ -550,7 +556,11 @@ fn goals_markdown(report: &Report) -> String {
     ));
     let sampling = report.sampling.as_ref();
     let connect: Vec<(String, f64)> = sampling
-        .map(|s| s.connect.iter().filter_map(|r| r.speedup().map(|x| (r.world.clone(), x))).collect())
+        .map(|s| {
+            let connect =
+                s.connect.iter().filter(|r| r.planner == crate::bench_sampling::SingleQuery::RrtConnect);
+            connect.filter_map(|r| r.speedup().map(|x| (r.world.clone(), x))).collect()
+        })
         .unwrap_or_default();
     s.push_str(&goal_row(
         "RRT-Connect at least 2x faster than OMPL RRTConnect (same queries, same checks)",
@@ -576,6 +586,39 @@ fn goals_markdown(report: &Report) -> String {
          the profile.\n\n",
     );
     s
+}
+
+/// The one-shot optimal planners' time per query on every map, trailmark's A* beside the
+/// `pathfinding` crate's A* and fringe search, as box plots.
+fn grid_time_svg(report: &Report) -> Result<String, String> {
+    let maps: Vec<String> = report.maps.iter().map(|m| m.name.clone()).collect();
+    let colours = crate::plots::COLOURS;
+    let planners = [
+        (Planner::Astar, colours[0]),
+        (Planner::PathfindingAstar, colours[2]),
+        (Planner::PathfindingFringe, colours[3]),
+    ];
+    let series: Vec<crate::plots::BoxSeries> = planners
+        .iter()
+        .filter(|(p, _)| report.results.iter().any(|r| r.planner == p.name()))
+        .map(|&(p, colour)| crate::plots::BoxSeries {
+            name: p.name().to_string(),
+            colour,
+            values: maps
+                .iter()
+                .map(|m| {
+                    let row = report.results.iter().find(|r| &r.map == m && r.planner == p.name());
+                    row.map_or(Vec::new(), |r| r.times_us.clone())
+                })
+                .collect(),
+        })
+        .collect();
+    crate::plots::box_plot_svg(
+        "Grid search: time per query (box: quartiles; whiskers: 1.5 IQR)",
+        "microseconds",
+        &maps,
+        &series,
+    )
 }
 
 fn markdown(report: &Report) -> String {
@@ -607,6 +650,9 @@ fn markdown(report: &Report) -> String {
                 worst
             ));
         }
+    }
+    if !report.results.is_empty() {
+        out.push_str("\n\n![time per query of the optimal one-shot planners](grid-time.svg)");
     }
     out.push_str("\n\n## All results\n\n| map | planner | solved | median µs | mean µs | p90 µs | Mexp/s | cost / optimal | cost errors |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
     for r in &report.results {
@@ -647,11 +693,22 @@ pub fn run(args: &Args) -> ExitCode {
         .copied()
         .filter(|p| args.only.is_empty() || args.only.iter().any(|o| o == p.name()))
         .collect();
-    if planners.is_empty() {
-        let names: Vec<&str> = Planner::ALL.iter().map(|p| p.name()).collect();
-        eprintln!("error: no planner matches --only {:?}; planners: {}", args.only, names.join(", "));
+    let sampling_names = crate::bench_sampling::PLANNERS;
+    let unknown: Vec<&String> = args
+        .only
+        .iter()
+        .filter(|o| {
+            !Planner::ALL.iter().any(|p| p.name() == o.as_str()) && !sampling_names.contains(&o.as_str())
+        })
+        .collect();
+    if !unknown.is_empty() {
+        let names: Vec<&str> = Planner::ALL.iter().map(|p| p.name()).chain(sampling_names).collect();
+        eprintln!("error: no planner is called {unknown:?}; planners: {}", names.join(", "));
         return ExitCode::from(2);
     }
+    // With `--only`, the sections of planners not named have nothing to run.
+    let sampling_named =
+        args.only.is_empty() || args.only.iter().any(|o| sampling_names.contains(&o.as_str()));
     let (generated_n, movingai_n) = args.suite.queries();
     let clock = Instant::now();
     // The grid and anytime sections search the maps; the others do not need them.
@@ -677,7 +734,7 @@ pub fn run(args: &Args) -> ExitCode {
         }
     }
     let mut rows = Vec::new();
-    if args.sections.contains(&Section::Grid) {
+    if args.sections.contains(&Section::Grid) && !planners.is_empty() {
         let mut progress = crate::progress::Progress::new("grid", maps.len());
         for map in &maps {
             progress.step(format!("{} ({} queries)", map.name, map.queries.len()));
@@ -726,7 +783,7 @@ pub fn run(args: &Args) -> ExitCode {
         }
     }
     let mut sampling = None;
-    if args.sections.contains(&Section::Sampling) {
+    if args.sections.contains(&Section::Sampling) && sampling_named {
         let driver = if args.with_ompl {
             match crate::ompl::Driver::build() {
                 Ok(d) => Some(d),
@@ -738,7 +795,13 @@ pub fn run(args: &Args) -> ExitCode {
         } else {
             None
         };
-        match crate::bench_sampling::bench_sampling(args.suite, args.seed, driver.as_ref(), &today()) {
+        match crate::bench_sampling::bench_sampling(
+            args.suite,
+            args.seed,
+            driver.as_ref(),
+            &today(),
+            &args.only,
+        ) {
             Ok(r) => sampling = Some(r),
             Err(e) => {
                 eprintln!("error: {e}");
@@ -772,6 +835,13 @@ pub fn run(args: &Args) -> ExitCode {
         roadmaps,
         sampling,
     };
+    let mut figures = Vec::new();
+    if !report.results.is_empty() {
+        match grid_time_svg(&report) {
+            Ok(svg) => figures.push(("grid-time.svg", svg)),
+            Err(e) => eprintln!("warning: no grid time plot: {e}"),
+        }
+    }
     let mut text = markdown(&report);
     if let Some(Ok((_, summary))) = &cost_time {
         text.push_str(&format!(
@@ -798,9 +868,12 @@ pub fn run(args: &Args) -> ExitCode {
             }
             None => Ok(()),
         })
-        .and_then(|()| match &report.sampling {
-            Some(s) => std::fs::write(folder.join("sampling-convergence.svg"), &s.convergence_svg),
-            None => Ok(()),
+        .and_then(|()| {
+            let sampling = report.sampling.iter().flat_map(|s| &s.figures);
+            for (name, svg) in figures.iter().chain(sampling) {
+                std::fs::write(folder.join(name), svg)?;
+            }
+            Ok(())
         })
         .and_then(|()| {
             // One OMPL benchmark log per sampling world, for ompl_benchmark_statistics and

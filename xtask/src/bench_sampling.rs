@@ -1,6 +1,7 @@
-//! The sampling section of `cargo xtask bench`: RRT-Connect's success rate and speed, and RRT*'s
-//! convergence, on generated polygon worlds (random convex obstacles, a bug trap, walls with
-//! narrow doors), each path checked against the visibility graph's shortest one.
+//! The sampling section of `cargo xtask bench`: RRT's and RRT-Connect's success rate and
+//! speed, and RRT*'s convergence, on generated polygon worlds (random convex obstacles, a bug
+//! trap, walls with narrow doors), each path checked against the visibility graph's shortest
+//! one.
 //!
 //! The reference optimum is the visibility graph of the obstacles grown by the robot radius
 //! with round corners in steps of π/64 (chords outside the exact discs: at most 0.03% longer
@@ -21,11 +22,12 @@ use trailmark::core::geometry::Point;
 use trailmark::core::world::{CollisionChecker, PolygonWorld};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::prelude::*;
-use trailmark::sample::{KdNearest, Plan, Query, R2, RrtOptions, Termination, rrt_connect, rrt_star};
+use trailmark::sample::{KdNearest, Plan, Query, R2, RrtOptions, Termination, rrt, rrt_connect, rrt_star};
 
 use crate::bench::{Suite, median};
 use crate::ompl::Driver;
 use crate::ompl_log::{Experiment, LogRun, PlannerRuns};
+use crate::plots::{BoxSeries, COLOURS, SuccessLine, box_plot_svg, success_svg};
 
 /// The side of the square worlds.
 const SIZE: f64 = 40.0;
@@ -45,6 +47,42 @@ const STAR_GOAL: f64 = 1.05;
 const CHECKPOINTS: [u64; 8] = [250, 500, 1_000, 2_000, 5_000, 10_000, 15_000, 20_000];
 /// The round corners of the reference free space, in radians per chord.
 const ARC_STEP: f64 = std::f64::consts::PI / 64.0;
+
+/// The single-query planners of the section, run on every world's seeded queries.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SingleQuery {
+    Rrt,
+    RrtConnect,
+}
+
+impl SingleQuery {
+    /// The name in `--only`, the JSON results and the OMPL driver's input.
+    pub fn name(self) -> &'static str {
+        match self {
+            SingleQuery::Rrt => "rrt",
+            SingleQuery::RrtConnect => "rrt_connect",
+        }
+    }
+
+    /// The name in text, and (without the dash) in the OMPL logs.
+    fn label(self) -> &'static str {
+        match self {
+            SingleQuery::Rrt => "RRT",
+            SingleQuery::RrtConnect => "RRT-Connect",
+        }
+    }
+
+    fn ompl_label(self) -> &'static str {
+        match self {
+            SingleQuery::Rrt => "RRT",
+            SingleQuery::RrtConnect => "RRTConnect",
+        }
+    }
+}
+
+/// The sampling planners `--only` can name.
+pub const PLANNERS: [&str; 3] = ["rrt", "rrt_connect", "rrt_star"];
 
 /// A generated world and how its queries are drawn.
 struct World {
@@ -163,9 +201,11 @@ fn worlds(seed: u64) -> Result<Vec<World>, String> {
     ])
 }
 
-/// RRT-Connect on one world, trailmark's and (with `--with-ompl`) OMPL's.
+/// A single-query planner on one world, trailmark's and (with `--with-ompl`) OMPL's.
 #[derive(Debug, Clone, Serialize)]
 pub struct ConnectRow {
+    /// The planner.
+    pub planner: SingleQuery,
     /// The world.
     pub world: String,
     /// Seeded queries run.
@@ -202,12 +242,19 @@ pub struct ConnectStats {
     /// Paths that failed the re-check, or solutions where the visibility graph has no path
     /// (must be 0).
     pub invalid: usize,
+    /// The time of each solvable query, milliseconds (for the plots; not serialized).
+    #[serde(skip)]
+    pub times_ms: Vec<f64>,
+    /// The time of each solved query, milliseconds (for the plots; not serialized).
+    #[serde(skip)]
+    pub solved_ms: Vec<f64>,
 }
 
 /// Runs of one planner on a world's queries, as they come.
 #[derive(Default)]
 struct Tally {
     times: Vec<f64>,
+    solved_times: Vec<f64>,
     iterations: Vec<f64>,
     checks: Vec<f64>,
     ratios: Vec<f64>,
@@ -240,6 +287,7 @@ impl Tally {
             return;
         }
         self.solved += 1;
+        self.solved_times.push(ms);
         match cost_if_valid(best) {
             Some(cost) => self.ratios.push(cost / best),
             None => self.invalid += 1,
@@ -249,11 +297,13 @@ impl Tally {
     fn stats(self) -> ConnectStats {
         ConnectStats {
             solved: self.solved,
-            median_ms: median(&sorted(self.times)),
+            median_ms: median(&sorted(self.times.clone())),
             median_iterations: median(&sorted(self.iterations)),
             median_checks: median(&sorted(self.checks)),
             median_cost_ratio: median(&sorted(self.ratios)),
             invalid: self.invalid,
+            times_ms: self.times,
+            solved_ms: self.solved_times,
         }
     }
 }
@@ -320,9 +370,9 @@ pub struct SamplingReport {
     /// The OMPL version measured (with `--with-ompl`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ompl_version: Option<String>,
-    /// The cost-vs-iterations plot (SVG), not serialized.
+    /// The section's plots: file name and SVG (not serialized).
     #[serde(skip)]
-    pub convergence_svg: String,
+    pub figures: Vec<(&'static str, String)>,
     /// Every run, one experiment per world, for the OMPL-format logs (not serialized).
     #[serde(skip)]
     pub logs: Vec<Experiment>,
@@ -351,27 +401,39 @@ pub fn bench_sampling(
     seed: u64,
     ompl: Option<&Driver>,
     date: &str,
+    only: &[String],
 ) -> Result<SamplingReport, String> {
     let (queries, star_runs, equal_time) = match suite {
         Suite::Quick => (200, 5, Duration::from_millis(500)),
         Suite::Full => (1000, 15, Duration::from_secs(2)),
     };
     let worlds = worlds(seed)?;
+    let wanted = |name: &str| only.is_empty() || only.iter().any(|o| o == name);
+    let singles: Vec<SingleQuery> =
+        [SingleQuery::RrtConnect, SingleQuery::Rrt].into_iter().filter(|p| wanted(p.name())).collect();
+    let with_star = wanted("rrt_star");
     let mut connect = Vec::new();
     let mut star = Vec::new();
     let mut equal_times = Vec::new();
     let mut logs = Vec::new();
     let mut progress = crate::progress::Progress::new("sampling", worlds.len());
     for w in &worlds {
-        progress.step(format!("{}: RRT-Connect, {queries} queries", w.name));
+        progress.step(format!("{}: {queries} queries", w.name));
         let qs = w.queries(queries, seed ^ 0x5a5a)?;
         let mut planners = Vec::new();
-        let mut row = bench_connect(w, &qs, seed, &mut planners)?;
-        if let Some(driver) = ompl {
-            progress.note(format!("{}: OMPL RRTConnect, {queries} queries", w.name));
-            row.ompl = Some(ompl_connect(w, &qs, seed, driver, &mut planners)?);
+        for &planner in &singles {
+            progress.note(format!("{}: {}, {queries} queries", w.name, planner.label()));
+            let mut row = bench_connect(planner, w, &qs, seed, &mut planners)?;
+            if let Some(driver) = ompl {
+                progress.note(format!("{}: OMPL {}, {queries} queries", w.name, planner.ompl_label()));
+                row.ompl = Some(ompl_connect(planner, w, &qs, seed, driver, &mut planners)?);
+            }
+            connect.push(row);
         }
-        connect.push(row);
+        if !with_star {
+            logs.push(experiment(w, planners, queries, seed, date, None));
+            continue;
+        }
         progress.note(format!("{}: RRT*, {star_runs} runs of {STAR_ITERATIONS}", w.name));
         // For RRT*: the longest of the first ten queries that have a path.
         let &(a, b, best) = qs
@@ -400,32 +462,57 @@ pub fn bench_sampling(
                 &mut planners,
             )?);
         }
-        logs.push(Experiment {
-            name: w.name.clone(),
-            setup: format!(
-                "{}: {SIZE} x {SIZE} polygon world, robot radius {ROBOT_RADIUS}; RRT-Connect on {queries} seeded queries \
-                 (at most {CONNECT_ITERATIONS} iterations each); RRT* on the query ({:.3}, {:.3}) -> ({:.3}, {:.3}) \
-                 whose shortest path is {best:.6}",
-                w.name, a.x, a.y, b.x, b.y
-            ),
-            seed,
-            time_limit_s: 60.0,
-            date: date.to_string(),
-            planners,
-        });
+        logs.push(experiment(w, planners, queries, seed, date, Some((a, b, best))));
     }
-    let convergence_svg = convergence_svg(&star)?;
+    let mut figures = Vec::new();
+    if !star.is_empty() {
+        figures.push(("sampling-convergence.svg", convergence_svg(&star)?));
+    }
+    if !connect.is_empty() {
+        figures.extend(connect_figures(&connect)?);
+    }
     Ok(SamplingReport {
         connect,
         star,
         equal_time: equal_times,
         ompl_version: ompl.map(|d| d.version.clone()),
-        convergence_svg,
+        figures,
         logs,
     })
 }
 
+/// One world's runs as an experiment of the OMPL log; `star` is RRT*'s query and optimum
+/// when it ran.
+fn experiment(
+    w: &World,
+    planners: Vec<PlannerRuns>,
+    queries: usize,
+    seed: u64,
+    date: &str,
+    star: Option<(Point, Point, f64)>,
+) -> Experiment {
+    let star = star.map_or(String::new(), |(a, b, best)| {
+        format!(
+            "; RRT* on the query ({:.3}, {:.3}) -> ({:.3}, {:.3}) whose shortest path is {best:.6}",
+            a.x, a.y, b.x, b.y
+        )
+    });
+    Experiment {
+        name: w.name.clone(),
+        setup: format!(
+            "{}: {SIZE} x {SIZE} polygon world, robot radius {ROBOT_RADIUS}; RRT and RRT-Connect on {queries} \
+             seeded queries (at most {CONNECT_ITERATIONS} iterations each){star}",
+            w.name
+        ),
+        seed,
+        time_limit_s: 60.0,
+        date: date.to_string(),
+        planners,
+    }
+}
+
 fn bench_connect(
+    planner: SingleQuery,
     w: &World,
     queries: &[(Point, Point, Option<f64>)],
     seed: u64,
@@ -441,8 +528,12 @@ fn bench_connect(
         let query = Query::new(&space, checker, a, b);
         let memory = crate::memory::mark();
         let clock = Instant::now();
-        let plan = rrt_connect(&query, nearest.clone(), &RrtOptions::default(), &limit, seed + i as u64)
-            .map_err(|e| format!("{}: {e}", w.name))?;
+        let (options, seed) = (&RrtOptions::default(), seed + i as u64);
+        let plan = match planner {
+            SingleQuery::Rrt => rrt(&query, nearest.clone(), options, &limit, seed),
+            SingleQuery::RrtConnect => rrt_connect(&query, nearest.clone(), options, &limit, seed),
+        }
+        .map_err(|e| format!("{}: {e}", w.name))?;
         let ms = clock.elapsed().as_secs_f64() * 1e3;
         runs.push(log_run(&plan, ms / 1e3, crate::memory::peak_since(memory)));
         let counts = (ms, plan.stats.iterations, plan.stats.collision_checks);
@@ -450,8 +541,9 @@ fn bench_connect(
             w.checks(&plan, a, b, best).then(|| plan.cost.unwrap_or(f64::NAN))
         });
     }
-    log.push(PlannerRuns { name: "trailmark_RRTConnect".into(), optimizing: false, runs });
+    log.push(PlannerRuns { name: format!("trailmark_{}", planner.ompl_label()), optimizing: false, runs });
     Ok(ConnectRow {
+        planner,
         world: w.name.clone(),
         queries: queries.len(),
         solvable: tally.solvable,
@@ -497,6 +589,7 @@ fn ompl_log_run(run: &crate::ompl::Run) -> LogRun {
 /// OMPL's RRTConnect on the same queries, with the same iteration limit, each path re-checked
 /// as trailmark's are.
 fn ompl_connect(
+    planner: SingleQuery,
     w: &World,
     queries: &[(Point, Point, Option<f64>)],
     seed: u64,
@@ -505,7 +598,7 @@ fn ompl_connect(
 ) -> Result<ConnectStats, String> {
     let input = crate::ompl::Input {
         world: &w.world,
-        planner: "rrt_connect",
+        planner: planner.name(),
         queries: queries.iter().map(|(a, b, _)| [a.x, a.y, b.x, b.y]).collect(),
         runs: 1,
         seed,
@@ -515,7 +608,7 @@ fn ompl_connect(
     let mut tally = Tally::default();
     let runs = driver.run(&input).map_err(|e| format!("{}: {e}", w.name))?;
     log.push(PlannerRuns {
-        name: "OMPL_RRTConnect".into(),
+        name: format!("OMPL_{}", planner.ompl_label()),
         optimizing: false,
         runs: runs.iter().map(ompl_log_run).collect(),
     });
@@ -664,15 +757,6 @@ fn bench_star(
     })
 }
 
-/// The colours of the worlds' lines.
-const COLOURS: [RGBColor; 5] = [
-    RGBColor(225, 48, 108),
-    RGBColor(22, 160, 133),
-    RGBColor(41, 128, 185),
-    RGBColor(243, 156, 18),
-    RGBColor(142, 68, 173),
-];
-
 /// A line of a plot: its legend, colour, whether dashed, and points.
 struct Line {
     label: String,
@@ -735,6 +819,53 @@ fn lines_svg(caption: &str, x_desc: &str, x: (f64, f64), lines: &[Line]) -> Resu
         root.present().map_err(|x| e(&x))?;
     }
     Ok(svg)
+}
+
+/// RRT-Connect's time per query as box plots, and its success by time, trailmark's beside
+/// OMPL's when it ran.
+fn connect_figures(rows: &[ConnectRow]) -> Result<Vec<(&'static str, String)>, String> {
+    let worlds: Vec<String> = rows.iter().map(|r| format!("{} {}", r.world, r.planner.label())).collect();
+    let mut series = vec![BoxSeries {
+        name: "trailmark".into(),
+        colour: COLOURS[0],
+        values: rows.iter().map(|r| r.trailmark.times_ms.clone()).collect(),
+    }];
+    if rows.iter().any(|r| r.ompl.is_some()) {
+        series.push(BoxSeries {
+            name: "OMPL".into(),
+            colour: COLOURS[2],
+            values: rows.iter().map(|r| r.ompl.as_ref().map_or(Vec::new(), |o| o.times_ms.clone())).collect(),
+        });
+    }
+    let boxes = box_plot_svg(
+        "RRT and RRT-Connect: time per solvable query (box: quartiles; whiskers: 1.5 IQR)",
+        "milliseconds",
+        &worlds,
+        &series,
+    )?;
+    let mut lines = Vec::new();
+    let connect = rows.iter().filter(|r| r.planner == SingleQuery::RrtConnect);
+    for (r, &colour) in connect.zip(COLOURS.iter().cycle()) {
+        let libraries = [("trailmark", Some(&r.trailmark), false), ("OMPL", r.ompl.as_ref(), true)];
+        for (library, stats, dashed) in libraries {
+            let Some(stats) = stats else { continue };
+            lines.push(SuccessLine {
+                label: format!("{} {library}", r.world),
+                colour,
+                dashed,
+                solved_at: stats.solved_ms.clone(),
+                total: r.solvable,
+            });
+        }
+    }
+    let mut figures = vec![("sampling-connect-time.svg", boxes)];
+    if lines.iter().any(|l| !l.solved_at.is_empty()) {
+        let caption = format!(
+            "RRT-Connect: solvable queries solved by each time ({CONNECT_ITERATIONS} iterations at most); OMPL dashed"
+        );
+        figures.push(("sampling-connect-success.svg", success_svg(&caption, "milliseconds", &lines)?));
+    }
+    Ok(figures)
 }
 
 /// Median RRT* cost over the optimum against iterations, one line per world (log x axis).
@@ -832,10 +963,11 @@ const CONNECT_SPEEDUP_GOAL: f64 = 2.0;
 /// The RRT-Connect table, OMPL's rows beside trailmark's when it ran, and the goals.
 fn connect_markdown(report: &SamplingReport) -> String {
     let with_ompl = report.connect.iter().any(|r| r.ompl.is_some());
-    let mut s = format!("### RRT-Connect ({CONNECT_ITERATIONS} iterations at most, default range)\n\n");
+    let mut s =
+        format!("### RRT and RRT-Connect ({CONNECT_ITERATIONS} iterations at most, default range)\n\n");
     if with_ompl {
         s.push_str(&format!(
-            "Beside OMPL {} RRTConnect: the same queries, the same iteration limit, default ranges \
+            "Beside OMPL {} RRT and RRTConnect: the same queries, the same iteration limit, default ranges \
              (0.2 x the space's extent in both), both validating states and motions with trailmark's \
              exact checker (OMPL through a C interface, so each collision question costs both the same). \
              OMPL's time is `Planner::solve` alone; trailmark's includes building its trees.\n\n",
@@ -843,8 +975,8 @@ fn connect_markdown(report: &SamplingReport) -> String {
         ));
     }
     s.push_str(
-        "| world | library | queries | solvable | solved | median ms | median iterations | median checks | median cost / optimum | invalid | speedup (OMPL / trailmark) |\n\
-         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+        "| world | planner | library | queries | solvable | solved | median ms | median iterations | median checks | median cost / optimum | invalid | speedup (OMPL / trailmark) |\n\
+         |---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for r in &report.connect {
         let rows = [("trailmark", Some(&r.trailmark)), ("OMPL", r.ompl.as_ref())];
@@ -855,8 +987,9 @@ fn connect_markdown(report: &SamplingReport) -> String {
                 _ => String::new(),
             };
             s.push_str(&format!(
-                "| {} | {library} | {} | {} | {} ({:.1}%) | {:.3} | {:.0} | {:.0} | {:.3} | {} | {speedup} |\n",
+                "| {} | {} | {library} | {} | {} | {} ({:.1}%) | {:.3} | {:.0} | {:.0} | {:.3} | {} | {speedup} |\n",
                 r.world,
+                r.planner.label(),
                 r.queries,
                 r.solvable,
                 o.solved,
@@ -869,9 +1002,17 @@ fn connect_markdown(report: &SamplingReport) -> String {
             ));
         }
     }
+    s.push_str(
+        "\n![RRT and RRT-Connect time per query](sampling-connect-time.svg)\n\n\
+         ![RRT-Connect success by time](sampling-connect-success.svg)\n",
+    );
     let share = |o: &ConnectStats, r: &ConnectRow| o.solved as f64 / r.solvable.max(1) as f64;
-    let missed: Vec<String> = report
-        .connect
+    let connect: Vec<&ConnectRow> =
+        report.connect.iter().filter(|r| r.planner == SingleQuery::RrtConnect).collect();
+    if connect.is_empty() {
+        return s;
+    }
+    let missed: Vec<String> = connect
         .iter()
         .filter(|r| share(&r.trailmark, r) < CONNECT_GOAL)
         .map(|r| {
@@ -889,13 +1030,12 @@ fn connect_markdown(report: &SamplingReport) -> String {
         "\nGoal: RRT-Connect solves at least {:.0}% of the solvable queries of each world within \
          {CONNECT_ITERATIONS} iterations. Measured: met on {} of {} worlds{}.\n",
         CONNECT_GOAL * 100.0,
-        report.connect.len() - missed.len(),
-        report.connect.len(),
+        connect.len() - missed.len(),
+        connect.len(),
         if missed.is_empty() { String::new() } else { format!("; not met on {}", missed.join(", ")) }
     ));
     if with_ompl {
-        let slow: Vec<String> = report
-            .connect
+        let slow: Vec<String> = connect
             .iter()
             .filter_map(|r| {
                 r.speedup().filter(|&x| x < CONNECT_SPEEDUP_GOAL).map(|x| format!("{} ({x:.2}x)", r.world))

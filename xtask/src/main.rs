@@ -24,6 +24,7 @@ mod memory;
 mod navigate;
 mod ompl;
 mod ompl_log;
+mod plots;
 mod progress;
 mod solve;
 mod verify;

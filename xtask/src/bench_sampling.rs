@@ -242,7 +242,7 @@ pub struct ConnectStats {
     /// Paths that failed the re-check, or solutions where the visibility graph has no path
     /// (must be 0).
     pub invalid: usize,
-    /// The time of each solvable query, milliseconds (for the plots; not serialized).
+    /// The time of each solvable query, milliseconds, sorted (for the plots; not serialized).
     #[serde(skip)]
     pub times_ms: Vec<f64>,
     /// The time of each solved query, milliseconds (for the plots; not serialized).
@@ -295,14 +295,15 @@ impl Tally {
     }
 
     fn stats(self) -> ConnectStats {
+        let times = sorted(self.times);
         ConnectStats {
             solved: self.solved,
-            median_ms: median(&sorted(self.times.clone())),
+            median_ms: median(&times),
             median_iterations: median(&sorted(self.iterations)),
             median_checks: median(&sorted(self.checks)),
             median_cost_ratio: median(&sorted(self.ratios)),
             invalid: self.invalid,
-            times_ms: self.times,
+            times_ms: times,
             solved_ms: self.solved_times,
         }
     }

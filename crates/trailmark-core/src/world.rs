@@ -547,9 +547,10 @@ impl CollisionChecker {
             return false;
         }
         let r = self.world.robot_radius;
+        let around = Margin::new(p, p, r);
         self.all_near(p, p, |o| {
             !o.contains_strictly(p)
-                && o.edges().all(|(a, b)| apart(p, p, a, b, r) || point_segment_distance(p, a, b) >= r)
+                && o.edges().all(|(a, b)| around.apart(a, b) || point_segment_distance(p, a, b) >= r)
         })
     }
 
@@ -566,12 +567,13 @@ impl CollisionChecker {
         let r = self.world.robot_radius;
         let min = Point::new(a.x.min(b.x), a.y.min(b.y));
         let max = Point::new(a.x.max(b.x), a.y.max(b.y));
+        let around = Margin::new(min, max, r);
         self.all_near(min, max, |o| {
             if r > 0.0 {
                 // With the start outside, the segment can only get in (and the end can only be
                 // inside) through the boundary, which every edge's distance rules out.
                 !o.contains_strictly(a)
-                    && o.edges().all(|(p, q)| apart(min, max, p, q, r) || segment_distance(a, b, p, q) >= r)
+                    && o.edges().all(|(p, q)| around.apart(p, q) || segment_distance(a, b, p, q) >= r)
             } else {
                 !(o.contains_strictly(a) || o.contains_strictly(b) || segment_enters(o, a, b))
             }
@@ -681,17 +683,30 @@ fn in_closed_triangle(a: Point, b: Point, c: Point, p: Point) -> bool {
     sides.iter().all(|&s| s * turn >= 0.0)
 }
 
-/// Whether the segment `p-q` lies wholly beyond one side of the box `min`-`max` by more than
-/// `r` (and a rounding allowance), so that everything in the box is farther than `r` from it: a
-/// few comparisons that spare most exact distances, and never spare a close one.
-#[inline]
-fn apart(min: Point, max: Point, p: Point, q: Point, r: f64) -> bool {
-    let scale = min.x.abs().max(min.y.abs()).max(max.x.abs()).max(max.y.abs());
-    let reach = r + 1e-9 * (r + scale);
-    min.x - p.x.max(q.x) > reach
-        || p.x.min(q.x) - max.x > reach
-        || min.y - p.y.max(q.y) > reach
-        || p.y.min(q.y) - max.y > reach
+/// The box `min`-`max` widened by a radius and a rounding allowance: edges wholly outside it
+/// are farther than the radius from everything in the box. A few comparisons that spare most
+/// exact distances, and never spare a close one.
+struct Margin {
+    min: Point,
+    max: Point,
+    reach: f64,
+}
+
+impl Margin {
+    fn new(min: Point, max: Point, r: f64) -> Self {
+        let scale = min.x.abs().max(min.y.abs()).max(max.x.abs()).max(max.y.abs());
+        Margin { min, max, reach: r + 1e-9 * (r + scale) }
+    }
+
+    /// Whether the segment `p-q` lies wholly beyond one side of the box by more than the reach.
+    #[inline]
+    fn apart(&self, p: Point, q: Point) -> bool {
+        let (min, max, reach) = (self.min, self.max, self.reach);
+        min.x - p.x.max(q.x) > reach
+            || p.x.min(q.x) - max.x > reach
+            || min.y - p.y.max(q.y) > reach
+            || p.y.min(q.y) - max.y > reach
+    }
 }
 
 fn point_segment_distance(p: Point, a: Point, b: Point) -> f64 {

@@ -1,6 +1,6 @@
-// The OMPL peer of `cargo xtask bench --with-ompl`: runs OMPL's RRT, RRTConnect and RRTstar on
-// the harness's polygon worlds and prints every run as JSON, for the harness to set beside
-// trailmark's own runs on the same queries.
+// The OMPL peer of `cargo xtask bench --with-ompl`: runs OMPL's RRT, RRTConnect, RRTstar and
+// PRMstar on the harness's polygon worlds and prints every run as JSON, for the harness to set
+// beside trailmark's own runs on the same queries.
 //
 // States and motions are validated by trailmark's exact checker through its C interface
 // (benches/ompl/checker), so both libraries answer the same collision questions at the same
@@ -9,11 +9,18 @@
 //
 // Usage: ompl-driver INPUT.json > RUNS.json, where INPUT.json is
 //   {"world": {"bounds": [...], "obstacles": [...], "robot_radius": r},
-//    "planner": "rrt" | "rrt_connect" | "rrt_star",
+//    "planner": "rrt" | "rrt_connect" | "rrt_star" | "prm_star",
 //    "queries": [[ax, ay, bx, by], ...], "runs": 1, "seed": 1,
-//    "max_iterations": 10000 (0: no limit), "time_limit_s": 10.0}
+//    "max_iterations": 10000 (0: no limit), "time_limit_s": 10.0, "roadmap_size": 2000}
 // and every run prints as {"query", "run", "status": "exact" | "approximate" | "none",
 // "time_s", "iterations", "collision_checks", "states", "cost", "path", "improvements"}.
+//
+// `prm_star` is multi-query: one roadmap of `roadmap_size` milestones is grown first (printed as
+// "build": {"time_s", "milestones", "edges", "collision_checks"}), then each query joins its
+// start and goal to it as PRM::solve does (addMilestone, which keeps them in the roadmap) and
+// searches it with PRM's own A* (constructSolution) when they share a component. solve() itself
+// is not called: it polls for a solution from a second thread every millisecond, which would
+// time the polling, not the planner.
 
 #include <atomic>
 #include <chrono>
@@ -37,6 +44,7 @@
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/config.h>
 #include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
 #include <ompl/geometric/planners/rrt/RRT.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/geometric/planners/rrt/RRTstar.h>
@@ -107,6 +115,23 @@ class SegmentValidator : public ob::MotionValidator {
     const TmChecker *c_;
 };
 
+// PRMstar with its query steps public: what PRM::solve does for one start and one goal, without
+// the polling thread.
+class QueryPrm : public og::PRMstar {
+  public:
+    using og::PRMstar::PRMstar;
+
+    // The path from `a` to `b` through the roadmap, or null when they are not connected.
+    ob::PathPtr query(const ob::State *a, const ob::State *b) {
+        Vertex start = addMilestone(si_->cloneState(a));
+        Vertex goal = addMilestone(si_->cloneState(b));
+        if (!sameComponent(start, goal)) {
+            return nullptr;
+        }
+        return constructSolution(start, goal);
+    }
+};
+
 ob::PlannerPtr make_planner(const std::string &name, const ob::SpaceInformationPtr &si) {
     if (name == "rrt") {
         return std::make_shared<og::RRT>(si);
@@ -118,6 +143,90 @@ ob::PlannerPtr make_planner(const std::string &name, const ob::SpaceInformationP
         return std::make_shared<og::RRTstar>(si);
     }
     return nullptr;
+}
+
+std::string version() {
+    return std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) + "." +
+           std::to_string(OMPL_PATCH_VERSION);
+}
+
+// Prints the document: the runs, and the roadmap's build when there is one.
+void print(const json &runs, const json *build) {
+    json doc;
+    doc["ompl_version"] = version();
+    doc["runs"] = runs;
+    if (build != nullptr) {
+        doc["build"] = *build;
+    }
+    std::cout << doc.dump() << "\n";
+}
+
+json path_of(og::PathGeometric &path) {
+    json points = json::array();
+    for (const ob::State *s : path.getStates()) {
+        points.push_back({xy(s)[0], xy(s)[1]});
+    }
+    return points;
+}
+
+// PRMstar, multi-query: one roadmap, then every query on it.
+int run_prm(const json &input, const ob::SpaceInformationPtr &si, const ob::StateSpacePtr &space) {
+    unsigned long size = input.value("roadmap_size", 0UL);
+    double time_limit = input.value("time_limit_s", 10.0);
+    const auto &queries = input.at("queries");
+    auto prm = std::make_shared<QueryPrm>(si);
+    // PRM's setup needs a problem definition (for its cost objective); its start and goal
+    // are not used.
+    auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+    ob::ScopedState<> anywhere(space);
+    space->allocDefaultStateSampler()->sampleUniform(anywhere.get());
+    pdef->setStartAndGoalStates(anywhere, anywhere);
+    pdef->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+    prm->setProblemDefinition(pdef);
+    prm->setup();
+    g_checks = 0;
+    auto clock = std::chrono::steady_clock::now();
+    auto seconds = [&clock] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count(); };
+    prm->growRoadmap(ob::plannerOrTerminationCondition(
+        ob::PlannerTerminationCondition([&prm, size] { return prm->milestoneCount() >= size; }),
+        ob::timedPlannerTerminationCondition(time_limit)));
+    json build;
+    build["time_s"] = seconds();
+    build["milestones"] = prm->milestoneCount();
+    build["edges"] = prm->edgeCount();
+    build["collision_checks"] = g_checks.load();
+    json out = json::array();
+    ob::ScopedState<> start(space), goal(space);
+    for (size_t q = 0; q < queries.size(); ++q) {
+        std::vector<double> ends = queries[q].get<std::vector<double>>();
+        start[0] = ends[0];
+        start[1] = ends[1];
+        goal[0] = ends[2];
+        goal[1] = ends[3];
+        g_checks = 0;
+        clock = std::chrono::steady_clock::now();
+        ob::PathPtr path = prm->query(start.get(), goal.get());
+        json row;
+        row["time_s"] = seconds();
+        row["query"] = q;
+        row["run"] = 0;
+        row["iterations"] = 0;
+        row["collision_checks"] = g_checks.load();
+        row["states"] = prm->milestoneCount();
+        row["status"] = path ? "exact" : "none";
+        row["improvements"] = json::array();
+        if (path) {
+            auto *geometric = path->as<og::PathGeometric>();
+            row["cost"] = geometric->length();
+            row["path"] = path_of(*geometric);
+        } else {
+            row["cost"] = nullptr;
+            row["path"] = json::array();
+        }
+        out.push_back(row);
+    }
+    print(out, &build);
+    return 0;
 }
 
 }  // namespace
@@ -162,6 +271,11 @@ int main(int argc, char **argv) {
     si->setup();
 
     std::string name = input.at("planner").get<std::string>();
+    if (name == "prm_star") {
+        int code = run_prm(input, si, space);
+        tm_checker_free(checker);
+        return code;
+    }
     unsigned int max_iterations = input.value("max_iterations", 0U);
     double time_limit = input.value("time_limit_s", 10.0);
     int runs = input.value("runs", 1);
@@ -217,9 +331,7 @@ int main(int argc, char **argv) {
             json path = json::array();
             if (exact || approximate) {
                 auto *geometric = pdef->getSolutionPath()->as<og::PathGeometric>();
-                for (const ob::State *s : geometric->getStates()) {
-                    path.push_back({xy(s)[0], xy(s)[1]});
-                }
+                path = path_of(*geometric);
                 row["cost"] = geometric->length();
             } else {
                 row["cost"] = nullptr;
@@ -230,10 +342,6 @@ int main(int argc, char **argv) {
         }
     }
     tm_checker_free(checker);
-    json doc;
-    doc["ompl_version"] = std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) + "." +
-                          std::to_string(OMPL_PATCH_VERSION);
-    doc["runs"] = out;
-    std::cout << doc.dump() << "\n";
+    print(out, nullptr);
     return 0;
 }

@@ -82,12 +82,12 @@ impl SingleQuery {
 }
 
 /// The sampling planners `--only` can name.
-pub const PLANNERS: [&str; 3] = ["rrt", "rrt_connect", "rrt_star"];
+pub const PLANNERS: [&str; 4] = ["rrt", "rrt_connect", "rrt_star", crate::bench_prm::NAME];
 
 /// A generated world and how its queries are drawn.
-struct World {
-    name: String,
-    world: PolygonWorld,
+pub(crate) struct World {
+    pub(crate) name: String,
+    pub(crate) world: PolygonWorld,
     /// The world's exact checker, built once.
     checker: CollisionChecker,
     ends: Ends,
@@ -169,7 +169,7 @@ impl World {
 
     /// Whether `path` runs from `a` to `b`, every motion free, no shorter than the reference
     /// allows (its cost recomputed here).
-    fn checks_path(&self, path: &[Point], a: Point, b: Point, best: f64) -> bool {
+    pub(crate) fn checks_path(&self, path: &[Point], a: Point, b: Point, best: f64) -> bool {
         let cost: f64 = path.windows(2).map(|m| (m[1] - m[0]).norm()).sum();
         path.first() == Some(&a)
             && path.last() == Some(&b)
@@ -366,6 +366,8 @@ pub struct SamplingReport {
     pub connect: Vec<ConnectRow>,
     /// RRT* per world.
     pub star: Vec<StarRow>,
+    /// PRM* per world.
+    pub prm: Vec<crate::bench_prm::PrmRow>,
     /// RRT* of trailmark and OMPL with equal time (with `--with-ompl`).
     pub equal_time: Vec<EqualTimeRow>,
     /// The OMPL version measured (with `--with-ompl`).
@@ -388,6 +390,11 @@ impl SamplingReport {
             .sum::<usize>()
             + self.star.iter().map(|r| r.invalid).sum::<usize>()
             + self.equal_time.iter().map(|r| r.invalid).sum::<usize>()
+            + self
+                .prm
+                .iter()
+                .map(|r| r.trailmark.invalid + r.ompl.as_ref().map_or(0, |o| o.invalid))
+                .sum::<usize>()
     }
 }
 
@@ -404,15 +411,17 @@ pub fn bench_sampling(
     date: &str,
     only: &[String],
 ) -> Result<SamplingReport, String> {
-    let (queries, star_runs, equal_time) = match suite {
-        Suite::Quick => (200, 5, Duration::from_millis(500)),
-        Suite::Full => (1000, 15, Duration::from_secs(2)),
+    let (queries, star_runs, equal_time, prm_samples) = match suite {
+        Suite::Quick => (200, 5, Duration::from_millis(500), 2000),
+        Suite::Full => (1000, 15, Duration::from_secs(2), 5000),
     };
     let worlds = worlds(seed)?;
     let wanted = |name: &str| only.is_empty() || only.iter().any(|o| o == name);
     let singles: Vec<SingleQuery> =
         [SingleQuery::RrtConnect, SingleQuery::Rrt].into_iter().filter(|p| wanted(p.name())).collect();
     let with_star = wanted("rrt_star");
+    let with_prm = wanted(crate::bench_prm::NAME);
+    let mut prm = Vec::new();
     let mut connect = Vec::new();
     let mut star = Vec::new();
     let mut equal_times = Vec::new();
@@ -430,6 +439,10 @@ pub fn bench_sampling(
                 row.ompl = Some(ompl_connect(planner, w, &qs, seed, driver, &mut planners)?);
             }
             connect.push(row);
+        }
+        if with_prm {
+            progress.note(format!("{}: PRM*, {prm_samples} samples, {queries} queries", w.name));
+            prm.push(crate::bench_prm::bench_prm(w, &qs, prm_samples, seed, ompl)?);
         }
         if !with_star {
             logs.push(experiment(w, planners, queries, seed, date, None));
@@ -475,6 +488,7 @@ pub fn bench_sampling(
     Ok(SamplingReport {
         connect,
         star,
+        prm,
         equal_time: equal_times,
         ompl_version: ompl.map(|d| d.version.clone()),
         figures,
@@ -605,6 +619,7 @@ fn ompl_connect(
         seed,
         max_iterations: CONNECT_ITERATIONS,
         time_limit_s: 60.0,
+        roadmap_size: 0,
     };
     let mut tally = Tally::default();
     let runs = driver.run(&input).map_err(|e| format!("{}: {e}", w.name))?;
@@ -663,6 +678,7 @@ fn star_equal_time(
         seed,
         max_iterations: 0,
         time_limit_s: limit.as_secs_f64(),
+        roadmap_size: 0,
     };
     let mut theirs: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
     let mut their_iterations = Vec::new();
@@ -921,13 +937,28 @@ pub fn markdown(report: &SamplingReport) -> String {
          costs: the visibility graph with corners in steps of π/64. Every path is re-checked exactly.\n\n",
         DOOR - 2.0 * ROBOT_RADIUS
     ));
-    s.push_str(&connect_markdown(report));
+    if !report.connect.is_empty() {
+        s.push_str(&connect_markdown(report));
+    }
+    s.push_str(&crate::bench_prm::markdown(&report.prm, report.ompl_version.as_deref()));
+    if !report.star.is_empty() {
+        s.push_str(&star_markdown(&report.star));
+    }
+    if !report.equal_time.is_empty() {
+        s.push_str(&equal_time_markdown(report));
+    }
+    s
+}
+
+/// The RRT* table and its goal.
+fn star_markdown(rows: &[StarRow]) -> String {
+    let mut s = String::new();
     s.push_str(&format!(
         "### RRT* ({STAR_ITERATIONS} iterations, default range and k-nearest rewiring)\n\n\
          | world | query | optimum | runs | median cost / optimum | worst | median first solution (ms) | median run (s) | invalid |\n\
          |---|---|---:|---:|---:|---:|---:|---:|---:|\n"
     ));
-    for r in &report.star {
+    for r in rows {
         s.push_str(&format!(
             "| {} | ({:.1}, {:.1}) → ({:.1}, {:.1}) | {:.3} | {} | {:.4} | {:.4} | {:.2} | {:.2} | {} |\n",
             r.world,
@@ -944,7 +975,7 @@ pub fn markdown(report: &SamplingReport) -> String {
             r.invalid
         ));
     }
-    let worst = report.star.iter().map(|r| r.median_ratio).fold(0.0, f64::max);
+    let worst = rows.iter().map(|r| r.median_ratio).fold(0.0, f64::max);
     s.push_str(&format!(
         "\nGoal: RRT*'s median cost after {STAR_ITERATIONS} iterations within {:.0}% of the optimum on every \
          world. Measured: at most {:.2}% above: {}.\n\n![RRT* convergence](sampling-convergence.svg)\n",
@@ -952,9 +983,6 @@ pub fn markdown(report: &SamplingReport) -> String {
         (worst - 1.0) * 100.0,
         if worst <= STAR_GOAL { "met" } else { "not met" }
     ));
-    if !report.equal_time.is_empty() {
-        s.push_str(&equal_time_markdown(report));
-    }
     s
 }
 

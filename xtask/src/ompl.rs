@@ -25,7 +25,7 @@ pub struct Driver {
 pub struct Input<'a> {
     /// The world (the same document trailmark reads).
     pub world: &'a PolygonWorld,
-    /// `rrt`, `rrt_connect` or `rrt_star`.
+    /// `rrt`, `rrt_connect`, `rrt_star` or `prm_star`.
     pub planner: &'a str,
     /// `[ax, ay, bx, by]` per query.
     pub queries: Vec<[f64; 4]>,
@@ -35,8 +35,23 @@ pub struct Input<'a> {
     pub seed: u64,
     /// The iteration limit (0: none).
     pub max_iterations: u64,
-    /// The time limit per run, seconds.
+    /// The time limit per run, seconds (for `prm_star`: of growing the roadmap).
     pub time_limit_s: f64,
+    /// For `prm_star`: the milestones of the roadmap the queries share (0 for the others).
+    pub roadmap_size: usize,
+}
+
+/// How OMPL's PRMstar grew the roadmap its queries share.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+pub struct Build {
+    /// The time of growing it, seconds.
+    pub time_s: f64,
+    /// Its milestones.
+    pub milestones: u64,
+    /// Its edges.
+    pub edges: u64,
+    /// State and motion checks while growing it.
+    pub collision_checks: u64,
 }
 
 /// One run of an OMPL planner.
@@ -74,6 +89,8 @@ impl Run {
 #[derive(Deserialize)]
 struct Output {
     runs: Vec<Run>,
+    #[serde(default)]
+    build: Option<Build>,
 }
 
 fn run_tool(command: &mut Command, what: &str) -> Result<String, String> {
@@ -145,13 +162,22 @@ impl Driver {
 
     /// Runs `input` and returns the runs, query by query.
     pub fn run(&self, input: &Input<'_>) -> Result<Vec<Run>, String> {
+        Ok(self.output(input)?.runs)
+    }
+
+    /// Runs `input` of `prm_star`: the roadmap's build, then the runs, query by query.
+    pub fn run_roadmap(&self, input: &Input<'_>) -> Result<(Build, Vec<Run>), String> {
+        let out = self.output(input)?;
+        let build = out.build.ok_or("the OMPL driver did not report a roadmap")?;
+        Ok((build, out.runs))
+    }
+
+    fn output(&self, input: &Input<'_>) -> Result<Output, String> {
         let file = self.program.with_file_name(format!("input-{}.json", std::process::id()));
         let text = serde_json::to_string(input).map_err(|e| e.to_string())?;
         std::fs::write(&file, text).map_err(|e| format!("cannot write {}: {e}", file.display()))?;
         let out = run_tool(Command::new(&self.program).arg(&file), "the OMPL driver");
         let _ = std::fs::remove_file(&file);
-        let out: Output =
-            serde_json::from_str(&out?).map_err(|e| format!("the OMPL driver's output: {e}"))?;
-        Ok(out.runs)
+        serde_json::from_str(&out?).map_err(|e| format!("the OMPL driver's output: {e}"))
     }
 }

@@ -7,6 +7,7 @@
 //! - [`validity`]: exact checks against polygon worlds, sampled checks for your own spaces;
 //! - [`rrt`](mod@rrt) (RRT, RRT-Connect, termination conditions, plans and statistics) and
 //!   [`rrt_star`](mod@rrt_star);
+//! - [`arm`]: a planar arm of revolute joints among polygons, for planning in its joint space;
 //! - [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
 //!
 //! ```
@@ -34,6 +35,7 @@
 
 #![deny(missing_docs)]
 
+pub mod arm;
 pub mod nearest;
 pub mod rrt;
 pub mod rrt_star;

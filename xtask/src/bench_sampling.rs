@@ -81,6 +81,9 @@ impl SingleQuery {
     }
 }
 
+/// The worlds where RRT-Connect also plans for a Dubins car.
+const DUBINS_WORLDS: [&str; 2] = ["convex-30", "bug-trap"];
+
 /// The sampling planners `--only` can name.
 pub const PLANNERS: [&str; 4] = ["rrt", "rrt_connect", "rrt_star", crate::bench_prm::NAME];
 
@@ -89,7 +92,7 @@ pub(crate) struct World {
     pub(crate) name: String,
     pub(crate) world: PolygonWorld,
     /// The world's exact checker, built once.
-    checker: CollisionChecker,
+    pub(crate) checker: CollisionChecker,
     ends: Ends,
     visibility: VisibilityGraph,
 }
@@ -252,13 +255,13 @@ pub struct ConnectStats {
 
 /// Runs of one planner on a world's queries, as they come.
 #[derive(Default)]
-struct Tally {
+pub(crate) struct Tally {
     times: Vec<f64>,
     solved_times: Vec<f64>,
     iterations: Vec<f64>,
     checks: Vec<f64>,
     ratios: Vec<f64>,
-    solvable: usize,
+    pub(crate) solvable: usize,
     solved: usize,
     invalid: usize,
 }
@@ -267,7 +270,7 @@ impl Tally {
     /// One run on a query of optimum `best` (`None`: no path): its time, iterations and checks,
     /// whether it found an exact path, and `cost_if_valid`, the re-checked path's cost or
     /// `None` when it fails the re-check.
-    fn add(
+    pub(crate) fn add(
         &mut self,
         best: Option<f64>,
         (ms, iterations, checks): (f64, u64, u64),
@@ -294,7 +297,7 @@ impl Tally {
         }
     }
 
-    fn stats(self) -> ConnectStats {
+    pub(crate) fn stats(self) -> ConnectStats {
         let times = sorted(self.times);
         ConnectStats {
             solved: self.solved,
@@ -368,6 +371,8 @@ pub struct SamplingReport {
     pub star: Vec<StarRow>,
     /// PRM* per world.
     pub prm: Vec<crate::bench_prm::PrmRow>,
+    /// RRT-Connect for the Dubins car and the arm.
+    pub spaces: Vec<crate::bench_spaces::SpaceRow>,
     /// RRT* of trailmark and OMPL with equal time (with `--with-ompl`).
     pub equal_time: Vec<EqualTimeRow>,
     /// The OMPL version measured (with `--with-ompl`).
@@ -390,6 +395,7 @@ impl SamplingReport {
             .sum::<usize>()
             + self.star.iter().map(|r| r.invalid).sum::<usize>()
             + self.equal_time.iter().map(|r| r.invalid).sum::<usize>()
+            + self.spaces.iter().map(|r| r.stats.invalid).sum::<usize>()
             + self
                 .prm
                 .iter()
@@ -411,9 +417,9 @@ pub fn bench_sampling(
     date: &str,
     only: &[String],
 ) -> Result<SamplingReport, String> {
-    let (queries, star_runs, equal_time, prm_samples) = match suite {
-        Suite::Quick => (200, 5, Duration::from_millis(500), 2000),
-        Suite::Full => (1000, 15, Duration::from_secs(2), 5000),
+    let (queries, star_runs, equal_time, prm_samples, space_queries) = match suite {
+        Suite::Quick => (200, 5, Duration::from_millis(500), 2000, 100),
+        Suite::Full => (1000, 15, Duration::from_secs(2), 5000, 500),
     };
     let worlds = worlds(seed)?;
     let wanted = |name: &str| only.is_empty() || only.iter().any(|o| o == name);
@@ -422,6 +428,7 @@ pub fn bench_sampling(
     let with_star = wanted("rrt_star");
     let with_prm = wanted(crate::bench_prm::NAME);
     let mut prm = Vec::new();
+    let mut spaces = Vec::new();
     let mut connect = Vec::new();
     let mut star = Vec::new();
     let mut equal_times = Vec::new();
@@ -439,6 +446,10 @@ pub fn bench_sampling(
                 row.ompl = Some(ompl_connect(planner, w, &qs, seed, driver, &mut planners)?);
             }
             connect.push(row);
+        }
+        if wanted(SingleQuery::RrtConnect.name()) && DUBINS_WORLDS.contains(&w.name.as_str()) {
+            progress.note(format!("{}: RRT-Connect for a Dubins car, {space_queries} queries", w.name));
+            spaces.push(crate::bench_spaces::bench_dubins(w, &qs[..space_queries.min(qs.len())], seed)?);
         }
         if with_prm {
             progress.note(format!("{}: PRM*, {prm_samples} samples, {queries} queries", w.name));
@@ -478,6 +489,10 @@ pub fn bench_sampling(
         }
         logs.push(experiment(w, planners, queries, seed, date, Some((a, b, best))));
     }
+    if wanted(SingleQuery::RrtConnect.name()) {
+        progress.note(format!("RRT-Connect for the 3-link arm, {space_queries} queries"));
+        spaces.push(crate::bench_spaces::bench_arm(space_queries, seed)?);
+    }
     let mut figures = Vec::new();
     if !star.is_empty() {
         figures.push(("sampling-convergence.svg", convergence_svg(&star)?));
@@ -489,6 +504,7 @@ pub fn bench_sampling(
         connect,
         star,
         prm,
+        spaces,
         equal_time: equal_times,
         ompl_version: ompl.map(|d| d.version.clone()),
         figures,
@@ -940,6 +956,7 @@ pub fn markdown(report: &SamplingReport) -> String {
     if !report.connect.is_empty() {
         s.push_str(&connect_markdown(report));
     }
+    s.push_str(&crate::bench_spaces::markdown(&report.spaces));
     s.push_str(&crate::bench_prm::markdown(&report.prm, report.ompl_version.as_deref()));
     if !report.star.is_empty() {
         s.push_str(&star_markdown(&report.star));

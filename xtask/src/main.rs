@@ -21,6 +21,7 @@ mod bench_prm;
 mod bench_replan;
 mod bench_roadmap;
 mod bench_sampling;
+mod bench_spaces;
 mod memory;
 mod navigate;
 mod ompl;

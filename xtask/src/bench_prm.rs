@@ -16,7 +16,7 @@ use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
 use trailmark::prelude::*;
 
 use crate::bench::median;
-use crate::bench_sampling::World;
+use crate::bench_sampling::{World, ompl_queries, points};
 use crate::ompl::Driver;
 
 /// The name in `--only`, the JSON results and the OMPL driver's input.
@@ -96,10 +96,9 @@ impl Tally {
         self.times_us.push(us);
         let Some(path) = path else { return };
         self.solved += 1;
-        if w.checks_path(path, a, b, best) {
-            self.ratios.push(path.windows(2).map(|m| (m[1] - m[0]).norm()).sum::<f64>() / best);
-        } else {
-            self.invalid += 1;
+        match w.checked_cost(path, a, b, best) {
+            Some(cost) => self.ratios.push(cost / best),
+            None => self.invalid += 1,
         }
     }
 
@@ -167,7 +166,7 @@ fn ompl_prm(
     let input = crate::ompl::Input {
         world: &w.world,
         planner: NAME,
-        queries: queries.iter().map(|(a, b, _)| [a.x, a.y, b.x, b.y]).collect(),
+        queries: ompl_queries(queries),
         runs: 1,
         seed,
         max_iterations: 0,
@@ -182,8 +181,7 @@ fn ompl_prm(
     for run in &runs {
         let query =
             *queries.get(run.query).ok_or_else(|| format!("{}: OMPL ran an unknown query", w.name))?;
-        let path: Option<Vec<Point>> =
-            run.exact().then(|| run.path.iter().map(|&[x, y]| Point::new(x, y)).collect());
+        let path: Option<Vec<Point>> = run.exact().then(|| points(&run.path));
         tally.add(w, query, run.time_s * 1e6, path.as_deref());
     }
     let (nodes, edges) = (build.milestones as usize, build.edges as usize);

@@ -172,12 +172,18 @@ impl World {
 
     /// Whether `path` runs from `a` to `b`, every motion free, no shorter than the reference
     /// allows (its cost recomputed here).
-    pub(crate) fn checks_path(&self, path: &[Point], a: Point, b: Point, best: f64) -> bool {
+    fn checks_path(&self, path: &[Point], a: Point, b: Point, best: f64) -> bool {
+        self.checked_cost(path, a, b, best).is_some()
+    }
+
+    /// The length of `path`, recomputed here, when it passes [`World::checks_path`].
+    pub(crate) fn checked_cost(&self, path: &[Point], a: Point, b: Point, best: f64) -> Option<f64> {
         let cost: f64 = path.windows(2).map(|m| (m[1] - m[0]).norm()).sum();
-        path.first() == Some(&a)
+        let valid = path.first() == Some(&a)
             && path.last() == Some(&b)
             && path.windows(2).all(|m| self.checker.segment_is_free(m[0], m[1]))
-            && cost >= best * (ARC_STEP / 2.0).cos()
+            && cost >= best * (ARC_STEP / 2.0).cos();
+        valid.then_some(cost)
     }
 }
 
@@ -583,8 +589,14 @@ fn bench_connect(
     })
 }
 
-fn points(path: &[[f64; 2]]) -> Vec<Point> {
+/// The points of a path as the OMPL driver prints it.
+pub(crate) fn points(path: &[[f64; 2]]) -> Vec<Point> {
     path.iter().map(|&[x, y]| Point::new(x, y)).collect()
+}
+
+/// The queries as the OMPL driver reads them: `[ax, ay, bx, by]` each.
+pub(crate) fn ompl_queries(queries: &[(Point, Point, Option<f64>)]) -> Vec<[f64; 4]> {
+    queries.iter().map(|(a, b, _)| [a.x, a.y, b.x, b.y]).collect()
 }
 
 /// A trailmark run for the OMPL-format log.
@@ -630,7 +642,7 @@ fn ompl_connect(
     let input = crate::ompl::Input {
         world: &w.world,
         planner: planner.name(),
-        queries: queries.iter().map(|(a, b, _)| [a.x, a.y, b.x, b.y]).collect(),
+        queries: ompl_queries(queries),
         runs: 1,
         seed,
         max_iterations: CONNECT_ITERATIONS,

@@ -1,0 +1,65 @@
+//! Contingency route planning over choke points that may turn out blocked.
+//!
+//! A vehicle crossing terrain with bridges, passes and roads through forest does not know in
+//! advance whether each choke point is open; it finds out on approach. A [`Terrain`] is a cost
+//! grid with choke points, each blocked with some probability. [`plan`] returns a plan with
+//! contingencies: the preferred route, and for every choke point that may be blocked, where the
+//! vehicle is when it finds out and the route it takes then, chosen to minimise the expected
+//! cost over every outcome (best-first AO* search over an [`Abstraction`] of regions and choke
+//! points, with admissible estimates; [`reference`] solves the same problem by exhaustive
+//! recursion on the grid, for tests).
+//!
+//! ```
+//! use trailmark_core::{Cell, Connectivity};
+//! use trailmark_contingency::{ChokePoint, PlannerOptions, Terrain, grid_from_rows, plan};
+//!
+//! // Two rivers (~), each with a bridge (=) that may be closed, and a ford far to the south (,)
+//! // that costs three times as much per step.
+//! let legend = [('.', Some(1.0)), ('=', Some(1.0)), (',', Some(3.0)), ('~', None)].into_iter().collect();
+//! let grid = grid_from_rows(
+//!     &[
+//!         "...~.....~...",
+//!         "...=.....=...",
+//!         "...~.....~...",
+//!         "...~.....~...",
+//!         "...,.....,...",
+//!     ],
+//!     Some(&legend),
+//! )?;
+//! let bridge = |name: &str, x, p| ChokePoint { name: name.into(), cells: vec![Cell::new(x, 1)], probability: p };
+//! let terrain = Terrain::new(
+//!     grid,
+//!     Connectivity::Eight,
+//!     Cell::new(0, 1),
+//!     Cell::new(12, 1),
+//!     vec![bridge("west bridge", 3, 0.4), bridge("east bridge", 9, 0.2)],
+//! )?;
+//! let planned = plan(&terrain, &PlannerOptions::default())?;
+//!
+//! // The plan tries both bridges, falling back to the fords; its expected cost is exact:
+//! // the mean over every combination of blockages of what driving the plan costs.
+//! let by_worlds: f64 = trailmark_contingency::plan::worlds(&terrain)
+//!     .iter()
+//!     .map(|&(blocked, p)| p * planned.plan.execute(&terrain, blocked).unwrap().cost)
+//!     .sum();
+//! assert!((planned.expected_cost - by_worlds).abs() < 1e-9);
+//! assert!(planned.expected_cost > 12.0); // the route with both bridges open
+//! println!("{}", planned.plan.to_json(&terrain));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+#![deny(missing_docs)]
+
+pub mod abstraction;
+pub mod detect;
+pub mod generate;
+pub mod plan;
+pub mod planner;
+pub mod reference;
+pub mod terrain;
+mod view;
+
+pub use abstraction::Abstraction;
+pub use plan::{Action, Drive, Knowledge, Outcome, PlanNode};
+pub use planner::{PlanError, PlanStats, Planned, PlannerOptions, plan};
+pub use terrain::{ChokePoint, Terrain, TerrainError, TerrainSpec, grid_from_rows};

@@ -195,10 +195,11 @@ pub fn river_terrain(seed: u64, options: &RiverOptions) -> Result<Terrain, Terra
     }
 
     // Start and goal: passable cells near the left and right edges, outside every choke point.
+    let in_choke = |c: &Cell| chokes.iter().any(|k: &ChokePoint| k.cells.contains(c));
     let pick = |rng: &mut ChaCha8Rng, x: usize| -> Option<Cell> {
         (0..100)
             .map(|_| Cell::new(x as u32, rng.random_range(0..h) as u32))
-            .find(|c| costs[at(c.x as usize, c.y as usize)] == 1.0)
+            .find(|c| costs[at(c.x as usize, c.y as usize)] == 1.0 && !in_choke(c))
     };
     let (Some(start), Some(goal)) = (pick(&mut rng, 1), pick(&mut rng, w - 2)) else {
         return bad("no open cell for the start or the goal");

@@ -56,6 +56,7 @@ pub mod generate;
 pub mod plan;
 pub mod planner;
 pub mod reference;
+pub mod simulate;
 pub mod terrain;
 mod view;
 

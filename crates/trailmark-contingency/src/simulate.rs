@@ -1,0 +1,184 @@
+//! Monte Carlo over blockage outcomes: driving a contingency plan against following the shortest
+//! path and replanning with D* Lite.
+//!
+//! Each sample draws a world (each choke point blocked with its probability, independently),
+//! then drives both strategies in it on the grid:
+//!
+//! - the plan: its routes, cell by cell, re-costed on the grid of that world (a route that would
+//!   enter a blocked choke point is an error, never expected), taking at each point the
+//!   sub-plan of what was seen;
+//! - naive replanning: D* Lite on the grid with every unseen choke point taken as open; at every
+//!   cell the vehicle sees the choke points beside it, and when one is blocked D* Lite is told
+//!   and repairs its path. It stops when no route to the goal is left.
+//!
+//! Both see a choke point from any cell beside it, so neither knows more than the other.
+
+use std::cell::Cell as Shared;
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use trailmark_core::cost::Cost;
+use trailmark_core::grid::GridHeuristic;
+use trailmark_search::{DStarLite, SearchError};
+
+use crate::plan::{Execution, ExecutionError, PlanNode};
+use crate::terrain::Terrain;
+use crate::view::View;
+
+/// Why a simulation failed: a defect, never expected.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SimulationError {
+    /// The plan could not be driven.
+    #[error(transparent)]
+    Plan(#[from] ExecutionError),
+    /// D* Lite refused a query.
+    #[error("D* Lite: {0}")]
+    Search(String),
+}
+
+impl<N: std::fmt::Debug> From<SearchError<N>> for SimulationError {
+    fn from(e: SearchError<N>) -> Self {
+        SimulationError::Search(format!("{e:?}"))
+    }
+}
+
+/// Draws a world: each choke point blocked with its probability. Returns the blocked ones as a
+/// bit mask.
+pub fn sample_world(terrain: &Terrain, rng: &mut ChaCha8Rng) -> u64 {
+    let mut blocked = 0;
+    for (c, choke) in terrain.choke_points().iter().enumerate() {
+        if rng.random::<f64>() < choke.probability {
+            blocked |= 1 << c;
+        }
+    }
+    blocked
+}
+
+/// Drives the naive strategy in the world where `blocked` are blocked: D* Lite with unseen choke
+/// points taken as open, told of each blocked one the vehicle sees.
+pub fn naive_replanning(terrain: &Terrain, blocked: u64) -> Result<Execution, SimulationError> {
+    let known_blocked = Shared::new(0u64);
+    let view = View::new(terrain.graph(), |c| {
+        terrain.choke_at(c).is_none_or(|k| known_blocked.get() & (1 << k) == 0)
+    });
+    let h = terrain.graph().heuristic_between(GridHeuristic::for_connectivity(terrain.connectivity()));
+    let (start, goal) = (terrain.start(), terrain.goal());
+    let mut planner = DStarLite::new(&view, start, goal, h)?;
+    let mut seen = 0u64;
+    let mut at = start;
+    let mut run = Execution { cost: 0.0, arrived: false, route: vec![start] };
+    loop {
+        let beside = terrain.chokes_beside(at) & !seen;
+        seen |= beside;
+        let newly = beside & blocked;
+        if newly != 0 {
+            known_blocked.set(known_blocked.get() | newly);
+            let mut changed = Vec::new();
+            for (c, choke) in terrain.choke_points().iter().enumerate() {
+                if newly & (1 << c) != 0 {
+                    changed
+                        .extend(choke.cells.iter().flat_map(|&cell| terrain.graph().cells_affected_by(cell)));
+                }
+            }
+            planner.update_nodes(&view, changed)?;
+        }
+        planner.compute_shortest_path(&view)?;
+        if at == goal {
+            run.arrived = true;
+            return Ok(run);
+        }
+        let Some(next) = planner.next_step(&view) else {
+            return Ok(run);
+        };
+        run.cost += terrain
+            .route_cost(&[at, next], blocked)
+            .ok_or(ExecutionError::Undrivable { from: at, to: next })?;
+        planner.move_start(&view, next)?;
+        run.route.push(next);
+        at = next;
+    }
+}
+
+/// The mean of a sample of costs, with its standard error and the fraction of runs that got
+/// stuck.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Estimate {
+    /// The mean cost.
+    pub mean: Cost,
+    /// The standard error of the mean.
+    pub std_error: Cost,
+    /// The fraction of runs that did not reach the goal.
+    pub stuck: f64,
+}
+
+impl Estimate {
+    fn of(runs: &[Execution]) -> Estimate {
+        let n = runs.len() as f64;
+        let mean = runs.iter().map(|r| r.cost).sum::<Cost>() / n;
+        let var = runs.iter().map(|r| (r.cost - mean).powi(2)).sum::<Cost>() / (n - 1.0).max(1.0);
+        Estimate {
+            mean,
+            std_error: (var / n).sqrt(),
+            stuck: runs.iter().filter(|r| !r.arrived).count() as f64 / n,
+        }
+    }
+}
+
+/// The result of a Monte Carlo comparison.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct MonteCarlo {
+    /// How many worlds were drawn.
+    pub samples: usize,
+    /// Driving the contingency plan.
+    pub plan: Estimate,
+    /// Following the shortest path and replanning with D* Lite.
+    pub naive: Estimate,
+    /// Worlds in which the plan cost less than naive replanning (by more than 1e-9).
+    pub plan_cheaper: usize,
+    /// Worlds in which the plan cost more.
+    pub plan_dearer: usize,
+}
+
+/// Draws `samples` worlds from `seed` and drives both strategies in each.
+pub fn monte_carlo(
+    terrain: &Terrain,
+    plan: &PlanNode,
+    samples: usize,
+    seed: u64,
+) -> Result<MonteCarlo, SimulationError> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut planned = Vec::with_capacity(samples);
+    let mut naive = Vec::with_capacity(samples);
+    for _ in 0..samples {
+        let world = sample_world(terrain, &mut rng);
+        planned.push(plan.execute(terrain, world)?);
+        naive.push(naive_replanning(terrain, world)?);
+    }
+    let diff = |a: &Execution, b: &Execution| a.cost - b.cost;
+    Ok(MonteCarlo {
+        samples,
+        plan: Estimate::of(&planned),
+        naive: Estimate::of(&naive),
+        plan_cheaper: planned.iter().zip(&naive).filter(|(a, b)| diff(a, b) < -1e-9).count(),
+        plan_dearer: planned.iter().zip(&naive).filter(|(a, b)| diff(a, b) > 1e-9).count(),
+    })
+}
+
+/// The exact expected cost of naive replanning: D* Lite driven in every world (every combination
+/// of blocked choke points, `2^choke points` of them), weighted by the worlds' probabilities.
+/// Returns the expected cost and the probability of getting stuck.
+pub fn naive_expected_cost(terrain: &Terrain) -> Result<(Cost, f64), SimulationError> {
+    let mut expected = 0.0;
+    let mut stuck = 0.0;
+    for (world, p) in crate::plan::worlds(terrain) {
+        let run = naive_replanning(terrain, world)?;
+        expected += p * run.cost;
+        if !run.arrived {
+            stuck += p;
+        }
+    }
+    Ok((expected, stuck))
+}

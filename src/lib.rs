@@ -9,7 +9,8 @@
 //! | [`core`] | `trailmark-core` | geometry, costs, graph traits, grids, MovingAI files, JSON, SVG |
 //! | [`graph`] | `trailmark-graph` | builders from a world to a graph: grid graphs, visibility graphs, trapezoidal cells, PRM and Dubins roadmaps, roadmaps of changing worlds |
 //! | [`search`] | `trailmark-search` | BFS, DFS, Dijkstra, A*, weighted A*, ARA*; LPA*, D* Lite, AD*; indexed priority queue |
-//! | [`sample`] | `trailmark-sample` | sampling planners (in progress: state spaces, nearest neighbours) |
+//! | [`sample`] | `trailmark-sample` | sampling planners: RRT, RRT-Connect, RRT*, PRM over R², Rⁿ, SE(2), Dubins; path shortcutting and smoothing |
+//! | [`contingency`] | `trailmark-contingency` | contingency route planning over choke points that may be blocked |
 //!
 //! ```
 //! use trailmark::prelude::*;
@@ -33,6 +34,7 @@
 pub mod navigate;
 pub mod solve;
 
+pub use trailmark_contingency as contingency;
 pub use trailmark_core as core;
 pub use trailmark_graph as graph;
 pub use trailmark_sample as sample;

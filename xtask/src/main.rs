@@ -9,6 +9,8 @@
 //!   `cargo xtask render PROBLEM.json OUT.svg` also draws the world, its graph and the path.
 //! - `cargo xtask navigate` runs a robot through partly known terrain with each incremental
 //!   planner and prints a JSON summary.
+//! - `cargo xtask contingency TERRAIN.json` plans with contingencies over choke points that may
+//!   be blocked and prints `{"expected_cost": ..., "plan": ...}`.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -22,6 +24,7 @@ mod bench_replan;
 mod bench_roadmap;
 mod bench_sampling;
 mod bench_spaces;
+mod contingency;
 mod memory;
 mod navigate;
 mod ompl;
@@ -32,7 +35,10 @@ mod solve;
 mod verify;
 
 #[derive(Parser)]
-#[command(name = "cargo xtask", about = "The trailmark harness: bench, verify, solve, render, navigate")]
+#[command(
+    name = "cargo xtask",
+    about = "The trailmark harness: bench, verify, solve, render, navigate, contingency"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -62,6 +68,9 @@ enum Command {
     },
     /// Runs a robot through partly known terrain with each planner; prints a JSON summary.
     Navigate(navigate::Args),
+    /// Plans with contingencies over choke points that may be blocked; prints
+    /// `{"expected_cost": ..., "plan": ...}`.
+    Contingency(contingency::Args),
 }
 
 #[derive(Subcommand)]
@@ -120,6 +129,7 @@ fn main() -> ExitCode {
         Command::Solve { problem } => solve::run(&problem),
         Command::Render { problem, out } => solve::render(&problem, &out),
         Command::Navigate(args) => navigate::run(&args),
+        Command::Contingency(args) => contingency::run(&args),
     }
 }
 

@@ -51,11 +51,21 @@ pub struct DetectOptions {
     pub probability: f64,
     /// Keep only articulation points of the region adjacency graph.
     pub only_articulation: bool,
+    /// Keep only choke points that lie wholly inside this rectangle (its top-left and
+    /// bottom-right cells, inclusive): on a large map, the part the route will cross.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub within: Option<[Cell; 2]>,
 }
 
 impl Default for DetectOptions {
     fn default() -> Self {
-        DetectOptions { max_width: 2, max_cells: 16, probability: 0.25, only_articulation: false }
+        DetectOptions {
+            max_width: 2,
+            max_cells: 16,
+            probability: 0.25,
+            only_articulation: false,
+            within: None,
+        }
     }
 }
 
@@ -123,7 +133,13 @@ pub fn detect(
     let kept: Vec<bool> = candidates
         .iter()
         .map(|cells| {
+            let inside = |c: &Cell| {
+                options
+                    .within
+                    .is_none_or(|[lo, hi]| (lo.x..=hi.x).contains(&c.x) && (lo.y..=hi.y).contains(&c.y))
+            };
             cells.len() <= options.max_cells
+                && cells.iter().all(inside)
                 && !cells.iter().any(|c| keep_clear.contains(c))
                 && is_passage(&graph, cells, |c| narrow[index(c)])
         })

@@ -2,11 +2,11 @@
 //!
 //! A vehicle crossing terrain with bridges, passes and roads through forest does not know in
 //! advance whether each choke point is open; it finds out on approach. A [`Terrain`] is a cost
-//! grid with choke points, each blocked with some probability. [`plan`] returns a plan with
+//! grid with choke points, each blocked with some probability. [`plan()`] returns a plan with
 //! contingencies: the preferred route, and for every choke point that may be blocked, where the
 //! vehicle is when it finds out and the route it takes then, chosen to minimise the expected
 //! cost over every outcome (best-first AO* search over an [`Abstraction`] of regions and choke
-//! points, with admissible estimates; [`reference`] solves the same problem by exhaustive
+//! points, with admissible estimates; [`mod@reference`] solves the same problem by exhaustive
 //! recursion on the grid, for tests).
 //!
 //! ```
@@ -57,6 +57,7 @@ pub mod plan;
 pub mod planner;
 pub mod reference;
 pub mod simulate;
+pub mod svg;
 pub mod terrain;
 mod view;
 

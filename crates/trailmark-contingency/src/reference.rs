@@ -1,6 +1,6 @@
 //! The reference solver: the optimal expected cost by exhaustive recursion, every route costed by
 //! its own Dijkstra search on the whole grid. No regions, no segments, no estimates, no nesting
-//! bound: slow, and meant for tests on small terrains, where [`crate::plan`] must agree with it.
+//! bound: slow, and meant for tests on small terrains, where [`crate::plan()`] must agree with it.
 //!
 //! The decision problem is the planner's: the vehicle sees the choke points beside the cell it
 //! stops at; it may drive to the goal over choke points known to be open, or to a cell beside

@@ -312,6 +312,40 @@ impl Terrain {
         Terrain::new(self.grid, self.connectivity, self.start, self.goal, chokes)
     }
 
+    /// The terrain as a description that [`TerrainSpec::build`] turns back into it: rows of
+    /// characters (`@` impassable; `.`, `,`, `:`, ... for the passable costs from cheapest to
+    /// dearest) with their legend. `None` with more than 60 distinct costs.
+    pub fn to_spec(&self) -> Option<TerrainSpec> {
+        const CHARS: &str = ".,:;+*%&=~-_^!?abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU";
+        let mut costs: Vec<Cost> = self.grid.costs().iter().copied().filter(|c| c.is_finite()).collect();
+        costs.sort_by(f64::total_cmp);
+        costs.dedup();
+        if costs.len() > CHARS.len() {
+            return None;
+        }
+        let char_of = |cost: Cost| {
+            costs.iter().position(|&c| c == cost).and_then(|i| CHARS.chars().nth(i)).unwrap_or('@')
+        };
+        let rows = self
+            .grid
+            .costs()
+            .chunks(self.grid.width() as usize)
+            .map(|row| row.iter().map(|&c| char_of(c)).collect())
+            .collect();
+        let mut legend: BTreeMap<char, Option<Cost>> = costs.iter().map(|&c| (char_of(c), Some(c))).collect();
+        legend.insert('@', None);
+        Some(TerrainSpec {
+            rows: Some(rows),
+            legend: Some(legend),
+            movingai: None,
+            connectivity: self.connectivity.into(),
+            start: self.start,
+            goal: self.goal,
+            choke_points: self.chokes.clone(),
+            detect: None,
+        })
+    }
+
     /// The cost of following `route` (a sequence of neighbouring cells) in the world where the
     /// choke points of `blocked` (a bit mask) are blocked; `None` if a move is not possible there.
     pub fn route_cost(&self, route: &[Cell], blocked: u64) -> Option<Cost> {

@@ -118,3 +118,14 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn generated_terrains_write_and_read_back() {
+    let terrain = trailmark_contingency::generate::river_terrain(3, &Default::default()).unwrap();
+    let text = serde_json::to_string(&terrain.to_spec().unwrap()).unwrap();
+    let spec: TerrainSpec = serde_json::from_str(&text).unwrap();
+    let back = spec.build(std::path::Path::new(".")).unwrap();
+    assert_eq!(back.grid(), terrain.grid());
+    assert_eq!(back.choke_points(), terrain.choke_points());
+    assert_eq!((back.start(), back.goal()), (terrain.start(), terrain.goal()));
+}

@@ -184,10 +184,7 @@ impl<'t> Abstraction<'t> {
             let beside: Vec<NodeId> = (0..self.nodes.len() as NodeId)
                 .filter(|&n| self.nodes[n as usize].beside & bit != 0)
                 .collect();
-            let view = View::new(terrain.graph(), |c: Cell| {
-                terrain.choke_at(c) == Some(choke)
-                    || (terrain.choke_at(c).is_none() && terrain.chokes_beside(c) & bit != 0)
-            });
+            let view = crossing_view(terrain, choke);
             let mut joined = Vec::new();
             for &a in &beside {
                 let found =
@@ -283,11 +280,7 @@ impl<'t> Abstraction<'t> {
         if self.segments[a as usize].is_none() {
             let terrain = self.terrain;
             let region = self.nodes[a as usize].region;
-            let width = terrain.grid().width() as usize;
-            let region_of = &self.region_of;
-            let view = View::new(terrain.graph(), |c: Cell| {
-                region_of[c.y as usize * width + c.x as usize] == region
-            });
+            let view = region_view(terrain, &self.region_of, region);
             let found =
                 self.search.dijkstra_all(&view, self.nodes[a as usize].cell).expect("a node is passable");
             self.stats.segment_searches += 1;
@@ -308,38 +301,7 @@ impl<'t> Abstraction<'t> {
             return Rc::clone(routes);
         }
         self.stats.route_searches += 1;
-        let n = self.nodes.len();
-        let mut cost = vec![f64::INFINITY; n];
-        let mut previous = vec![None; n];
-        let mut done = vec![false; n];
-        let mut heap = BinaryHeap::new();
-        cost[from as usize] = 0.0;
-        heap.push(Entry(0.0, from));
-        while let Some(Entry(c, u)) = heap.pop() {
-            if done[u as usize] {
-                continue;
-            }
-            done[u as usize] = true;
-            let region = self.nodes[u as usize].region as usize;
-            let row = self.segments_from(u).to_vec();
-            for (&v, &seg) in self.region_nodes[region].iter().zip(row.iter()) {
-                let next = c + seg;
-                if next < cost[v as usize] {
-                    cost[v as usize] = next;
-                    previous[v as usize] = Some((u, Hop::Region));
-                    heap.push(Entry(next, v));
-                }
-            }
-            for &(v, choke, seg) in &self.crossings[u as usize] {
-                let next = c + seg;
-                if crossable & (1 << choke) != 0 && next < cost[v as usize] {
-                    cost[v as usize] = next;
-                    previous[v as usize] = Some((u, Hop::Crossing(choke)));
-                    heap.push(Entry(next, v));
-                }
-            }
-        }
-        let routes = Rc::new(Routes { cost, previous });
+        let routes = Rc::new(self.dijkstra(from, crossable, Segments::Exact));
         self.routes.insert((from, crossable), Rc::clone(&routes));
         routes
     }
@@ -348,35 +310,46 @@ impl<'t> Abstraction<'t> {
     /// may be crossed: a Dijkstra search back from the goal over exact segment costs where they
     /// are cached and admissible estimates where they are not. Nothing new is computed on the
     /// grid. Returns the bounds and, for each node, the next hop of the bounding route.
-    pub fn bounds_to_goal(&self, crossable: u64) -> Routes {
+    pub fn bounds_to_goal(&mut self, crossable: u64) -> Routes {
+        // Segments and crossings are symmetric (the grid graph is), so searching forward from the
+        // goal gives the costs back to it.
+        self.dijkstra(self.goal, crossable, Segments::Bounds)
+    }
+
+    /// Dijkstra's algorithm over the abstract graph from `source`, crossing the choke points of
+    /// `crossable`, with region segments costed as `segments` says.
+    fn dijkstra(&mut self, source: NodeId, crossable: u64, segments: Segments) -> Routes {
         let n = self.nodes.len();
         let mut cost = vec![f64::INFINITY; n];
         let mut previous = vec![None; n];
         let mut done = vec![false; n];
         let mut heap = BinaryHeap::new();
-        cost[self.goal as usize] = 0.0;
-        heap.push(Entry(0.0, self.goal));
+        cost[source as usize] = 0.0;
+        heap.push(Entry(0.0, source));
         while let Some(Entry(c, u)) = heap.pop() {
             if done[u as usize] {
                 continue;
             }
             done[u as usize] = true;
             let region = self.nodes[u as usize].region as usize;
-            for &v in &self.region_nodes[region] {
-                let seg = self.cached_segment(v, u).unwrap_or_else(|| self.estimate(v, u));
+            let row: Vec<Cost> = match segments {
+                Segments::Exact => self.segments_from(u).to_vec(),
+                Segments::Bounds => self.region_nodes[region]
+                    .iter()
+                    .map(|&v| self.cached_segment(v, u).unwrap_or_else(|| self.estimate(v, u)))
+                    .collect(),
+            };
+            let region_edges =
+                self.region_nodes[region].iter().zip(row).map(|(&v, seg)| (v, Hop::Region, seg));
+            let crossings = self.crossings[u as usize]
+                .iter()
+                .filter(|&&(_, choke, _)| crossable & (1 << choke) != 0)
+                .map(|&(v, choke, seg)| (v, Hop::Crossing(choke), seg));
+            for (v, hop, seg) in region_edges.chain(crossings) {
                 let next = c + seg;
                 if next < cost[v as usize] {
                     cost[v as usize] = next;
-                    previous[v as usize] = Some((u, Hop::Region));
-                    heap.push(Entry(next, v));
-                }
-            }
-            // Crossings are symmetric: the grid graph is.
-            for &(v, choke, seg) in &self.crossings[u as usize] {
-                let next = c + seg;
-                if crossable & (1 << choke) != 0 && next < cost[v as usize] {
-                    cost[v as usize] = next;
-                    previous[v as usize] = Some((u, Hop::Crossing(choke)));
+                    previous[v as usize] = Some((u, hop));
                     heap.push(Entry(next, v));
                 }
             }
@@ -391,22 +364,10 @@ impl<'t> Abstraction<'t> {
         let h = terrain.graph().heuristic(self.heuristic, b);
         let found = match hop {
             Hop::Region => {
-                let region = self.nodes[from as usize].region;
-                let width = terrain.grid().width() as usize;
-                let region_of = &self.region_of;
-                let view = View::new(terrain.graph(), |c: Cell| {
-                    region_of[c.y as usize * width + c.x as usize] == region
-                });
+                let view = region_view(terrain, &self.region_of, self.nodes[from as usize].region);
                 self.search.astar(&view, a, b, h)
             }
-            Hop::Crossing(choke) => {
-                let (choke, bit) = (choke as usize, 1u64 << choke);
-                let view = View::new(terrain.graph(), |c: Cell| {
-                    terrain.choke_at(c) == Some(choke)
-                        || (terrain.choke_at(c).is_none() && terrain.chokes_beside(c) & bit != 0)
-                });
-                self.search.astar(&view, a, b, h)
-            }
+            Hop::Crossing(choke) => self.search.astar(&crossing_view(terrain, choke as usize), a, b, h),
         };
         let path = found.expect("nodes are passable").path.expect("a hop of a route is reachable");
         (path.nodes, path.cost)
@@ -423,6 +384,34 @@ impl<'t> Abstraction<'t> {
         }
         (cells, cost)
     }
+}
+
+/// How [`Abstraction::dijkstra`] costs region segments.
+#[derive(Clone, Copy)]
+enum Segments {
+    /// Exactly, computing them on the grid as needed.
+    Exact,
+    /// Cached where computed, estimated where not: lower bounds, no grid search.
+    Bounds,
+}
+
+/// The grid seen by a region segment: the cells of `region` only.
+fn region_view<'a>(
+    terrain: &'a Terrain,
+    region_of: &'a [u32],
+    region: u32,
+) -> View<'a, impl Fn(Cell) -> bool + 'a> {
+    let width = terrain.grid().width() as usize;
+    View::new(terrain.graph(), move |c: Cell| region_of[c.y as usize * width + c.x as usize] == region)
+}
+
+/// The grid seen by a crossing: the cells of `choke` and the cells beside it.
+fn crossing_view(terrain: &Terrain, choke: usize) -> View<'_, impl Fn(Cell) -> bool + '_> {
+    let bit = 1u64 << choke;
+    View::new(terrain.graph(), move |c: Cell| match terrain.choke_at(c) {
+        Some(k) => k == choke,
+        None => terrain.chokes_beside(c) & bit != 0,
+    })
 }
 
 /// Labels the regions of a grid: the connected sets of passable cells outside the choke points

@@ -24,7 +24,7 @@ use trailmark_core::cost::Cost;
 use trailmark_core::grid::GridHeuristic;
 use trailmark_search::{DStarLite, SearchError};
 
-use crate::plan::{Execution, ExecutionError, PlanNode};
+use crate::plan::{Execution, ExecutionError, PlanNode, outcomes};
 use crate::terrain::Terrain;
 use crate::view::View;
 
@@ -37,6 +37,10 @@ pub enum SimulationError {
     /// D* Lite refused a query.
     #[error("D* Lite: {0}")]
     Search(String),
+    /// Naive replanning did not come beside the same choke points when replaying the same
+    /// outcomes (it is deterministic, so this is a defect).
+    #[error("naive replanning did not replay the same observations")]
+    Replay,
 }
 
 impl<N: std::fmt::Debug> From<SearchError<N>> for SimulationError {
@@ -60,6 +64,15 @@ pub fn sample_world(terrain: &Terrain, rng: &mut ChaCha8Rng) -> u64 {
 /// Drives the naive strategy in the world where `blocked` are blocked: D* Lite with unseen choke
 /// points taken as open, told of each blocked one the vehicle sees.
 pub fn naive_replanning(terrain: &Terrain, blocked: u64) -> Result<Execution, SimulationError> {
+    drive_naive(terrain, |seen| Ok(seen & blocked))
+}
+
+/// Drives the naive strategy, asking `observe` which of the choke points the vehicle has just
+/// come beside (a non-empty mask, never asked twice) are blocked.
+fn drive_naive(
+    terrain: &Terrain,
+    mut observe: impl FnMut(u64) -> Result<u64, SimulationError>,
+) -> Result<Execution, SimulationError> {
     let known_blocked = Shared::new(0u64);
     let view = View::new(terrain.graph(), |c| {
         terrain.choke_at(c).is_none_or(|k| known_blocked.get() & (1 << k) == 0)
@@ -73,7 +86,7 @@ pub fn naive_replanning(terrain: &Terrain, blocked: u64) -> Result<Execution, Si
     loop {
         let beside = terrain.chokes_beside(at) & !seen;
         seen |= beside;
-        let newly = beside & blocked;
+        let newly = if beside == 0 { 0 } else { observe(beside)? & beside };
         if newly != 0 {
             known_blocked.set(known_blocked.get() | newly);
             let mut changed = Vec::new();
@@ -93,8 +106,10 @@ pub fn naive_replanning(terrain: &Terrain, blocked: u64) -> Result<Execution, Si
         let Some(next) = planner.next_step(&view) else {
             return Ok(run);
         };
+        // Every choke point is seen from the cell before it, so the blocked ones seen so far
+        // are all the vehicle could drive into.
         run.cost += terrain
-            .route_cost(&[at, next], blocked)
+            .route_cost(&[at, next], known_blocked.get())
             .ok_or(ExecutionError::Undrivable { from: at, to: next })?;
         planner.move_start(&view, next)?;
         run.route.push(next);
@@ -177,18 +192,78 @@ pub fn monte_carlo(
     })
 }
 
-/// The exact expected cost of naive replanning: D* Lite driven in every world (every combination
-/// of blocked choke points, `2^choke points` of them), weighted by the worlds' probabilities.
-/// Returns the expected cost and the probability of getting stuck.
-pub fn naive_expected_cost(terrain: &Terrain) -> Result<(Cost, f64), SimulationError> {
-    let mut expected = 0.0;
-    let mut stuck = 0.0;
+/// The exact expected cost of naive replanning, with the probability of getting stuck.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct NaiveExpectation {
+    /// The expected cost.
+    pub expected_cost: Cost,
+    /// The probability of getting stuck.
+    pub stuck_probability: f64,
+    /// How many drives it took: one per distinct sequence of observations.
+    pub drives: usize,
+}
+
+/// The exact expected cost of naive replanning, by driving D* Lite once for each distinct
+/// sequence of what the vehicle sees.
+///
+/// Naive replanning is deterministic, so its drive depends only on the outcomes of the choke
+/// points it comes beside, in the order it comes beside them: the worlds that agree on those
+/// share one drive, whose probability is the product of the outcomes'. The drives are
+/// enumerated depth-first, each replaying the outcomes of the one before up to the last choke
+/// point (or group of choke points seen together) that has an outcome left to try, and taking
+/// every choke point seen after that as open at first. This needs far fewer drives than
+/// [`naive_expected_cost_by_worlds`] when the vehicle comes beside few of the choke points, and
+/// gives the same result.
+pub fn naive_expected_cost(terrain: &Terrain) -> Result<NaiveExpectation, SimulationError> {
+    let mut total = NaiveExpectation { expected_cost: 0.0, stuck_probability: 0.0, drives: 0 };
+    // The outcomes to replay: (choke points seen together, index into their outcomes).
+    let mut replay: Vec<(u64, usize)> = Vec::new();
+    loop {
+        let mut asked: Vec<(u64, usize)> = Vec::new();
+        let mut probability = 1.0;
+        let run = drive_naive(terrain, |group| {
+            let choice = match replay.get(asked.len()) {
+                Some(&(g, choice)) if g == group => choice,
+                Some(_) => return Err(SimulationError::Replay),
+                None => 0,
+            };
+            let (blocked, p) = outcomes(group, terrain)[choice];
+            probability *= p;
+            asked.push((group, choice));
+            Ok(blocked)
+        })?;
+        total.drives += 1;
+        total.expected_cost += probability * run.cost;
+        if !run.arrived {
+            total.stuck_probability += probability;
+        }
+        // The next drive: the deepest observation with an outcome left to try.
+        loop {
+            match asked.pop() {
+                None => return Ok(total),
+                Some((group, choice)) if choice + 1 < outcomes(group, terrain).len() => {
+                    asked.push((group, choice + 1));
+                    break;
+                }
+                Some(_) => {}
+            }
+        }
+        replay = asked;
+    }
+}
+
+/// The exact expected cost of naive replanning by brute force: D* Lite driven in every world
+/// (every combination of blocked choke points, `2^choke points` of them), weighted by the
+/// worlds' probabilities. The cross-check of [`naive_expected_cost`].
+pub fn naive_expected_cost_by_worlds(terrain: &Terrain) -> Result<NaiveExpectation, SimulationError> {
+    let mut total = NaiveExpectation { expected_cost: 0.0, stuck_probability: 0.0, drives: 0 };
     for (world, p) in crate::plan::worlds(terrain) {
         let run = naive_replanning(terrain, world)?;
-        expected += p * run.cost;
+        total.drives += 1;
+        total.expected_cost += p * run.cost;
         if !run.arrived {
-            stuck += p;
+            total.stuck_probability += p;
         }
     }
-    Ok((expected, stuck))
+    Ok(total)
 }

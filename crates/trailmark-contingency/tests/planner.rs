@@ -7,7 +7,7 @@ use trailmark_contingency::detect::{DetectOptions, detect};
 use trailmark_contingency::generate::{RiverOptions, river_terrain};
 use trailmark_contingency::plan::worlds;
 use trailmark_contingency::reference::Reference;
-use trailmark_contingency::simulate::{monte_carlo, naive_expected_cost};
+use trailmark_contingency::simulate::{monte_carlo, naive_expected_cost, naive_expected_cost_by_worlds};
 use trailmark_contingency::{Abstraction, PlannerOptions, Terrain, plan};
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_search::astar;
@@ -111,7 +111,12 @@ proptest! {
             prop_assert!(close(by_worlds, planned.expected_cost));
             last = planned.expected_cost;
         }
-        let (naive, _) = naive_expected_cost(&terrain).unwrap();
+        let naive = naive_expected_cost(&terrain).unwrap();
+        let by_worlds = naive_expected_cost_by_worlds(&terrain).unwrap();
+        prop_assert!(close(naive.expected_cost, by_worlds.expected_cost));
+        prop_assert!(close(naive.stuck_probability, by_worlds.stuck_probability));
+        prop_assert!(naive.drives <= by_worlds.drives);
+        let naive = naive.expected_cost;
         prop_assert!(last <= naive + 1e-9, "plan {last} naive {naive}");
     }
 

@@ -48,8 +48,11 @@ pub struct Node {
     pub beside: u64,
 }
 
+/// The grid cells of a hop, first to last, and their cost.
+pub type HopCells = (Vec<Cell>, Cost);
+
 /// How a route moves from one node to the next.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Hop {
     /// Within one region.
     Region,
@@ -120,6 +123,12 @@ pub struct Abstraction<'t> {
     min_cost: Cost,
     search: Search,
     routes: HashMap<(NodeId, u64), Rc<Routes>>,
+    /// The grid cells and cost of each hop driven so far.
+    hops: HashMap<(NodeId, NodeId, Hop), Rc<HopCells>>,
+    /// Per node: the cost to the goal on the grid with every choke point open.
+    goal_distance: Vec<Cost>,
+    /// Per choke point: the nodes beside it.
+    nodes_beside: Vec<Vec<NodeId>>,
     stats: AbstractionStats,
 }
 
@@ -169,10 +178,24 @@ impl<'t> Abstraction<'t> {
             min_cost: grid.min_cost().unwrap_or(1.0),
             search: Search::new(),
             routes: HashMap::new(),
+            hops: HashMap::new(),
+            goal_distance: Vec::new(),
+            nodes_beside: vec![Vec::new(); terrain.choke_points().len()],
             stats: AbstractionStats::default(),
         };
         abstraction.cost_crossings();
+        abstraction.measure_goal_distances();
         abstraction
+    }
+
+    /// Costs every node's distance to the goal on the whole grid with every choke point open:
+    /// one Dijkstra search back from the goal.
+    fn measure_goal_distances(&mut self) {
+        let graph = self.terrain.graph();
+        let found = self.search.dijkstra_all(graph, self.terrain.goal()).expect("the goal is passable");
+        self.stats.grid_expansions += found.stats.expansions;
+        self.goal_distance =
+            self.nodes.iter().map(|n| self.search.cost_to(graph, n.cell).unwrap_or(f64::INFINITY)).collect();
     }
 
     /// Costs every crossing: from each node beside a choke point, a Dijkstra search confined to
@@ -186,6 +209,7 @@ impl<'t> Abstraction<'t> {
                 .collect();
             let view = crossing_view(terrain, choke);
             let mut joined = Vec::new();
+            self.nodes_beside[choke] = beside.clone();
             for &a in &beside {
                 let found =
                     self.search.dijkstra_all(&view, self.nodes[a as usize].cell).expect("a node is passable");
@@ -247,6 +271,11 @@ impl<'t> Abstraction<'t> {
         &self.choke_regions[choke]
     }
 
+    /// The nodes beside a choke point: where the vehicle sees it.
+    pub fn nodes_beside(&self, choke: usize) -> &[NodeId] {
+        &self.nodes_beside[choke]
+    }
+
     /// The crossings from a node: `(to, choke, cost)`.
     pub fn crossings(&self, from: NodeId) -> &[(NodeId, u8, Cost)] {
         &self.crossings[from as usize]
@@ -262,6 +291,18 @@ impl<'t> Abstraction<'t> {
     pub fn estimate(&self, a: NodeId, b: NodeId) -> Cost {
         let (p, q) = (self.nodes[a as usize].cell, self.nodes[b as usize].cell);
         self.heuristic.distance(p.x.abs_diff(q.x), p.y.abs_diff(q.y)) * self.min_cost
+    }
+
+    /// A lower bound on every route between `a` and `b`, whatever choke points are open: the
+    /// larger of [`Abstraction::estimate`] and the difference of their distances to the goal with
+    /// every choke point open (the grid's costs are symmetric, so by the triangle inequality no
+    /// route between them costs less than that difference). Used for the region segments not
+    /// computed yet, the second makes the goal bounds exact wherever the cheapest route with
+    /// every choke point open is still usable.
+    pub fn distance_bound(&self, a: NodeId, b: NodeId) -> Cost {
+        let (da, db) = (self.goal_distance[a as usize], self.goal_distance[b as usize]);
+        let difference = if da.is_finite() && db.is_finite() { (da - db).abs() } else { 0.0 };
+        self.estimate(a, b).max(difference)
     }
 
     /// The region-segment cost from `a` to `b` (same region) if it has been computed.
@@ -308,8 +349,9 @@ impl<'t> Abstraction<'t> {
 
     /// Lower bounds on the cost from every node to the goal when the choke points of `crossable`
     /// may be crossed: a Dijkstra search back from the goal over exact segment costs where they
-    /// are cached and admissible estimates where they are not. Nothing new is computed on the
-    /// grid. Returns the bounds and, for each node, the next hop of the bounding route.
+    /// are cached and lower bounds where they are not (the straight-line estimate, or the
+    /// difference of the two nodes' distances to the goal with every choke point open, whichever
+    /// is larger). Nothing new is computed on the grid. Returns the bounds and, for each node, the next hop of the bounding route.
     pub fn bounds_to_goal(&mut self, crossable: u64) -> Routes {
         // Segments and crossings are symmetric (the grid graph is), so searching forward from the
         // goal gives the costs back to it.
@@ -336,7 +378,7 @@ impl<'t> Abstraction<'t> {
                 Segments::Exact => self.segments_from(u).to_vec(),
                 Segments::Bounds => self.region_nodes[region]
                     .iter()
-                    .map(|&v| self.cached_segment(v, u).unwrap_or_else(|| self.estimate(v, u)))
+                    .map(|&v| self.cached_segment(v, u).unwrap_or_else(|| self.distance_bound(v, u)))
                     .collect(),
             };
             let region_edges =
@@ -357,8 +399,12 @@ impl<'t> Abstraction<'t> {
         Routes { cost, previous }
     }
 
-    /// The grid cells of one hop, `from` first and `to` last, and their cost.
-    pub fn hop_cells(&mut self, from: NodeId, to: NodeId, hop: Hop) -> (Vec<Cell>, Cost) {
+    /// The grid cells of one hop, `from` first and `to` last, and their cost (found by A* the
+    /// first time, then cached: a plan tree drives the same hops in many branches).
+    pub fn hop_cells(&mut self, from: NodeId, to: NodeId, hop: Hop) -> Rc<HopCells> {
+        if let Some(found) = self.hops.get(&(from, to, hop)) {
+            return Rc::clone(found);
+        }
         let terrain = self.terrain;
         let (a, b) = (self.nodes[from as usize].cell, self.nodes[to as usize].cell);
         let h = terrain.graph().heuristic(self.heuristic, b);
@@ -370,7 +416,9 @@ impl<'t> Abstraction<'t> {
             Hop::Crossing(choke) => self.search.astar(&crossing_view(terrain, choke as usize), a, b, h),
         };
         let path = found.expect("nodes are passable").path.expect("a hop of a route is reachable");
-        (path.nodes, path.cost)
+        let found = Rc::new((path.nodes, path.cost));
+        self.hops.insert((from, to, hop), Rc::clone(&found));
+        found
     }
 
     /// The grid cells of a route given as hops (from [`Routes::hops_to`]), and its cost.
@@ -378,9 +426,9 @@ impl<'t> Abstraction<'t> {
         let mut cells = vec![self.nodes[hops[0].0 as usize].cell];
         let mut cost = 0.0;
         for pair in hops.windows(2) {
-            let (part, c) = self.hop_cells(pair[0].0, pair[1].0, pair[1].1);
-            cells.extend_from_slice(&part[1..]);
-            cost += c;
+            let part = self.hop_cells(pair[0].0, pair[1].0, pair[1].1);
+            cells.extend_from_slice(&part.0[1..]);
+            cost += part.1;
         }
         (cells, cost)
     }

@@ -15,7 +15,9 @@
 //! an admissible estimate: the probability that the goal can still be reached (exact, by
 //! enumerating the unseen choke points that matter, or a lower bound when there are many) times
 //! a lower bound on the route to the goal with every unseen choke point open (cached segment
-//! costs, straight-line estimates for the rest). So the plan found is optimal.
+//! costs, lower bounds for the rest), plus the probability that it cannot times a lower bound on
+//! the drive to the nearest choke point that matters (the vehicle finds out only there). So the
+//! plan found is optimal.
 //!
 //! The nesting depth bounds how many blockages a plan prepares for: once a branch has seen
 //! [`PlannerOptions::max_blockages`] blocked choke points, it follows the cheapest route as if
@@ -75,6 +77,8 @@ pub struct PlanStats {
     pub iterations: usize,
     /// States beyond the nesting depth, valued by naive replanning.
     pub replan_states: usize,
+    /// Looks left out because a look on the way to them sees the same choke points.
+    pub dominated: usize,
     /// What the abstraction computed.
     pub abstraction: AbstractionStats,
     /// Wall time in seconds.
@@ -185,7 +189,7 @@ struct AoStar<'t> {
     states: Vec<State>,
     index: HashMap<(NodeId, Knowledge), usize>,
     bounds: HashMap<u64, Routes>,
-    reach: HashMap<(u32, Knowledge), f64>,
+    reach: HashMap<(u32, Knowledge), (f64, u64)>,
     replan: HashMap<(NodeId, Knowledge), Cost>,
     stats: PlanStats,
 }
@@ -254,7 +258,10 @@ impl<'t> AoStar<'t> {
             self.stats.replan_states += 1;
             (Kind::Replan, self.replan_cost(node, k))
         } else {
-            (Kind::Tip, self.reach_probability(node, k) * self.bound(node, k))
+            let (p, relevant) = self.reach_probability(node, k);
+            let bound = self.bound(node, k);
+            let h = if p < 1.0 { p * bound + (1.0 - p) * self.nearest_look(node, relevant) } else { bound };
+            (Kind::Tip, h)
         };
         let s = self.states.len();
         self.states.push(State {
@@ -283,54 +290,26 @@ impl<'t> AoStar<'t> {
         self.bounds[&crossable].cost[node as usize]
     }
 
-    /// The probability that the goal can be reached from `node` given `k`: exact when at most
-    /// [`EXACT_REACH`] unseen choke points join regions not joined yet, otherwise the probability
-    /// that every unseen choke point on the bounding route is open (a lower bound).
-    fn reach_probability(&mut self, node: NodeId, k: Knowledge) -> f64 {
+    /// The probability that the goal can be reached from `node` given `k`, and the unseen choke
+    /// points that matter to it (see [`AoStar::relevant`]). The probability is exact when at most [`EXACT_REACH`] choke points matter, otherwise
+    /// the probability that every unseen choke point on the bounding route is open (a lower
+    /// bound).
+    fn reach_probability(&mut self, node: NodeId, k: Knowledge) -> (f64, u64) {
         let region = self.abs.nodes()[node as usize].region;
-        if let Some(&p) = self.reach.get(&(region, k)) {
-            return p;
+        if let Some(&found) = self.reach.get(&(region, k)) {
+            return found;
         }
         let goal_region = self.abs.nodes()[self.abs.goal() as usize].region;
         let regions = self.abs.region_count();
         let mut base = UnionFind::new(regions);
-        let mut bits = k.open();
-        while bits != 0 {
-            let c = bits.trailing_zeros() as usize;
-            bits &= bits - 1;
+        for c in ids(k.open()) {
             base.join_all(self.abs.regions_of_choke(c));
         }
-        let mut relevant = Vec::new();
-        let mut bits = k.unknown(self.all());
-        while bits != 0 {
-            let c = bits.trailing_zeros() as usize;
-            bits &= bits - 1;
-            let joined = self.abs.regions_of_choke(c);
-            if joined.iter().any(|&r| base.find(r) != base.find(joined[0])) {
-                relevant.push(c);
-            }
-        }
+        let relevant = self.relevant(&mut base, k.unknown(self.all()), [region, goal_region]);
         let p = if base.find(region) == base.find(goal_region) {
             1.0
         } else if relevant.len() <= EXACT_REACH {
-            let mut total = 0.0;
-            for mask in 0u32..(1 << relevant.len()) {
-                let mut uf = base.clone();
-                let mut q = 1.0;
-                for (i, &c) in relevant.iter().enumerate() {
-                    let p = self.terrain.choke_points()[c].probability;
-                    if mask & (1 << i) != 0 {
-                        q *= 1.0 - p;
-                        uf.join_all(self.abs.regions_of_choke(c));
-                    } else {
-                        q *= p;
-                    }
-                }
-                if q > 0.0 && uf.find(region) == uf.find(goal_region) {
-                    total += q;
-                }
-            }
-            total
+            self.reach_exact(&mut base, &relevant, [region, goal_region], 1.0)
         } else {
             self.bound(node, k);
             let routes = &self.bounds[&(self.all() & !k.blocked)];
@@ -347,8 +326,92 @@ impl<'t> AoStar<'t> {
             }
             q
         };
-        self.reach.insert((region, k), p);
-        p
+        let relevant = relevant.iter().fold(0u64, |mask, &c| mask | 1 << c);
+        self.reach.insert((region, k), (p, relevant));
+        (p, relevant)
+    }
+
+    /// The probability, times `q`, that the regions `ends` end up joined when each of `chokes`
+    /// is open with its probability, given the regions already joined in `uf`: depth first over
+    /// the choke points, open before blocked, adding a branch's whole weight as soon as the ends
+    /// are joined and dropping it as soon as they cannot be.
+    fn reach_exact(&self, uf: &mut UnionFind, chokes: &[usize], ends: [u32; 2], q: f64) -> f64 {
+        if uf.find(ends[0]) == uf.find(ends[1]) {
+            return q;
+        }
+        let Some((&c, rest)) = chokes.split_first() else {
+            return 0.0;
+        };
+        let mut all_open = uf.clone();
+        for &c in chokes {
+            all_open.join_all(self.abs.regions_of_choke(c));
+        }
+        if all_open.find(ends[0]) != all_open.find(ends[1]) {
+            return 0.0;
+        }
+        let p = self.terrain.choke_points()[c].probability;
+        let mut total = 0.0;
+        if p < 1.0 {
+            let mut open = uf.clone();
+            open.join_all(self.abs.regions_of_choke(c));
+            total += self.reach_exact(&mut open, rest, ends, q * (1.0 - p));
+        }
+        if p > 0.0 {
+            total += self.reach_exact(uf, rest, ends, q * p);
+        }
+        total
+    }
+
+    /// The unseen choke points `unknown` that can decide whether the two regions `ends` are
+    /// joined, given the regions already joined in `base` (by choke points known to be open).
+    ///
+    /// Take the graph whose vertices are the groups of joined regions and the unseen choke
+    /// points, each choke point linked to the groups it touches. Whether the ends get joined
+    /// depends exactly on the choke points that lie on some simple path between them: those in
+    /// the blocks (biconnected components) on the path between the ends in the block-cut tree.
+    /// The others lead only into dead ends or loops off that path.
+    fn relevant(&self, base: &mut UnionFind, unknown: u64, ends: [u32; 2]) -> Vec<usize> {
+        let mut vertex: HashMap<u32, usize> = HashMap::new();
+        let mut adjacency: Vec<Vec<usize>> = Vec::new();
+        let mut group = |g: u32, adjacency: &mut Vec<Vec<usize>>| {
+            *vertex.entry(g).or_insert_with(|| {
+                adjacency.push(Vec::new());
+                adjacency.len() - 1
+            })
+        };
+        let ends = ends.map(|r| group(base.find(r), &mut adjacency));
+        let mut chokes = Vec::new();
+        for c in ids(unknown) {
+            let mut groups: Vec<u32> = self.abs.regions_of_choke(c).iter().map(|&r| base.find(r)).collect();
+            groups.sort_unstable();
+            groups.dedup();
+            if groups.len() < 2 {
+                continue;
+            }
+            adjacency.push(Vec::new());
+            let v = adjacency.len() - 1;
+            chokes.push((v, c));
+            for g in groups {
+                let u = group(g, &mut adjacency);
+                adjacency[u].push(v);
+                adjacency[v].push(u);
+            }
+        }
+        let on_path = on_simple_paths(&adjacency, ends[0], ends[1]);
+        chokes.into_iter().filter(|&(v, _)| on_path[v]).map(|(_, c)| c).collect()
+    }
+
+    /// A lower bound on the cost of reaching a node beside one of the choke points `relevant`
+    /// from `node`. When the goal turns out unreachable, the vehicle has seen one of them blocked
+    /// (the others cannot cut it off), so it has driven at least this far.
+    fn nearest_look(&self, node: NodeId, relevant: u64) -> Cost {
+        let mut nearest = f64::INFINITY;
+        for c in ids(relevant) {
+            for &v in self.abs.nodes_beside(c) {
+                nearest = nearest.min(self.abs.distance_bound(node, v));
+            }
+        }
+        nearest
     }
 
     /// The exact expected cost of naive replanning from `(node, k)`: drive the cheapest route with
@@ -413,12 +476,26 @@ impl<'t> AoStar<'t> {
                 });
             }
             let unknown = k.unknown(self.all());
+            let blocked = k.blocked.count_ones() as usize;
             for v in 0..self.abs.nodes().len() as NodeId {
                 let transit = routes.cost[v as usize];
-                if v != goal && transit.is_finite() && self.abs.nodes()[v as usize].beside & unknown != 0 {
-                    let children = self.arrive(s, v, k)?;
-                    choices.push(Choice { target: Target::Look(v), transit, children });
+                let seen = self.abs.nodes()[v as usize].beside & unknown;
+                if v == goal || !transit.is_finite() || seen == 0 {
+                    continue;
                 }
+                // Looking at `v` is dominated when the cheapest route to it passes a node that
+                // sees the same choke points: whatever is seen, going on from there to `v` and
+                // doing what would be done from `v` costs the same, so the earlier look is at least
+                // as good. Beyond the nesting depth the states are valued by naive replanning,
+                // for which that argument does not hold, so those looks are all kept.
+                if blocked + (seen.count_ones() as usize) < self.options.max_blockages
+                    && self.seen_on_the_way(&routes, v, seen, unknown)
+                {
+                    self.stats.dominated += 1;
+                    continue;
+                }
+                let children = self.arrive(s, v, k)?;
+                choices.push(Choice { target: Target::Look(v), transit, children });
             }
         }
         let state = &mut self.states[s];
@@ -432,6 +509,20 @@ impl<'t> AoStar<'t> {
             state.solved = true;
         }
         Ok(())
+    }
+
+    /// Whether the cheapest route to `v` passes a node (other than the goal) that sees exactly the
+    /// unknown choke points `seen` that `v` sees.
+    fn seen_on_the_way(&self, routes: &Routes, v: NodeId, seen: u64, unknown: u64) -> bool {
+        let goal = self.abs.goal();
+        let mut at = v;
+        while let Some((previous, _)) = routes.previous[at as usize] {
+            if previous != goal && self.abs.nodes()[previous as usize].beside & unknown == seen {
+                return true;
+            }
+            at = previous;
+        }
+        false
     }
 
     /// The value of a choice under the current estimates.
@@ -662,6 +753,158 @@ impl UnionFind {
                 let other = self.find(r);
                 self.0[other as usize] = root;
             }
+        }
+    }
+}
+
+/// Which vertices of an undirected graph (adjacency lists, no parallel edges) lie on some simple
+/// path from `s` to `t`: the vertices of the blocks (biconnected components, found by Tarjan's
+/// algorithm) on the path from `s` to `t` in the block-cut tree. None when `t` cannot be reached.
+fn on_simple_paths(adjacency: &[Vec<usize>], s: usize, t: usize) -> Vec<bool> {
+    let n = adjacency.len();
+    let mut on_path = vec![false; n];
+    if s == t {
+        on_path[s] = true;
+        return on_path;
+    }
+    let mut tarjan = Tarjan {
+        adjacency,
+        order: vec![0; n],
+        low: vec![0; n],
+        time: 0,
+        edges: Vec::new(),
+        blocks: Vec::new(),
+    };
+    tarjan.visit(s, usize::MAX);
+    if tarjan.order[t] == 0 {
+        return on_path;
+    }
+    // The block-cut tree as vertex-block incidences: a breadth-first search from `s` to `t`
+    // over them follows the tree's only path.
+    let blocks = tarjan.blocks;
+    let mut blocks_of = vec![Vec::new(); n];
+    for (b, block) in blocks.iter().enumerate() {
+        for &v in block {
+            blocks_of[v].push(b);
+        }
+    }
+    let mut came_from_block = vec![usize::MAX; n];
+    let mut came_from_vertex = vec![usize::MAX; blocks.len()];
+    let mut queue = std::collections::VecDeque::from([s]);
+    came_from_block[s] = blocks.len();
+    while let Some(v) = queue.pop_front() {
+        if v == t {
+            break;
+        }
+        for &b in &blocks_of[v] {
+            if came_from_vertex[b] != usize::MAX {
+                continue;
+            }
+            came_from_vertex[b] = v;
+            for &w in &blocks[b] {
+                if came_from_block[w] == usize::MAX {
+                    came_from_block[w] = b;
+                    queue.push_back(w);
+                }
+            }
+        }
+    }
+    let mut v = t;
+    while v != s {
+        let b = came_from_block[v];
+        for &w in &blocks[b] {
+            on_path[w] = true;
+        }
+        v = came_from_vertex[b];
+    }
+    on_path
+}
+
+/// Tarjan's biconnected components, by depth-first search with a stack of edges.
+struct Tarjan<'a> {
+    adjacency: &'a [Vec<usize>],
+    /// Discovery order, from 1 (0: not visited).
+    order: Vec<usize>,
+    low: Vec<usize>,
+    time: usize,
+    edges: Vec<(usize, usize)>,
+    /// The vertices of each block.
+    blocks: Vec<Vec<usize>>,
+}
+
+impl Tarjan<'_> {
+    fn visit(&mut self, u: usize, parent: usize) {
+        self.time += 1;
+        self.order[u] = self.time;
+        self.low[u] = self.time;
+        for &v in &self.adjacency[u] {
+            if self.order[v] == 0 {
+                self.edges.push((u, v));
+                self.visit(v, u);
+                self.low[u] = self.low[u].min(self.low[v]);
+                if self.low[v] >= self.order[u] {
+                    let mut block = Vec::new();
+                    while let Some((a, b)) = self.edges.pop() {
+                        block.extend([a, b]);
+                        if (a, b) == (u, v) {
+                            break;
+                        }
+                    }
+                    block.sort_unstable();
+                    block.dedup();
+                    self.blocks.push(block);
+                }
+            } else if v != parent && self.order[v] < self.order[u] {
+                self.edges.push((u, v));
+                self.low[u] = self.low[u].min(self.order[v]);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::on_simple_paths;
+    use proptest::prelude::*;
+
+    /// Marks every vertex of every simple path from `at` to `t` by trying them all.
+    fn brute_force(adjacency: &[Vec<usize>], at: usize, t: usize, path: &mut Vec<usize>, found: &mut [bool]) {
+        path.push(at);
+        if at == t {
+            for &v in path.iter() {
+                found[v] = true;
+            }
+        } else {
+            for &v in &adjacency[at] {
+                if !path.contains(&v) {
+                    brute_force(adjacency, v, t, path, found);
+                }
+            }
+        }
+        path.pop();
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(500))]
+
+        /// The block-cut tree finds exactly the vertices on simple paths that trying every
+        /// path finds.
+        #[test]
+        fn simple_paths_match_brute_force(
+            n in 2usize..9,
+            edges in proptest::collection::vec((0usize..9, 0usize..9), 0..16),
+        ) {
+            let mut adjacency = vec![Vec::new(); n];
+            for (a, b) in edges {
+                let (a, b) = (a % n, b % n);
+                if a != b && !adjacency[a].contains(&b) {
+                    adjacency[a].push(b);
+                    adjacency[b].push(a);
+                }
+            }
+            let mut expected = vec![false; n];
+            brute_force(&adjacency, 0, n - 1, &mut Vec::new(), &mut expected);
+            prop_assert_eq!(on_simple_paths(&adjacency, 0, n - 1), expected);
         }
     }
 }

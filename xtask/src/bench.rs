@@ -46,13 +46,13 @@ pub struct Args {
     #[arg(long)]
     json: bool,
     /// The sections to run: grid search beside the peers, unknown-terrain navigation
-    /// (incremental planners), anytime planners, geometric roadmaps, sampling planners
-    /// (comma-separated).
+    /// (incremental planners), anytime planners, geometric roadmaps, sampling planners,
+    /// contingency plans over choke points (comma-separated).
     #[arg(
         long,
         value_enum,
         value_delimiter = ',',
-        default_value = "grid,navigation,anytime,roadmaps,sampling"
+        default_value = "grid,navigation,anytime,roadmaps,sampling,contingency"
     )]
     sections: Vec<Section>,
     /// Also run OMPL's planners on the sampling section's problems (needs libompl-dev and
@@ -75,6 +75,9 @@ pub enum Section {
     Roadmaps,
     /// RRT's and RRT-Connect's success and speed, RRT*'s convergence, on generated polygon worlds.
     Sampling,
+    /// Contingency plans over choke points against D* Lite replanning, on river terrains and a
+    /// MovingAI rooms map.
+    Contingency,
 }
 
 /// A benchmark suite.
@@ -245,6 +248,7 @@ struct Report {
     roadmaps: Option<crate::bench_roadmap::RoadmapReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     sampling: Option<crate::bench_sampling::SamplingReport>,
+    contingency: Vec<crate::bench_contingency::ContingencyRow>,
 }
 
 #[derive(Serialize)]
@@ -809,6 +813,16 @@ pub fn run(args: &Args) -> ExitCode {
             }
         }
     }
+    let mut contingency = Vec::new();
+    if args.sections.contains(&Section::Contingency) && args.only.is_empty() {
+        match crate::bench_contingency::bench_contingency(args.suite, args.seed, args.runs, movingai_dir) {
+            Ok(r) => contingency = r,
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
     let report = Report {
         suite: args.suite,
         versions: locked_versions(&["trailmark", "pathfinding"]),
@@ -834,6 +848,7 @@ pub fn run(args: &Args) -> ExitCode {
         anytime,
         roadmaps,
         sampling,
+        contingency,
     };
     let mut figures = Vec::new();
     if !report.results.is_empty() {
@@ -855,6 +870,10 @@ pub fn run(args: &Args) -> ExitCode {
     if let Some(sampling) = &report.sampling {
         text.push('\n');
         text.push_str(&crate::bench_sampling::markdown(sampling));
+    }
+    if !report.contingency.is_empty() {
+        text.push('\n');
+        text.push_str(&crate::bench_contingency::markdown(&report.contingency));
     }
     let folder =
         crate::workspace_root().join("target/bench").join(format!("{}-{}", args.suite.name(), report.date));
@@ -918,7 +937,8 @@ pub fn run(args: &Args) -> ExitCode {
     }
     let errors: usize = report.results.iter().map(|r| r.cost_errors).sum::<usize>()
         + report.roadmaps.iter().flat_map(|r| &r.rows).map(|r| r.cost_errors).sum::<usize>()
-        + report.sampling.as_ref().map_or(0, |s| s.errors());
+        + report.sampling.as_ref().map_or(0, |s| s.errors())
+        + report.contingency.iter().filter(|r| r.error).count();
     if errors > 0 {
         eprintln!("error: {errors} queries broke their planner's cost bound (see the cost errors column)");
         return ExitCode::from(1);

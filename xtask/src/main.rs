@@ -19,6 +19,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use trailmark::graph::visibility::Edges;
 
 mod bench;
+mod bench_contingency;
 mod bench_prm;
 mod bench_replan;
 mod bench_roadmap;

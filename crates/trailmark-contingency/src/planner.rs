@@ -291,9 +291,9 @@ impl<'t> AoStar<'t> {
     }
 
     /// The probability that the goal can be reached from `node` given `k`, and the unseen choke
-    /// points that matter to it (see [`AoStar::relevant`]). The probability is exact when at most [`EXACT_REACH`] choke points matter, otherwise
-    /// the probability that every unseen choke point on the bounding route is open (a lower
-    /// bound).
+    /// points that matter to it (see [`AoStar::relevant`]). The probability is exact when at most
+    /// [`EXACT_REACH`] choke points matter, otherwise the probability that every unseen choke
+    /// point on the bounding route is open (a lower bound).
     fn reach_probability(&mut self, node: NodeId, k: Knowledge) -> (f64, u64) {
         let region = self.abs.nodes()[node as usize].region;
         if let Some(&found) = self.reach.get(&(region, k)) {

@@ -15,7 +15,7 @@ use std::time::Instant;
 use serde::Serialize;
 use trailmark::contingency::generate::{RiverOptions, river_terrain};
 use trailmark::contingency::simulate::{monte_carlo, naive_expected_cost};
-use trailmark::contingency::{PlannerOptions, Terrain, TerrainSpec, plan};
+use trailmark::contingency::{PlannerOptions, Terrain, plan};
 
 use crate::bench::{Suite, median};
 
@@ -74,9 +74,7 @@ fn terrains(suite: Suite, movingai: Option<&Path>) -> Result<Vec<(String, Terrai
     match movingai {
         Some(dir) => {
             let file = crate::workspace_root().join("docs/contingency-rooms.json");
-            let text = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
-            let mut spec: TerrainSpec =
-                serde_json::from_str(&text).map_err(|e| format!("{}: {e}", file.display()))?;
+            let mut spec = crate::contingency::read_spec(&file)?;
             let map = dir.join("maps/rooms/64room_000.map");
             spec.movingai = Some(map.to_string_lossy().into_owned());
             let terrain = spec.build(Path::new(".")).map_err(|e| format!("{}: {e}", file.display()))?;

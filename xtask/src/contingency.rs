@@ -72,13 +72,16 @@ pub fn run(args: &Args) -> ExitCode {
     }
 }
 
+/// Reads a terrain file (see `TerrainSpec`) without building the terrain.
+pub fn read_spec(path: &Path) -> Result<TerrainSpec, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
 fn load(args: &Args) -> Result<Terrain, String> {
     match (&args.terrain, args.generate) {
         (Some(path), None) => {
-            let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-            let spec: TerrainSpec =
-                serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-            spec.build(path.parent().unwrap_or(Path::new("."))).map_err(|e| e.to_string())
+            read_spec(path)?.build(path.parent().unwrap_or(Path::new("."))).map_err(|e| e.to_string())
         }
         (None, Some(seed)) => river_terrain(seed, &RiverOptions::default()).map_err(|e| e.to_string()),
         _ => Err("give a terrain file or --generate SEED".into()),

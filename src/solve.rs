@@ -173,6 +173,9 @@ pub enum SolveError {
     /// The roadmap could not be built or rejected the start or goal.
     #[error(transparent)]
     Prm(#[from] PrmError),
+    /// A sampler setting out of its range.
+    #[error(transparent)]
+    Sampler(#[from] trailmark_sample::SamplerError),
     /// A field the planner does not take.
     #[error("\"{field}\" does not apply to the \"{planner}\" planner")]
     NotForPlanner {

@@ -9,7 +9,7 @@ use trailmark::core::dubins::{DubinsPath, Piece};
 use trailmark::core::geometry::{Point, Pose};
 use trailmark::core::world::PolygonWorld;
 use trailmark::problem::{Problem, SolveResult, Status, Waypoint, World};
-use trailmark::sample::PlanError;
+use trailmark::sample::{PlanError, SamplerError};
 use trailmark::solve::{SolveError, solve, solve_and_draw};
 
 /// The wall world of the examples (a wall and a triangle, robot radius 0.3) with `rest`.
@@ -115,6 +115,35 @@ fn the_same_seed_gives_the_same_document() {
         };
         assert_eq!(run(5), run(5), "{planner}");
         assert_ne!(run(5).path, run(6).path, "{planner}");
+    }
+}
+
+#[test]
+fn samplers_give_valid_reproducible_paths() {
+    let samplers = [
+        r#"{"name": "uniform"}"#,
+        r#"{"name": "bridge", "std_dev": 1.0}"#,
+        r#"{"name": "bridge", "std_dev": 0.5, "share": 1.0, "attempts": 10}"#,
+        r#"{"name": "gaussian", "std_dev": 0.5, "share": 0.25}"#,
+    ];
+    for planner in ["rrt", "rrt_connect", "rrt_star"] {
+        let mut checks = Vec::new();
+        for sampler in samplers {
+            let problem = document(&format!(
+                r#""seed": 4, "start": [1, 1], "goal": [9, 1],
+                   "planner": {{"name": "{planner}", "max_iterations": 1500, "sampler": {sampler}}}"#
+            ));
+            let result = solve(&problem, ".").unwrap();
+            assert_eq!(result.status, Status::Solved, "{planner} {sampler}");
+            assert_eq!(without_times(result.clone()), without_times(solve(&problem, ".").unwrap()));
+            let path: Vec<Point> = states(&result).iter().map(|c| Point::new(c[0], c[1])).collect();
+            assert_eq!((path[0], path[path.len() - 1]), (Point::new(1.0, 1.0), Point::new(9.0, 1.0)));
+            let checker = world(&problem).checker();
+            assert!(path.windows(2).all(|leg| checker.segment_is_free(leg[0], leg[1])));
+            checks.push(result.stats.sampling.unwrap().collision_checks);
+        }
+        // Every sample of the share-1 bridge costs state checks (at least one per try).
+        assert!(checks[2] > checks[0], "{planner}: {checks:?}");
     }
 }
 
@@ -244,6 +273,17 @@ fn bad_sampling_documents_give_typed_errors() {
         (r#""start": [5, 1], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
             matches!(e, SolveError::Plan(PlanError::InvalidStart))
         }),
+        (format!(r#"{ends}, "planner": {{"name": "rrt", "sampler": {{"name": "bridge", "std_dev": 0}}}}"#), |e| {
+            matches!(e, SolveError::Sampler(SamplerError::StdDev(_)))
+        }),
+        (
+            format!(r#"{ends}, "planner": {{"name": "rrt", "sampler": {{"name": "gaussian", "std_dev": 1, "share": 1.5}}}}"#),
+            |e| matches!(e, SolveError::Sampler(SamplerError::Share(_))),
+        ),
+        (
+            format!(r#"{ends}, "planner": {{"name": "rrt_star", "sampler": {{"name": "bridge", "std_dev": 1, "attempts": 0}}}}"#),
+            |e| matches!(e, SolveError::Sampler(SamplerError::NoAttempts)),
+        ),
     ];
     for (rest, expected) in cases {
         let e = err(&rest);

@@ -5,16 +5,16 @@ use std::time::{Duration, Instant};
 
 use trailmark_core::geometry::Point;
 use trailmark_core::problem::{
-    ImprovementRecord, PlannerSpec, Problem, ResultStats, SamplingSpec, SamplingStats, SmoothedRecord,
-    SolveResult, SpaceKind, Status, Waypoint,
+    ImprovementRecord, PlannerSpec, Problem, ResultStats, SamplerSpec, SamplingSpec, SamplingStats,
+    SmoothedRecord, SolveResult, SpaceKind, Status, Waypoint,
 };
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_graph::prm::{DubinsSteering, Steering, Straight};
 use trailmark_sample::{
-    Dubins, KdNearest, NearestNeighbors, Plan, Query, R2, RrtOptions, StateSpace, Termination, rrt,
-    rrt_connect, rrt_star, shortcut,
+    Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Query, R2, RrtOptions, Sampler, StateSpace,
+    Termination, rrt, rrt_connect, rrt_star, shortcut,
 };
 
 use super::{Coordinates, SolveError, dubins_curve, roadmap_fields};
@@ -141,10 +141,19 @@ impl Run<'_> {
             ..defaults
         };
         let query = Query::new(space, self.checker, start, goal);
-        let plan: Plan<S::State> = match self.problem.planner {
-            PlannerSpec::Rrt(_) => rrt(&query, nearest, &options, &termination, self.seed)?,
-            PlannerSpec::RrtConnect(_) => rrt_connect(&query, nearest, &options, &termination, self.seed)?,
-            _ => rrt_star(&query, nearest, &options, &termination, self.seed)?,
+        let limits = (&options, &termination);
+        let plan = match spec.sampler.unwrap_or_default() {
+            SamplerSpec::Uniform => self.search(&query, nearest, limits)?,
+            SamplerSpec::Bridge { std_dev, share, attempts } => {
+                let bridge = Bridge::new(std_dev)?.with_share(share.unwrap_or(0.5))?;
+                let bridge = bridge.with_attempts(attempts.unwrap_or(100))?;
+                self.search(&query.with_sampler(bridge), nearest, limits)?
+            }
+            SamplerSpec::Gaussian { std_dev, share, attempts } => {
+                let gaussian = Gaussian::new(std_dev)?.with_share(share.unwrap_or(0.5))?;
+                let gaussian = gaussian.with_attempts(attempts.unwrap_or(100))?;
+                self.search(&query.with_sampler(gaussian), nearest, limits)?
+            }
         };
         let planned = plan.path.clone().unwrap_or_default();
         let clock = Instant::now();
@@ -198,6 +207,28 @@ impl Run<'_> {
 fn world_step(world: &PolygonWorld) -> f64 {
     let size = world.bounds().max() - world.bounds().min();
     size.x.max(size.y) / 500.0
+}
+
+impl Run<'_> {
+    /// The problem's planner on `query`.
+    fn search<S, N, Q>(
+        &self,
+        query: &Query<'_, S, CollisionChecker, Q>,
+        nearest: N,
+        (options, termination): (&RrtOptions, &Termination),
+    ) -> Result<Plan<S::State>, SolveError>
+    where
+        S: StateSpace,
+        N: NearestNeighbors<S> + Clone,
+        Q: Sampler<S>,
+        CollisionChecker: trailmark_sample::Validity<S>,
+    {
+        Ok(match self.problem.planner {
+            PlannerSpec::Rrt(_) => rrt(query, nearest, options, termination, self.seed)?,
+            PlannerSpec::RrtConnect(_) => rrt_connect(query, nearest, options, termination, self.seed)?,
+            _ => rrt_star(query, nearest, options, termination, self.seed)?,
+        })
+    }
 }
 
 /// The world with its free space, the drawn path and its ends, titled by the planner.

@@ -39,7 +39,7 @@ pub struct Args {
     #[arg(long)]
     no_movingai: bool,
     /// Run only these planners (comma-separated names from the report: the grid planners, and
-    /// `rrt`, `rrt_connect`, `rrt_star`, `prm_star` of the sampling section).
+    /// `rrt`, `rrt_connect`, `rrt_connect_bridge`, `rrt_star`, `prm_star` of the sampling section).
     #[arg(long, value_delimiter = ',')]
     only: Vec<String>,
     /// Print the results as JSON on standard output instead of the table.

@@ -188,6 +188,43 @@ pub struct SamplingSpec {
     /// reported beside it (default: none).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub smooth: Option<Smoothing>,
+    /// Where samples are drawn (default: uniformly).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sampler: Option<SamplerSpec>,
+}
+
+/// Where a sampling planner draws the states it steers toward. In JSON, an object whose
+/// `"name"` selects the sampler; the two that look for obstacles take `"std_dev"` (required:
+/// the distance between the two states tested, about the width of the passages sought),
+/// `"share"` (default 0.5) and `"attempts"` (default 100).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(tag = "name", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SamplerSpec {
+    /// Uniformly over the space.
+    #[default]
+    Uniform,
+    /// The bridge test: free midpoints of two nearby states in collision (narrow passages).
+    Bridge {
+        /// The partner's standard deviation.
+        std_dev: f64,
+        /// The probability of a bridge sample rather than a uniform one.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        share: Option<f64>,
+        /// Tries before a uniform sample.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        attempts: Option<u32>,
+    },
+    /// Free states beside states in collision (near obstacles' surfaces).
+    Gaussian {
+        /// The partner's standard deviation.
+        std_dev: f64,
+        /// The probability of such a sample rather than a uniform one.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        share: Option<f64>,
+        /// Tries before a uniform sample.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        attempts: Option<u32>,
+    },
 }
 
 /// The world of a problem. In JSON, an object with one key naming the kind of world.

@@ -5,6 +5,8 @@
 //! - [`nearest`]: exact nearest-neighbour structures for every space (a k-d tree over positions,
 //!   pruned by the straight-line lower bound, and brute force);
 //! - [`validity`]: exact checks against polygon worlds, sampled checks for your own spaces;
+//! - [`sampler`]: where the planners draw samples: uniformly, or near obstacles and in narrow
+//!   passages (the Gaussian and bridge-test samplers);
 //! - [`rrt`](mod@rrt) (RRT, RRT-Connect, termination conditions, plans and statistics) and
 //!   [`rrt_star`](mod@rrt_star);
 //! - [`arm`]: a planar arm of revolute joints among polygons, for planning in its joint space;
@@ -39,6 +41,7 @@ pub mod arm;
 pub mod nearest;
 pub mod rrt;
 pub mod rrt_star;
+pub mod sampler;
 pub mod simplify;
 pub mod space;
 pub mod validity;
@@ -49,6 +52,7 @@ pub use rrt::{
     rrt_connect,
 };
 pub use rrt_star::rrt_star;
+pub use sampler::{Bridge, Gaussian, Sampler, SamplerError, Uniform};
 pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};
 pub use validity::{Sampled, Validity};

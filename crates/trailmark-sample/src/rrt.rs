@@ -41,12 +41,14 @@ use rand_chacha::ChaCha8Rng;
 use thiserror::Error;
 
 use crate::nearest::{Direction, NearestNeighbors};
+use crate::sampler::{Sampler, Uniform};
 use crate::space::StateSpace;
 use crate::validity::Validity;
 
-/// What to plan: a space, what is valid in it, a start and a goal (OMPL's problem definition).
+/// What to plan: a space, what is valid in it, a start and a goal (OMPL's problem definition),
+/// and where to draw samples ([`Uniform`] unless set with [`Query::with_sampler`]).
 #[derive(Debug, Clone)]
-pub struct Query<'a, S: StateSpace, V> {
+pub struct Query<'a, S: StateSpace, V, Q = Uniform> {
     /// The state space.
     pub space: &'a S,
     /// The validity of states and motions.
@@ -55,12 +57,22 @@ pub struct Query<'a, S: StateSpace, V> {
     pub start: S::State,
     /// Where it must go.
     pub goal: S::State,
+    /// Where the planners draw the states they steer toward.
+    pub sampler: Q,
 }
 
 impl<'a, S: StateSpace, V> Query<'a, S, V> {
-    /// The query from `start` to `goal`.
+    /// The query from `start` to `goal`, sampled uniformly.
     pub fn new(space: &'a S, validity: &'a V, start: S::State, goal: S::State) -> Self {
-        Query { space, validity, start, goal }
+        Query { space, validity, start, goal, sampler: Uniform }
+    }
+}
+
+impl<'a, S: StateSpace, V, Q> Query<'a, S, V, Q> {
+    /// The same query with samples drawn by `sampler` (see [`sampler`](crate::sampler)).
+    pub fn with_sampler<R: Sampler<S>>(self, sampler: R) -> Query<'a, S, V, R> {
+        let Query { space, validity, start, goal, .. } = self;
+        Query { space, validity, start, goal, sampler }
     }
 }
 
@@ -334,8 +346,8 @@ pub(crate) struct Run<T> {
 
 impl<T: Clone> Run<T> {
     /// Checks `query` and the settings, and starts the clock.
-    pub(crate) fn begin<S: StateSpace<State = T>, V: Validity<S>>(
-        query: &Query<'_, S, V>,
+    pub(crate) fn begin<S: StateSpace<State = T>, V: Validity<S>, Q>(
+        query: &Query<'_, S, V, Q>,
         options: &RrtOptions,
         termination: &Termination,
         seed: u64,
@@ -402,8 +414,8 @@ pub(crate) fn cost_of<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
 
 /// RRT for `query`, nearest neighbours from `nearest` (empty), samples from a ChaCha8 generator
 /// seeded with `seed`.
-pub fn rrt<S, V, N>(
-    query: &Query<'_, S, V>,
+pub fn rrt<S, V, N, Q>(
+    query: &Query<'_, S, V, Q>,
     nearest: N,
     options: &RrtOptions,
     termination: &Termination,
@@ -413,8 +425,9 @@ where
     S: StateSpace,
     V: Validity<S>,
     N: NearestNeighbors<S>,
+    Q: Sampler<S>,
 {
-    let Query { space, validity, .. } = *query;
+    let Query { space, validity, ref sampler, .. } = *query;
     let Run { start, goal, clock, mut stats, range, mut rng } =
         Run::begin(query, options, termination, seed)?;
     let mut tree = Tree::new(space, nearest, start.clone(), Direction::ToQuery);
@@ -422,8 +435,11 @@ where
     let mut solved = closest.1 <= options.goal_tolerance;
     while !solved && !termination.reached(stats.iterations, &clock, None) {
         stats.iterations += 1;
-        let target =
-            if rng.random::<f64>() < options.goal_bias { goal.clone() } else { space.sample(&mut rng) };
+        let target = if rng.random::<f64>() < options.goal_bias {
+            goal.clone()
+        } else {
+            sampler.sample(space, validity, &mut rng, &mut stats.collision_checks)
+        };
         let id = match tree.extend(space, validity, &target, range, &mut stats.collision_checks) {
             Extension::Trapped => continue,
             Extension::Advanced(id) | Extension::Reached(id) => id,
@@ -460,8 +476,8 @@ where
 /// the second tree; `goal_bias` and `goal_tolerance` are not used: the trees meet exactly).
 /// Without a meeting, the plan is the start tree's branch to the state nearest the goal, marked
 /// approximate.
-pub fn rrt_connect<S, V, N>(
-    query: &Query<'_, S, V>,
+pub fn rrt_connect<S, V, N, Q>(
+    query: &Query<'_, S, V, Q>,
     nearest: N,
     options: &RrtOptions,
     termination: &Termination,
@@ -471,8 +487,9 @@ where
     S: StateSpace,
     V: Validity<S>,
     N: NearestNeighbors<S> + Clone,
+    Q: Sampler<S>,
 {
-    let Query { space, validity, .. } = *query;
+    let Query { space, validity, ref sampler, .. } = *query;
     let Run { start, goal, clock, mut stats, range, mut rng } =
         Run::begin(query, options, termination, seed)?;
     let mut trees = [
@@ -487,7 +504,7 @@ where
     }
     while meeting.is_none() && !termination.reached(stats.iterations, &clock, None) {
         stats.iterations += 1;
-        let sample = space.sample(&mut rng);
+        let sample = sampler.sample(space, validity, &mut rng, &mut stats.collision_checks);
         let [a, b] = if grow == 0 { [0, 1] } else { [1, 0] };
         let (first, second) = if grow == 0 {
             let (x, y) = trees.split_at_mut(1);

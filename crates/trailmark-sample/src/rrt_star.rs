@@ -37,6 +37,7 @@ use rand::RngExt;
 
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::rrt::{Improvement, Plan, PlanError, Query, RrtOptions, Run, Termination, cost_of};
+use crate::sampler::Sampler;
 use crate::space::StateSpace;
 use crate::validity::Validity;
 
@@ -52,8 +53,8 @@ pub fn neighbour_count(n: usize, dimension: usize) -> usize {
 
 /// RRT* for `query`; arguments as for [`rrt`](crate::rrt::rrt). The run stops at `termination`
 /// (or when the best cost reaches `target_cost`), not at the first solution.
-pub fn rrt_star<S, V, N>(
-    query: &Query<'_, S, V>,
+pub fn rrt_star<S, V, N, Q>(
+    query: &Query<'_, S, V, Q>,
     mut nearest: N,
     options: &RrtOptions,
     termination: &Termination,
@@ -63,8 +64,9 @@ where
     S: StateSpace,
     V: Validity<S>,
     N: NearestNeighbors<S>,
+    Q: Sampler<S>,
 {
-    let Query { space, validity, .. } = *query;
+    let Query { space, validity, ref sampler, .. } = *query;
     let Run { start, goal, clock, mut stats, range, mut rng } =
         Run::begin(query, options, termination, seed)?;
     nearest.insert(space, start.clone());
@@ -84,8 +86,11 @@ where
     let dimension = space.dimension();
     while !termination.reached(stats.iterations, &clock, history.last().map(|b| b.cost)) {
         stats.iterations += 1;
-        let target =
-            if rng.random::<f64>() < options.goal_bias { goal.clone() } else { space.sample(&mut rng) };
+        let target = if rng.random::<f64>() < options.goal_bias {
+            goal.clone()
+        } else {
+            sampler.sample(space, validity, &mut rng, &mut stats.collision_checks)
+        };
         let Some((near, d)) = nearest.nearest(space, &target, Direction::ToQuery) else { break };
         let from = nearest.state(near).clone();
         let new = if d <= range { target } else { space.interpolate(&from, &target, range / d) };

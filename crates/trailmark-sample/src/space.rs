@@ -30,6 +30,7 @@ use std::fmt::Debug;
 use nalgebra::SVector;
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
+use rand_distr::{Distribution, StandardNormal};
 use thiserror::Error;
 use trailmark_core::dubins::DubinsPath;
 use trailmark_core::geometry::{Point, Pose};
@@ -90,6 +91,17 @@ pub trait StateSpace {
         if d <= step { to.clone() } else { self.interpolate(from, to, step / d) }
     }
 
+    /// A state near `near`, for samplers that look for obstacles' surroundings (OMPL's
+    /// `sampleGaussian`). By default: `steer` from `near` toward a uniform sample by a distance
+    /// drawn from `|N(0, std_dev)|`, so any space has one. [`R2`] and [`Rn`] draw each
+    /// coordinate from `N(near, std_dev)` and keep it in the bounds (clamped, as OMPL's
+    /// `enforceBounds`): a sampler should meet obstacles, not the edge of the space.
+    fn sample_near(&self, near: &Self::State, std_dev: f64, rng: &mut ChaCha8Rng) -> Self::State {
+        let step = (std_dev * gaussian(rng)).abs();
+        let toward = self.sample(rng);
+        self.steer(near, &toward, step)
+    }
+
     /// The largest distance between two states (or a bound on it): a planner's default step is
     /// a fraction of it.
     fn extent(&self) -> f64;
@@ -105,6 +117,11 @@ pub trait StateSpace {
     /// straight-line distance between `position(a)` and `position(b)` in `D` dimensions. What
     /// lets a k-d tree over positions answer exact nearest-neighbour queries.
     fn position<const D: usize>(&self, state: &Self::State) -> Option<[f64; D]>;
+}
+
+/// A draw from the standard normal distribution.
+fn gaussian(rng: &mut ChaCha8Rng) -> f64 {
+    StandardNormal.sample(rng)
 }
 
 /// The plane region of a [`Bounds`]: states are points, distances Euclidean.
@@ -153,6 +170,12 @@ impl StateSpace for R2 {
 
     fn sample(&self, rng: &mut ChaCha8Rng) -> Point {
         sample_in(&self.bounds, rng)
+    }
+
+    fn sample_near(&self, near: &Point, std_dev: f64, rng: &mut ChaCha8Rng) -> Point {
+        let (lo, hi) = (self.bounds.min(), self.bounds.max());
+        let x = (near.x + std_dev * gaussian(rng)).clamp(lo.x, hi.x);
+        Point::new(x, (near.y + std_dev * gaussian(rng)).clamp(lo.y, hi.y))
     }
 
     #[inline]
@@ -222,6 +245,10 @@ impl<const N: usize> StateSpace for Rn<N> {
 
     fn sample(&self, rng: &mut ChaCha8Rng) -> SVector<f64, N> {
         SVector::from_fn(|i, _| rng.random_range(self.low[i]..self.high[i]))
+    }
+
+    fn sample_near(&self, near: &SVector<f64, N>, std_dev: f64, rng: &mut ChaCha8Rng) -> SVector<f64, N> {
+        SVector::from_fn(|i, _| (near[i] + std_dev * gaussian(rng)).clamp(self.low[i], self.high[i]))
     }
 
     fn distance(&self, a: &SVector<f64, N>, b: &SVector<f64, N>) -> f64 {

@@ -1,0 +1,250 @@
+//! Where the planners draw the states they steer toward.
+//!
+//! RRT, RRT-Connect and RRT* steer toward a random state each iteration. [`Uniform`] (the
+//! default of every [`Query`](crate::rrt::Query)) draws it uniformly from the space, as OMPL's
+//! planners do. A narrow passage is then found only when a sample happens to fall where its
+//! nearest tree state sees through it, which grows rarer with every passage in a row. The
+//! samplers here spend validity checks to draw where passages are, as OMPL's valid-state
+//! samplers of the same names do:
+//!
+//! - [`Bridge`] (Hsu et al. 2003, the bridge test): a state in collision, a second one near it
+//!   also in collision, and the free midpoint between them. Such midpoints lie between two
+//!   obstacles close together: in doors and corridors.
+//! - [`Gaussian`] (Boor, Overmars and van der Stappen 1999): two states near each other, one
+//!   free and one not; the free one lies near an obstacle's surface.
+//!
+//! Each draws such a state with probability `share` and a uniform one otherwise, so the trees
+//! keep their spread over open space; after `attempts` failed tries it draws uniformly too.
+//! Every validity check a sampler makes is counted in the plan's collision checks. Users
+//! implement [`Sampler`] for their own strategies.
+//!
+//! ```
+//! use trailmark_core::generate;
+//! use trailmark_core::geometry::Point;
+//! use trailmark_sample::nearest::KdNearest;
+//! use trailmark_sample::rrt::{Query, RrtOptions, Termination, rrt_connect};
+//! use trailmark_sample::sampler::Bridge;
+//! use trailmark_sample::space::R2;
+//!
+//! // Six walls, each with a door 1.5 wide, for a robot of radius 0.25.
+//! let world = generate::narrow_passages(40.0, 6, 1.5, 0.25, 2)?;
+//! let checker = world.checker();
+//! let space = R2::new(world.bounds());
+//! let bridge = Bridge::new(1.0)?; // partners about one door width away
+//! let query = Query::new(&space, &checker, Point::new(1.0, 20.0), Point::new(39.0, 20.0))
+//!     .with_sampler(&bridge);
+//! let nearest = KdNearest::<R2, 2>::new(&space)?;
+//! let plan = rrt_connect(&query, nearest, &RrtOptions::default(), &Termination::iterations(10_000), 1)?;
+//! assert!(!plan.approximate); // through all six doors
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use rand::RngExt;
+use rand_chacha::ChaCha8Rng;
+
+use thiserror::Error;
+
+use crate::space::StateSpace;
+use crate::validity::Validity;
+
+/// A sampler setting out of its range.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SamplerError {
+    /// A standard deviation that is not positive and finite.
+    #[error("the sampler's standard deviation must be positive and finite, got {0}")]
+    StdDev(f64),
+    /// A share outside `[0, 1]`.
+    #[error("the sampler's share must be in [0, 1], got {0}")]
+    Share(f64),
+    /// No attempts.
+    #[error("the sampler needs at least one attempt")]
+    NoAttempts,
+}
+
+/// A source of the states a planner steers toward.
+pub trait Sampler<S: StateSpace> {
+    /// A state of `space`, possibly found by testing states with `validity`; each test adds one
+    /// to `checks`.
+    fn sample<V: Validity<S>>(
+        &self,
+        space: &S,
+        validity: &V,
+        rng: &mut ChaCha8Rng,
+        checks: &mut u64,
+    ) -> S::State;
+}
+
+impl<S: StateSpace, T: Sampler<S>> Sampler<S> for &T {
+    fn sample<V: Validity<S>>(
+        &self,
+        space: &S,
+        validity: &V,
+        rng: &mut ChaCha8Rng,
+        checks: &mut u64,
+    ) -> S::State {
+        (**self).sample(space, validity, rng, checks)
+    }
+}
+
+/// Uniform samples from the space ([`StateSpace::sample`]); no validity checks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Uniform;
+
+impl<S: StateSpace> Sampler<S> for Uniform {
+    fn sample<V: Validity<S>>(&self, space: &S, _: &V, rng: &mut ChaCha8Rng, _: &mut u64) -> S::State {
+        space.sample(rng)
+    }
+}
+
+/// The settings shared by the samplers that look for obstacles.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Focus {
+    std_dev: f64,
+    share: f64,
+    attempts: u32,
+}
+
+impl Focus {
+    fn new(std_dev: f64) -> Result<Self, SamplerError> {
+        if !(std_dev > 0.0 && std_dev.is_finite()) {
+            return Err(SamplerError::StdDev(std_dev));
+        }
+        Ok(Focus { std_dev, share: 0.5, attempts: 100 })
+    }
+
+    fn with_share(mut self, share: f64) -> Result<Self, SamplerError> {
+        if !(0.0..=1.0).contains(&share) {
+            return Err(SamplerError::Share(share));
+        }
+        self.share = share;
+        Ok(self)
+    }
+
+    fn with_attempts(mut self, attempts: u32) -> Result<Self, SamplerError> {
+        if attempts == 0 {
+            return Err(SamplerError::NoAttempts);
+        }
+        self.attempts = attempts;
+        Ok(self)
+    }
+
+    /// `find` tried up to `attempts` times with probability `share`, else (or when every try
+    /// failed) a uniform sample.
+    fn draw<S: StateSpace>(
+        &self,
+        space: &S,
+        rng: &mut ChaCha8Rng,
+        mut find: impl FnMut(&mut ChaCha8Rng) -> Option<S::State>,
+    ) -> S::State {
+        if rng.random::<f64>() < self.share {
+            for _ in 0..self.attempts {
+                if let Some(state) = find(rng) {
+                    return state;
+                }
+            }
+        }
+        space.sample(rng)
+    }
+}
+
+/// Whether `state` is valid, counted.
+fn valid<S: StateSpace, V: Validity<S>>(space: &S, validity: &V, state: &S::State, checks: &mut u64) -> bool {
+    *checks += 1;
+    validity.state_is_valid(space, state)
+}
+
+macro_rules! focus_settings {
+    ($name:ident) => {
+        impl $name {
+            /// The sampler with partners drawn at a standard deviation of `std_dev` (a distance
+            /// of the space, about the width of the passages sought), a share of 0.5 and 100
+            /// attempts.
+            pub fn new(std_dev: f64) -> Result<Self, SamplerError> {
+                Ok($name(Focus::new(std_dev)?))
+            }
+
+            /// The probability, in `[0, 1]`, of looking for such a state rather than drawing a
+            /// uniform one.
+            pub fn with_share(self, share: f64) -> Result<Self, SamplerError> {
+                Ok($name(self.0.with_share(share)?))
+            }
+
+            /// The tries (at least 1) before falling back to a uniform sample.
+            pub fn with_attempts(self, attempts: u32) -> Result<Self, SamplerError> {
+                Ok($name(self.0.with_attempts(attempts)?))
+            }
+
+            /// The standard deviation of the partner's distance.
+            pub fn std_dev(&self) -> f64 {
+                self.0.std_dev
+            }
+
+            /// The probability of looking rather than drawing uniformly.
+            pub fn share(&self) -> f64 {
+                self.0.share
+            }
+
+            /// The tries before a uniform sample.
+            pub fn attempts(&self) -> u32 {
+                self.0.attempts
+            }
+        }
+    };
+}
+
+/// The bridge test: the free midpoint of two states in collision near each other. Finds states
+/// in narrow passages; see the [module](self) documentation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bridge(Focus);
+
+focus_settings!(Bridge);
+
+impl<S: StateSpace> Sampler<S> for Bridge {
+    fn sample<V: Validity<S>>(
+        &self,
+        space: &S,
+        validity: &V,
+        rng: &mut ChaCha8Rng,
+        checks: &mut u64,
+    ) -> S::State {
+        self.0.draw(space, rng, |rng| {
+            let a = space.sample(rng);
+            if valid(space, validity, &a, checks) {
+                return None;
+            }
+            let b = space.sample_near(&a, self.0.std_dev, rng);
+            if valid(space, validity, &b, checks) {
+                return None;
+            }
+            let middle = space.interpolate(&a, &b, 0.5);
+            valid(space, validity, &middle, checks).then_some(middle)
+        })
+    }
+}
+
+/// Near obstacles' surfaces: of two states near each other, the free one when the other is in
+/// collision; see the [module](self) documentation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Gaussian(Focus);
+
+focus_settings!(Gaussian);
+
+impl<S: StateSpace> Sampler<S> for Gaussian {
+    fn sample<V: Validity<S>>(
+        &self,
+        space: &S,
+        validity: &V,
+        rng: &mut ChaCha8Rng,
+        checks: &mut u64,
+    ) -> S::State {
+        self.0.draw(space, rng, |rng| {
+            let a = space.sample(rng);
+            let b = space.sample_near(&a, self.0.std_dev, rng);
+            match (valid(space, validity, &a, checks), valid(space, validity, &b, checks)) {
+                (true, false) => Some(a),
+                (false, true) => Some(b),
+                _ => None,
+            }
+        })
+    }
+}

@@ -101,7 +101,49 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     write("core-dubins.svg", dubins_words()?)?;
     roadmaps()?;
+    bridge_samples()?;
     Ok(())
+}
+
+/// The bridge-test sampler on the six-door world of the sampling benchmark: where its samples
+/// fall, and an RRT-Connect path drawn with it.
+fn bridge_samples() -> Result<(), Box<dyn std::error::Error>> {
+    use rand::SeedableRng;
+    use rand_chacha::ChaCha8Rng;
+    use trailmark::core::geometry::Point;
+    use trailmark::core::svg::WorldSvg;
+    use trailmark::sample::{
+        Bridge, KdNearest, Query, R2, RrtOptions, StateSampler, Termination, rrt_connect,
+    };
+
+    let world = generate::narrow_passages(40.0, 6, 1.5, 0.25, 2)?;
+    let checker = world.checker();
+    let space = R2::new(world.bounds());
+    let (start, goal) = (Point::new(2.0, 8.0), Point::new(38.0, 33.0));
+    let bridge = Bridge::new(2.0)?;
+    let query = Query::new(&space, &checker, start, goal).with_sampler(&bridge);
+    let nearest = KdNearest::<R2, 2>::new(&space)?;
+    let plan = rrt_connect(&query, nearest, &RrtOptions::default(), &Termination::iterations(10_000), 1)?;
+    let path = plan.path.ok_or("no RRT-Connect path")?;
+    println!(
+        "bridge: RRT-Connect {} iterations, {} checks, solved {}",
+        plan.stats.iterations, plan.stats.collision_checks, !plan.approximate
+    );
+    // 600 samples of the bridge test alone (every draw looks for a bridge).
+    let only = Bridge::new(2.0)?.with_share(1.0)?.with_attempts(10_000)?;
+    let mut rng = ChaCha8Rng::seed_from_u64(1);
+    let mut checks = 0;
+    let samples: Vec<Point> =
+        (0..600).map(|_| only.sample(&space, &checker, &mut rng, &mut checks)).collect();
+    let svg = WorldSvg::new(&world)
+        .free_space(&world.free_space())
+        .nodes(samples)
+        .path(&path)
+        .start(start)
+        .goal(goal)
+        .title("Bridge test (std_dev 2): 600 samples, and RRT-Connect through six doors with it")
+        .to_svg();
+    Ok(write("sample-bridge.svg", svg)?)
 }
 
 /// The four roadmap builders on one generated world (24 convex obstacles, robot radius 0.5)

@@ -13,8 +13,8 @@ use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_graph::prm::{DubinsSteering, Steering, Straight};
 use trailmark_sample::{
-    Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Query, R2, RrtOptions, Sampler, StateSpace,
-    Termination, rrt, rrt_connect, rrt_star, shortcut,
+    Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Query, R2, RrtOptions, StateSampler,
+    StateSpace, Termination, rrt, rrt_connect, rrt_star, shortcut,
 };
 
 use super::{Coordinates, SolveError, dubins_curve, roadmap_fields};
@@ -220,7 +220,7 @@ impl Run<'_> {
     where
         S: StateSpace,
         N: NearestNeighbors<S> + Clone,
-        Q: Sampler<S>,
+        Q: StateSampler<S>,
         CollisionChecker: trailmark_sample::Validity<S>,
     {
         Ok(match self.problem.planner {

@@ -52,7 +52,7 @@ pub use rrt::{
     rrt_connect,
 };
 pub use rrt_star::rrt_star;
-pub use sampler::{Bridge, Gaussian, Sampler, SamplerError, Uniform};
+pub use sampler::{Bridge, Gaussian, SamplerError, StateSampler, Uniform};
 pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};
 pub use validity::{Sampled, Validity};

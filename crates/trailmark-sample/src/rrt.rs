@@ -41,7 +41,7 @@ use rand_chacha::ChaCha8Rng;
 use thiserror::Error;
 
 use crate::nearest::{Direction, NearestNeighbors};
-use crate::sampler::{Sampler, Uniform};
+use crate::sampler::{StateSampler, Uniform};
 use crate::space::StateSpace;
 use crate::validity::Validity;
 
@@ -70,7 +70,7 @@ impl<'a, S: StateSpace, V> Query<'a, S, V> {
 
 impl<'a, S: StateSpace, V, Q> Query<'a, S, V, Q> {
     /// The same query with samples drawn by `sampler` (see [`sampler`](crate::sampler)).
-    pub fn with_sampler<R: Sampler<S>>(self, sampler: R) -> Query<'a, S, V, R> {
+    pub fn with_sampler<R: StateSampler<S>>(self, sampler: R) -> Query<'a, S, V, R> {
         let Query { space, validity, start, goal, .. } = self;
         Query { space, validity, start, goal, sampler }
     }
@@ -425,7 +425,7 @@ where
     S: StateSpace,
     V: Validity<S>,
     N: NearestNeighbors<S>,
-    Q: Sampler<S>,
+    Q: StateSampler<S>,
 {
     let Query { space, validity, ref sampler, .. } = *query;
     let Run { start, goal, clock, mut stats, range, mut rng } =
@@ -487,7 +487,7 @@ where
     S: StateSpace,
     V: Validity<S>,
     N: NearestNeighbors<S> + Clone,
-    Q: Sampler<S>,
+    Q: StateSampler<S>,
 {
     let Query { space, validity, ref sampler, .. } = *query;
     let Run { start, goal, clock, mut stats, range, mut rng } =

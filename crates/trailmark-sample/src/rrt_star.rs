@@ -37,7 +37,7 @@ use rand::RngExt;
 
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::rrt::{Improvement, Plan, PlanError, Query, RrtOptions, Run, Termination, cost_of};
-use crate::sampler::Sampler;
+use crate::sampler::StateSampler;
 use crate::space::StateSpace;
 use crate::validity::Validity;
 
@@ -64,7 +64,7 @@ where
     S: StateSpace,
     V: Validity<S>,
     N: NearestNeighbors<S>,
-    Q: Sampler<S>,
+    Q: StateSampler<S>,
 {
     let Query { space, validity, ref sampler, .. } = *query;
     let Run { start, goal, clock, mut stats, range, mut rng } =

@@ -16,7 +16,7 @@
 //! Each draws such a state with probability `share` and a uniform one otherwise, so the trees
 //! keep their spread over open space; after `attempts` failed tries it draws uniformly too.
 //! Every validity check a sampler makes is counted in the plan's collision checks. Users
-//! implement [`Sampler`] for their own strategies.
+//! implement [`StateSampler`] for their own strategies.
 //!
 //! ```
 //! use trailmark_core::generate;
@@ -62,7 +62,7 @@ pub enum SamplerError {
 }
 
 /// A source of the states a planner steers toward.
-pub trait Sampler<S: StateSpace> {
+pub trait StateSampler<S: StateSpace> {
     /// A state of `space`, possibly found by testing states with `validity`; each test adds one
     /// to `checks`.
     fn sample<V: Validity<S>>(
@@ -74,7 +74,7 @@ pub trait Sampler<S: StateSpace> {
     ) -> S::State;
 }
 
-impl<S: StateSpace, T: Sampler<S>> Sampler<S> for &T {
+impl<S: StateSpace, T: StateSampler<S>> StateSampler<S> for &T {
     fn sample<V: Validity<S>>(
         &self,
         space: &S,
@@ -90,7 +90,7 @@ impl<S: StateSpace, T: Sampler<S>> Sampler<S> for &T {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Uniform;
 
-impl<S: StateSpace> Sampler<S> for Uniform {
+impl<S: StateSpace> StateSampler<S> for Uniform {
     fn sample<V: Validity<S>>(&self, space: &S, _: &V, rng: &mut ChaCha8Rng, _: &mut u64) -> S::State {
         space.sample(rng)
     }
@@ -199,7 +199,7 @@ pub struct Bridge(Focus);
 
 focus_settings!(Bridge);
 
-impl<S: StateSpace> Sampler<S> for Bridge {
+impl<S: StateSpace> StateSampler<S> for Bridge {
     fn sample<V: Validity<S>>(
         &self,
         space: &S,
@@ -229,7 +229,7 @@ pub struct Gaussian(Focus);
 
 focus_settings!(Gaussian);
 
-impl<S: StateSpace> Sampler<S> for Gaussian {
+impl<S: StateSpace> StateSampler<S> for Gaussian {
     fn sample<V: Validity<S>>(
         &self,
         space: &S,

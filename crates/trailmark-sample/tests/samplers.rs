@@ -13,7 +13,7 @@ use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_sample::nearest::KdNearest;
 use trailmark_sample::rrt::{Query, RrtOptions, Termination, rrt_connect};
-use trailmark_sample::sampler::{Bridge, Gaussian, Sampler, SamplerError, Uniform};
+use trailmark_sample::sampler::{Bridge, Gaussian, SamplerError, StateSampler, Uniform};
 use trailmark_sample::space::{Dubins, R2, Se2, StateSpace};
 use trailmark_sample::validity::Validity;
 
@@ -69,7 +69,12 @@ impl Validity<R2> for Counting<'_> {
 }
 
 /// `n` samples of `sampler` in `world`, with the checks they cost.
-fn draw<Q: Sampler<R2>>(world: &PolygonWorld, sampler: &Q, n: usize, seed: u64) -> (Vec<Point>, u64, u64) {
+fn draw<Q: StateSampler<R2>>(
+    world: &PolygonWorld,
+    sampler: &Q,
+    n: usize,
+    seed: u64,
+) -> (Vec<Point>, u64, u64) {
     let checker = world.checker();
     let counting = Counting { checker: &checker, states: Cell::new(0) };
     let space = R2::new(world.bounds());

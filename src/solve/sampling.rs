@@ -12,6 +12,7 @@ use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_graph::prm::{DubinsSteering, Steering, Straight};
+use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
 use trailmark_sample::{
     Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Query, R2, RrtOptions, StateSampler,
     StateSpace, Termination, rrt, rrt_connect, rrt_star, shortcut,
@@ -145,13 +146,13 @@ impl Run<'_> {
         let plan = match spec.sampler.unwrap_or_default() {
             SamplerSpec::Uniform => self.search(&query, nearest, limits)?,
             SamplerSpec::Bridge { std_dev, share, attempts } => {
-                let bridge = Bridge::new(std_dev)?.with_share(share.unwrap_or(0.5))?;
-                let bridge = bridge.with_attempts(attempts.unwrap_or(100))?;
+                let bridge = Bridge::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
+                let bridge = bridge.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
                 self.search(&query.with_sampler(bridge), nearest, limits)?
             }
             SamplerSpec::Gaussian { std_dev, share, attempts } => {
-                let gaussian = Gaussian::new(std_dev)?.with_share(share.unwrap_or(0.5))?;
-                let gaussian = gaussian.with_attempts(attempts.unwrap_or(100))?;
+                let gaussian = Gaussian::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
+                let gaussian = gaussian.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
                 self.search(&query.with_sampler(gaussian), nearest, limits)?
             }
         };
@@ -201,15 +202,7 @@ impl Run<'_> {
         };
         Ok((result, path))
     }
-}
 
-/// A sampling step for drawing curves in `world`: 1/500 of its larger side.
-fn world_step(world: &PolygonWorld) -> f64 {
-    let size = world.bounds().max() - world.bounds().min();
-    size.x.max(size.y) / 500.0
-}
-
-impl Run<'_> {
     /// The problem's planner on `query`.
     fn search<S, N, Q>(
         &self,
@@ -229,6 +222,12 @@ impl Run<'_> {
             _ => rrt_star(query, nearest, options, termination, self.seed)?,
         })
     }
+}
+
+/// A sampling step for drawing curves in `world`: 1/500 of its larger side.
+fn world_step(world: &PolygonWorld) -> f64 {
+    let size = world.bounds().max() - world.bounds().min();
+    size.x.max(size.y) / 500.0
 }
 
 /// The world with its free space, the drawn path and its ends, titled by the planner.

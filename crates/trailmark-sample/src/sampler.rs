@@ -96,6 +96,13 @@ impl<S: StateSpace> StateSampler<S> for Uniform {
     }
 }
 
+/// The default probability that [`Bridge`] and [`Gaussian`] look for a state rather than draw a
+/// uniform one.
+pub const DEFAULT_SHARE: f64 = 0.5;
+
+/// The default tries of [`Bridge`] and [`Gaussian`] before a uniform sample.
+pub const DEFAULT_ATTEMPTS: u32 = 100;
+
 /// The settings shared by the samplers that look for obstacles.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Focus {
@@ -109,7 +116,7 @@ impl Focus {
         if !(std_dev > 0.0 && std_dev.is_finite()) {
             return Err(SamplerError::StdDev(std_dev));
         }
-        Ok(Focus { std_dev, share: 0.5, attempts: 100 })
+        Ok(Focus { std_dev, share: DEFAULT_SHARE, attempts: DEFAULT_ATTEMPTS })
     }
 
     fn with_share(mut self, share: f64) -> Result<Self, SamplerError> {

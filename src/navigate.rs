@@ -644,8 +644,8 @@ impl World {
     fn sense(&mut self, robot: Cell, radius: u32) -> Vec<Cell> {
         let (w, h) = (self.truth.width(), self.truth.height());
         let mut changed = Vec::new();
-        for y in robot.y.saturating_sub(radius)..=(robot.y + radius).min(h - 1) {
-            for x in robot.x.saturating_sub(radius)..=(robot.x + radius).min(w - 1) {
+        for y in robot.y.saturating_sub(radius)..=robot.y.saturating_add(radius).min(h - 1) {
+            for x in robot.x.saturating_sub(radius)..=robot.x.saturating_add(radius).min(w - 1) {
                 let cell = Cell::new(x, y);
                 self.sensed[y as usize * w as usize + x as usize] = true;
                 let truth = self.truth.cost(cell).expect("inside the map");

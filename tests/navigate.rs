@@ -86,6 +86,36 @@ fn a_walled_in_goal_is_proven_unreachable() {
     }
 }
 
+/// A sensor radius near `u32::MAX` sees the whole map at once (the window is clipped to the
+/// map): the walled-in goal is unreachable, and a reachable one is reached through free cells.
+/// The window's arithmetic had wrapped, so the robot saw nothing and drove through the walls.
+#[test]
+fn a_huge_sensor_radius_sees_the_whole_map() {
+    let truth =
+        Grid::from_rows(&["..........", "......@@@.", "......@.@.", "......@@@.", ".........."]).unwrap();
+    let prior = Grid::new(10, 5).unwrap();
+    let graph = GridGraph::new(&truth, Connectivity::Eight);
+    for planner in PLANNERS {
+        for radius in [u32::MAX, u32::MAX - 1, u32::MAX / 2 + 1] {
+            let config = Navigation { planner, sensor_radius: radius, ..Navigation::default() };
+            let walled =
+                navigate(&truth, &prior, Cell::new(0, 2), Target::Cell(Cell::new(7, 2)), &config).unwrap();
+            assert_eq!(walled.outcome, Outcome::Unreachable, "{planner:?}, radius {radius}");
+            let open =
+                navigate(&truth, &prior, Cell::new(0, 2), Target::Cell(Cell::new(9, 2)), &config).unwrap();
+            assert_eq!(open.outcome, Outcome::Reached, "{planner:?}, radius {radius}");
+            for pair in open.trajectory.windows(2) {
+                assert!(
+                    graph.edge_cost(pair[0], pair[1]).is_some(),
+                    "{planner:?} moved {} -> {}",
+                    pair[0],
+                    pair[1]
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn greedy_mapping_visits_every_reachable_cell() {
     let truth = generate::rooms(20, 16, 6, 3).unwrap();

@@ -345,3 +345,36 @@ mod trapezoids {
         }
     }
 }
+
+/// Each accessor that takes an id panics past the last id as documented, and its checked form
+/// answers `None` there and the same value inside.
+#[test]
+fn checked_accessors_answer_none_past_the_last_id() {
+    let world: PolygonWorld = serde_json::from_str(
+        r#"{"bounds": [0, 0, 10, 10], "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]], "robot_radius": 0.25}"#,
+    )
+    .unwrap();
+    let visibility = VisibilityGraph::new(world.free_space());
+    let n = visibility.node_count() as u32;
+    assert_eq!(visibility.get_position(0), Some(visibility.position(0)));
+    assert_eq!(visibility.get_position(n), None);
+    assert_eq!(visibility.get_position(u32::MAX), None);
+    let space = world.free_space();
+    assert_eq!(space.get_corners(0), Some(space.corners(0)));
+    assert_eq!(space.get_corners(space.positions().len()), None);
+    let cells = Trapezoids::new(&space);
+    assert!(cells.get_cell(0).is_some());
+    assert!(cells.get_cell(cells.cell_count()).is_none());
+    let mut prm = Prm::new(world.clone(), PrmOptions::default()).unwrap();
+    prm.grow(50).unwrap();
+    let last = prm.node_count() as u32 - 1;
+    assert_eq!(prm.get_position(last), Some(prm.position(last)));
+    assert_eq!(prm.get_position(last + 1), None);
+    assert_eq!(prm.get_component(last), Some(prm.component(last)));
+    assert_eq!(prm.get_component(u32::MAX), None);
+    let dynamic = DynamicRoadmap::<VisibilityGraph>::new(world, Edges::Tangent);
+    let m = dynamic.node_count() as u32;
+    assert_eq!(dynamic.get_position(m), None);
+    assert_eq!(dynamic.get_neighbours(m), None);
+    assert_eq!(dynamic.get_neighbours(0), Some(dynamic.neighbours(0)));
+}

@@ -707,7 +707,7 @@ pub fn run(args: &Args) -> ExitCode {
         .collect();
     if !unknown.is_empty() {
         let names: Vec<&str> = Planner::ALL.iter().map(|p| p.name()).chain(sampling_names).collect();
-        eprintln!("error: no planner is called {unknown:?}; planners: {}", names.join(", "));
+        errln!("error: no planner is called {unknown:?}; planners: {}", names.join(", "));
         return ExitCode::from(2);
     }
     // With `--only`, the sections of planners not named have nothing to run.
@@ -721,20 +721,20 @@ pub fn run(args: &Args) -> ExitCode {
     let default_dir = crate::workspace_root().join("../shared/movingai");
     let dir = args.movingai.clone().unwrap_or(default_dir);
     if needs_maps {
-        eprintln!("generating maps and reference costs (seed {})...", args.seed);
+        errln!("generating maps and reference costs (seed {})...", args.seed);
         maps = generated_maps(args.seed, generated_n);
         if args.no_movingai {
-            eprintln!("MovingAI maps skipped (--no-movingai)");
+            errln!("MovingAI maps skipped (--no-movingai)");
         } else if dir.is_dir() {
             match movingai_maps(&dir, movingai_n) {
                 Ok(m) => maps.extend(m),
                 Err(e) => {
-                    eprintln!("error: {e}");
+                    errln!("error: {e}");
                     return ExitCode::from(2);
                 }
             }
         } else {
-            eprintln!("MovingAI maps skipped: {} not found", dir.display());
+            errln!("MovingAI maps skipped: {} not found", dir.display());
         }
     }
     let mut rows = Vec::new();
@@ -751,14 +751,14 @@ pub fn run(args: &Args) -> ExitCode {
         let cases = match crate::bench_replan::nav_cases(args.suite, args.seed, movingai_dir) {
             Ok(cases) => cases,
             Err(e) => {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 return ExitCode::from(2);
             }
         };
         match crate::bench_replan::bench_navigation(&cases, args.runs) {
             Ok(r) => navigation = r,
             Err(e) => {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 return ExitCode::from(2);
             }
         }
@@ -781,7 +781,7 @@ pub fn run(args: &Args) -> ExitCode {
         match crate::bench_roadmap::bench_roadmaps(args.suite, args.seed, args.runs) {
             Ok(r) => roadmaps = Some(r),
             Err(e) => {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 return ExitCode::from(2);
             }
         }
@@ -792,7 +792,7 @@ pub fn run(args: &Args) -> ExitCode {
             match crate::ompl::Driver::build() {
                 Ok(d) => Some(d),
                 Err(e) => {
-                    eprintln!("OMPL runs skipped: {e}");
+                    errln!("OMPL runs skipped: {e}");
                     None
                 }
             }
@@ -808,7 +808,7 @@ pub fn run(args: &Args) -> ExitCode {
         ) {
             Ok(r) => sampling = Some(r),
             Err(e) => {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 return ExitCode::from(2);
             }
         }
@@ -818,7 +818,7 @@ pub fn run(args: &Args) -> ExitCode {
         match crate::bench_contingency::bench_contingency(args.suite, args.seed, args.runs, movingai_dir) {
             Ok(r) => contingency = r,
             Err(e) => {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 return ExitCode::from(2);
             }
         }
@@ -854,7 +854,7 @@ pub fn run(args: &Args) -> ExitCode {
     if !report.results.is_empty() {
         match grid_time_svg(&report) {
             Ok(svg) => figures.push(("grid-time.svg", svg)),
-            Err(e) => eprintln!("warning: no grid time plot: {e}"),
+            Err(e) => errln!("warning: no grid time plot: {e}"),
         }
     }
     let mut text = markdown(&report);
@@ -882,7 +882,7 @@ pub fn run(args: &Args) -> ExitCode {
         .and_then(|()| match &cost_time {
             Some(Ok((svg, _))) => std::fs::write(folder.join("anytime-cost-time.svg"), svg),
             Some(Err(e)) => {
-                eprintln!("warning: no cost-over-time plot: {e}");
+                errln!("warning: no cost-over-time plot: {e}");
                 Ok(())
             }
             None => Ok(()),
@@ -909,7 +909,7 @@ pub fn run(args: &Args) -> ExitCode {
             Some(s) => match crate::bench_sampling::cost_time_svg(&s.equal_time) {
                 Ok(svg) => std::fs::write(folder.join("sampling-cost-time.svg"), svg),
                 Err(e) => {
-                    eprintln!("warning: no RRT* cost-over-time plot: {e}");
+                    errln!("warning: no RRT* cost-over-time plot: {e}");
                     Ok(())
                 }
             },
@@ -922,16 +922,16 @@ pub fn run(args: &Args) -> ExitCode {
             )
         });
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&report).expect("serializable"));
+        outln!("{}", serde_json::to_string_pretty(&report).expect("serializable"));
     } else {
-        println!("{text}");
+        outln!("{text}");
     }
     match written {
         Ok(()) => {
-            eprintln!("report written to {} ({:.0} s)", folder.display(), clock.elapsed().as_secs_f64())
+            errln!("report written to {} ({:.0} s)", folder.display(), clock.elapsed().as_secs_f64())
         }
         Err(e) => {
-            eprintln!("error: cannot write the report to {}: {e}", folder.display());
+            errln!("error: cannot write the report to {}: {e}", folder.display());
             return ExitCode::from(2);
         }
     }
@@ -940,7 +940,7 @@ pub fn run(args: &Args) -> ExitCode {
         + report.sampling.as_ref().map_or(0, |s| s.errors())
         + report.contingency.iter().filter(|r| r.error).count();
     if errors > 0 {
-        eprintln!("error: {errors} queries broke their planner's cost bound (see the cost errors column)");
+        errln!("error: {errors} queries broke their planner's cost bound (see the cost errors column)");
         return ExitCode::from(1);
     }
     ExitCode::SUCCESS

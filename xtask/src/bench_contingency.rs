@@ -80,7 +80,7 @@ fn terrains(suite: Suite, movingai: Option<&Path>) -> Result<Vec<(String, Terrai
             let terrain = spec.build(Path::new(".")).map_err(|e| format!("{}: {e}", file.display()))?;
             out.push(("rooms/64room_000".into(), terrain));
         }
-        None => eprintln!("contingency: the MovingAI rooms map skipped (no MovingAI folder)"),
+        None => errln!("contingency: the MovingAI rooms map skipped (no MovingAI folder)"),
     }
     Ok(out)
 }

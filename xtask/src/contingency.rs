@@ -31,8 +31,8 @@ pub struct Args {
     /// Draw the plan to this SVG file.
     #[arg(long)]
     svg: Option<PathBuf>,
-    /// Pixels per cell in the SVG.
-    #[arg(long, default_value_t = 8.0)]
+    /// Pixels per cell in the SVG (more than 0, at most 256).
+    #[arg(long, default_value_t = 8.0, value_parser = parse_cell_size)]
     cell: f64,
     /// Monte Carlo samples comparing the plan with D* Lite replanning (0: none).
     #[arg(long, default_value_t = 0)]
@@ -54,6 +54,15 @@ pub struct Args {
     check: bool,
 }
 
+fn parse_cell_size(s: &str) -> Result<f64, String> {
+    let size: f64 = s.parse().map_err(|e| format!("{s}: {e}"))?;
+    if size > 0.0 && size <= 256.0 {
+        Ok(size)
+    } else {
+        Err(format!("{s}: pixels per cell must be in (0, 256]"))
+    }
+}
+
 fn parse_depth(s: &str) -> Result<usize, String> {
     if s == "all" { Ok(usize::MAX) } else { s.parse().map_err(|e| format!("{s}: {e}")) }
 }
@@ -62,13 +71,10 @@ fn parse_depth(s: &str) -> Result<usize, String> {
 pub fn run(args: &Args) -> ExitCode {
     match run_inner(args) {
         Ok(out) => {
-            println!("{}", serde_json::to_string_pretty(&out).expect("JSON values print"));
+            outln!("{}", serde_json::to_string_pretty(&out).unwrap_or_default());
             ExitCode::SUCCESS
         }
-        Err(e) => {
-            eprintln!("{}", json!({"error": e}));
-            ExitCode::FAILURE
-        }
+        Err(e) => crate::output::error_report(e),
     }
 }
 

@@ -18,6 +18,9 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 use trailmark::graph::visibility::Edges;
 
+#[macro_use]
+mod output;
+
 mod bench;
 mod bench_contingency;
 mod bench_prm;

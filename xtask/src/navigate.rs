@@ -12,7 +12,6 @@ use trailmark::core::generate;
 use trailmark::movingai;
 use trailmark::navigate::{Navigation, NavigationReport, PlannerChoice, Target, navigate, navigate_together};
 use trailmark::prelude::*;
-use trailmark::problem::ErrorReport;
 
 /// A generated map kind.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -277,12 +276,9 @@ fn simulate(args: &Args) -> Result<String, String> {
 pub fn run(args: &Args) -> ExitCode {
     match simulate(args) {
         Ok(json) => {
-            println!("{json}");
+            outln!("{json}");
             ExitCode::SUCCESS
         }
-        Err(message) => {
-            println!("{}", serde_json::to_string(&ErrorReport::new(message)).expect("a report serializes"));
-            ExitCode::from(2)
-        }
+        Err(message) => crate::output::error_report(message),
     }
 }

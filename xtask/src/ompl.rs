@@ -143,7 +143,7 @@ impl Driver {
             // Only the -l part: Debian's ompl.pc names Boost files its runtime does not need.
             let libs = pkg_config(&["--libs-only-l", "ompl"])?;
             let compiler = std::env::var("CXX").unwrap_or_else(|_| "c++".into());
-            eprintln!("compiling the OMPL driver ({compiler}, OMPL {version})...");
+            errln!("compiling the OMPL driver ({compiler}, OMPL {version})...");
             let mut command = Command::new(&compiler);
             command
                 .args(["-O2", "-DNDEBUG"])

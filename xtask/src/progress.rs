@@ -37,7 +37,7 @@ impl Progress {
                 bar.set_position(self.done);
                 bar.set_message(what.as_ref().to_string());
             }
-            None => eprintln!("[{} {}/{}] {}", self.section, self.done + 1, self.len, what.as_ref()),
+            None => errln!("[{} {}/{}] {}", self.section, self.done + 1, self.len, what.as_ref()),
         }
         self.done += 1;
     }
@@ -46,7 +46,7 @@ impl Progress {
     pub fn note(&self, what: impl AsRef<str>) {
         match &self.bar {
             Some(bar) => bar.set_message(what.as_ref().to_string()),
-            None => eprintln!("[{}] {}", self.section, what.as_ref()),
+            None => errln!("[{}] {}", self.section, what.as_ref()),
         }
     }
 }

@@ -5,21 +5,17 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use trailmark::problem::{ErrorReport, Problem};
+use trailmark::problem::Problem;
 
 /// Prints the result of the problem in `path` (or standard input for `-`); on a bad problem,
 /// prints `{"status": "error", "error": ...}` and exits with 2.
 pub fn run(path: &Path) -> ExitCode {
     match solve(path) {
         Ok(json) => {
-            println!("{json}");
+            outln!("{json}");
             ExitCode::SUCCESS
         }
-        Err(message) => {
-            let report = serde_json::to_string(&ErrorReport::new(message)).expect("a report serializes");
-            println!("{report}");
-            ExitCode::from(2)
-        }
+        Err(message) => crate::output::error_report(message),
     }
 }
 
@@ -33,15 +29,11 @@ pub fn render(path: &Path, out: &Path) -> ExitCode {
     });
     match drawn {
         Ok(json) => {
-            println!("{json}");
-            eprintln!("wrote {}", out.display());
+            outln!("{json}");
+            errln!("wrote {}", out.display());
             ExitCode::SUCCESS
         }
-        Err(message) => {
-            let report = serde_json::to_string(&ErrorReport::new(message)).expect("a report serializes");
-            println!("{report}");
-            ExitCode::from(2)
-        }
+        Err(message) => crate::output::error_report(message),
     }
 }
 

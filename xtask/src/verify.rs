@@ -131,10 +131,10 @@ fn solve_one(
 /// Prints the first ten failure messages of a map, and how many more there were.
 fn print_messages(messages: &[String]) {
     for m in messages.iter().take(10) {
-        println!("    {m}");
+        outln!("    {m}");
     }
     if messages.len() > 10 {
-        println!("    ... and {} more", messages.len() - 10);
+        outln!("    ... and {} more", messages.len() - 10);
     }
 }
 
@@ -144,7 +144,7 @@ pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
     let jobs = match jobs(dir) {
         Ok(j) => j,
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             return ExitCode::from(2);
         }
     };
@@ -167,19 +167,19 @@ pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
     });
     let (mut passed, mut failed) = (0, 0);
     for o in outcomes.into_iter().flatten() {
-        println!("{:<24} {:>6} passed {:>4} failed  {:>7.2}s", o.name, o.passed, o.failed, o.seconds);
+        outln!("{:<24} {:>6} passed {:>4} failed  {:>7.2}s", o.name, o.passed, o.failed, o.seconds);
         print_messages(&o.messages);
         passed += o.passed;
         failed += o.failed;
     }
     let algos: Vec<String> = algos.iter().map(|a| format!("{a:?}").to_lowercase()).collect();
-    println!(
+    outln!(
         "checked every {} scenario(s) with {} in {:.1}s",
         if every == 1 { "1".to_string() } else { format!("{every}th") },
         algos.join(" and "),
         clock.elapsed().as_secs_f64()
     );
-    println!("{passed} passed, {failed} failed");
+    outln!("{passed} passed, {failed} failed");
     if failed > 0 { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }
 
@@ -190,7 +190,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
     let listing = match std::fs::read_dir(dir) {
         Ok(l) => l,
         Err(e) => {
-            eprintln!("error: cannot list {}: {e}", dir.display());
+            errln!("error: cannot list {}: {e}", dir.display());
             return ExitCode::from(2);
         }
     };
@@ -200,7 +200,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
         .collect();
     scens.sort();
     if scens.is_empty() {
-        eprintln!("error: no scenario files (*.map.scen) in {}", dir.display());
+        errln!("error: no scenario files (*.map.scen) in {}", dir.display());
         return ExitCode::from(2);
     }
     let clock = Instant::now();
@@ -214,7 +214,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
         let (grid, scenarios) = match loaded {
             Ok(x) => x,
             Err(e) => {
-                println!("{name}: {e}");
+                outln!("{name}: {e}");
                 failed += 1;
                 continue;
             }
@@ -283,7 +283,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
                 }
             }
         }
-        println!(
+        outln!(
             "{name:<24} {ok:>6} passed {bad:>4} failed  graph {} nodes {} edges in {build_seconds:.2}s, queries {:.2}s",
             graph.node_count(),
             graph.edge_count(),
@@ -292,7 +292,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
         detour.retain(|r| r.is_finite());
         detour.sort_by(f64::total_cmp);
         if let Some(&median) = detour.get(detour.len() / 2) {
-            println!(
+            outln!(
                 "{:<24} trapezoids: {} cells, {} portals, area {area} = {free} free cells; median path / optimum {median:.3}",
                 "",
                 cells.cell_count(),
@@ -303,7 +303,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
         passed += ok;
         failed += bad;
     }
-    println!("checked in {:.1}s (relative tolerance {rel:e})", clock.elapsed().as_secs_f64());
-    println!("{passed} passed, {failed} failed");
+    outln!("checked in {:.1}s (relative tolerance {rel:e})", clock.elapsed().as_secs_f64());
+    outln!("{passed} passed, {failed} failed");
     if failed > 0 { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }

@@ -170,3 +170,55 @@ fn navigate_errors_are_documents_with_exit_2() {
         assert_eq!(json(&out)["status"], "error", "{args:?}");
     }
 }
+
+/// Every subcommand reports bad input the same way: exit 2 and an error document on stdout.
+#[test]
+fn contingency_errors_are_documents_with_exit_2() {
+    let dir = scratch("contingency-errors");
+    std::fs::write(dir.join("bad.json"), r#"{"rows": ["..."], "surprise": 1}"#).unwrap();
+    for args in [vec!["contingency", "missing.json"], vec!["contingency", "bad.json"], vec!["contingency"]] {
+        let out = xtask(&args, &dir);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(json(&out)["status"], "error", "{args:?}");
+    }
+}
+
+/// `--cell NaN` (or any size that is not a positive number of pixels) is refused.
+#[test]
+fn contingency_refuses_a_cell_size_that_is_not_a_size() {
+    let dir = scratch("contingency-cell");
+    for cell in ["NaN", "0", "-3", "inf", "1e9"] {
+        let out = xtask(&["contingency", "--generate", "1", "--summary", &format!("--cell={cell}")], &dir);
+        assert_eq!(out.status.code(), Some(2), "--cell {cell}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("pixels per cell"), "--cell {cell}");
+    }
+}
+
+/// Output into a full disk (or a closed pipe) ends with a message and exit 74, not a panic.
+#[test]
+fn a_full_standard_output_is_an_error_not_a_panic() {
+    let Ok(full) = std::fs::File::create("/dev/full") else {
+        eprintln!("skipped: /dev/full is not available here");
+        return;
+    };
+    let dir = scratch("full");
+    std::fs::write(dir.join("wall.map"), MAP).unwrap();
+    std::fs::write(
+        dir.join("p.json"),
+        r#"{"world": {"grid": {"map": "wall.map"}}, "start": [0, 0], "goal": [3, 2], "planner": {"name": "astar"}}"#,
+    )
+    .unwrap();
+    for args in [vec!["solve", "p.json"], vec!["solve", "missing.json"], vec!["navigate", "--size", "16x16"]]
+    {
+        let out = Command::new(env!("CARGO_BIN_EXE_xtask"))
+            .args(&args)
+            .current_dir(&dir)
+            .stdout(full.try_clone().unwrap())
+            .output()
+            .expect("xtask runs");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(74), "{args:?}: {stderr}");
+        assert!(stderr.contains("cannot write to standard output"), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    }
+}

@@ -103,6 +103,15 @@ pub fn detect(
             expected: "in [0, 1]",
         });
     }
+    if let Some([lo, hi]) = options.within
+        && !(lo.x <= hi.x && lo.y <= hi.y)
+    {
+        return Err(DetectError::Option {
+            name: "within",
+            value: format!("[{lo}, {hi}]"),
+            expected: "the top-left cell, then the bottom-right one",
+        });
+    }
     let graph = GridGraph::new(grid, connectivity);
     let (w, h) = (grid.width() as usize, grid.height() as usize);
     let index = |c: Cell| c.y as usize * w + c.x as usize;
@@ -257,4 +266,23 @@ fn is_passage(graph: &GridGraph, cells: &[Cell], narrow: impl Fn(Cell) -> bool) 
         i += 1;
     }
     group.len() < beside.len()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A `within` box given bottom-right first selects nothing; it is refused, not taken as an
+    /// empty box.
+    #[test]
+    fn an_inverted_within_box_is_refused() {
+        let grid = Grid::from_rows(&["....@....", ".........", "....@...."]).unwrap();
+        let inverted =
+            DetectOptions { within: Some([Cell::new(8, 2), Cell::new(0, 0)]), ..DetectOptions::default() };
+        let error = detect(&grid, Connectivity::Eight, &inverted, &[]).unwrap_err();
+        assert!(matches!(error, DetectError::Option { name: "within", .. }), "{error}");
+        let upright =
+            DetectOptions { within: Some([Cell::new(0, 0), Cell::new(8, 2)]), ..DetectOptions::default() };
+        assert!(detect(&grid, Connectivity::Eight, &upright, &[]).is_ok());
+    }
 }

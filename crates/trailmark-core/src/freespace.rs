@@ -324,8 +324,18 @@ impl FreeSpace {
     }
 
     /// The ring passages through position `index` (one, or more where obstacles touch).
+    ///
+    /// # Panics
+    ///
+    /// If `index` is not below the number of [`positions`](Self::positions).
+    /// [`get_corners`](Self::get_corners) is the checked form.
     pub fn corners(&self, index: usize) -> &[Corner] {
         &self.corners[self.corner_start[index] as usize..self.corner_start[index + 1] as usize]
+    }
+
+    /// The ring passages through position `index`, `None` if there is no such position.
+    pub fn get_corners(&self, index: usize) -> Option<&[Corner]> {
+        (index < self.positions.len()).then(|| self.corners(index))
     }
 
     /// The boundary edges as pairs of position indices, free space on the left of `a -> b`.

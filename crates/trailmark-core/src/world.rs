@@ -33,10 +33,8 @@
 use geo::algorithm::buffer::{Buffer, BufferStyle, LineJoin};
 use geo::{BooleanOps, Coord, LineString, MultiPolygon, unary_union};
 use parry2d_f64::bounding_volume::Aabb;
-use parry2d_f64::math::{Pose as PPose, Vector as PVector};
+use parry2d_f64::math::Vector as PVector;
 use parry2d_f64::partitioning::{Bvh, BvhBuildStrategy};
-use parry2d_f64::query::PointQuery;
-use parry2d_f64::shape::Segment;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
@@ -51,6 +49,12 @@ pub enum PolygonError {
     /// A vertex has a NaN or infinite coordinate.
     #[error("vertex {vertex} has a non-finite coordinate")]
     NonFinite {
+        /// Index of the vertex.
+        vertex: usize,
+    },
+    /// A vertex has a coordinate larger in magnitude than [`MAX_COORDINATE`].
+    #[error("vertex {vertex} has a coordinate beyond +-{max:e}, the largest a world supports", max = MAX_COORDINATE)]
+    OutOfRange {
         /// Index of the vertex.
         vertex: usize,
     },
@@ -77,8 +81,27 @@ pub enum PolygonError {
 #[derive(Clone, Debug, Error, PartialEq)]
 pub enum WorldError {
     /// The bounds are not a finite rectangle of positive area.
-    #[error("bounds [{xmin}, {ymin}, {xmax}, {ymax}] must be finite with xmin < xmax and ymin < ymax")]
+    #[error(
+        "bounds [{xmin:?}, {ymin:?}, {xmax:?}, {ymax:?}] must be finite with xmin < xmax and ymin < ymax"
+    )]
     InvalidBounds {
+        /// Left.
+        xmin: f64,
+        /// Bottom.
+        ymin: f64,
+        /// Right.
+        xmax: f64,
+        /// Top.
+        ymax: f64,
+    },
+    /// The bounds have a coordinate beyond [`MAX_COORDINATE`] in magnitude, or a side shorter
+    /// than [`MIN_RELATIVE_SIDE`] times their largest coordinate (or than [`MIN_SIDE`]): the
+    /// polygon operations could not resolve such a world.
+    #[error(
+        "bounds [{xmin:?}, {ymin:?}, {xmax:?}, {ymax:?}] are outside the supported range: coordinates within +-{max:e}, each side at least {side:e} and at least {rel:e} times the largest coordinate",
+        max = MAX_COORDINATE, side = MIN_SIDE, rel = MIN_RELATIVE_SIDE
+    )]
+    BoundsOutOfRange {
         /// Left.
         xmin: f64,
         /// Bottom.
@@ -91,6 +114,9 @@ pub enum WorldError {
     /// The robot radius is negative or not finite.
     #[error("robot radius {0} must be finite and non-negative")]
     InvalidRadius(f64),
+    /// The robot radius is larger than [`MAX_COORDINATE`].
+    #[error("robot radius {0:e} is beyond {max:e}, the largest a world supports", max = MAX_COORDINATE)]
+    RadiusOutOfRange(f64),
     /// The angle step for round corners is outside `(0, PI/2]`.
     #[error("arc step {0} must lie in (0, PI/2]")]
     InvalidArcStep(f64),
@@ -104,6 +130,25 @@ pub enum WorldError {
     },
 }
 
+/// The largest coordinate magnitude (of bounds, obstacle vertices and the robot radius) a
+/// world accepts. Exact predicates hold at any magnitude, but the polygon operations that grow
+/// and merge obstacles round to a fixed-point grid and lose obstacles beyond about 1e12; 1e9
+/// (a million kilometres in metres, a thousand in millimetres) keeps a wide margin.
+pub const MAX_COORDINATE: f64 = 1e9;
+
+/// The shortest side the bounds may have, in absolute terms.
+pub const MIN_SIDE: f64 = 1e-6;
+
+/// The shortest side the bounds may have relative to their largest coordinate magnitude: the
+/// free space is resolved to 2^-20 of the bounds' larger side, which must stay far above the
+/// spacing of `f64` values at the bounds' coordinates (about 2.2e-16 times their magnitude).
+pub const MIN_RELATIVE_SIDE: f64 = 1e-7;
+
+/// Whether `v` is within the magnitude a world supports.
+fn in_range(v: f64) -> bool {
+    v.abs() <= MAX_COORDINATE
+}
+
 /// An axis-aligned rectangle: the region the robot's centre must stay in. Serialized as
 /// `[xmin, ymin, xmax, ymax]`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -114,11 +159,19 @@ pub struct Bounds {
 }
 
 impl Bounds {
-    /// The rectangle `[xmin, xmax] x [ymin, ymax]`; an error unless finite with positive area.
+    /// The rectangle `[xmin, xmax] x [ymin, ymax]`; an error unless finite with positive area,
+    /// and within the supported range: every coordinate within [`MAX_COORDINATE`], each side
+    /// at least [`MIN_SIDE`] and at least [`MIN_RELATIVE_SIDE`] times the largest coordinate.
     pub fn new(xmin: f64, ymin: f64, xmax: f64, ymax: f64) -> Result<Self, WorldError> {
-        let finite = [xmin, ymin, xmax, ymax].iter().all(|v| v.is_finite());
+        let corners = [xmin, ymin, xmax, ymax];
+        let finite = corners.iter().all(|v| v.is_finite());
         if !(finite && xmin < xmax && ymin < ymax) {
             return Err(WorldError::InvalidBounds { xmin, ymin, xmax, ymax });
+        }
+        let largest = corners.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let side = (xmax - xmin).min(ymax - ymin);
+        if !(largest <= MAX_COORDINATE && side >= MIN_SIDE && side >= MIN_RELATIVE_SIDE * largest) {
+            return Err(WorldError::BoundsOutOfRange { xmin, ymin, xmax, ymax });
         }
         Ok(Bounds { min: Point::new(xmin, ymin), max: Point::new(xmax, ymax) })
     }
@@ -172,6 +225,9 @@ impl Polygon {
     pub fn new(vertices: Vec<Point>) -> Result<Self, PolygonError> {
         if let Some(vertex) = vertices.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
             return Err(PolygonError::NonFinite { vertex });
+        }
+        if let Some(vertex) = vertices.iter().position(|p| !(in_range(p.x) && in_range(p.y))) {
+            return Err(PolygonError::OutOfRange { vertex });
         }
         let mut kept = dedup_ring(vertices);
         if kept.len() < 3 {
@@ -350,6 +406,9 @@ impl PolygonWorld {
         if !(robot_radius.is_finite() && robot_radius >= 0.0) {
             return Err(WorldError::InvalidRadius(robot_radius));
         }
+        if !in_range(robot_radius) {
+            return Err(WorldError::RadiusOutOfRange(robot_radius));
+        }
         let obstacles = obstacles
             .into_iter()
             .enumerate()
@@ -408,11 +467,27 @@ impl PolygonWorld {
             && self.obstacles.iter().all(|o| !o.contains_strictly(p) && o.distance_to(p) >= r)
     }
 
-    /// The margin added to grown obstacles for the rounding of polygon operations: 2^-20 of
-    /// the bounds' larger side.
-    fn snap_margin(&self) -> f64 {
+    /// The resolution of [`free_space`](Self::free_space): the margin its grown obstacles
+    /// carry for the rounding of polygon operations, 2^-20 of the bounds' larger side. A point
+    /// the exact [`checker`](Self::checker) finds free may be blocked in the free space when it
+    /// is closer than this to a grown obstacle.
+    pub fn resolution(&self) -> f64 {
         let size = self.bounds.max - self.bounds.min;
         size.x.max(size.y) * (-20f64).exp2()
+    }
+
+    /// The radius to grow `obstacle` by for the free space: the robot radius, but no more than
+    /// twice the diagonal of the box around the bounds and the obstacle. Beyond that distance
+    /// the grown obstacle covers the bounds whatever the radius, and the polygon operations
+    /// lose an obstacle grown far beyond its own size.
+    fn growth_radius(&self, obstacle: &Polygon) -> f64 {
+        let mut lo = self.bounds.min;
+        let mut hi = self.bounds.max;
+        for v in &obstacle.vertices {
+            lo = Point::new(lo.x.min(v.x), lo.y.min(v.y));
+            hi = Point::new(hi.x.max(v.x), hi.y.max(v.y));
+        }
+        self.robot_radius.min(2.0 * (hi - lo).norm())
     }
 
     /// The exact collision checker of this world.
@@ -445,7 +520,7 @@ impl PolygonWorld {
             .iter()
             .map(|p| {
                 let polygon = to_geo(p);
-                let margin = self.snap_margin();
+                let margin = self.resolution();
                 if self.robot_radius > 0.0 {
                     // Vertices on a circle of radius r / cos(step / 2): chords spanning at most
                     // `step` then stay outside the disc of radius r. The join's parameter is the
@@ -453,7 +528,7 @@ impl PolygonWorld {
                     // the corner's arc is split into a power of two of pieces, each up to twice
                     // the requested angle. The polygon operations snap coordinates to a
                     // fixed-point grid (about 1e-9 of the extent): a margin covers that.
-                    let distance = self.robot_radius / (step / 2.0).cos() + margin;
+                    let distance = self.growth_radius(p) / (step / 2.0).cos() + margin;
                     let join = LineJoin::Round(2.0 * (step / 4.0).sin());
                     polygon.buffer_with_style(BufferStyle::new(distance).line_join(join))
                 } else {
@@ -467,7 +542,7 @@ impl PolygonWorld {
         // For a point robot, the union's vertices are the obstacles' own vertices (snapped to the
         // fixed-point grid of the polygon operations) and crossings of their edges: put the
         // former back exactly, so a path may touch an obstacle's corner without entering it.
-        let tolerance = self.snap_margin();
+        let tolerance = self.resolution();
         let originals: std::collections::HashMap<(i64, i64), Vec<Point>> = if self.robot_radius == 0.0 {
             let mut map: std::collections::HashMap<(i64, i64), Vec<Point>> = std::collections::HashMap::new();
             for v in self.obstacles.iter().flat_map(|o| o.vertices.iter()).chain(self.bounds.corners().iter())
@@ -606,6 +681,17 @@ impl CollisionChecker {
         })
     }
 
+    /// The first segment of the polyline `points` that the robot cannot follow (segment `i`
+    /// joins points `i` and `i + 1`), or `None` when every segment is collision-free; a single
+    /// point is tested as a point (segment 0). Exact: the re-check a roadmap's answer passes
+    /// before it is reported as a path.
+    pub fn first_blocked_segment(&self, points: &[Point]) -> Option<usize> {
+        if let [p] = points {
+            return (!self.point_is_free(*p)).then_some(0);
+        }
+        points.windows(2).position(|pair| !self.segment_is_free(pair[0], pair[1]))
+    }
+
     /// Whether the robot following a Dubins path stays collision-free (every arc and segment
     /// tested exactly).
     pub fn dubins_is_free(&self, path: &DubinsPath) -> bool {
@@ -668,10 +754,6 @@ impl CollisionChecker {
     }
 }
 
-fn to_parry(p: Point) -> PVector {
-    PVector::new(p.x, p.y)
-}
-
 /// Whether `p` lies in the closed triangle `a b c` (a segment or a point when degenerate), by
 /// exact orientation tests.
 fn in_closed_triangle(a: Point, b: Point, c: Point, p: Point) -> bool {
@@ -709,16 +791,26 @@ impl Margin {
     }
 }
 
+/// The distance from `p` to the closed segment `a-b`. Written out rather than parry's, whose
+/// tolerances are absolute and give wrong distances in worlds measured in micrometres.
 fn point_segment_distance(p: Point, a: Point, b: Point) -> f64 {
-    Segment::new(to_parry(a), to_parry(b)).distance_to_local_point(to_parry(p), true)
+    let ab = b - a;
+    let len2 = ab.norm_squared();
+    let t = if len2 > 0.0 { ((p - a).dot(&ab) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    (p - (a + ab * t)).norm()
 }
 
+/// The distance between closed segments `a-b` and `p-q`: 0 when they touch (exact), else the
+/// least of the four end-to-segment distances (the closest points of disjoint segments include
+/// an end of one of them).
 fn segment_distance(a: Point, b: Point, p: Point, q: Point) -> f64 {
-    parry2d_f64::query::details::distance_segment_segment(
-        &PPose::IDENTITY,
-        &Segment::new(to_parry(a), to_parry(b)),
-        &Segment::new(to_parry(p), to_parry(q)),
-    )
+    if segments_touch(a, b, p, q) {
+        return 0.0;
+    }
+    point_segment_distance(a, p, q)
+        .min(point_segment_distance(b, p, q))
+        .min(point_segment_distance(p, a, b))
+        .min(point_segment_distance(q, a, b))
 }
 
 /// For a point robot: whether the open segment `a-b` meets the polygon's open interior. The
@@ -998,7 +1090,7 @@ mod tests {
         // Every edge of the grown polygons is outside the exact disc sum (checked at its ends and
         // middle), and no vertex is much farther out than the circumscribed polygon's corners
         // (where two grown outlines cross, a little farther).
-        let limit = 1.001 * (0.5 / (DEFAULT_ARC_STEP / 2.0).cos() + world.snap_margin());
+        let limit = 1.001 * (0.5 / (DEFAULT_ARC_STEP / 2.0).cos() + world.resolution());
         for e in 0..space.edges().len() {
             let (a, z) = space.edge_points(e);
             if !(b.contains(a) && b.contains(z)) || a.x == 0.0 || a.x == 20.0 || a.y == 0.0 || a.y == 20.0 {

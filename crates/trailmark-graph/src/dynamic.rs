@@ -231,13 +231,33 @@ impl<R: Rebuild> DynamicRoadmap<R> {
     }
 
     /// Where node `id` is.
+    ///
+    /// # Panics
+    ///
+    /// If `id` is not below [`node_count`](Self::node_count): node ids are indices, as a
+    /// slice's. [`get_position`](Self::get_position) is the checked form.
     pub fn position(&self, id: u32) -> Point {
         self.positions[id as usize]
     }
 
+    /// Where node `id` is, `None` if the roadmap has no such node.
+    pub fn get_position(&self, id: u32) -> Option<Point> {
+        self.positions.get(id as usize).copied()
+    }
+
     /// The edges of node `id`, by neighbour id.
+    ///
+    /// # Panics
+    ///
+    /// If `id` is not below [`node_count`](Self::node_count).
+    /// [`get_neighbours`](Self::get_neighbours) is the checked form.
     pub fn neighbours(&self, id: u32) -> &[(u32, Cost)] {
         &self.adjacency[id as usize]
+    }
+
+    /// The edges of node `id`, `None` if the roadmap has no such node.
+    pub fn get_neighbours(&self, id: u32) -> Option<&[(u32, Cost)]> {
+        self.adjacency.get(id as usize).map(Vec::as_slice)
     }
 
     /// The straight-line distance between two nodes: an admissible, consistent heuristic for

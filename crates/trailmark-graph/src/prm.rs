@@ -579,8 +579,18 @@ impl<S: Steering> Prm<S> {
     }
 
     /// The configuration of `node`.
+    ///
+    /// # Panics
+    ///
+    /// If `node` is not below [`node_count`](Self::node_count): node ids are indices, as a
+    /// slice's. [`get_position`](Self::get_position) is the checked form.
     pub fn position(&self, node: u32) -> S::State {
         self.states[node as usize]
+    }
+
+    /// The configuration of `node`, `None` if the roadmap has no such node.
+    pub fn get_position(&self, node: u32) -> Option<S::State> {
+        self.states.get(node as usize).copied()
     }
 
     /// The free edges, as `(from, to, cost)`, each undirected edge once.
@@ -605,12 +615,23 @@ impl<S: Steering> Prm<S> {
 
     /// A representative of `node`'s connected component (ignoring edge direction): two nodes
     /// are connected exactly when their representatives are equal.
+    ///
+    /// # Panics
+    ///
+    /// If `node` is not below [`node_count`](Self::node_count).
+    /// [`get_component`](Self::get_component) is the checked form.
     pub fn component(&self, node: u32) -> u32 {
         let mut x = node;
         while self.parent[x as usize] != x {
             x = self.parent[x as usize];
         }
         x
+    }
+
+    /// The representative of `node`'s connected component, `None` if the roadmap has no such
+    /// node.
+    pub fn get_component(&self, node: u32) -> Option<u32> {
+        ((node as usize) < self.states.len()).then(|| self.component(node))
     }
 
     fn draw(&mut self) -> S::State {

@@ -109,6 +109,11 @@ impl<'g, R: Roadmap> RoadmapQuery<'g, R> {
     }
 
     /// Where `node` is.
+    ///
+    /// # Panics
+    ///
+    /// If `node` is neither a node of the roadmap nor the start or goal (below the roadmap's
+    /// node count plus 2): node ids are indices, as a slice's.
     pub fn position(&self, node: u32) -> R::Position {
         match node as usize {
             n if n == self.roadmap.node_count() => self.start,

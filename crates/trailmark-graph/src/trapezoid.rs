@@ -379,8 +379,18 @@ impl Trapezoids {
     }
 
     /// Cell `index`.
+    ///
+    /// # Panics
+    ///
+    /// If `index` is not below [`cell_count`](Self::cell_count): cell ids are indices, as a
+    /// slice's. [`get_cell`](Self::get_cell) is the checked form.
     pub fn cell(&self, index: usize) -> &Trapezoid {
         &self.cells[index]
+    }
+
+    /// Cell `index`, `None` if there is no such cell.
+    pub fn get_cell(&self, index: usize) -> Option<&Trapezoid> {
+        self.cells.get(index)
     }
 
     /// The portals between cells.
@@ -389,12 +399,20 @@ impl Trapezoids {
     }
 
     /// The portals of cell `index`.
+    ///
+    /// # Panics
+    ///
+    /// If `index` is not below [`cell_count`](Self::cell_count).
     pub fn portals_of(&self, index: usize) -> impl Iterator<Item = &Portal> + '_ {
         let range = self.cell_start[index] as usize..self.cell_start[index + 1] as usize;
         self.cell_portals[range].iter().map(|&k| &self.portals[k as usize])
     }
 
     /// The cells adjacent to cell `index` (through a portal).
+    ///
+    /// # Panics
+    ///
+    /// If `index` is not below [`cell_count`](Self::cell_count).
     pub fn neighbours(&self, index: usize) -> impl Iterator<Item = usize> + '_ {
         self.portals_of(index)
             .map(move |p| if p.left as usize == index { p.right as usize } else { p.left as usize })

@@ -276,11 +276,25 @@ impl VisibilityGraph {
     }
 
     /// The position of node `node`.
+    ///
+    /// # Panics
+    ///
+    /// If `node` is not below [`node_count`](Self::node_count): node ids are indices, as a
+    /// slice's. [`get_position`](Self::get_position) is the checked form.
     pub fn position(&self, node: u32) -> Point {
         self.nodes[node as usize].at
     }
 
+    /// The position of node `node`, `None` if the graph has no such node.
+    pub fn get_position(&self, node: u32) -> Option<Point> {
+        self.nodes.get(node as usize).map(|n| n.at)
+    }
+
     /// The neighbours of `node` with the edge costs.
+    ///
+    /// # Panics
+    ///
+    /// If `node` is not below [`node_count`](Self::node_count).
     pub fn neighbours(&self, node: u32) -> impl Iterator<Item = (u32, Cost)> + '_ {
         let range = self.offsets[node as usize] as usize..self.offsets[node as usize + 1] as usize;
         self.targets[range.clone()].iter().copied().zip(self.costs[range].iter().copied())

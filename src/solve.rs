@@ -39,7 +39,7 @@ use trailmark_core::problem::{
     SolveResult, Status, Waypoint, World,
 };
 use trailmark_core::svg::{GridSvg, WorldSvg};
-use trailmark_core::world::PolygonWorld;
+use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_graph::prm::{
     Connection, DubinsSteering, Prm, PrmError, PrmOptions, Sampler, Steering, Straight,
 };
@@ -111,9 +111,12 @@ pub enum SolveError {
         /// The heuristic asked for.
         heuristic: GridHeuristic,
     },
-    /// A time limit that is negative, not a number, or too large.
-    #[error("\"time_limit_s\" is {0}; it must be a number of seconds >= 0 (and below 1.8e19)")]
+    /// A time limit that is negative, not a number, or above [`MAX_TIME_LIMIT_S`].
+    #[error("\"time_limit_s\" is {0}; it must be a number of seconds from 0 to {max}", max = MAX_TIME_LIMIT_S)]
     TimeLimit(f64),
+    /// A sampling planner's `max_iterations` above [`MAX_ITERATIONS`].
+    #[error("\"max_iterations\" is {0}; a sampling planner runs at most {max} iterations", max = MAX_ITERATIONS)]
+    TooManyIterations(u64),
     /// The search rejected the query.
     #[error(transparent)]
     Search(#[from] SearchError<Cell>),
@@ -214,10 +217,50 @@ pub enum SolveError {
     /// The state space could not be made (a turning radius that is not positive).
     #[error(transparent)]
     Space(#[from] SpaceError),
+    /// A roadmap's path failed the exact re-check that every roadmap answer passes before it
+    /// is reported (a motion that collides, or a cost that is not the path's length): the
+    /// world is finer than the roadmap resolves. Reported instead of a wrong path.
+    #[error(
+        "the \"{graph}\" roadmap's path fails the exact check at segment {segment} ({reason}); the world is finer than this roadmap resolves"
+    )]
+    PathRejected {
+        /// The graph.
+        graph: &'static str,
+        /// The first segment that failed (segment `i` joins waypoints `i` and `i + 1`).
+        segment: usize,
+        /// What failed.
+        reason: &'static str,
+    },
+    /// A start or goal that the exact collision test finds free, but that lies closer to an
+    /// obstacle than the roadmap's free space resolves (its obstacles are grown by up to 2^-20
+    /// of the bounds' larger side for the rounding of polygon operations).
+    #[error(
+        "the {which} ({x}, {y}) is free, but closer to an obstacle than the \"{graph}\" roadmap resolves in these bounds (about {resolution:e}); shrink the bounds or use a sampling planner"
+    )]
+    BelowResolution {
+        /// `"start"` or `"goal"`.
+        which: &'static str,
+        /// Its x.
+        x: f64,
+        /// Its y.
+        y: f64,
+        /// The graph.
+        graph: &'static str,
+        /// The resolution of the free space, in world units.
+        resolution: f64,
+    },
     /// A path could not be smoothed.
     #[error(transparent)]
     Curve(#[from] CurveError),
 }
+
+/// The longest `time_limit_s` a problem may give: one day. A limit is where a run stops, so
+/// a document cannot ask for a run that outlives the machine.
+pub const MAX_TIME_LIMIT_S: f64 = 86_400.0;
+
+/// The most iterations a sampling planner's document may ask for: each iteration may add a
+/// state to the tree, so this bounds its memory (about a gigabyte) as well as its time.
+pub const MAX_ITERATIONS: u64 = 10_000_000;
 
 /// The grid of a grid world, with relative map paths resolved against `base_dir`.
 pub fn load_grid(world: &GridWorld, base_dir: impl AsRef<Path>) -> Result<Grid, SolveError> {
@@ -313,9 +356,14 @@ fn solve_inner(
         planner => planner.sampling().and_then(|spec| spec.time_limit_s),
     };
     if let Some(t) = time_limit
-        && Duration::try_from_secs_f64(t).is_err()
+        && !(0.0..=MAX_TIME_LIMIT_S).contains(&t)
     {
         return Err(SolveError::TimeLimit(t));
+    }
+    if let Some(n) = problem.planner.sampling().and_then(|spec| spec.max_iterations)
+        && n > MAX_ITERATIONS
+    {
+        return Err(SolveError::TooManyIterations(n));
     }
     if problem.space.is_some() && problem.planner.sampling().is_none() {
         return Err(SolveError::NotForPlanner { field: "space", planner: problem.planner.name() });
@@ -484,12 +532,27 @@ fn solve_polygons(
         _ => Err(SolveError::NotAPoint { which, value: value.to_vec(), graph: kind.name() }),
     };
     let (start, goal) = (point("start", &problem.start)?, point("goal", &problem.goal)?);
+    let checker = world.checker();
+    // The free space of the exact roadmaps is conservative by its resolution: a free end
+    // refused there is below that resolution, not blocked.
+    let refused = |which, at: Point, blocked: SolveError| {
+        if checker.point_is_free(at) {
+            let (x, y, resolution) = (at.x, at.y, world.resolution());
+            SolveError::BelowResolution { which, x, y, graph: kind.name(), resolution }
+        } else {
+            blocked
+        }
+    };
     let clock = Instant::now();
     let (result, svg) = match kind {
         GraphKind::Visibility => {
             let graph = VisibilityGraph::with_edges(world.free_space(), Edges::Tangent);
             let built = clock.elapsed();
-            let result = search_roadmap(problem, &graph.query(start, goal)?, built, clock.elapsed() - built)?;
+            let query = graph.query(start, goal).map_err(|e| match e {
+                VisibilityError::StartBlocked { .. } => refused("start", start, e.into()),
+                VisibilityError::GoalBlocked { .. } => refused("goal", goal, e.into()),
+            })?;
+            let result = search_roadmap(problem, &query, built, clock.elapsed() - built)?;
             let svg = WorldSvg::new(world).free_space(graph.space()).edges(graph.edge_ends());
             (result, svg.title("Visibility graph (tangent edges) and the shortest path"))
         }
@@ -497,7 +560,11 @@ fn solve_polygons(
             let space = world.free_space();
             let graph = Trapezoids::new(&space);
             let built = clock.elapsed();
-            let result = search_roadmap(problem, &graph.query(start, goal)?, built, clock.elapsed() - built)?;
+            let query = graph.query(start, goal).map_err(|e| match e {
+                TrapezoidError::StartBlocked { .. } => refused("start", start, e.into()),
+                TrapezoidError::GoalBlocked { .. } => refused("goal", goal, e.into()),
+            })?;
+            let result = search_roadmap(problem, &query, built, clock.elapsed() - built)?;
             let cells = (0..graph.cell_count()).map(|c| graph.cell(c).corners().to_vec());
             let svg = WorldSvg::new(world).free_space(&space).cells(cells).edges(graph.edge_ends());
             (result, svg.title("Trapezoidal cells, their centroids and portal midpoints, and a path"))
@@ -513,11 +580,27 @@ fn solve_polygons(
             (result, svg.title(title))
         }
     };
+    let path: Vec<Point> = result.path.iter().filter_map(waypoint_point).collect();
+    if let Some(cost) = result.cost {
+        let rejected = |segment, reason| SolveError::PathRejected { graph: kind.name(), segment, reason };
+        if let Some(segment) = checker.first_blocked_segment(&path) {
+            return Err(rejected(segment, "the robot collides"));
+        }
+        let length: f64 = path.windows(2).map(|p| (p[1] - p[0]).norm()).sum();
+        if !same_length(cost, length) {
+            return Err(rejected(0, "the cost is not the path's length"));
+        }
+    }
     if let Some(picture) = picture {
-        let path: Vec<Point> = result.path.iter().filter_map(waypoint_point).collect();
         *picture = svg.path(&path).start(start).goal(goal).to_svg();
     }
     Ok(result)
+}
+
+/// Whether a reported path cost and the length measured along the path agree, up to the
+/// rounding of summing the edges in another order.
+fn same_length(cost: f64, length: f64) -> bool {
+    (cost - length).abs() <= 1e-9 * cost.abs().max(length.abs()).max(f64::MIN_POSITIVE)
 }
 
 /// [`solve_polygons`] on a Dubins roadmap: poses, directed Dubins edges.
@@ -537,15 +620,18 @@ fn solve_dubins(
     let prm = grow(problem, Prm::with_steering(world.clone(), steering, prm_options(problem)?)?)?;
     let built = clock.elapsed();
     let result = search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed() - built)?;
+    let poses: Vec<Pose> = result
+        .path
+        .iter()
+        .filter_map(|w| match w {
+            Waypoint::Point(c) => DubinsSteering::from_coordinates(c),
+            Waypoint::Cell(_) => None,
+        })
+        .collect();
+    if let Some(cost) = result.cost {
+        check_dubins(&world.checker(), &poses, radius, cost)?;
+    }
     if let Some(picture) = picture {
-        let poses: Vec<Pose> = result
-            .path
-            .iter()
-            .filter_map(|w| match w {
-                Waypoint::Point(c) => DubinsSteering::from_coordinates(c),
-                Waypoint::Cell(_) => None,
-            })
-            .collect();
         let curve = dubins_curve(&poses, radius);
         let title =
             format!("Dubins roadmap: {} poses, turning radius {radius}, and a path", prm.node_count());
@@ -559,6 +645,36 @@ fn solve_dubins(
             .to_svg();
     }
     Ok(result)
+}
+
+/// The exact re-check of a Dubins roadmap's path: each shortest Dubins curve between
+/// consecutive poses collision-free, and their lengths adding up to `cost`.
+fn check_dubins(
+    checker: &CollisionChecker,
+    poses: &[Pose],
+    radius: f64,
+    cost: f64,
+) -> Result<(), SolveError> {
+    let rejected =
+        |segment, reason| SolveError::PathRejected { graph: GraphKind::DubinsPrm.name(), segment, reason };
+    if let [pose] = poses
+        && !checker.point_is_free(Point::from(pose.translation.vector))
+    {
+        return Err(rejected(0, "the robot collides"));
+    }
+    let mut length = 0.0;
+    for (segment, pair) in poses.windows(2).enumerate() {
+        let piece = DubinsPath::shortest(&pair[0], &pair[1], radius)
+            .map_err(|_| rejected(segment, "no Dubins curve joins the poses"))?;
+        if !checker.dubins_is_free(&piece) {
+            return Err(rejected(segment, "the robot collides"));
+        }
+        length += piece.length();
+    }
+    if !same_length(cost, length) {
+        return Err(rejected(0, "the cost is not the path's length"));
+    }
+    Ok(())
 }
 
 /// The positions along the shortest Dubins curves joining `poses` (a positive, finite turning
@@ -658,9 +774,15 @@ fn budget(time_limit_s: Option<f64>, max_expansions: Option<u64>) -> Budget {
 }
 
 /// The result document of an anytime search: the path of its last iteration, every iteration;
-/// each path node written as `waypoint(node)`.
+/// each path node written as `waypoint(node)`. Without a path the status is
+/// [`Status::NoPath`] only when the search proved the goal unreachable
+/// ([`Stop::Unreachable`](trailmark_search::Stop::Unreachable)); stopped by a limit first, it is
+/// [`Status::Stopped`].
 pub fn anytime_result_of<N: Copy>(found: &AnytimeResult<N>, waypoint: impl Fn(N) -> Waypoint) -> SolveResult {
     let mut result = result_of(&SearchResult { path: found.path.clone(), stats: found.stats }, waypoint);
+    if found.path.is_none() && !found.proved_unreachable() {
+        result.status = Status::Stopped;
+    }
     result.stats.iterations = Some(
         found
             .iterations
@@ -679,7 +801,8 @@ pub fn anytime_result_of<N: Copy>(found: &AnytimeResult<N>, waypoint: impl Fn(N)
 }
 
 /// The result document of a search, each path node written as `waypoint(node)`
-/// ([`Waypoint::Cell`] for a grid search).
+/// ([`Waypoint::Cell`] for a grid search). The searches of [`SearchResult`] run to their end
+/// (they take no limit), so a result without a path is [`Status::NoPath`]: proved unreachable.
 pub fn result_of<N: Copy>(found: &SearchResult<N>, waypoint: impl Fn(N) -> Waypoint) -> SolveResult {
     let s = &found.stats;
     SolveResult {

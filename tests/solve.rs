@@ -163,6 +163,44 @@ fn bad_input_gives_typed_errors() {
     }
 }
 
+/// A limit that stops an anytime planner before it finds a path proves nothing about the goal:
+/// the status is "stopped", never "no_path" (which says the goal is unreachable), whether the
+/// goal is reachable or not.
+#[test]
+fn anytime_planners_stopped_by_a_limit_say_stopped() {
+    let walled = [".@.", ".@.", ".@."];
+    for name in ["ara_star", "ad_star"] {
+        for limit in [r#""time_limit_s": 0"#, r#""max_expansions": 0"#] {
+            let json = format!(r#"{{"name": "{name}", {limit}}}"#);
+            let planner: PlannerSpec = serde_json::from_str(&json).unwrap();
+            for (rows, goal) in [(&ROWS[..], vec![3.0, 2.0]), (&walled[..], vec![2.0, 2.0])] {
+                let result = solve(&problem(rows, vec![0.0, 0.0], goal, planner.clone()), ".").unwrap();
+                let document = serde_json::to_value(&result).unwrap();
+                assert_eq!(document["status"], "stopped", "{json}: {document}");
+                assert_eq!((result.cost, result.path.len()), (None, 0), "{json}");
+            }
+        }
+    }
+}
+
+/// Cell costs of 8e307: the goal, three moves away, is reachable, but the cost of the way there
+/// exceeds what an `f64` holds. Every planner gives a typed error (the grid refuses such costs,
+/// or the search reports the overflow) instead of answering "no_path" or an infinite cost.
+#[test]
+fn path_costs_past_f64_max_are_errors() {
+    use trailmark::search::SearchError;
+    for planner in planners() {
+        let mut p = problem(&["...."], vec![0.0, 0.0], vec![3.0, 0.0], planner.clone());
+        let World::Grid(world) = &mut p.world else { unreachable!() };
+        world.costs = Some(vec![vec![8e307; 4]]);
+        let result = solve(&p, ".");
+        assert!(
+            matches!(result, Err(SolveError::Grid(_) | SolveError::Search(SearchError::CostOverflow { .. }))),
+            "{planner:?}: {result:?}"
+        );
+    }
+}
+
 /// The new planners' names, as a user writes them.
 #[test]
 fn incremental_and_anytime_planners_parse_from_json() {

@@ -376,3 +376,127 @@ fn example_problems_solve() {
     }
     assert!(count >= 4, "{count} examples");
 }
+
+/// The wall world with every length times `scale` (bounds, wall, radius 0.25 and ends).
+fn scaled(scale: f64, graph: &str) -> Result<Problem, serde_json::Error> {
+    let s = |v: f64| v * scale;
+    let json = format!(
+        r#"{{"world": {{"polygons": {{"bounds": [0, 0, {ten:?}, {ten:?}],
+             "obstacles": [[[{four:?}, 0], [{six:?}, 0], [{six:?}, {eight:?}], [{four:?}, {eight:?}]]],
+             "robot_radius": {r:?}}}}},
+           "graph": "{graph}"{extra},
+           "start": [{one:?}, {one:?}], "goal": [{nine:?}, {one:?}], "planner": {{"name": "astar"}}}}"#,
+        ten = s(10.0),
+        four = s(4.0),
+        six = s(6.0),
+        eight = s(8.0),
+        r = s(0.25),
+        one = s(1.0),
+        nine = s(9.0),
+        extra = if graph == "prm" { r#", "samples": 400, "k": 12, "seed": 3"# } else { "" },
+    );
+    serde_json::from_str(&json)
+}
+
+/// Whether the disc of radius `0.25 x scale` following `path` stays clear of the scaled wall,
+/// measured every 1/2000 of each segment with plain distances to the wall's rectangle.
+fn clear_of_scaled_wall(path: &[Point], scale: f64) -> bool {
+    path.windows(2).all(|w| {
+        (0..=2000).all(|i| {
+            let q = w[0] + (w[1] - w[0]) * (f64::from(i) / 2000.0);
+            let nearest = Point::new(q.x.clamp(4.0 * scale, 6.0 * scale), q.y.clamp(0.0, 8.0 * scale));
+            (q - nearest).norm() >= 0.25 * scale * (1.0 - 1e-9)
+        })
+    })
+}
+
+/// Every roadmap on the wall world scaled from 1e-7 to 1e8 (the supported range) gives the
+/// scaled answer with a path clear of the wall; beyond the range, a typed error instead of a
+/// path (at 1e16 the visibility and trapezoid paths crossed the wall).
+#[test]
+fn scaled_worlds_give_scaled_answers_or_a_typed_error() {
+    // The point robot's shortest path is shorter than the disc's.
+    let lower = over_the_wall();
+    for graph in ["visibility", "trapezoid", "prm"] {
+        let mut unscaled = None;
+        for scale in [1.0, 1e-7, 1e-3, 1e4, 1e8] {
+            let problem = scaled(scale, graph).unwrap_or_else(|e| panic!("{graph} x {scale}: {e}"));
+            let result = solve(&problem, ".").unwrap_or_else(|e| panic!("{graph} x {scale}: {e}"));
+            assert_eq!(result.status, Status::Solved, "{graph} x {scale}");
+            let path = points(&result);
+            assert!(clear_of_scaled_wall(&path, scale), "{graph} x {scale}: {path:?}");
+            let cost = result.cost.unwrap() / scale;
+            assert!(cost >= lower, "{graph} x {scale}: {cost}");
+            let reference = *unscaled.get_or_insert(cost);
+            if graph == "visibility" {
+                // The same shortest path, scaled.
+                assert!(
+                    (cost - reference).abs() <= 1e-6 * reference,
+                    "{graph} x {scale}: {cost} vs {reference}"
+                );
+            }
+        }
+        for scale in [1e-12, 1e12, 1e16, 1e300] {
+            let error = scaled(scale, graph).expect_err("out of range");
+            assert!(error.to_string().contains("outside the supported range"), "{graph} x {scale}: {error}");
+        }
+    }
+}
+
+/// A roadmap of 1e12 samples ran without end: the sample count has a documented maximum, and
+/// a world with no free space at all gives up after a few thousand draws.
+#[test]
+fn sampled_roadmaps_have_bounded_sizes() {
+    let too_many = document(0.25, r#""graph": "prm", "samples": 1000000000000, "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}"#);
+    let error = solve(&too_many, ".").expect_err("too many samples");
+    assert!(matches!(error, SolveError::Prm(trailmark::graph::prm::PrmError::TooManyNodes)), "{error}");
+    let clock = std::time::Instant::now();
+    let nowhere = document(20.0, r#""graph": "prm", "samples": 1000000, "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}"#);
+    let error = solve(&nowhere, ".").expect_err("no free space");
+    assert!(matches!(error, SolveError::Prm(trailmark::graph::prm::PrmError::SamplingExhausted { .. })), "{error}");
+    assert!(clock.elapsed().as_secs() < 60, "giving up took {:?}", clock.elapsed());
+}
+
+/// A robot far larger than its world fits nowhere: its start is blocked on every roadmap (the
+/// grown obstacle had vanished, and a path went through the wall).
+#[test]
+fn a_robot_larger_than_the_world_fits_nowhere() {
+    for graph in ["visibility", "trapezoid", "prm"] {
+        for radius in [20.0, 1e6, 1e9] {
+            let p = document(
+                radius,
+                &format!(
+                    r#""graph": "{graph}", "start": [1, 1], "goal": [9, 1], "planner": {{"name": "astar"}}"#
+                ),
+            );
+            let error = solve(&p, ".").expect_err(graph);
+            assert!(
+                matches!(error, SolveError::Visibility(_) | SolveError::Trapezoid(_) | SolveError::Prm(_)),
+                "{graph}, radius {radius}: {error}"
+            );
+            // A sampled roadmap finds no free sample at all.
+            if graph != "prm" {
+                assert!(error.to_string().contains("start"), "{graph}, radius {radius}: {error}");
+            }
+        }
+    }
+}
+
+/// In bounds a billion times larger than the obstacles, a start 0.75 from the wall is free,
+/// but below what the exact roadmaps resolve there: a typed error says so, instead of calling
+/// the start blocked. Sampled roadmaps test ends exactly and still plan.
+#[test]
+fn enormous_bounds_do_not_call_a_free_start_blocked() {
+    let json = |graph: &str| {
+        format!(
+            r#"{{"world": {{"polygons": {{"bounds": [0, 0, 1e9, 1e9],
+                 "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]], "robot_radius": 0.25}}}},
+               "graph": "{graph}", "start": [3.25, 1], "goal": [9, 1], "planner": {{"name": "astar"}}}}"#
+        )
+    };
+    for graph in ["visibility", "trapezoid"] {
+        let problem: Problem = serde_json::from_str(&json(graph)).unwrap();
+        let error = solve(&problem, ".").expect_err(graph);
+        assert!(matches!(error, SolveError::BelowResolution { which: "start", .. }), "{graph}: {error}");
+    }
+}

@@ -270,6 +270,17 @@ fn bad_sampling_documents_give_typed_errors() {
         (format!(r#"{ends}, "planner": {{"name": "rrt_star", "time_limit_s": 1e20}}"#), |e| {
             matches!(e, SolveError::TimeLimit(_))
         }),
+        // Limits that ran without end: a year of time, 1e15 iterations, u32::MAX attempts.
+        (format!(r#"{ends}, "planner": {{"name": "rrt_star", "time_limit_s": 3.2e7}}"#), |e| {
+            matches!(e, SolveError::TimeLimit(_))
+        }),
+        (format!(r#"{ends}, "planner": {{"name": "rrt", "max_iterations": 1000000000000000}}"#), |e| {
+            matches!(e, SolveError::TooManyIterations(_))
+        }),
+        (
+            format!(r#"{ends}, "planner": {{"name": "rrt_connect", "sampler": {{"name": "bridge", "std_dev": 1, "attempts": 4294967295}}}}"#),
+            |e| matches!(e, SolveError::Sampler(SamplerError::TooManyAttempts(_))),
+        ),
         (r#""start": [5, 1], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
             matches!(e, SolveError::Plan(PlanError::InvalidStart))
         }),

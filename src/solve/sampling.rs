@@ -144,7 +144,7 @@ impl Run<'_> {
         let query = Query::new(space, self.checker, start, goal);
         let limits = (&options, &termination);
         let plan = match spec.sampler.unwrap_or_default() {
-            SamplerSpec::Uniform => self.search(&query, nearest, limits)?,
+            SamplerSpec::Uniform {} => self.search(&query, nearest, limits)?,
             SamplerSpec::Bridge { std_dev, share, attempts } => {
                 let bridge = Bridge::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
                 let bridge = bridge.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
@@ -165,8 +165,11 @@ impl Run<'_> {
         };
         let simplify_time_s = clock.elapsed().as_secs_f64();
         let cost = plan.path.as_ref().map(|_| path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum());
+        // Sampling planners never prove that no path exists: they stop at their limit. A plan
+        // with a path short of the goal is approximate; one with none at all (the planners of
+        // trailmark-sample always return at least the start) is stopped, never "no path".
         let status = match (&plan.path, plan.approximate) {
-            (None, _) => Status::NoPath,
+            (None, _) => Status::Stopped,
             (Some(_), true) => Status::Approximate,
             (Some(_), false) => Status::Solved,
         };

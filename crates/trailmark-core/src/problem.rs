@@ -197,12 +197,12 @@ pub struct SamplingSpec {
 /// `"name"` selects the sampler; the two that look for obstacles take `"std_dev"` (required:
 /// the distance between the two states tested, about the width of the passages sought),
 /// `"share"` (default 0.5) and `"attempts"` (default 100).
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "name", rename_all = "snake_case", deny_unknown_fields)]
 pub enum SamplerSpec {
-    /// Uniformly over the space.
-    #[default]
-    Uniform,
+    /// Uniformly over the space. (A struct variant, so that unknown fields beside its name
+    /// are refused as for the others.)
+    Uniform {},
     /// The bridge test: free midpoints of two nearby states in collision (narrow passages).
     Bridge {
         /// The partner's standard deviation.
@@ -225,6 +225,12 @@ pub enum SamplerSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         attempts: Option<u32>,
     },
+}
+
+impl Default for SamplerSpec {
+    fn default() -> Self {
+        SamplerSpec::Uniform {}
+    }
 }
 
 /// The world of a problem. In JSON, an object with one key naming the kind of world.
@@ -399,17 +405,21 @@ pub struct IterationRecord {
     pub time_s: f64,
 }
 
-/// Whether a planner found a path.
+/// Whether a planner found a path, and what its absence means.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Status {
     /// A path was found.
     Solved,
-    /// The planner proved that no path exists.
+    /// The planner proved that no path exists (a search that ran to its end).
     NoPath,
     /// A sampling planner stopped at its limit without reaching the goal: the path leads to
     /// the state nearest it (no proof that no path exists).
     Approximate,
+    /// A limit stopped the planner before it found a path or proved there is none: an anytime
+    /// search out of time or expansions, a sampling planner with nothing to show. There is no
+    /// path in the result, and nothing is known about whether one exists.
+    Stopped,
 }
 
 /// A point of a result path: a cell `[x, y]` of a grid, or a point of a continuous space.
@@ -518,7 +528,7 @@ pub struct GraphStats {
 /// The result of solving a problem.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SolveResult {
-    /// `"solved"` or `"no_path"`.
+    /// `"solved"`, `"no_path"`, `"approximate"` or `"stopped"` (see [`Status`]).
     pub status: Status,
     /// The path cost, `null` without a path.
     pub cost: Option<f64>,
@@ -566,6 +576,22 @@ mod tests {
         assert!(err.is_err(), "a parameter the planner does not take is an error");
         let err = serde_json::from_str::<Problem>(r#"{"world": {"grid": {}}, "start": [0,0]}"#);
         assert!(err.unwrap_err().to_string().contains("missing field"));
+    }
+
+    /// Every sampler refuses a field it does not take, the uniform one included.
+    #[test]
+    fn samplers_refuse_unknown_fields() {
+        let spec =
+            |sampler: &str| serde_json::from_str::<SamplingSpec>(&format!(r#"{{"sampler": {sampler}}}"#));
+        assert_eq!(spec(r#"{"name": "uniform"}"#).unwrap().sampler, Some(SamplerSpec::Uniform {}));
+        for sampler in [
+            r#"{"name": "uniform", "std_dev": 2}"#,
+            r#"{"name": "uniform", "surprise": true}"#,
+            r#"{"name": "bridge", "std_dev": 2, "surprise": true}"#,
+            r#"{"name": "gaussian", "std_dev": 2, "surprise": true}"#,
+        ] {
+            assert!(spec(sampler).is_err(), "{sampler}");
+        }
     }
 
     #[test]

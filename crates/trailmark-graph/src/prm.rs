@@ -273,6 +273,11 @@ impl Default for PrmOptions {
     }
 }
 
+/// The most nodes a roadmap holds. Each node keeps its state, a few dozen edges and their
+/// collision results, so ten million nodes take gigabytes; a larger request is refused with
+/// [`PrmError::TooManyNodes`] before anything is drawn.
+pub const MAX_NODES: usize = 10_000_000;
+
 /// What went wrong building, growing, querying, changing or loading a roadmap.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum PrmError {
@@ -308,8 +313,8 @@ pub enum PrmError {
     /// A query's goal collides or is outside the bounds.
     #[error("the goal {0:?} collides or is outside the bounds")]
     GoalBlocked(Vec<f64>),
-    /// The roadmap is full: node indices are `u32`.
-    #[error("a roadmap holds at most u32::MAX - 2 nodes")]
+    /// The roadmap would pass [`MAX_NODES`] nodes.
+    #[error("a roadmap holds at most {max} nodes", max = MAX_NODES)]
     TooManyNodes,
     /// The world rejected an obstacle change.
     #[error(transparent)]
@@ -432,14 +437,24 @@ impl<S: Steering> Prm<S> {
 
     /// Draws `samples` more free configurations and joins each to the roadmap; returns the
     /// indices of the new nodes' range start. Fails with [`PrmError::SamplingExhausted`] after
-    /// `attempts_per_sample × samples` draws, keeping the samples found.
+    /// `attempts_per_sample × samples` draws, or as soon as fewer than one draw in
+    /// `attempts_per_sample` has been free over `attempts_per_sample × (added + 10)` draws,
+    /// keeping the samples found; with [`PrmError::TooManyNodes`] before any draw if the
+    /// roadmap would pass [`MAX_NODES`].
     pub fn grow(&mut self, samples: usize) -> Result<std::ops::Range<u32>, PrmError> {
+        if self.states.len().saturating_add(samples) > MAX_NODES {
+            return Err(PrmError::TooManyNodes);
+        }
         let first = self.states.len() as u32;
-        let budget = u64::from(self.options.attempts_per_sample).saturating_mul(samples as u64);
+        let attempts = u64::from(self.options.attempts_per_sample);
+        let budget = attempts.saturating_mul(samples as u64);
         let mut draws = 0u64;
         let mut added = 0;
         while added < samples {
-            if draws == budget {
+            // Besides the whole budget, give up as soon as fewer than one draw in
+            // `attempts_per_sample` has been free (after the first ten samples' worth): a world
+            // with no free space fails in thousands of draws, not millions.
+            if draws == budget || draws >= attempts.saturating_mul(added as u64 + 10) {
                 return Err(PrmError::SamplingExhausted { requested: samples, added, attempts: draws });
             }
             draws += 1;
@@ -712,7 +727,7 @@ impl<S: Steering> Prm<S> {
     }
 
     fn add_node(&mut self, state: S::State) -> Result<u32, PrmError> {
-        if self.states.len() >= u32::MAX as usize - 2 {
+        if self.states.len() >= MAX_NODES {
             return Err(PrmError::TooManyNodes);
         }
         let neighbours = self.neighbours_of(S::point(&state), self.states.len() + 1);

@@ -59,7 +59,15 @@ pub enum SamplerError {
     /// No attempts.
     #[error("the sampler needs at least one attempt")]
     NoAttempts,
+    /// More attempts than [`MAX_ATTEMPTS`].
+    #[error("the sampler makes at most {max} attempts per sample, not {0}", max = MAX_ATTEMPTS)]
+    TooManyAttempts(u32),
 }
+
+/// The most attempts an obstacle sampler makes per sample: each attempt is up to two
+/// validity tests, so a planner iteration stays within tens of thousands of tests (at
+/// `u32::MAX`, one iteration in a world without such states ran for hours).
+pub const MAX_ATTEMPTS: u32 = 10_000;
 
 /// A source of the states a planner steers toward.
 pub trait StateSampler<S: StateSpace> {
@@ -131,6 +139,9 @@ impl Focus {
         if attempts == 0 {
             return Err(SamplerError::NoAttempts);
         }
+        if attempts > MAX_ATTEMPTS {
+            return Err(SamplerError::TooManyAttempts(attempts));
+        }
         self.attempts = attempts;
         Ok(self)
     }
@@ -176,7 +187,8 @@ macro_rules! focus_settings {
                 Ok($name(self.0.with_share(share)?))
             }
 
-            /// The tries (at least 1) before falling back to a uniform sample.
+            /// The tries (at least 1, at most [`MAX_ATTEMPTS`]) before falling back to a
+            /// uniform sample.
             pub fn with_attempts(self, attempts: u32) -> Result<Self, SamplerError> {
                 Ok($name(self.0.with_attempts(attempts)?))
             }

@@ -144,7 +144,11 @@ where
     /// Runs iterations, lowering ε after each, until ε = 1 (the path is optimal), the goal
     /// proves unreachable, or `budget` (for this call) is spent. An iteration interrupted by the
     /// budget continues at the next call. Returns the iterations completed in this call and the
-    /// path of the last one, if nothing changed since.
+    /// path of the last one, if nothing changed since (and no iteration is in progress: a result
+    /// without a path proves the goal unreachable only with [`Stop::Unreachable`]).
+    ///
+    /// Errors as [`DStarLite::compute_shortest_path`](crate::DStarLite::compute_shortest_path)
+    /// does, [`SearchError::CostOverflow`] included.
     pub fn improve<G>(&mut self, graph: &G, budget: Budget) -> Result<AnytimeResult<N>, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
@@ -267,7 +271,8 @@ where
         Ok(())
     }
 
-    /// Tells the planner that these edges changed cost; see [`DStarLite::update_edges`](crate::DStarLite::update_edges).
+    /// Tells the planner that these edges changed cost; see [`DStarLite::update_edges`](crate::DStarLite::update_edges)
+    /// (the old costs are checked but not relied on).
     pub fn update_edges<G>(&mut self, graph: &G, changes: &[EdgeChange<N>]) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,

@@ -8,6 +8,7 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Successors};
 use trailmark_core::path::Path;
 
+use crate::astar::MAX_WEIGHT;
 use crate::error::SearchError;
 use crate::index::{Dense, NodeIndex};
 use crate::search::{EdgeCheck, FKey, Search, ensure};
@@ -16,11 +17,17 @@ use crate::stats::SearchStats;
 /// The most iterations an inflation schedule may ask for.
 pub const MAX_ITERATIONS: usize = 10_000;
 
+/// The largest initial inflation an anytime planner accepts: [`MAX_WEIGHT`](crate::MAX_WEIGHT),
+/// 1e6, for the same reasons (an inflation is a heuristic weight). An inflation that large makes
+/// the first iteration a greedy search; a larger one only brings `ε h` toward overflow.
+pub const MAX_EPSILON: f64 = MAX_WEIGHT;
+
 /// How an anytime planner lowers its heuristic inflation: from `initial` down to 1 by `step`
-/// per iteration (the last step lands on 1 exactly).
+/// per iteration (the last step lands on 1 exactly). [`EpsilonSchedule::check`] says which
+/// schedules a planner accepts.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct EpsilonSchedule {
-    /// The first inflation, `>= 1` (3 by default).
+    /// The first inflation, from 1 to [`MAX_EPSILON`] (3 by default).
     pub initial: f64,
     /// The decrease per iteration, `> 0` (0.5 by default).
     pub step: f64,
@@ -38,25 +45,41 @@ impl EpsilonSchedule {
         EpsilonSchedule { initial, step }
     }
 
-    /// Errors unless `initial >= 1` and `step > 0` are finite and the schedule has at most
-    /// [`MAX_ITERATIONS`] iterations.
+    /// Errors ([`SearchError::InvalidEpsilon`]) unless `1 <= initial <= MAX_EPSILON`, `step > 0`
+    /// is finite, and the schedule reaches 1 in at most [`MAX_ITERATIONS`] iterations, each of
+    /// which lowers the inflation by `step`: a step lost to rounding (`1e20 - 1 == 1e20` in
+    /// `f64`) would never arrive.
     pub fn check<N: std::fmt::Debug>(&self) -> Result<(), SearchError<N>> {
-        let valid =
-            self.initial.is_finite() && self.initial >= 1.0 && self.step.is_finite() && self.step > 0.0;
+        let valid = (1.0..=MAX_EPSILON).contains(&self.initial) && self.step.is_finite() && self.step > 0.0;
         if !valid || self.iterations() > MAX_ITERATIONS {
             return Err(SearchError::InvalidEpsilon { initial: self.initial, step: self.step });
         }
         Ok(())
     }
 
-    /// The number of iterations from `initial` to 1.
+    /// The number of iterations from `initial` to 1, counted by stepping through the schedule
+    /// as a planner does. A schedule longer than [`MAX_ITERATIONS`], or one that does not reach 1
+    /// because `initial - step` rounds back to `initial` somewhere on the way, counts as
+    /// `MAX_ITERATIONS + 1`; a NaN `initial` counts 1 (it is not above 1).
     pub fn iterations(&self) -> usize {
-        ((self.initial - 1.0) / self.step).ceil() as usize + 1
+        let mut epsilon = self.initial;
+        let mut count = 1;
+        while epsilon > 1.0 {
+            count += 1;
+            let lower = epsilon - self.step;
+            if count > MAX_ITERATIONS || lower.is_nan() || lower >= epsilon {
+                return MAX_ITERATIONS + 1;
+            }
+            epsilon = self.next(epsilon);
+        }
+        count
     }
 
-    /// The inflation after `epsilon`: lower by `step`, never below 1.
+    /// The inflation after `epsilon`: lower by `step`, never below 1. Above 1 it is always
+    /// strictly lower than `epsilon`, by a unit in the last place at least should `step` be lost
+    /// to rounding (a schedule [`check`](Self::check) refuses), so stepping always ends.
     pub fn next(&self, epsilon: f64) -> f64 {
-        (epsilon - self.step).max(1.0)
+        (epsilon - self.step).min(epsilon.next_down()).max(1.0)
     }
 }
 
@@ -94,11 +117,11 @@ pub enum Stop {
     /// The last iteration ran at ε = 1: the path is optimal (for an admissible, consistent
     /// heuristic).
     Optimal,
-    /// The goal cannot be reached.
+    /// The goal cannot be reached: the search proved it (this is the only stop that does).
     Unreachable,
-    /// The time budget ran out.
+    /// The time budget ran out. Without a path, nothing is known about the goal.
     TimeLimit,
-    /// The expansion budget ran out.
+    /// The expansion budget ran out. Without a path, nothing is known about the goal.
     ExpansionLimit,
     /// The caller's callback asked to stop (or, for [`AdStar::improve_once`](crate::AdStar::improve_once),
     /// the one iteration asked for is done).
@@ -122,6 +145,10 @@ pub struct Iteration {
 }
 
 /// What an anytime search returns: the best path found, every iteration, why it stopped.
+///
+/// A result without a path says the goal is unreachable only when it stopped with
+/// [`Stop::Unreachable`]; stopped by a budget or the caller, it proves nothing (see
+/// [`AnytimeResult::proved_unreachable`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct AnytimeResult<N> {
     /// The best path found (from the last completed iteration), `None` if none was found.
@@ -140,6 +167,12 @@ impl<N> AnytimeResult<N> {
         self.path.as_ref().map(|p| p.cost)
     }
 
+    /// Whether the search proved that the goal is unreachable: no path, and stopped with
+    /// [`Stop::Unreachable`], not by a limit before it could tell.
+    pub fn proved_unreachable(&self) -> bool {
+        self.path.is_none() && self.stop == Stop::Unreachable
+    }
+
     /// The suboptimality bound proven for that path (`None` without a path).
     pub fn bound(&self) -> Option<f64> {
         self.path.as_ref()?;
@@ -152,6 +185,10 @@ impl<N> AnytimeResult<N> {
 /// reusing what earlier iterations expanded, until ε = 1 (optimal) or the budget runs out. With
 /// a consistent heuristic every path found costs at most ε times the optimum; each iteration
 /// reports its proven bound.
+///
+/// Errors when the schedule is invalid ([`EpsilonSchedule::check`]), and, as A* does, with
+/// [`SearchError::CostOverflow`] when the goal is unreached but a path whose cost exceeds the
+/// largest `f64` was met.
 ///
 /// ```
 /// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
@@ -223,18 +260,25 @@ impl<I> Search<I> {
         let mut iterations = Vec::new();
         let mut incons: Vec<u32> = Vec::new();
         let mut best: Option<Path<G::Node>> = None;
+        // The first node whose cost overflowed (a finite `g` plus a finite edge cost gave +inf):
+        // left unreached, which is exact when the goal is reached (its path costs less) and an
+        // error otherwise. A priority `g + ε h` that overflows is just `+inf`: such nodes come
+        // after all others, and are expanded while the goal is unreached.
+        let mut overflow = None;
         let h_start = h(start)?;
-        self.heap.push(s, FKey::new(epsilon * h_start, 0.0));
-        stats.pushes += 1;
+        if h_start.is_finite() {
+            self.heap.push(s, FKey::new(epsilon * h_start, 0.0));
+            stats.pushes += 1;
+        }
         let stop = loop {
             let before = stats.expansions;
             let (open, closed) = (self.open_stamp(), self.closed_stamp());
             let mut edges = EdgeCheck::new();
             let mut out_of_budget = None;
-            // ImprovePath: expand while some open node's f is below the goal's.
+            // ImprovePath: expand while some open node's f is below the goal's (every open node
+            // while the goal is unreached, those of infinite f included).
             while let Some((u, key)) = self.heap.peek() {
-                let goal_f = if self.nodes.stamp[t] >= first { self.nodes.g[t] } else { f64::INFINITY };
-                if FKey::new(goal_f, goal_f) <= key {
+                if self.nodes.stamp[t] >= first && FKey::new(self.nodes.g[t], self.nodes.g[t]) <= key {
                     break;
                 }
                 // The expansion count is checked every time, the clock every 256 expansions.
@@ -258,6 +302,10 @@ impl<I> Search<I> {
                     let gv = gu + cost;
                     let st = nodes.stamp[v];
                     if st >= first && gv >= nodes.g[v] {
+                        return;
+                    }
+                    if gv == f64::INFINITY {
+                        overflow.get_or_insert(next);
                         return;
                     }
                     let hv = match h(next) {
@@ -320,6 +368,9 @@ impl<I> Search<I> {
             };
             iterations.push(iteration);
             if cost.is_none() {
+                if let Some(node) = overflow {
+                    return Err(SearchError::CostOverflow { node });
+                }
                 break Stop::Unreachable;
             }
             if epsilon <= 1.0 || bound <= 1.0 {
@@ -343,7 +394,9 @@ impl<I> Search<I> {
                 let hv = h(self.index.node(graph, v))?;
                 let gv = self.nodes.g[v];
                 self.nodes.stamp[v] = open;
-                self.heap.push(v, FKey::new(gv + epsilon * hv, gv));
+                if hv.is_finite() {
+                    self.heap.push(v, FKey::new(gv + epsilon * hv, gv));
+                }
             }
         };
         if let Some(last) = iterations.last()

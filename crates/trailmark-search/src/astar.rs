@@ -15,12 +15,29 @@ use crate::error::SearchError;
 use crate::index::{Dense, NodeIndex};
 use crate::search::{EdgeCheck, FKey, Search, SearchResult, ensure};
 
+/// The largest heuristic weight [`weighted_astar`] accepts, 1e6 (also the largest initial
+/// inflation of the anytime planners, [`MAX_EPSILON`](crate::MAX_EPSILON)).
+///
+/// At a weight of 1e6 the heuristic already outweighs path cost a million to one: the search
+/// orders nodes as greedy best-first search does (by `h` alone) except between nodes whose `h`
+/// differ by less than a millionth of their `g` difference, and the proven bound, a million
+/// times the least cost, says nothing any more. A larger weight changes nothing a user could
+/// want, and brings `w h` toward the largest `f64` (beyond it, `w h` would be `+inf`, which
+/// means a dead end): refusing it keeps a typo such as 1e308 from silently making every node
+/// look unreachable.
+pub const MAX_WEIGHT: f64 = 1e6;
+
 /// A* from `start` to `goal`: a least-cost path when `heuristic` is admissible (never more than
 /// the least cost to the goal). A node whose heuristic is `+inf` is treated as a dead end.
 ///
 /// Closed nodes are reopened when a cheaper path to them appears, so an admissible but
 /// inconsistent heuristic still gives a least-cost path; with a consistent heuristic (such as
 /// [`GridGraph::heuristic`](https://docs.rs/trailmark-graph)) nothing is ever reopened.
+///
+/// Costs beyond the largest `f64`: a path found is exact (it costs less than any path whose cost
+/// overflowed); when none is found but the search met a path whose cost overflowed, the answer
+/// is [`SearchError::CostOverflow`], not "no path". The same holds for [`weighted_astar`] and
+/// [`dijkstra`].
 ///
 /// ```
 /// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
@@ -48,7 +65,8 @@ where
     Search::new().astar(graph, start, goal, heuristic)
 }
 
-/// Weighted A*: A* with the heuristic multiplied by `weight >= 1`. It expands fewer nodes than
+/// Weighted A*: A* with the heuristic multiplied by `weight`, from 1 to [`MAX_WEIGHT`] (other
+/// weights are a [`SearchError::InvalidWeight`]). It expands fewer nodes than
 /// A*, and with a consistent heuristic its path costs at most `weight` times the least cost.
 /// Closed nodes are not reopened (that is what keeps it fast; the bound holds without).
 ///
@@ -137,7 +155,7 @@ impl<I> Search<I> {
         I: NodeIndex<G>,
         H: FnMut(G::Node) -> Cost,
     {
-        if !(weight.is_finite() && weight >= 1.0) {
+        if !(1.0..=MAX_WEIGHT).contains(&weight) {
             return Err(SearchError::InvalidWeight(weight));
         }
         self.best_first(graph, start, Some(goal), heuristic, weight, false)
@@ -159,7 +177,8 @@ impl<I> Search<I> {
 
     /// Dijkstra's algorithm from `start` to every reachable node. Afterwards
     /// [`Search::cost_to`] and [`Search::path_to_node`] give the least cost and a least-cost path
-    /// to any node. The result has no path.
+    /// to any node. The result has no path. Errors with [`SearchError::CostOverflow`] when the
+    /// cost of some reachable node exceeds the largest `f64`.
     ///
     /// ```
     /// use trailmark_core::{Cell, Connectivity, Grid};
@@ -204,9 +223,14 @@ impl<I> Search<I> {
         let goal_slot = if goal.is_some() { t } else { usize::MAX };
         let mut stats = crate::stats::SearchStats::default();
         let mut bad_h = None;
-        match estimate(&mut heuristic, start, weight, &mut bad_h) {
+        // The first node whose cost from the start overflowed (a finite `g` plus a finite edge
+        // cost gave +inf): it is left unreached, which is exact when a path is found (the path
+        // costs less than any overflowing one) and an error otherwise. A priority `g + w h` that
+        // overflows is simply `+inf`: such nodes come last, after every finite priority.
+        let mut overflow = None;
+        match estimate(&mut heuristic, start, &mut bad_h) {
             Some(h) if h.is_finite() => {
-                self.heap.push(s, FKey::new(h, 0.0));
+                self.heap.push(s, FKey::new(weight * h, 0.0));
                 stats.pushes += 1;
             }
             _ => {}
@@ -252,9 +276,14 @@ impl<I> Search<I> {
                 if seen && (gv >= nodes.g[v] || (st == closed && !reopen)) {
                     return;
                 }
-                let Some(h) = estimate(&mut heuristic, next, weight, &mut bad_h) else { return };
+                if gv == f64::INFINITY {
+                    overflow.get_or_insert(next);
+                    return;
+                }
+                let Some(h) = estimate(&mut heuristic, next, &mut bad_h) else { return };
                 nodes.reach(v, gv, u, open);
-                if !h.is_finite() {
+                if h == f64::INFINITY {
+                    // A dead end (an overflowing `w h`, with `h` finite, is not one).
                     return;
                 }
                 match (seen, st == closed) {
@@ -262,7 +291,7 @@ impl<I> Search<I> {
                     (true, true) => stats.reopenings += 1,
                     (true, false) => stats.decreases += 1,
                 }
-                let key = FKey::new(gv + h, gv);
+                let key = FKey::new(gv + weight * h, gv);
                 match held {
                     // The held node again (a parallel edge): keep the better key.
                     Some((_, w)) if w == v => held = Some((key, v)),
@@ -289,26 +318,26 @@ impl<I> Search<I> {
         if let Some((node, value)) = bad_h {
             return Err(SearchError::InvalidHeuristic { node, value });
         }
+        // Without a path (or, for `dijkstra_all`, with nodes left unreached), an overflow means
+        // a reachable node would be reported unreachable.
+        if let (None, Some(node)) = (found, overflow) {
+            return Err(SearchError::CostOverflow { node });
+        }
         Ok(self.finish(graph, &query, found, stats))
     }
 }
 
-/// The weighted heuristic of `node`, or `None` (remembering the first culprit) when the
-/// heuristic returned a negative or NaN value.
+/// The heuristic of `node`, or `None` (remembering the first culprit) when the heuristic
+/// returned a negative or NaN value.
 #[inline]
-fn estimate<N, H: FnMut(N) -> Cost>(
-    heuristic: &mut H,
-    node: N,
-    weight: f64,
-    bad: &mut Option<(N, Cost)>,
-) -> Option<Cost>
+fn estimate<N, H: FnMut(N) -> Cost>(heuristic: &mut H, node: N, bad: &mut Option<(N, Cost)>) -> Option<Cost>
 where
     N: Copy,
 {
     let h = heuristic(node);
     // Non-negative numbers and +inf (see `EdgeCheck::accept`); `-0.0` counts as 0.
     if h.to_bits() <= f64::INFINITY.to_bits() || h == 0.0 {
-        Some(weight * h)
+        Some(h)
     } else {
         if bad.is_none() {
             *bad = Some((node, h));

@@ -8,7 +8,8 @@ use crate::search::{EdgeCheck, Search, SearchResult, ensure};
 use crate::stats::SearchStats;
 
 /// Breadth-first search from `start` to `goal`: a path with the fewest edges. Its reported cost
-/// is the sum of the edge costs along it, which need not be the least cost.
+/// is the sum of the edge costs along it, which need not be the least cost; when that sum exceeds
+/// the largest `f64`, the answer is [`SearchError::CostOverflow`](crate::SearchError::CostOverflow).
 ///
 /// ```
 /// use trailmark_core::{Cell, Connectivity, Grid};
@@ -70,6 +71,7 @@ impl<I> Search<I> {
             });
             edges.check(|| self.index.node(graph, u))?;
         }
+        self.check_path_cost(graph, found)?;
         Ok(self.finish(graph, &query, found, stats))
     }
 }

@@ -8,7 +8,8 @@ use crate::search::{EdgeCheck, Search, SearchResult, ensure};
 use crate::stats::SearchStats;
 
 /// Depth-first search from `start` to `goal`: a path if one exists, usually far from the
-/// shortest. Uses an explicit stack, so deep graphs cannot overflow the call stack.
+/// shortest. Uses an explicit stack, so deep graphs cannot overflow the call stack. A path whose
+/// cost exceeds the largest `f64` is a [`SearchError::CostOverflow`](crate::SearchError::CostOverflow).
 ///
 /// ```
 /// use trailmark_core::{Cell, Connectivity, Grid};
@@ -75,6 +76,7 @@ impl<I> Search<I> {
             });
             edges.check(|| self.index.node(graph, u))?;
         }
+        self.check_path_cost(graph, found)?;
         Ok(self.finish(graph, &query, found, stats))
     }
 }

@@ -42,22 +42,44 @@ pub enum SearchError<N: Debug> {
         /// The value returned.
         value: f64,
     },
-    /// A weighted search was given a weight that is not a finite number of at least 1.
-    #[error("weight {0} is invalid: the heuristic weight must be a finite number >= 1")]
+    /// A weighted search was given a weight that is not a number from 1 to
+    /// [`MAX_WEIGHT`](crate::MAX_WEIGHT).
+    #[error("weight {0} is invalid: the heuristic weight must be a number from 1 to {max}", max = crate::MAX_WEIGHT)]
     InvalidWeight(f64),
     /// A change notification named a node the graph does not have and cannot have (a cell
     /// outside the grid); nothing of the notification was applied.
     #[error("{0:?} names no node of the graph")]
     UnknownNode(N),
-    /// An epsilon schedule that is not finite numbers with `initial >= 1` and `step > 0`.
+    /// An epsilon schedule that is not `1 <= initial <= MAX_EPSILON` and a finite `step > 0`
+    /// that reaches 1 in at most [`MAX_ITERATIONS`](crate::MAX_ITERATIONS) steps, each of which
+    /// lowers the inflation (a step lost to rounding, as 1 is beside 1e20, never arrives).
     #[error(
-        "epsilon schedule invalid: initial {initial}, step {step}; need a finite initial >= 1 and a finite step > 0"
+        "epsilon schedule invalid: initial {initial}, step {step}; need 1 <= initial <= {max}, and a finite step > 0 that lowers it to 1 in at most {iterations} iterations",
+        max = crate::MAX_EPSILON,
+        iterations = crate::MAX_ITERATIONS
     )]
     InvalidEpsilon {
         /// The initial inflation.
         initial: f64,
         /// The decrement per iteration.
         step: f64,
+    },
+    /// The goal is reachable, but only at a cost (or a priority `g + w h` on the way) beyond the
+    /// largest `f64` (about 1.8e308): finite costs whose sum is infinite. Reported instead of
+    /// "no path", which would be false; `+inf` edge costs (no edge) and heuristic values (dead
+    /// end) keep their meaning and never cause it.
+    ///
+    /// The one-shot searches report it only when they found no path (a path found beside an
+    /// overflowing one is still the answer, at its exact cost); breadth- and depth-first search
+    /// when the path they found costs more than an `f64` holds; the incremental planners
+    /// (LPA*, D* Lite, AD*) at every computation after any of their values overflowed, until
+    /// `reset`, since values beyond it are no longer exact.
+    #[error(
+        "the cost of reaching {node:?} (a path cost plus an edge cost, or the priority g + w h) exceeds the largest f64 (about 1.8e308)"
+    )]
+    CostOverflow {
+        /// The first node whose cost or priority overflowed.
+        node: N,
     },
     /// The graph has more nodes than a search can number.
     #[error("the graph has {0} node indices; a search supports at most {max}", max = crate::search::MAX_NODES)]

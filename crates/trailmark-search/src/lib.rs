@@ -9,7 +9,8 @@
 //! reusable [`Search`] workspace, which keeps its per-node state in dense vectors across queries.
 //! Every search returns the path (or `None` when the goal is unreachable), its cost and
 //! [`SearchStats`]; a query that cannot be answered (start outside the graph, a negative edge
-//! cost) is a [`SearchError`], never a panic.
+//! cost, a weight above [`MAX_WEIGHT`], a path whose cost exceeds the largest `f64`) is a
+//! [`SearchError`], never a panic, a hang or a false "no path".
 //!
 //! ```
 //! use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
@@ -77,8 +78,10 @@ pub mod search;
 pub mod stats;
 
 pub use ad_star::{AdStar, DEFAULT_RAISE_THRESHOLD};
-pub use ara_star::{AnytimeResult, Budget, EpsilonSchedule, Iteration, MAX_ITERATIONS, Stop, ara_star};
-pub use astar::{astar, dijkstra, weighted_astar};
+pub use ara_star::{
+    AnytimeResult, Budget, EpsilonSchedule, Iteration, MAX_EPSILON, MAX_ITERATIONS, Stop, ara_star,
+};
+pub use astar::{MAX_WEIGHT, astar, dijkstra, weighted_astar};
 pub use bfs::bfs;
 pub use dfs::dfs;
 pub use dstar_lite::DStarLite;

@@ -104,8 +104,9 @@ impl QKey {
 /// follow; overconsistent near-ties cannot lower the target's value and may wait.
 #[inline]
 fn below(primary: Cost, target: Cost) -> bool {
-    let tolerance = if target.is_finite() { 1e-9 * target.max(1.0) } else { 0.0 };
-    primary <= target + tolerance
+    // Written as a difference so that a target near the largest `f64` cannot overflow to a
+    // tolerance that admits every key.
+    primary <= target || (target.is_finite() && primary - target <= 1e-9 * target.max(1.0))
 }
 
 /// What an expansion did to a node's `g`.
@@ -155,6 +156,10 @@ pub(crate) struct Lifelong<N: Debug> {
     pub totals: SearchStats,
     /// The first invalid edge cost met since the last report.
     fault: Option<SearchError<N>>,
+    /// The first node whose value (`rhs`) or key overflowed since the search began or was
+    /// reset: finite costs whose sum is infinite. Saturated values are no longer exact, so every
+    /// computation reports it until [`Lifelong::reset`].
+    overflow: Option<N>,
     /// The heuristic inflation of overconsistent keys (AD*); 1 for LPA* and D* Lite.
     epsilon: f64,
     /// Every queued key was computed with the current heuristic (and `k_m`, and inflation), so
@@ -283,6 +288,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             stats: SearchStats::default(),
             totals: SearchStats::default(),
             fault: None,
+            overflow: None,
             epsilon: 1.0,
             keys_current: true,
             anytime: false,
@@ -326,14 +332,25 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         self.under.clear();
         self.incons.clear();
         // Closed marks are iteration numbers: the next one makes them all stale.
-        self.iteration += 1;
+        self.advance_iteration();
         self.keys_current = true;
         self.stats = SearchStats::default();
         self.fault = None;
+        self.overflow = None;
         self.fit(graph)?;
         self.source = graph.index_of(source);
         self.v.set_rhs(self.source, 0.0);
         Ok(())
+    }
+
+    /// Moves to the next iteration number, which makes every closed mark stale. After 2^32 - 1
+    /// iterations (resets included) the marks are cleared and the numbers start again.
+    fn advance_iteration(&mut self) {
+        if self.iteration == u32::MAX {
+            self.closed.fill(0);
+            self.iteration = 0;
+        }
+        self.iteration += 1;
     }
 
     /// Turns on the anytime behaviour of AD* (closed lists per iteration, inflated keys).
@@ -363,7 +380,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        self.iteration += 1;
+        self.advance_iteration();
         let mut slots: Vec<usize> = self.queue.iter().map(|(s, _)| s).collect();
         slots.extend(self.incons.drain(..).map(|s| s as usize));
         self.queue.clear();
@@ -375,6 +392,31 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             }
         }
         self.keys_current = true;
+    }
+
+    /// Recomputes the key of every queued node with `h` (after the key modifier was reset).
+    pub fn rekey<G>(&mut self, graph: &G, h: &mut impl FnMut(N) -> Cost)
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        let slots: Vec<usize> = self.queue.iter().map(|(s, _)| s).collect();
+        for s in slots {
+            let key = self.qkey(graph, s, h);
+            self.enqueue(s, key);
+        }
+        self.keys_current = true;
+    }
+
+    /// The first node whose value or key overflowed since the search began or was reset.
+    pub fn overflow(&self) -> Option<N> {
+        self.overflow
+    }
+
+    /// Remembers that the value or key of `node` overflowed (the first such node only).
+    #[cold]
+    #[inline(never)]
+    fn overflowed(&mut self, node: N) {
+        self.overflow.get_or_insert(node);
     }
 
     /// The slot of a node named by the user, or an error if it names nothing.
@@ -427,7 +469,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
 
     /// The queue's key of `slot`.
     #[inline]
-    fn qkey<G>(&self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost) -> QKey
+    fn qkey<G>(&mut self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost) -> QKey
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
@@ -436,8 +478,9 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
 
     /// The queue's key of `slot`, which is `node`.
     #[inline]
-    fn qkey_at(&self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> QKey {
-        QKey::new(self.key_at(slot, node, h), self.v.g(slot) > self.v.rhs(slot))
+    fn qkey_at(&mut self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> QKey {
+        let key = self.key_at(slot, node, h);
+        QKey::new(key, self.v.g(slot) > self.v.rhs(slot))
     }
 
     /// Queues `slot` with `key`, or changes its key (and keeps `under` in step).
@@ -464,8 +507,10 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     }
 
     /// The key of `slot`, which is `node`, with `h` the heuristic part (and `k_m`) of the node.
+    /// A primary part that overflows (finite `min(g, rhs)` and `h`, infinite sum) is `+inf`,
+    /// which would make the node a dead end: it is remembered (see [`Lifelong::overflow`]).
     #[inline]
-    fn key_at(&self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> Key {
+    fn key_at(&mut self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> Key {
         // `[min(g, rhs) + h; min(g, rhs)]`, with AD*'s inflation of overconsistent nodes
         // (`[rhs + epsilon h; rhs]`), which is the same key when epsilon is 1.
         let (g, rhs) = (self.v.g(slot), self.v.rhs(slot));
@@ -474,7 +519,11 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             return Key::new(m, m);
         }
         let h = h(node);
-        if g > rhs { Key::new(rhs + self.epsilon * h, rhs) } else { Key::new(g + h, g) }
+        let key = if g > rhs { Key::new(rhs + self.epsilon * h, rhs) } else { Key::new(g + h, g) };
+        if key.primary == f64::INFINITY && h < f64::INFINITY {
+            self.overflowed(node);
+        }
+        key
     }
 
     /// Queues `slot` with its current key when it is inconsistent, takes it out otherwise.
@@ -559,13 +608,24 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         }
     }
 
-    /// `rhs` of `slot` computed afresh from its neighbours' `g`.
+    /// `rhs` of `slot` computed afresh from its neighbours' `g`. When it is infinite only because
+    /// a finite `g` plus a finite edge cost overflowed, that is remembered (see
+    /// [`Lifelong::overflow`]); an overflowing sum beside a finite one is simply not the least.
     fn rhs_from_scratch<G>(&mut self, graph: &G, slot: usize) -> Cost
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         let mut best = f64::INFINITY;
-        self.each_support(graph, slot, |this, s, _, c| best = best.min(c + this.v.g(s)));
+        let mut overflow = false;
+        self.each_support(graph, slot, |this, s, _, c| {
+            let g = this.v.g(s);
+            let via = c + g;
+            overflow |= via == f64::INFINITY && g < f64::INFINITY && c < f64::INFINITY;
+            best = best.min(via);
+        });
+        if overflow && best == f64::INFINITY {
+            self.overflowed(graph.node_at(slot));
+        }
         best
     }
 
@@ -603,16 +663,22 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         }
     }
 
-    /// The response to the change of one edge whose old cost was `old`: the edge joins
-    /// `dependent` (whose `rhs` it enters) and `support` (whose `g` it carries). Only the
-    /// dependent's `rhs` can change; it is recomputed from scratch only when the edge was its
-    /// best and got dearer.
+    /// The response to the change of one edge, whose cost is now `new` (as the graph says): the
+    /// edge joins `dependent` (whose `rhs` it enters) and `support` (whose `g` it carries). Only
+    /// the dependent's `rhs` can change.
+    ///
+    /// The edge's old cost is not used, so a caller who gives a wrong one cannot mislead the
+    /// repair (the papers' test "was the old edge the best?" trusts it): when the edge now offers
+    /// less than the dependent's `rhs`, that is the new `rhs`; when it offers the same, nothing
+    /// changes; when it offers more, it may have been the best before and got dearer, and `rhs`
+    /// is recomputed from all of the dependent's edges. With a right old cost this does what
+    /// the papers' version does (the same values, the same queue), at the price of a
+    /// recomputation for an edge that got dearer without being the best.
     pub fn edge_changed<G>(
         &mut self,
         graph: &G,
         dependent: usize,
         support: usize,
-        old: Cost,
         new: Cost,
         h: &mut impl FnMut(N) -> Cost,
     ) where
@@ -621,13 +687,21 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         if dependent == self.source || dependent == support {
             return;
         }
-        let (through, before) = (self.v.g(support), self.v.rhs(dependent));
-        let rhs = if old > new {
-            before.min(new + through)
-        } else if before == old + through {
-            self.rhs_from_scratch(graph, dependent)
+        let through = self.v.g(support);
+        if through == f64::INFINITY {
+            // The edge carries nothing, before or after, whatever its cost.
+            return;
+        }
+        let (via, before) = (new + through, self.v.rhs(dependent));
+        let rhs = if via < before {
+            via
+        } else if via == before {
+            if via == f64::INFINITY && new < f64::INFINITY {
+                self.overflowed(graph.node_at(dependent));
+            }
+            return;
         } else {
-            before
+            self.rhs_from_scratch(graph, dependent)
         };
         self.set_rhs(graph, dependent, rhs, h);
     }
@@ -713,8 +787,16 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
                     // The paper updates every dependent; `set_rhs` skips those whose `rhs` did
                     // not change.
                     self.each_dependent(graph, u, |this, s, node, c| {
-                        if s != this.source && c + gu < this.v.rhs(s) {
-                            this.set_rhs_at(s, node, c + gu, h);
+                        let via = c + gu;
+                        if s != this.source && via < this.v.rhs(s) {
+                            this.set_rhs_at(s, node, via, h);
+                        } else if via == f64::INFINITY
+                            && c < f64::INFINITY
+                            && s != this.source
+                            && this.v.rhs(s) == f64::INFINITY
+                        {
+                            // Reachable, at a cost beyond the largest `f64`.
+                            this.overflowed(node);
                         }
                     });
                 }
@@ -862,6 +944,9 @@ pub(crate) struct Planner<N: Debug, H> {
     pub k_m: Cost,
     /// The first invalid heuristic value met since the last report.
     bad_h: Option<(N, Cost)>,
+    /// The first node whose heuristic part `h(start, s) + k_m` overflowed since the planner was
+    /// made or reset (see [`Lifelong::overflow`]).
+    h_overflow: Option<N>,
 }
 
 impl<N, H> Planner<N, H>
@@ -898,10 +983,11 @@ where
             last: start,
             k_m: 0.0,
             bad_h: None,
+            h_overflow: None,
         };
         let source = planner.search.source;
         {
-            let (search, mut h) = planner.keyed();
+            let (search, mut h) = planner.keyed(graph);
             search.update_vertex(graph, source, &mut h);
         }
         planner.search.close_call(std::time::Duration::ZERO);
@@ -920,9 +1006,10 @@ where
         (self.start_slot, self.goal_slot) = (graph.index_of(start), graph.index_of(goal));
         self.k_m = 0.0;
         self.bad_h = None;
+        self.h_overflow = None;
         let source = self.search.source;
         {
-            let (search, mut h) = self.keyed();
+            let (search, mut h) = self.keyed(graph);
             search.update_vertex(graph, source, &mut h);
         }
         self.search.close_call(std::time::Duration::ZERO);
@@ -940,8 +1027,15 @@ where
     /// The search, with the heuristic part of keys: `h(s, goal)` forward, `h(start, s) + k_m`
     /// backward (bringing `k_m` up to date first if the robot moved). Invalid heuristic values
     /// count as 0 and are remembered.
-    fn keyed(&mut self) -> (&mut Lifelong<N>, impl FnMut(N) -> Cost + '_) {
-        let Planner { search, heuristic, start, goal, last, k_m, bad_h, .. } = self;
+    ///
+    /// Should `k_m` overflow (or a hostile heuristic make it infinite), it starts again from 0
+    /// and every queued key is recomputed from the current start, which is what `k_m` exists to
+    /// avoid, and exact.
+    fn keyed<G>(&mut self, graph: &G) -> (&mut Lifelong<N>, impl FnMut(N) -> Cost + '_)
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        let Planner { search, heuristic, start, goal, last, k_m, bad_h, h_overflow, .. } = self;
         let backward = search.dir == Direction::Backward;
         let mut estimate = move |a: N, b: N| {
             let v = heuristic(a, b);
@@ -952,12 +1046,33 @@ where
                 0.0
             }
         };
+        let mut rekey = false;
         if backward && !search.anytime && *last != *start {
-            *k_m += estimate(*last, *start);
+            let moved = *k_m + estimate(*last, *start);
+            if moved.is_finite() {
+                *k_m = moved;
+            } else {
+                *k_m = 0.0;
+                rekey = true;
+            }
             *last = *start;
         }
         let (start, goal, k_m) = (*start, *goal, *k_m);
-        let h = move |s: N| if backward { estimate(start, s) + k_m } else { estimate(s, goal) };
+        let mut h = move |s: N| {
+            if backward {
+                let v = estimate(start, s);
+                let sum = v + k_m;
+                if sum == f64::INFINITY && v < f64::INFINITY {
+                    h_overflow.get_or_insert(s);
+                }
+                sum
+            } else {
+                estimate(s, goal)
+            }
+        };
+        if rekey {
+            search.rekey(graph, &mut h);
+        }
         (search, h)
     }
 
@@ -1001,11 +1116,14 @@ where
         self.search.fit(graph)?;
         let target = self.target();
         let complete = {
-            let (search, mut h) = self.keyed();
+            let (search, mut h) = self.keyed(graph);
             search.compute(graph, target, &mut h, &mut trace, interrupt)
         };
         let stats = self.search.close_call(clock.elapsed());
         self.report()?;
+        if let Some(node) = self.search.overflow().or(self.h_overflow) {
+            return Err(SearchError::CostOverflow { node });
+        }
         Ok((complete, stats))
     }
 
@@ -1015,7 +1133,7 @@ where
         G: IndexedGraph<Node = N> + ?Sized,
     {
         self.search.set_epsilon(epsilon);
-        let (search, mut h) = self.keyed();
+        let (search, mut h) = self.keyed(graph);
         search.next_iteration(graph, &mut h);
     }
 
@@ -1057,6 +1175,8 @@ where
             .map(|c| {
                 let slots = (self.search.slot_of(graph, c.from)?, self.search.slot_of(graph, c.to)?);
                 let new = edge_cost(graph, c.from, c.to);
+                // The old cost is checked (one that cannot be a cost says the caller is confused)
+                // but not used: the repair reads the graph (see `Lifelong::edge_changed`).
                 for cost in [c.old_cost, new] {
                     if !valid_cost(cost) {
                         return Err(cost_error(c.from, c.to, cost));
@@ -1067,10 +1187,10 @@ where
             .collect::<Result<Vec<_>, _>>()?;
         let backward = self.search.dir == Direction::Backward;
         {
-            let (search, mut h) = self.keyed();
-            for (change, ((from, to), new)) in changes.iter().zip(slots) {
+            let (search, mut h) = self.keyed(graph);
+            for ((from, to), new) in slots {
                 let (dependent, support) = if backward { (from, to) } else { (to, from) };
-                search.edge_changed(graph, dependent, support, change.old_cost, new, &mut h);
+                search.edge_changed(graph, dependent, support, new, &mut h);
             }
         }
         self.search.close_call(std::time::Duration::ZERO);
@@ -1090,7 +1210,7 @@ where
             nodes.into_iter().map(|n| self.search.slot_of(graph, n)).collect::<Result<Vec<_>, _>>()?;
         let told = slots.len();
         {
-            let (search, mut h) = self.keyed();
+            let (search, mut h) = self.keyed(graph);
             for slot in slots {
                 search.refresh(graph, slot, &mut h);
             }

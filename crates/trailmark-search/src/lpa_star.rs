@@ -83,6 +83,9 @@ where
     /// Errors when the start or the goal is no longer a node (it was blocked), or when an edge
     /// cost or a heuristic value met was negative or NaN; the search then treated that edge as
     /// absent (that value as 0), and it stays usable: fix the graph, tell the planner, call again.
+    /// Errors with [`SearchError::CostOverflow`] once a cost or key overflowed (finite costs
+    /// summing past the largest `f64`), at this and every later call until [`reset`](Self::reset):
+    /// such a value is stored as `+inf`, so "no path" could be false.
     pub fn compute_shortest_path<G>(&mut self, graph: &G) -> Result<SearchStats, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
@@ -105,7 +108,12 @@ where
 
     /// Tells the planner that these edges changed cost (the graph already has the new costs).
     /// All are checked before any is applied: a node that names nothing, or an old cost that is
-    /// negative or NaN, is an error and the planner is left as it was.
+    /// negative, zero or NaN, is an error and the planner is left as it was.
+    ///
+    /// The repair does not rely on [`EdgeChange::old_cost`]: it reads each edge's cost from the
+    /// graph, and when the edge could have been the best way out of its node before, recomputes
+    /// that node's value from all of its edges. A wrong (but valid) old cost therefore costs at
+    /// most a little work, never a wrong path cost.
     pub fn update_edges<G>(&mut self, graph: &G, changes: &[EdgeChange<N>]) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,

@@ -324,6 +324,33 @@ impl<I> Search<I> {
         SearchResult { path, stats }
     }
 
+    /// Errors when the path to `found` costs more than an `f64` holds (for breadth- and
+    /// depth-first search, whose path does not depend on costs), naming the first node along it
+    /// whose cost overflowed.
+    pub(crate) fn check_path_cost<G>(
+        &self,
+        graph: &G,
+        found: Option<usize>,
+    ) -> Result<(), SearchError<G::Node>>
+    where
+        G: Graph + ?Sized,
+        I: NodeIndex<G>,
+    {
+        let Some(mut s) = found.filter(|&t| self.nodes.g[t] == f64::INFINITY) else { return Ok(()) };
+        let mut first = s;
+        loop {
+            if self.nodes.g[s] == f64::INFINITY {
+                first = s;
+            }
+            let p = self.nodes.parent[s] as usize;
+            if p == s {
+                break;
+            }
+            s = p;
+        }
+        Err(SearchError::CostOverflow { node: self.index.node(graph, first) })
+    }
+
     /// The slot of `node`, with state vectors long enough to hold it.
     #[inline]
     pub(crate) fn slot<G>(&mut self, graph: &G, node: G::Node) -> usize

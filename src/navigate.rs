@@ -458,7 +458,7 @@ impl<H: FnMut(Cell, Cell) -> Cost + Copy> Driver<H> {
                     expansions += planner.improve_once(graph)?.stats.expansions;
                 }
                 let (next, cost) = (planner.next_step(graph), planner.cost());
-                Ok(Plan { next, cost, expansions, epsilon: planner.epsilon() })
+                Ok(Plan { next, cost, expansions, epsilon: planner.path_epsilon() })
             }
         }
     }

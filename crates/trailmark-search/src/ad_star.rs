@@ -69,6 +69,11 @@ pub struct AdStar<N: Debug, H> {
     raise_threshold: usize,
     /// Raise ε at the next iteration whatever the changes.
     raise: bool,
+    /// The last completed iteration's path (kept while a later iteration is in progress, whose
+    /// values are not a path yet); `None` after a change or when the goal was unreachable.
+    last_path: Option<Path<N>>,
+    /// The inflation of the last completed iteration.
+    last_epsilon: f64,
 }
 
 impl<N, H> AdStar<N, H>
@@ -102,6 +107,8 @@ where
             dirty: true,
             raise_threshold: DEFAULT_RAISE_THRESHOLD,
             raise: false,
+            last_path: None,
+            last_epsilon: schedule.initial,
         })
     }
 
@@ -120,6 +127,7 @@ where
         self.changes = 0;
         self.dirty = true;
         self.raise = false;
+        self.last_path = None;
         Ok(())
     }
 
@@ -139,6 +147,13 @@ where
     /// The inflation of the current or last iteration.
     pub fn epsilon(&self) -> f64 {
         self.epsilon
+    }
+
+    /// The inflation of the last completed iteration, whose [`path`](Self::path) costs at most
+    /// this times the optimum; it differs from [`epsilon`](Self::epsilon) while a budget holds
+    /// a later iteration in progress.
+    pub fn path_epsilon(&self) -> f64 {
+        self.last_epsilon
     }
 
     /// Runs iterations, lowering ε after each, until ε = 1 (the path is optimal), the goal
@@ -210,6 +225,8 @@ where
             self.changes = 0;
             self.dirty = false;
             let cost = self.planner.cost();
+            self.last_path = cost.and_then(|_| self.planner.path(graph));
+            self.last_epsilon = self.epsilon;
             iterations.push(Iteration {
                 epsilon: self.epsilon,
                 cost,
@@ -235,21 +252,25 @@ where
     }
 
     /// The cost of the last completed iteration's path, if nothing changed since and the goal is
-    /// reachable. It is at most [`epsilon`](Self::epsilon) times the optimum.
+    /// reachable. It is at most [`epsilon`](Self::epsilon) times the optimum (of that
+    /// iteration's inflation, while a later one is in progress).
     pub fn cost(&self) -> Option<Cost> {
-        if self.dirty || self.in_progress {
+        if self.dirty {
             return None;
         }
-        self.planner.cost()
+        if self.in_progress { self.last_path.as_ref().map(|p| p.cost) } else { self.planner.cost() }
     }
 
-    /// The last completed iteration's path from the start to the goal, if nothing changed since.
+    /// The last completed iteration's path from the start to the goal, if nothing changed since
+    /// (also while a budget holds a later iteration in progress).
     pub fn path<G>(&self, graph: &G) -> Option<Path<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.cost()?;
-        self.planner.path(graph)
+        if self.dirty {
+            return None;
+        }
+        if self.in_progress { self.last_path.clone() } else { self.planner.path(graph) }
     }
 
     /// The node the robot should move to next along [`path`](Self::path).
@@ -257,6 +278,12 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
+        if self.dirty {
+            return None;
+        }
+        if self.in_progress {
+            return self.last_path.as_ref().and_then(|p| p.nodes.get(1).copied());
+        }
         self.cost()?;
         self.planner.next_step(graph)
     }
@@ -309,6 +336,7 @@ where
     fn changed(&mut self) {
         self.dirty = true;
         self.in_progress = false;
+        self.last_path = None;
     }
 
     /// The robot's current node.

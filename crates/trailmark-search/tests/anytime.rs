@@ -142,3 +142,35 @@ fn invalid_schedules_are_errors() {
         assert!(matches!(err, SearchError::InvalidEpsilon { .. }), "{initial} {step}: {err:?}");
     }
 }
+
+/// A budget that ends AD* inside its second iteration keeps the first iteration's path: the
+/// result has that path and cost, and the robot's next step follows it (it had no path).
+#[test]
+fn ad_star_cut_off_mid_iteration_keeps_the_last_path() {
+    use trailmark_search::AdStar;
+    let grid = trailmark_core::generate::random(48, 48, 0.2, 3).unwrap();
+    let graph = GridGraph::new(&grid, Connectivity::Eight);
+    let cells: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
+    let (start, goal) = (cells[0], cells[cells.len() - 1]);
+    let h = graph.heuristic_between(GridHeuristic::Octile);
+    let schedule = EpsilonSchedule::new(3.0, 0.5);
+    let mut probe = AdStar::new(&graph, start, goal, h, schedule).unwrap();
+    let all = probe.improve(&graph, Budget::unlimited()).unwrap();
+    // The first iteration after the first that expands at least two nodes: cut it after one.
+    let k = (1..all.iterations.len())
+        .find(|&k| all.iterations[k].expansions >= 2)
+        .expect("a later iteration works");
+    let before: u64 = all.iterations[..k].iter().map(|it| it.expansions).sum();
+    let last_cost = all.iterations[k - 1].cost.expect("reachable");
+    let mut planner = AdStar::new(&graph, start, goal, h, schedule).unwrap();
+    let found = planner.improve(&graph, Budget { time: None, expansions: Some(before + 1) }).unwrap();
+    assert_eq!(found.stop, Stop::ExpansionLimit);
+    assert_eq!(found.iterations.len(), k, "iteration {k} was cut off");
+    let path = found.path.expect("the last completed iteration's path");
+    assert_eq!(path.cost, last_cost);
+    assert_eq!(planner.cost(), Some(last_cost));
+    assert_eq!(planner.next_step(&graph), path.nodes.get(1).copied());
+    assert_eq!(planner.path_epsilon(), all.iterations[k - 1].epsilon);
+    assert!(planner.epsilon() < planner.path_epsilon());
+    assert!(walk_cost(&graph, &path.nodes).is_some_and(|c| (c - last_cost).abs() < 1e-9));
+}

@@ -447,13 +447,22 @@ fn scaled_worlds_give_scaled_answers_or_a_typed_error() {
 /// a world with no free space at all gives up after a few thousand draws.
 #[test]
 fn sampled_roadmaps_have_bounded_sizes() {
-    let too_many = document(0.25, r#""graph": "prm", "samples": 1000000000000, "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}"#);
+    let too_many = document(
+        0.25,
+        r#""graph": "prm", "samples": 1000000000000, "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}"#,
+    );
     let error = solve(&too_many, ".").expect_err("too many samples");
     assert!(matches!(error, SolveError::Prm(trailmark::graph::prm::PrmError::TooManyNodes)), "{error}");
     let clock = std::time::Instant::now();
-    let nowhere = document(20.0, r#""graph": "prm", "samples": 1000000, "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}"#);
+    let nowhere = document(
+        20.0,
+        r#""graph": "prm", "samples": 1000000, "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}"#,
+    );
     let error = solve(&nowhere, ".").expect_err("no free space");
-    assert!(matches!(error, SolveError::Prm(trailmark::graph::prm::PrmError::SamplingExhausted { .. })), "{error}");
+    assert!(
+        matches!(error, SolveError::Prm(trailmark::graph::prm::PrmError::SamplingExhausted { .. })),
+        "{error}"
+    );
     assert!(clock.elapsed().as_secs() < 60, "giving up took {:?}", clock.elapsed());
 }
 

@@ -42,6 +42,9 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+// Integer casts of user-derived values are checked conversions here, not silent truncation.
+#![deny(clippy::cast_possible_truncation)]
+
 use std::collections::VecDeque;
 use std::time::{Duration, Instant};
 
@@ -206,7 +209,7 @@ impl NavigationReport {
 
     /// The mean planning time per plan.
     pub fn mean_plan_time(&self) -> Duration {
-        self.planning_time / (self.plans.max(1) as u32)
+        self.planning_time / u32::try_from(self.plans.max(1)).unwrap_or(u32::MAX)
     }
 
     /// An SVG of the true map, what the robot sensed (shaded), the obstacles it never saw
@@ -544,7 +547,7 @@ fn run(
         Target::Cell(goal) => goal,
         Target::Explore => VIRTUAL_GOAL,
     };
-    let max_steps = config.max_steps.unwrap_or(20 * truth.len());
+    let max_steps = config.max_steps.unwrap_or(truth.len().saturating_mul(20));
     let mut report = NavigationReport {
         planner: planner.name().to_string(),
         outcome: Outcome::StepLimit,

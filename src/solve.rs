@@ -18,6 +18,9 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+// Integer casts of user-derived values are checked conversions here, not silent truncation.
+#![deny(clippy::cast_possible_truncation)]
+
 mod sampling;
 
 pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
@@ -275,12 +278,12 @@ pub fn load_grid(world: &GridWorld, base_dir: impl AsRef<Path>) -> Result<Grid, 
         if costs.len() != h as usize {
             return Err(shape(costs.len(), costs.len()));
         }
-        for (y, row) in costs.iter().enumerate() {
+        for (y, row) in (0..h).zip(costs) {
             if row.len() != w as usize {
-                return Err(shape(y, row.len()));
+                return Err(shape(y as usize, row.len()));
             }
-            for (x, &c) in row.iter().enumerate() {
-                let cell = Cell::new(x as u32, y as u32);
+            for (x, &c) in (0..w).zip(row) {
+                let cell = Cell::new(x, y);
                 if grid.is_passable(cell) {
                     grid.set_cost(cell, c)?;
                 } else if !(c.is_finite() && c > 0.0) {
@@ -305,6 +308,7 @@ fn cell_of(which: &'static str, value: &[f64], grid: &Grid) -> Result<Cell, Solv
     if !whole(*x) || !whole(*y) {
         return Err(SolveError::NotACell { which, value: value.to_vec() });
     }
+    #[allow(clippy::cast_possible_truncation)] // whole numbers within u32, checked above
     let cell = Cell::new(*x as u32, *y as u32);
     if !grid.contains(cell) {
         return Err(SolveError::Outside { which, cell, width: grid.width(), height: grid.height() });
@@ -552,7 +556,7 @@ fn solve_polygons(
                 VisibilityError::StartBlocked { .. } => refused("start", start, e.into()),
                 VisibilityError::GoalBlocked { .. } => refused("goal", goal, e.into()),
             })?;
-            let result = search_roadmap(problem, &query, built, clock.elapsed() - built)?;
+            let result = search_roadmap(problem, &query, built, clock.elapsed().saturating_sub(built))?;
             let svg = WorldSvg::new(world).free_space(graph.space()).edges(graph.edge_ends());
             (result, svg.title("Visibility graph (tangent edges) and the shortest path"))
         }
@@ -564,7 +568,7 @@ fn solve_polygons(
                 TrapezoidError::StartBlocked { .. } => refused("start", start, e.into()),
                 TrapezoidError::GoalBlocked { .. } => refused("goal", goal, e.into()),
             })?;
-            let result = search_roadmap(problem, &query, built, clock.elapsed() - built)?;
+            let result = search_roadmap(problem, &query, built, clock.elapsed().saturating_sub(built))?;
             let cells = (0..graph.cell_count()).map(|c| graph.cell(c).corners().to_vec());
             let svg = WorldSvg::new(world).free_space(&space).cells(cells).edges(graph.edge_ends());
             (result, svg.title("Trapezoidal cells, their centroids and portal midpoints, and a path"))
@@ -572,8 +576,13 @@ fn solve_polygons(
         _ => {
             let prm = grow(problem, Prm::new(world.clone(), prm_options(problem)?)?)?;
             let built = clock.elapsed();
-            let result = search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed() - built)?;
-            let nodes = (0..prm.node_count() as u32).map(|u| prm.position(u));
+            let result = search_roadmap(
+                problem,
+                &prm.query(start, goal)?,
+                built,
+                clock.elapsed().saturating_sub(built),
+            )?;
+            let nodes = (0u32..).take(prm.node_count()).map(|u| prm.position(u));
             let space = world.free_space();
             let svg = WorldSvg::new(world).free_space(&space).edges(prm.edge_ends()).nodes(nodes);
             let title = format!("PRM: {} samples, {} edges, and a path", prm.node_count(), prm.edge_count());
@@ -619,7 +628,8 @@ fn solve_dubins(
     let clock = Instant::now();
     let prm = grow(problem, Prm::with_steering(world.clone(), steering, prm_options(problem)?)?)?;
     let built = clock.elapsed();
-    let result = search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed() - built)?;
+    let result =
+        search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed().saturating_sub(built))?;
     let poses: Vec<Pose> = result
         .path
         .iter()
@@ -637,7 +647,7 @@ fn solve_dubins(
             format!("Dubins roadmap: {} poses, turning radius {radius}, and a path", prm.node_count());
         *picture = WorldSvg::new(world)
             .free_space(&world.free_space())
-            .poses((0..prm.node_count() as u32).map(|u| prm.position(u)))
+            .poses((0u32..).take(prm.node_count()).map(|u| prm.position(u)))
             .path(&curve)
             .start(Point::from(start.translation.vector))
             .goal(Point::from(goal.translation.vector))

@@ -35,7 +35,7 @@ use trailmark_core::curve::CurveError;
 use trailmark_core::dubins::DubinsPath;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
-use trailmark_core::grid::{Cell, Grid, GridError, GridHeuristic};
+use trailmark_core::grid::{Cell, Grid, GridError, GridHeuristic, is_cell_cost};
 use trailmark_core::movingai::{self, ReadError};
 use trailmark_core::problem::{
     GraphKind, GraphStats, GridWorld, IterationRecord, PlannerSpec, Problem, ResultStats, SamplerKind,
@@ -286,7 +286,7 @@ pub fn load_grid(world: &GridWorld, base_dir: impl AsRef<Path>) -> Result<Grid, 
                 let cell = Cell::new(x, y);
                 if grid.is_passable(cell) {
                     grid.set_cost(cell, c)?;
-                } else if !(c.is_finite() && c > 0.0) {
+                } else if !(c.is_finite() && is_cell_cost(c)) {
                     // Blocked cells stay blocked, but their cost must still be a valid number.
                     return Err(GridError::InvalidCost { cell, cost: c }.into());
                 }
@@ -693,7 +693,8 @@ fn dubins_curve(poses: &[Pose], radius: f64) -> Vec<Point> {
     let mut curve = Vec::new();
     for pair in poses.windows(2) {
         let Ok(piece) = DubinsPath::shortest(&pair[0], &pair[1], radius) else { continue };
-        let samples = piece.sample(radius / 8.0).unwrap_or_default();
+        // Every radius / 8, but no more than 10,000 points a piece for a picture.
+        let samples = piece.sample((radius / 8.0).max(piece.length() / 1e4)).unwrap_or_default();
         curve.extend(samples.iter().map(|p| Point::from(p.translation.vector)));
     }
     curve

@@ -70,7 +70,9 @@ pub(super) fn solve_sampling(
                         .collect(),
                 });
                 if let Some(picture) = picture {
-                    let curve = smoothed.sample(world_step(world)).unwrap_or_default();
+                    // At most about 100,000 points for a picture.
+                    let step = world_step(world).max(smoothed.length() / 1e5);
+                    let curve = smoothed.sample(step).unwrap_or_default();
                     let legs = path.windows(2).map(|m| (m[0], m[1]));
                     *picture = sketch(world, planner, &curve, start, goal).edges(legs).to_svg();
                 }

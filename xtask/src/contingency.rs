@@ -12,6 +12,7 @@ use trailmark::contingency::generate::{RiverOptions, river_terrain};
 use trailmark::contingency::simulate::{monte_carlo, naive_expected_cost};
 use trailmark::contingency::svg::plan_svg;
 use trailmark::contingency::{PlannerOptions, Terrain, TerrainSpec, plan};
+use trailmark::core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
 
 /// The arguments of `cargo xtask contingency`.
 #[derive(Debug, ClapArgs)]
@@ -80,7 +81,7 @@ pub fn run(args: &Args) -> ExitCode {
 
 /// Reads a terrain file (see `TerrainSpec`) without building the terrain.
 pub fn read_spec(path: &Path) -> Result<TerrainSpec, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = read_to_string_capped(path, MAX_DOCUMENT_BYTES).map_err(|e| e.to_string())?;
     serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
 }
 

@@ -5,6 +5,7 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use trailmark::core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
 use trailmark::problem::Problem;
 
 /// Prints the result of the problem in `path` (or standard input for `-`); on a bad problem,
@@ -47,11 +48,17 @@ fn solve(path: &Path) -> Result<String, String> {
 fn read(path: &Path) -> Result<(Problem, PathBuf), String> {
     let (text, base) = if path == Path::new("-") {
         let mut text = String::new();
-        std::io::stdin().read_to_string(&mut text).map_err(|e| format!("cannot read standard input: {e}"))?;
+        // At most one byte past the cap, so that an endless input is refused, not read.
+        std::io::stdin()
+            .take(MAX_DOCUMENT_BYTES + 1)
+            .read_to_string(&mut text)
+            .map_err(|e| format!("cannot read standard input: {e}"))?;
+        if text.len() as u64 > MAX_DOCUMENT_BYTES {
+            return Err(format!("standard input is longer than {MAX_DOCUMENT_BYTES} bytes"));
+        }
         (text, std::env::current_dir().map_err(|e| e.to_string())?)
     } else {
-        let text =
-            std::fs::read_to_string(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        let text = read_to_string_capped(path, MAX_DOCUMENT_BYTES).map_err(|e| e.to_string())?;
         (text, path.parent().map(Path::to_path_buf).unwrap_or_default())
     };
     let problem: Problem =

@@ -222,3 +222,49 @@ fn a_full_standard_output_is_an_error_not_a_panic() {
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
     }
 }
+
+/// Files that are not documents: a device that never ends, a FIFO nobody writes to, a folder,
+/// and a map that is some other file. Each is refused promptly with an error document, and no
+/// message quotes the file's content.
+#[test]
+fn files_that_are_not_documents_are_refused_promptly() {
+    let dir = scratch("not-documents");
+    let fifo = dir.join("fifo");
+    let made_fifo = Command::new("mkfifo").arg(&fifo).status().is_ok_and(|s| s.success());
+    std::fs::write(dir.join("secret.map"), "root:x:0:0:secret-content\n").unwrap();
+    let naming = |map: &str| {
+        format!(
+            r#"{{"world": {{"grid": {{"map": "{map}"}}}}, "start": [0, 0], "goal": [1, 0], "planner": {{"name": "astar"}}}}"#
+        )
+    };
+    std::fs::write(dir.join("zero-map.json"), naming("/dev/zero")).unwrap();
+    std::fs::write(dir.join("fifo-map.json"), naming("fifo")).unwrap();
+    std::fs::write(dir.join("secret-map.json"), naming("secret.map")).unwrap();
+    let mut cases = vec![
+        vec!["solve", "/dev/zero"],
+        vec!["solve", "."],
+        vec!["solve", "zero-map.json"],
+        vec!["solve", "secret-map.json"],
+        vec!["contingency", "/dev/zero"],
+        vec!["navigate", "--map", "/dev/zero"],
+        vec!["navigate", "--map", "secret.map"],
+    ];
+    if made_fifo {
+        cases.extend([
+            vec!["solve", "fifo"],
+            vec!["solve", "fifo-map.json"],
+            vec!["navigate", "--map", "fifo"],
+        ]);
+    } else {
+        eprintln!("mkfifo is not available: the FIFO cases are skipped");
+    }
+    for args in cases {
+        let clock = std::time::Instant::now();
+        let out = xtask(&args, &dir);
+        assert!(clock.elapsed().as_secs() < 30, "{args:?} took {:?}", clock.elapsed());
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        let report = json(&out);
+        assert_eq!(report["status"], "error", "{args:?}");
+        assert!(!report["error"].as_str().unwrap().contains("secret-content"), "{args:?}: {report}");
+    }
+}

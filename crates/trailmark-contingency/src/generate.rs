@@ -21,9 +21,14 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
 use trailmark_core::cost::Cost;
-use trailmark_core::grid::{Cell, Connectivity, Grid};
+use trailmark_core::grid::{Cell, Connectivity, Grid, is_cell_cost};
 
-use crate::terrain::{ChokePoint, Terrain, TerrainError};
+use crate::terrain::{ChokePoint, MAX_CHOKE_POINTS, Terrain, TerrainError};
+
+/// The most forest patches a generated terrain may have: 64. Each patch costs time in
+/// proportion to its area, up to a quarter of the grid; more patches than this only cover the
+/// same ground again.
+pub const MAX_FORESTS: u32 = 64;
 
 /// The shape of a generated terrain.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -71,8 +76,12 @@ impl Default for RiverOptions {
     }
 }
 
-/// Generates a terrain from `seed`. Options out of range (no room for the rivers or bridges, a
-/// probability range outside `[0, 1]`) give a [`TerrainError`].
+/// Generates a terrain from `seed`. Options out of range give a [`TerrainError`], checked
+/// before anything is allocated: a size beyond [`Grid::MAX_CELLS`] cells
+/// ([`TerrainError::Grid`]), more choke points (bridges and roads) than [`MAX_CHOKE_POINTS`]
+/// ([`TerrainError::TooManyChokePoints`]), more than [`MAX_FORESTS`] forests, no room for the
+/// rivers or bridges, a probability range outside `[0, 1]`, a cost that is not a valid cell
+/// cost (positive, at most [`trailmark_core::grid::MAX_CELL_COST`]).
 pub fn river_terrain(seed: u64, options: &RiverOptions) -> Result<Terrain, TerrainError> {
     let o = options;
     let bad = |what: &str| Err(TerrainError::Spec(format!("river terrain: {what}")));
@@ -81,18 +90,32 @@ pub fn river_terrain(seed: u64, options: &RiverOptions) -> Result<Terrain, Terra
         return bad("the probability range must lie in [0, 1], low first");
     }
     let (w, h) = (o.width as usize, o.height as usize);
+    let cells = Grid::cell_count(w, h)?;
+    let chokes = u64::from(o.rivers) * u64::from(o.bridges) + u64::from(o.roads.min(o.forests));
+    if chokes > MAX_CHOKE_POINTS as u64 {
+        return Err(TerrainError::TooManyChokePoints {
+            count: usize::try_from(chokes).unwrap_or(usize::MAX),
+        });
+    }
+    if o.forests > MAX_FORESTS {
+        return bad(&format!("more forests than the {MAX_FORESTS} supported"));
+    }
     let spacing = w / (o.rivers as usize + 1);
-    if o.river_width == 0 || spacing < 2 * o.river_width as usize + 6 || h < 8 {
+    if o.river_width == 0 || spacing < (o.river_width as usize).saturating_mul(2).saturating_add(6) || h < 8 {
         return bad("too narrow for the rivers (or a river width of 0, or fewer than 8 rows)");
     }
-    if (o.bridges as usize) * 3 + 4 > h {
+    if u64::from(o.bridges) * 3 + 4 > h as u64 {
         return bad("too few rows for the bridges");
     }
-    if !(o.ford_cost.is_finite() && o.ford_cost > 0.0 && o.forest_cost.is_finite() && o.forest_cost > 0.0) {
-        return bad("ford and forest costs must be positive and finite");
+    if !(is_cell_cost(o.ford_cost)
+        && o.ford_cost.is_finite()
+        && is_cell_cost(o.forest_cost)
+        && o.forest_cost.is_finite())
+    {
+        return bad("ford and forest costs must be positive and at most 1e12");
     }
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut costs = vec![1.0; w * h];
+    let mut costs = vec![1.0; cells];
     let at = |x: usize, y: usize| y * w + x;
     let mut chokes = Vec::new();
     let draw = |rng: &mut ChaCha8Rng| if hi > lo { rng.random_range(lo..hi) } else { lo };
@@ -105,8 +128,11 @@ pub fn river_terrain(seed: u64, options: &RiverOptions) -> Result<Terrain, Terra
             rng.random_range(3.0..(spacing as f64 / 2.0).max(3.5)),
             rng.random_range(3.0..(h as f64 / 4.0).max(3.5)),
         );
-        for y in 0..h {
-            for x in 0..w {
+        // The cells of the ellipse lie in its bounding box (cx, cy are whole numbers).
+        let (x0, x1) = ((cx - rx.ceil()).max(0.0) as usize, ((cx + rx.ceil()) as usize).min(w - 1));
+        let (y0, y1) = ((cy - ry.ceil()).max(0.0) as usize, ((cy + ry.ceil()) as usize).min(h - 1));
+        for y in y0..=y1 {
+            for x in x0..=x1 {
                 let (dx, dy) = ((x as f64 - cx) / rx, (y as f64 - cy) / ry);
                 if dx * dx + dy * dy <= 1.0 {
                     costs[at(x, y)] = o.forest_cost;

@@ -29,6 +29,7 @@ pub const MAX_CHOKE_POINTS: usize = 64;
 
 /// A narrow passable region that may turn out blocked: a bridge, a pass, a road through forest.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ChokePoint {
     /// A name for plans and pictures ("north bridge"); unique within a terrain.
     pub name: String,
@@ -427,6 +428,10 @@ impl TerrainSpec {
 }
 
 /// A grid from rows of terrain characters and a legend (MovingAI characters without one).
+///
+/// The size is checked against [`Grid::MAX_CELLS`] before anything is allocated, memory grows
+/// with the rows given, and every cost must be a valid cell cost (at most
+/// [`trailmark_core::grid::MAX_CELL_COST`]).
 pub fn grid_from_rows<S: AsRef<str>>(
     rows: &[S],
     legend: Option<&BTreeMap<char, Option<Cost>>>,
@@ -435,12 +440,16 @@ pub fn grid_from_rows<S: AsRef<str>>(
         return Ok(Grid::from_rows(rows)?);
     };
     let width = rows.first().map_or(0, |r| r.as_ref().chars().count());
-    let mut costs = Vec::with_capacity(width * rows.len());
+    Grid::cell_count(width, rows.len())?;
+    // Memory grows with the rows actually given (each is checked before its costs are kept): a
+    // long first row and many short ones must not reserve width x rows up front.
+    let mut costs = Vec::new();
     for (y, row) in rows.iter().enumerate() {
         let row = row.as_ref();
         if row.chars().count() != width {
             return Err(GridError::RaggedRow { row: y, expected: width, found: row.chars().count() }.into());
         }
+        costs.reserve(width);
         for (x, ch) in row.chars().enumerate() {
             match legend.get(&ch) {
                 Some(cost) => costs.push(cost.unwrap_or(f64::INFINITY)),

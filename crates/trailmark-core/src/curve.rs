@@ -33,7 +33,21 @@ use thiserror::Error;
 
 use crate::geometry::{Point, Vector};
 
-/// Why a curve could not be made.
+/// The most points (or poses) one sampling call returns: 10 million, some 160 MB of points
+/// (320 MB of Dubins poses).
+///
+/// A sample count is a length divided by a step, so a step tiny beside the curve (or a curve
+/// huge beside the step) would otherwise ask for any amount of memory: every sampler in
+/// trailmark ([`Bezier::sample`], [`Smoothed::sample`](crate::smooth::Smoothed::sample),
+/// [`DubinsPath::sample`](crate::dubins::DubinsPath::sample)) checks its count against this
+/// before it allocates, and returns a typed error beyond it.
+pub const MAX_SAMPLES: usize = 10_000_000;
+
+/// The most pieces [`Bezier::length`] subdivides a curve into before it estimates the rest
+/// without subdividing further: 2^20.
+const MAX_LENGTH_PIECES: usize = 1 << 20;
+
+/// Why a curve could not be made or sampled.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum CurveError {
     /// Fewer control points than the curve needs.
@@ -58,6 +72,15 @@ pub enum CurveError {
     /// Degree 0.
     #[error("the degree must be at least 1")]
     ZeroDegree,
+    /// A sampling step that is not positive and finite.
+    #[error("the sampling step must be positive and finite, got {0}")]
+    InvalidStep(f64),
+    /// Sampling with this step would take more than [`MAX_SAMPLES`] points.
+    #[error("sampling every {step:e} takes more than {MAX_SAMPLES} points")]
+    TooManySamples {
+        /// The step asked for.
+        step: f64,
+    },
 }
 
 fn check_finite(points: &[Point]) -> Result<(), CurveError> {
@@ -156,32 +179,66 @@ impl Bezier {
         self.points.windows(2).map(|w| (w[1] - w[0]).norm()).sum()
     }
 
-    /// The arc length, to a relative accuracy of about 1e-10 (subdivision until the control
-    /// polygon and the chord agree).
+    /// The arc length, to a relative accuracy of about 1e-10: the curve is subdivided until
+    /// each piece's control polygon and chord agree to that accuracy, or to the rounding of the
+    /// piece's coordinates (a small curve far from the origin cannot do better), and each piece
+    /// counts the mean of the two. The work is bounded: at most 40 halvings deep and
+    /// 2^20 pieces in all, beyond which the remaining pieces are estimated as they are.
     pub fn length(&self) -> f64 {
-        fn go(b: &Bezier, depth: u32) -> f64 {
+        let mut total = 0.0;
+        let mut pieces = 0;
+        let mut stack = vec![(self.clone(), 0u32)];
+        while let Some((b, depth)) = stack.pop() {
             let polygon = b.polygon_length();
             let chord = (b.end() - b.start()).norm();
-            if polygon - chord <= 1e-10 * polygon.max(f64::MIN_POSITIVE) || depth == 40 {
-                return 0.5 * (polygon + chord);
+            // Each control point's coordinates are rounded by up to an ulp of the largest
+            // coordinate, each leg by twice that: below this the difference is noise.
+            let magnitude = b.points.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+            let noise = 4.0 * b.points.len() as f64 * f64::EPSILON * magnitude;
+            let tolerance = (1e-10 * polygon).max(noise).max(f64::MIN_POSITIVE);
+            pieces += 1;
+            // A NaN difference (from an overflowing leg) stops too.
+            let difference = polygon - chord;
+            if difference.is_nan()
+                || difference <= tolerance
+                || depth == 40
+                || pieces + stack.len() >= MAX_LENGTH_PIECES
+            {
+                total += 0.5 * (polygon + chord);
+                continue;
             }
             let (l, r) = b.split(0.5);
-            go(&l, depth + 1) + go(&r, depth + 1)
+            // Right first, so the left piece is measured first.
+            stack.push((r, depth + 1));
+            stack.push((l, depth + 1));
         }
-        go(self, 0)
+        total
     }
 
-    /// Points along the curve, both ends included, consecutive points at most `step` apart
-    /// (the parameter is spaced by the bound n · max leg on the speed). `None` unless `step`
-    /// is positive and finite.
-    pub fn sample(&self, step: f64) -> Option<Vec<Point>> {
+    /// How many intervals [`Bezier::sample`] divides the parameter into for `step`.
+    pub(crate) fn sample_intervals(&self, step: f64) -> Result<usize, CurveError> {
         if !(step.is_finite() && step > 0.0) {
-            return None;
+            return Err(CurveError::InvalidStep(step));
         }
         let n = self.degree() as f64;
         let leg = self.points.windows(2).map(|w| (w[1] - w[0]).norm()).fold(0.0, f64::max);
-        let count = ((n * leg / step).ceil() as usize).max(1);
-        Some((0..=count).map(|i| self.point(i as f64 / count as f64)).collect())
+        let count = (n * leg / step).ceil().max(1.0);
+        // NaN (an overflowing leg) fails too; count + 1 points <= MAX_SAMPLES.
+        if count.is_nan() || count >= MAX_SAMPLES as f64 {
+            return Err(CurveError::TooManySamples { step });
+        }
+        Ok(count as usize)
+    }
+
+    /// Points along the curve, both ends included, consecutive points at most `step` apart
+    /// (the parameter is spaced by the bound n · max leg on the speed).
+    ///
+    /// Errors with [`CurveError::InvalidStep`] unless `step` is positive and finite, and with
+    /// [`CurveError::TooManySamples`] when that would be more than [`MAX_SAMPLES`] points
+    /// (checked before anything is allocated).
+    pub fn sample(&self, step: f64) -> Result<Vec<Point>, CurveError> {
+        let count = self.sample_intervals(step)?;
+        Ok((0..=count).map(|i| self.point(i as f64 / count as f64)).collect())
     }
 }
 
@@ -239,7 +296,7 @@ impl BSpline {
             return Err(CurveError::ZeroDegree);
         }
         if control.len() <= degree {
-            let (needed, got) = (degree + 1, control.len());
+            let (needed, got) = (degree.saturating_add(1), control.len());
             return Err(CurveError::TooFewPoints { degree, needed, got });
         }
         check_finite(&control)?;
@@ -262,6 +319,13 @@ impl BSpline {
     /// m - p (p + 1 times), so it starts at the first control point and ends at the last.
     pub fn clamped_uniform(degree: usize, control: Vec<Point>) -> Result<Self, CurveError> {
         let m = control.len();
+        // Checked before `m + degree + 1` is computed: a huge degree must not overflow it.
+        if degree == 0 {
+            return Err(CurveError::ZeroDegree);
+        }
+        if m <= degree {
+            return Err(CurveError::TooFewPoints { degree, needed: degree.saturating_add(1), got: m });
+        }
         let spans = m.saturating_sub(degree).max(1);
         let knots = (0..m + degree + 1).map(|i| i.saturating_sub(degree).min(spans) as f64).collect();
         BSpline::new(degree, control, knots)

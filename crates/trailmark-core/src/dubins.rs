@@ -13,6 +13,19 @@
 //! ([`DubinsPath::subpath`]), and taken apart into exact arcs and segments
 //! ([`DubinsPath::pieces`]) for collision checks.
 //!
+//! # Supported range
+//!
+//! Coordinates and the turning radius are at most [`MAX_MAGNITUDE`] (1e300) in magnitude, so
+//! every length, centre and position a path computes is a finite `f64`; and the poses are at
+//! most [`MAX_NORMALISED_DISTANCE`] (1e12) turning radii apart. The pieces are computed in units
+//! of the turning radius, to within a few units in the last place of that distance: at 1e12
+//! radii that is about a ten-thousandth of a radius, beyond it (a radius of 1e-200 between
+//! poses a unit apart) the turns could not be resolved at all, and the squares of the
+//! normalised distance would overflow. A query outside the range is a typed error
+//! ([`DubinsError::InvalidRadius`], [`DubinsError::NonFinitePose`], [`DubinsError::OutOfScale`]),
+//! never a panic. Sampling returns at most [`MAX_SAMPLES`] poses
+//! ([`DubinsError::TooManySamples`] beyond), whatever the step.
+//!
 //! ```
 //! use std::f64::consts::PI;
 //! use trailmark_core::dubins::{DubinsPath, DubinsWord};
@@ -43,7 +56,21 @@ use std::f64::consts::TAU;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::curve::MAX_SAMPLES;
 use crate::geometry::{Point, Pose, Vector};
+
+/// The largest magnitude of a coordinate or of the turning radius: 1e300. Within it the
+/// distance between two poses, a path's length (at most the distance plus three full turns)
+/// and every centre and position along it are finite.
+pub const MAX_MAGNITUDE: f64 = 1e300;
+
+/// The largest distance between two poses, in turning radii: 1e12 (see the
+/// [module documentation](self#supported-range)).
+pub const MAX_NORMALISED_DISTANCE: f64 = 1e12;
+
+/// The largest normalised length of a straight piece: the distance between the poses plus at
+/// most four radii for the circles' offsets.
+const MAX_STRAIGHT_PARAM: f64 = MAX_NORMALISED_DISTANCE + 4.0;
 
 /// What a piece of a Dubins path does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -122,11 +149,15 @@ impl std::fmt::Display for DubinsWord {
 /// What was wrong with a Dubins query.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DubinsError {
-    /// The turning radius must be positive and finite.
-    #[error("the turning radius must be positive and finite, got {0}")]
+    /// The turning radius must be positive and at most [`MAX_MAGNITUDE`].
+    #[error("the turning radius must be positive and at most {MAX_MAGNITUDE:e}, got {0}")]
     InvalidRadius(f64),
-    /// A pose has a NaN or infinite coordinate or heading.
-    #[error("the {which} pose is not finite: ({x}, {y}), rotation ({cos}, {sin})")]
+    /// A pose has a NaN or infinite coordinate or heading, a coordinate beyond
+    /// [`MAX_MAGNITUDE`] in magnitude, or a rotation that is not a unit complex number (its
+    /// norm off 1 by more than 1e-6).
+    #[error(
+        "the {which} pose is not finite, within +-{MAX_MAGNITUDE:e}, with a unit rotation: ({x}, {y}), rotation ({cos}, {sin})"
+    )]
     NonFinitePose {
         /// `"start"` or `"goal"`.
         which: &'static str,
@@ -153,6 +184,28 @@ pub enum DubinsError {
     /// A sampling step must be positive and finite.
     #[error("the sampling step must be positive and finite, got {0}")]
     InvalidStep(f64),
+    /// The poses are more than [`MAX_NORMALISED_DISTANCE`] turning radii apart: outside the
+    /// supported range (see the [module documentation](self#supported-range)).
+    #[error(
+        "the poses are {distance:e} apart, more than {MAX_NORMALISED_DISTANCE:e} turning radii of {radius:e}: outside the supported range"
+    )]
+    OutOfScale {
+        /// The distance between the poses.
+        distance: f64,
+        /// The turning radius.
+        radius: f64,
+    },
+    /// Sampling the path with this step would take more than [`MAX_SAMPLES`] poses.
+    #[error("sampling a path of length {length:e} every {step:e} takes more than {MAX_SAMPLES} poses")]
+    TooManySamples {
+        /// The path's length.
+        length: f64,
+        /// The step asked for.
+        step: f64,
+    },
+    /// A deserialized path that no query could give: a radius, start or piece out of range.
+    #[error("not a valid Dubins path: {0}")]
+    InvalidPath(&'static str),
 }
 
 /// One piece of a Dubins path in world coordinates: what collision checks test.
@@ -183,12 +236,49 @@ pub enum Piece {
 ///
 /// Serializes as `{"start": [x, y, heading], "turning_radius": r, "word": "LSL", "params": [t, p,
 /// q]}`, with `params` the pieces' lengths divided by the radius (a turn's angle in radians).
+/// Deserializing checks what a query would: the start and radius in the supported range, each
+/// turn in `[0, 2π]`, the straight piece at most [`MAX_NORMALISED_DISTANCE`] + 4 radii
+/// ([`DubinsError::InvalidPath`] otherwise).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "RawPath")]
 pub struct DubinsPath {
     start: Start,
     turning_radius: f64,
     word: DubinsWord,
     params: [f64; 3],
+}
+
+/// A [`DubinsPath`] as written, before it is checked.
+#[derive(Deserialize)]
+struct RawPath {
+    start: Start,
+    turning_radius: f64,
+    word: DubinsWord,
+    params: [f64; 3],
+}
+
+impl TryFrom<RawPath> for DubinsPath {
+    type Error = DubinsError;
+
+    fn try_from(raw: RawPath) -> Result<Self, DubinsError> {
+        let RawPath { start, turning_radius, word, params } = raw;
+        check_radius(turning_radius)
+            .map_err(|_| DubinsError::InvalidPath("the turning radius is out of range"))?;
+        check_pose("start", &start.pose())
+            .map_err(|_| DubinsError::InvalidPath("the start is out of range"))?;
+        for (turn, param) in word.turns().into_iter().zip(params) {
+            let max = if turn == Turn::Straight { MAX_STRAIGHT_PARAM } else { TAU };
+            if !(0.0..=max).contains(&param) {
+                return Err(DubinsError::InvalidPath("a piece is negative, not finite, or too long"));
+            }
+        }
+        // What a query can give: at most the distance (< 3e300) plus three turns and four radii.
+        let length = (params[0] + params[1] + params[2]) * turning_radius;
+        if !(length.is_finite() && length <= 32.0 * MAX_MAGNITUDE) {
+            return Err(DubinsError::InvalidPath("the path is longer than any in the supported range"));
+        }
+        Ok(DubinsPath { start, turning_radius, word, params })
+    }
 }
 
 /// The start of a path as the caller's pose holds it: a position and the cosine and sine of
@@ -228,6 +318,8 @@ impl Serialize for Start {
 impl<'de> Deserialize<'de> for Start {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let [x, y, heading] = <[f64; 3]>::deserialize(deserializer)?;
+        // A heading of any finite size has a finite sine and cosine; NaN ones are refused when
+        // the path is checked.
         let (sin, cos) = heading.sin_cos();
         Ok(Start { x, y, cos, sin })
     }
@@ -256,10 +348,15 @@ struct Normalised {
     turns: f64,
 }
 
-/// `x` modulo 2π, in `[0, 2π)`. Arguments are within a few turns of the range, so a loop of
-/// additions beats a division and a call to `floor`.
+/// `x` modulo 2π, in `[0, 2π)` (NaN for NaN or an infinity). Arguments are almost always within
+/// a few turns of the range, where a loop of additions beats a division and a call to `floor`;
+/// others take the remainder, so no argument makes the loop long.
 #[inline]
 fn mod_tau(mut x: f64) -> f64 {
+    if x.is_nan() || x.abs() > 8.0 * TAU {
+        let r = x.rem_euclid(TAU);
+        return if r < TAU { r } else { 0.0 };
+    }
     while x < 0.0 {
         x += TAU;
     }
@@ -271,13 +368,15 @@ fn mod_tau(mut x: f64) -> f64 {
 
 impl Normalised {
     fn new(start: &Pose, goal: &Pose, radius: f64) -> Result<Self, DubinsError> {
-        if !(radius > 0.0 && radius.is_finite()) {
-            return Err(DubinsError::InvalidRadius(radius));
-        }
+        check_radius(radius)?;
         check_pose("start", start)?;
         check_pose("goal", goal)?;
         let delta = goal.translation.vector - start.translation.vector;
+        // Finite: both positions are within MAX_MAGNITUDE.
         let dist = delta.norm();
+        if dist / radius > MAX_NORMALISED_DISTANCE {
+            return Err(DubinsError::OutOfScale { distance: dist, radius });
+        }
         // The direction of the line from start to goal (+x when they coincide).
         let (cphi, sphi) = if dist > 0.0 { (delta.x / dist, delta.y / dist) } else { (1.0, 0.0) };
         // Headings relative to that line, through the rotations' cosines and sines: no sin or
@@ -446,15 +545,21 @@ impl Normalised {
         best
     }
 
-    /// The shortest word and its parameters.
-    fn shortest(&self) -> (DubinsWord, [f64; 3]) {
+    /// The shortest word and its parameters; `None` only if rounding left no word, which the
+    /// supported range rules out (`LSL` always joins the poses there).
+    fn shortest(&self) -> Option<(DubinsWord, [f64; 3])> {
         let (word, length, params) = self.shortest_word();
-        let params = params.or_else(|| self.params(word)).expect("the shortest word exists");
+        let params = params.or_else(|| self.params(word))?;
         debug_assert!(
             (params.iter().sum::<f64>() - length).abs() <= 1e-6 * (1.0 + length),
             "{word} measured {length} but evaluates to {params:?}",
         );
-        (word, params)
+        Some((word, params))
+    }
+
+    /// The error for a query that rounding left without a path (see [`Normalised::shortest`]).
+    fn unsolved(&self, radius: f64) -> DubinsError {
+        DubinsError::OutOfScale { distance: self.d * radius, radius }
     }
 
     /// For `LSL` or `RSR`: the square of the straight piece's normalised length (negative when
@@ -521,14 +626,17 @@ fn lower_half((x, y): (f64, f64)) -> bool {
     !(y > 0.0 || (y == 0.0 && x >= 0.0))
 }
 
+fn check_radius(radius: f64) -> Result<(), DubinsError> {
+    if radius > 0.0 && radius <= MAX_MAGNITUDE { Ok(()) } else { Err(DubinsError::InvalidRadius(radius)) }
+}
+
 fn check_pose(which: &'static str, pose: &Pose) -> Result<(), DubinsError> {
     let (x, y) = (pose.translation.vector.x, pose.translation.vector.y);
     let (cos, sin) = (pose.rotation.re, pose.rotation.im);
-    if [x, y, cos, sin].iter().all(|v| v.is_finite()) {
-        Ok(())
-    } else {
-        Err(DubinsError::NonFinitePose { which, x, y, cos, sin })
-    }
+    let in_range = x.abs() <= MAX_MAGNITUDE && y.abs() <= MAX_MAGNITUDE;
+    // Written so that NaN fails; a finite cos and sin of a unit rotation are within [-1, 1].
+    let unit = cos.abs() <= 1.5 && sin.abs() <= 1.5 && (cos * cos + sin * sin - 1.0).abs() <= 1e-6;
+    if in_range && unit { Ok(()) } else { Err(DubinsError::NonFinitePose { which, x, y, cos, sin }) }
 }
 
 /// The pose after driving `length` (world units) along `turn` from `(x, y, heading)`.
@@ -556,10 +664,12 @@ impl DubinsPath {
     /// The shortest path from `start` to `goal` for a vehicle whose turning radius is
     /// `turning_radius` (world units).
     ///
-    /// Errors when the radius is not positive and finite, or a pose is not finite.
+    /// Errors outside the [supported range](self#supported-range): a radius that is not
+    /// positive or beyond [`MAX_MAGNITUDE`], a pose that is not finite or beyond it, poses more
+    /// than [`MAX_NORMALISED_DISTANCE`] radii apart.
     pub fn shortest(start: &Pose, goal: &Pose, turning_radius: f64) -> Result<DubinsPath, DubinsError> {
         let n = Normalised::new(start, goal, turning_radius)?;
-        let (word, params) = n.shortest();
+        let (word, params) = n.shortest().ok_or_else(|| n.unsolved(turning_radius))?;
         Ok(DubinsPath { start: Start::of(start), turning_radius, word, params })
     }
 
@@ -569,7 +679,8 @@ impl DubinsPath {
     pub fn shortest_length(start: &Pose, goal: &Pose, turning_radius: f64) -> Result<f64, DubinsError> {
         let n = Normalised::new(start, goal, turning_radius)?;
         let (_, length, _) = n.shortest_word();
-        Ok(length * turning_radius)
+        let length = length * turning_radius;
+        if length.is_finite() { Ok(length) } else { Err(n.unsolved(turning_radius)) }
     }
 
     /// The path of the given `word` from `start` to `goal`.
@@ -665,14 +776,23 @@ impl DubinsPath {
     /// Poses every `step` world units from the start, then the end pose: `ceil(length / step)
     /// + 1` poses (one for a path of length 0).
     ///
-    /// Errors with [`DubinsError::InvalidStep`] unless `step` is positive and finite.
+    /// Errors with [`DubinsError::InvalidStep`] unless `step` is positive and finite, and with
+    /// [`DubinsError::TooManySamples`] when that would be more than [`MAX_SAMPLES`] poses
+    /// (checked before anything is allocated).
     pub fn sample(&self, step: f64) -> Result<Vec<Pose>, DubinsError> {
         if !(step > 0.0 && step.is_finite()) {
             return Err(DubinsError::InvalidStep(step));
         }
         let length = self.length();
+        let count = (length / step).ceil() + 1.0;
+        // The loop below makes at most one pose more than `count` (when `k * step` rounds
+        // below the length), so MAX_SAMPLES - 1 leaves room. (A path's length is finite.)
+        if count.is_nan() || count >= MAX_SAMPLES as f64 {
+            return Err(DubinsError::TooManySamples { length, step });
+        }
         let start = self.start.array();
-        let mut poses = Vec::with_capacity((length / step).ceil() as usize + 1);
+        // In range: count < MAX_SAMPLES.
+        let mut poses = Vec::with_capacity(count as usize + 1);
         let mut k = 0u64;
         loop {
             let s = k as f64 * step;

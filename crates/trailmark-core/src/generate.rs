@@ -2,6 +2,11 @@
 //! `random`, `mazes` and `rooms` sets; polygon worlds of random convex obstacles, a bug trap,
 //! and walls with narrow doors. The same arguments give the same world on every machine.
 //!
+//! Every size and count is checked before anything is allocated for it: grids against
+//! [`Grid::MAX_CELLS`] (with checked multiplication), polygon worlds against
+//! [`MAX_GENERATED_VERTICES`] and [`MAX_POLYGON_SIDES`]; an argument out of range is a
+//! [`GenerateError`].
+//!
 //! ```
 //! use trailmark_core::generate;
 //!
@@ -17,6 +22,22 @@ use rand_chacha::ChaCha8Rng;
 use thiserror::Error;
 
 use crate::grid::{Cell, Grid, GridError};
+
+/// The most vertices a generated polygon world may have in all: 65,536 (e.g. 10,000 hexagons).
+///
+/// The free space of a world unites its grown obstacles and roadmaps are built over every
+/// vertex, so a world this large already takes seconds to build; the benchmarks use at most a
+/// few thousand vertices.
+pub const MAX_GENERATED_VERTICES: usize = 1 << 16;
+
+/// The most sides a generated convex obstacle may have: 1024. (Validating a polygon costs time
+/// quadratic in its vertices, and points at random angles on a circle come too close to tell
+/// apart from collinear more often the more of them there are.)
+pub const MAX_POLYGON_SIDES: usize = 1024;
+
+/// How many times a random convex obstacle is drawn again when its angles come too close
+/// together, before [`convex_obstacles`] gives up with [`GenerateError::Degenerate`].
+const MAX_DRAWS: usize = 1000;
 
 /// What was wrong with a generator's arguments.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -37,6 +58,26 @@ pub enum GenerateError {
         door: f64,
         /// The world's side.
         size: f64,
+    },
+    /// A count beyond what a generator supports ([`MAX_GENERATED_VERTICES`],
+    /// [`MAX_POLYGON_SIDES`]).
+    #[error("{what} of {count} is more than the {max} supported")]
+    TooMany {
+        /// What was counted: `"obstacle sides"`, `"vertices (obstacles x sides)"`, `"walls"`.
+        what: &'static str,
+        /// The count given.
+        count: usize,
+        /// The most supported.
+        max: usize,
+    },
+    /// No valid convex polygon came out of [`convex_obstacles`]'s draws (its sides too many
+    /// for the random angles to stay apart).
+    #[error("no convex polygon of {sides} sides came out of {draws} random draws")]
+    Degenerate {
+        /// The sides asked for.
+        sides: usize,
+        /// The draws made.
+        draws: usize,
     },
     /// A corridor or room size of zero, or too large for the grid.
     #[error("a {what} of {size} does not fit a {width} x {height} grid")]
@@ -61,10 +102,10 @@ pub fn random(width: usize, height: usize, obstacle_fraction: f64, seed: u64) ->
     if !(0.0..=1.0).contains(&obstacle_fraction) {
         return Err(GenerateError::Fraction(obstacle_fraction));
     }
+    let cells = Grid::cell_count(width, height)?;
     let mut rng = rng(seed);
-    let costs = (0..width * height)
-        .map(|_| if rng.random_bool(obstacle_fraction) { f64::INFINITY } else { 1.0 })
-        .collect();
+    let costs =
+        (0..cells).map(|_| if rng.random_bool(obstacle_fraction) { f64::INFINITY } else { 1.0 }).collect();
     Ok(Grid::from_costs(width, height, costs)?)
 }
 
@@ -72,13 +113,15 @@ pub fn random(width: usize, height: usize, obstacle_fraction: f64, seed: u64) ->
 /// walls one cell thick, carved by a seeded depth-first backtracker. Cells beyond the last
 /// whole corridor on the right and bottom stay blocked.
 pub fn maze(width: usize, height: usize, corridor: u32, seed: u64) -> Result<Grid, GenerateError> {
-    let mut grid = Grid::from_costs(width, height, vec![f64::INFINITY; width * height])?;
+    let cells = Grid::cell_count(width, height)?;
+    let mut grid = Grid::from_costs(width, height, vec![f64::INFINITY; cells])?;
     let pitch = corridor as usize + 1;
     let (cols, rows) = (width.saturating_sub(1) / pitch.max(1), height.saturating_sub(1) / pitch.max(1));
     if corridor == 0 || cols == 0 || rows == 0 {
         return Err(GenerateError::Size { what: "corridor width", size: corridor, width, height });
     }
     let mut rng = rng(seed);
+    // Every cell opened lies inside the grid, whose sides fit a u32 (checked above).
     let open = |grid: &mut Grid, x0: usize, y0: usize, w: usize, h: usize| {
         for y in y0..y0 + h {
             for x in x0..x0 + w {
@@ -135,6 +178,7 @@ pub fn rooms(width: usize, height: usize, room: u32, seed: u64) -> Result<Grid, 
         return Err(GenerateError::Size { what: "room size", size: room, width, height });
     }
     let mut rng = rng(seed);
+    // Inside the grid, whose sides fit a u32 (checked by `Grid::new`).
     let block = |grid: &mut Grid, x: usize, y: usize, blocked: bool| {
         if x < width && y < height {
             let _ = grid.set_blocked(Cell::new(x as u32, y as u32), blocked);
@@ -202,6 +246,9 @@ pub fn rooms(width: usize, height: usize, room: u32, seed: u64) -> Result<Grid, 
 /// circle. Obstacles may overlap; the free space merges them. The robot radius is
 /// `robot_radius`.
 ///
+/// At most [`MAX_POLYGON_SIDES`] sides and [`MAX_GENERATED_VERTICES`] vertices in all; an
+/// obstacle whose angles come too close together is drawn again, up to 1000 times.
+///
 /// ```
 /// use trailmark_core::generate;
 ///
@@ -224,15 +271,28 @@ pub fn convex_obstacles(
     if sides < 3 {
         return Err(GenerateError::Size {
             what: "polygon side count",
-            size: sides as u32,
+            size: sides as u32, // below 3
             width: 3,
             height: 3,
         });
     }
+    if sides > MAX_POLYGON_SIDES {
+        return Err(GenerateError::TooMany { what: "obstacle sides", count: sides, max: MAX_POLYGON_SIDES });
+    }
+    let vertices = count.saturating_mul(sides);
+    if vertices > MAX_GENERATED_VERTICES {
+        let what = "vertices (obstacles x sides)";
+        return Err(GenerateError::TooMany { what, count: vertices, max: MAX_GENERATED_VERTICES });
+    }
     let mut rng = rng(seed);
     let scale = size / (count.max(1) as f64).sqrt() / 2.0;
     let mut obstacles = Vec::with_capacity(count);
+    let mut draws = 0;
     while obstacles.len() < count {
+        if draws == MAX_DRAWS {
+            return Err(GenerateError::Degenerate { sides, draws });
+        }
+        draws += 1;
         let centre = Point::new(rng.random_range(0.0..size), rng.random_range(0.0..size));
         let radius = scale * rng.random_range(0.3..1.0);
         let mut angles: Vec<f64> = (0..sides).map(|_| rng.random_range(0.0..std::f64::consts::TAU)).collect();
@@ -244,6 +304,7 @@ pub fn convex_obstacles(
             .is_ok_and(|p| p.vertices().len() == sides && p.is_convex())
         {
             obstacles.push(polygon);
+            draws = 0;
         }
     }
     Ok(PolygonWorld::new(bounds, obstacles, robot_radius)?)
@@ -293,7 +354,8 @@ pub fn bug_trap(
 /// A square world of side `size` cut by `walls` evenly spaced vertical walls (thickness
 /// `size / 50`), each with one door of width `door` at a random height: every path from the
 /// left edge to the right goes through every door. The robot radius is `robot_radius`, so the
-/// free width of a door is `door - 2 robot_radius`.
+/// free width of a door is `door - 2 robot_radius`. At most [`MAX_GENERATED_VERTICES`] / 8
+/// walls (each is two rectangles).
 ///
 /// ```
 /// use trailmark_core::generate;
@@ -313,12 +375,10 @@ pub fn narrow_passages(
     use crate::world::{Bounds, PolygonWorld};
     let bounds = Bounds::new(0.0, 0.0, size, size)?;
     if !(door > 0.0 && door < size / 2.0) {
-        return Err(GenerateError::Size {
-            what: "door width",
-            size: door as u32,
-            width: size as usize,
-            height: size as usize,
-        });
+        return Err(GenerateError::Door { door, size });
+    }
+    if walls > MAX_GENERATED_VERTICES / 8 {
+        return Err(GenerateError::TooMany { what: "walls", count: walls, max: MAX_GENERATED_VERTICES / 8 });
     }
     let mut rng = rng(seed);
     let t = size / 50.0;
@@ -382,5 +442,20 @@ mod tests {
         assert!(matches!(maze(3, 3, 4, 0), Err(GenerateError::Size { .. })));
         assert!(matches!(rooms(10, 10, 1, 0), Err(GenerateError::Size { .. })));
         assert!(matches!(random(0, 3, 0.1, 0), Err(GenerateError::Grid(_))));
+        assert!(matches!(
+            random(usize::MAX, 2, 0.1, 0),
+            Err(GenerateError::Grid(GridError::TooLarge { .. }))
+        ));
+        assert!(matches!(maze(1 << 15, 1 << 14, 3, 0), Err(GenerateError::Grid(GridError::TooLarge { .. }))));
+        assert!(matches!(
+            rooms(1 << 15, 1 << 14, 8, 0),
+            Err(GenerateError::Grid(GridError::TooLarge { .. }))
+        ));
+        let too_many = |r| matches!(r, Err(GenerateError::TooMany { .. }));
+        assert!(too_many(convex_obstacles(10.0, usize::MAX, 6, 0.0, 0)));
+        assert!(too_many(convex_obstacles(10.0, 2, usize::MAX, 0.0, 0)));
+        assert!(too_many(convex_obstacles(10.0, 1 << 14, 6, 0.0, 0)));
+        assert!(too_many(narrow_passages(10.0, usize::MAX, 1.0, 0.0, 0)));
+        assert!(matches!(narrow_passages(10.0, 2, 5.0, 0.0, 0), Err(GenerateError::Door { .. })));
     }
 }

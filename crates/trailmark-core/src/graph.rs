@@ -178,6 +178,7 @@ pub struct EdgeChange<N> {
     /// The head of the edge.
     pub to: N,
     /// The cost before the change (`f64::INFINITY` if the edge did not exist). The new cost is
-    /// read from the graph.
+    /// read from the graph. The planners check it (not NaN, not negative) but do not rely on
+    /// it: a wrong old cost cannot make their answer wrong.
     pub old_cost: Cost,
 }

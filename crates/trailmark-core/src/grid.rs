@@ -156,8 +156,8 @@ pub enum GridError {
         /// The requested height.
         height: usize,
     },
-    /// The grid has more cells than trailmark can index.
-    #[error("a {width} x {height} grid is too large (at most {} cells with border)", Grid::MAX_PADDED_CELLS)]
+    /// The grid has more than [`Grid::MAX_CELLS`] cells (or `width x height` overflows).
+    #[error("a {width} x {height} grid is too large (at most {} cells)", Grid::MAX_CELLS)]
     TooLarge {
         /// The requested width.
         width: usize,
@@ -176,8 +176,11 @@ pub enum GridError {
         /// How many costs were given.
         found: usize,
     },
-    /// A cell cost is not a positive finite number or `+inf` (blocked).
-    #[error("cell {cell}: cost {cost} is invalid (a cell cost is positive and finite, or +inf for blocked)")]
+    /// A cell cost is not a positive finite number of at most [`MAX_CELL_COST`], or `+inf`
+    /// (blocked).
+    #[error(
+        "cell {cell}: cost {cost} is invalid (a cell cost is positive and at most {MAX_CELL_COST:e}, or +inf for blocked)"
+    )]
     InvalidCost {
         /// The cell.
         cell: Cell,
@@ -248,36 +251,67 @@ pub fn is_passable_char(c: char) -> Option<bool> {
 }
 
 impl Grid {
+    /// The largest number of cells of a grid: 2^28 = 268,435,456 (16384 x 16384).
+    ///
+    /// A grid holds 8 bytes per cell (2 GiB at this size) and the graph builders and searches
+    /// over it some tens of bytes more per cell, so this is about the largest grid a
+    /// workstation can plan over; the largest MovingAI and GPPC benchmark maps have fewer than
+    /// 2^24 cells. It keeps every cell index, with a border, far within `u32`, and bounds the
+    /// cost of any path (see [`MAX_CELL_COST`]). Every constructor and generator checks it, with
+    /// checked multiplication, before it allocates anything.
+    pub const MAX_CELLS: usize = 1 << 28;
+
     /// The largest number of cells of a grid including a one-cell border around it, so that every
-    /// cell of a grid graph has a `u32` index with room for sentinels.
+    /// cell of a grid graph has a `u32` index with room for sentinels. Every grid of at most
+    /// [`Grid::MAX_CELLS`] cells is within it.
     pub const MAX_PADDED_CELLS: u64 = u32::MAX as u64 - 2;
 
-    fn check_size(width: usize, height: usize) -> Result<(u32, u32), GridError> {
+    /// The number of cells of a `width x height` grid, checked: an error for a side of 0
+    /// ([`GridError::Empty`]), and for more than [`Grid::MAX_CELLS`] cells or a product that
+    /// overflows ([`GridError::TooLarge`]). Check a size with it before allocating for it.
+    ///
+    /// ```
+    /// use trailmark_core::grid::{Grid, GridError};
+    ///
+    /// assert_eq!(Grid::cell_count(640, 480), Ok(307_200));
+    /// assert!(matches!(Grid::cell_count(100_000, 100_000), Err(GridError::TooLarge { .. })));
+    /// assert!(matches!(Grid::cell_count(usize::MAX, 2), Err(GridError::TooLarge { .. })));
+    /// ```
+    pub fn cell_count(width: usize, height: usize) -> Result<usize, GridError> {
+        Self::check_size(width, height).map(|(_, _, cells)| cells)
+    }
+
+    fn check_size(width: usize, height: usize) -> Result<(u32, u32, usize), GridError> {
         if width == 0 || height == 0 {
             return Err(GridError::Empty { width, height });
         }
-        let padded = (width as u64 + 2).checked_mul(height as u64 + 2);
-        match padded {
-            Some(n) if n <= Self::MAX_PADDED_CELLS => Ok((width as u32, height as u32)),
-            _ => Err(GridError::TooLarge { width, height }),
+        let too_large = || GridError::TooLarge { width, height };
+        let cells = width.checked_mul(height).filter(|&n| n <= Self::MAX_CELLS).ok_or_else(too_large)?;
+        // Within MAX_CELLS, each side fits a u32 and the padded grid fits MAX_PADDED_CELLS.
+        let (w, h) =
+            (u32::try_from(width).map_err(|_| too_large())?, u32::try_from(height).map_err(|_| too_large())?);
+        let padded = (u64::from(w) + 2).checked_mul(u64::from(h) + 2);
+        if padded.is_none_or(|n| n > Self::MAX_PADDED_CELLS) {
+            return Err(too_large());
         }
+        Ok((w, h, cells))
     }
 
     /// A grid of `width x height` passable cells of cost 1.
     pub fn new(width: usize, height: usize) -> Result<Self, GridError> {
-        let (w, h) = Self::check_size(width, height)?;
-        Ok(Grid { width: w, height: h, costs: vec![1.0; width * height] })
+        let (w, h, cells) = Self::check_size(width, height)?;
+        Ok(Grid { width: w, height: h, costs: vec![1.0; cells] })
     }
 
-    /// A grid from row-major cell costs: a positive finite cost for a passable cell, `f64::INFINITY`
-    /// for a blocked one.
+    /// A grid from row-major cell costs: a positive finite cost of at most [`MAX_CELL_COST`] for
+    /// a passable cell, `f64::INFINITY` for a blocked one.
     pub fn from_costs(width: usize, height: usize, costs: Vec<Cost>) -> Result<Self, GridError> {
-        let (w, h) = Self::check_size(width, height)?;
-        let expected = width * height;
+        let (w, h, expected) = Self::check_size(width, height)?;
         if costs.len() != expected {
             return Err(GridError::CostCount { width, height, expected, found: costs.len() });
         }
         if let Some(i) = costs.iter().position(|&c| !is_cell_cost(c)) {
+            // i < width x height, so both fit a u32.
             let cell = Cell::new((i % width) as u32, (i / width) as u32);
             return Err(GridError::InvalidCost { cell, cost: costs[i] });
         }
@@ -290,10 +324,13 @@ impl Grid {
         let height = rows.len();
         let width = rows.first().map_or(0, |r| trim_cr(r.as_ref()).chars().count());
         Self::check_size(width, height)?;
-        let mut costs = Vec::with_capacity(width * height);
+        // Memory grows with the rows actually given: a long first row and many short ones (a
+        // ragged input) must not reserve the full width x height up front.
+        let mut costs = Vec::new();
         for (row, text) in rows.iter().enumerate() {
             let text = trim_cr(text.as_ref());
             let before = costs.len();
+            costs.reserve(width);
             for (column, character) in text.chars().enumerate() {
                 match is_passable_char(character) {
                     Some(true) => costs.push(1.0),
@@ -373,7 +410,8 @@ impl Grid {
         self.cost(cell).is_some_and(f64::is_finite)
     }
 
-    /// Sets the cost of `cell`: positive and finite, or `f64::INFINITY` to block it.
+    /// Sets the cost of `cell`: positive and at most [`MAX_CELL_COST`], or `f64::INFINITY` to
+    /// block it.
     pub fn set_cost(&mut self, cell: Cell, cost: Cost) -> Result<(), GridError> {
         let i = self.check(cell)?;
         if !is_cell_cost(cost) {
@@ -415,10 +453,22 @@ impl Grid {
     }
 }
 
-/// Whether `cost` is a valid cell cost: positive and finite, or `+inf` (blocked).
+/// The largest cost of a passable cell: 1e12.
+///
+/// A move costs its length (at most `sqrt(2)`) times the mean cost of two cells, and a simple
+/// path has fewer than [`Grid::MAX_CELLS`] moves, so no path costs more than
+/// `1e12 x sqrt(2) x 2^28`, about 3.8e20: some 287 orders of magnitude below `f64::MAX`, so path
+/// costs, their sums over a planner's whole run, and heuristics inflated by any practical
+/// weight stay finite, while a ratio of 1e12 to an ordinary cost of 1 is more than any terrain
+/// model needs (a cost like 1e308 is finite, but two of them overflow to infinity, which means
+/// "no edge"). Costs below it are not limited: any positive cost is allowed.
+pub const MAX_CELL_COST: Cost = 1e12;
+
+/// Whether `cost` is a valid cell cost: positive and at most [`MAX_CELL_COST`], or `+inf`
+/// (blocked).
 #[inline]
 pub fn is_cell_cost(cost: Cost) -> bool {
-    cost == f64::INFINITY || (cost.is_finite() && cost > 0.0)
+    cost == f64::INFINITY || (cost > 0.0 && cost <= MAX_CELL_COST)
 }
 
 fn trim_cr(s: &str) -> &str {
@@ -472,6 +522,20 @@ mod tests {
     #[test]
     fn huge_grids_are_refused() {
         assert!(matches!(Grid::new(1 << 20, 1 << 20), Err(GridError::TooLarge { .. })));
+        assert!(matches!(Grid::new(usize::MAX, 3), Err(GridError::TooLarge { .. })));
+        assert!(matches!(Grid::new(Grid::MAX_CELLS + 1, 1), Err(GridError::TooLarge { .. })));
+        assert_eq!(Grid::cell_count(Grid::MAX_CELLS, 1), Ok(Grid::MAX_CELLS));
+        assert_eq!(Grid::cell_count(1 << 14, 1 << 14), Ok(Grid::MAX_CELLS));
+    }
+
+    #[test]
+    fn costs_are_bounded() {
+        assert!(
+            is_cell_cost(MAX_CELL_COST) && is_cell_cost(f64::MIN_POSITIVE) && is_cell_cost(f64::INFINITY)
+        );
+        for bad in [MAX_CELL_COST * 1.000001, 1e300, f64::MAX, 0.0, -0.0, f64::NAN] {
+            assert!(!is_cell_cost(bad), "{bad}");
+        }
     }
 
     #[test]

@@ -35,6 +35,7 @@ pub mod grid;
 pub mod movingai;
 pub mod path;
 pub mod problem;
+pub mod read;
 pub mod smooth;
 pub mod svg;
 pub mod world;

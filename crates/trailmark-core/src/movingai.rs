@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::grid::{Cell, Grid, GridError, is_passable_char};
+use crate::read::{ReadFileError, read_to_string_capped};
 
 /// One query of a scenario file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -46,20 +47,38 @@ pub struct Scenario {
     pub optimal_length: f64,
 }
 
+/// The largest `.map` file [`read_map`] reads: 1 GiB.
+///
+/// A map of [`Grid::MAX_CELLS`] cells takes at most `3 x 2^28` bytes with CRLF line ends (a map
+/// one cell wide, a line end per cell) plus its header, which is below this cap; a larger file
+/// cannot be a valid map.
+pub const MAX_MAP_FILE_BYTES: u64 = 1 << 30;
+
+/// The largest `.map.scen` file [`read_scenarios`] reads: 256 MiB.
+///
+/// The largest scenario files of the MovingAI sets are a few megabytes (some 100,000 queries of
+/// under 100 bytes each); the parsed scenarios take a small multiple of the text's size.
+pub const MAX_SCENARIO_FILE_BYTES: u64 = 1 << 28;
+
 /// What is wrong with a line of a map or scenario file.
+///
+/// The messages never quote the file: a path from a problem document may name any file, whose
+/// content must not leak into an error message. They name the line (in [`ParseError`]), the
+/// column, the field, and numbers the parser has already read as such.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ParseErrorKind {
     /// A header line is not `type ...`, `height N`, `width N` or `map`.
-    #[error("unknown header line {0:?} (expected type, height, width or map)")]
-    UnknownHeader(String),
+    #[error("this is not a map header line (expected type, height, width or map)")]
+    UnknownHeader,
     /// A header value is not a number where one is needed.
-    #[error("the {key} must be a whole number, got {value:?}")]
+    #[error("the {key} must be a whole number")]
     BadHeaderValue {
         /// `height` or `width`.
         key: &'static str,
-        /// The text found.
-        value: String,
     },
+    /// A header line appears twice.
+    #[error("a second {0} line (the header has one of each)")]
+    DuplicateHeader(&'static str),
     /// The header ended without the named entry.
     #[error("the header has no {0} line")]
     MissingHeader(&'static str),
@@ -71,12 +90,13 @@ pub enum ParseErrorKind {
         /// The cells in this row.
         found: usize,
     },
-    /// A map row holds a character that is no MovingAI cell.
-    #[error("column {column}: unknown cell character {character:?} (passable: . G S, blocked: @ O T W)")]
+    /// A map row holds a character that is no MovingAI cell. The message names the column but
+    /// not the character.
+    #[error("column {column}: not a MovingAI cell character (passable: . G S, blocked: @ O T W)")]
     UnknownCell {
         /// The column, from 0.
         column: usize,
-        /// The character.
+        /// The character (for callers; the message does not show it).
         character: char,
     },
     /// The file ended before all rows were read.
@@ -90,22 +110,21 @@ pub enum ParseErrorKind {
     /// There is text after the last row.
     #[error("unexpected text after the last map row")]
     TrailingText,
-    /// The declared size is not a valid grid.
+    /// The declared size is not a valid grid (a side of 0, or more than [`Grid::MAX_CELLS`]
+    /// cells).
     #[error(transparent)]
     Grid(GridError),
-    /// The scenario version is not 1 or 1.0.
-    #[error("unsupported scenario version {0:?} (supported: 1, 1.0)")]
-    Version(String),
+    /// The scenario version is not 1 or 1.0, or a second version line.
+    #[error("unsupported or repeated scenario version line (supported: one line of version 1 or 1.0, first)")]
+    Version,
     /// A scenario line does not have nine fields.
     #[error("a scenario line has 9 fields (bucket, map, width, height, sx, sy, gx, gy, optimal), found {0}")]
     FieldCount(usize),
     /// A scenario field is not a valid number.
-    #[error("field {field}: {value:?} is not a valid {expected}")]
+    #[error("field {field} is not a valid {expected}")]
     BadField {
         /// The field name.
         field: &'static str,
-        /// The text found.
-        value: String,
         /// What was expected there.
         expected: &'static str,
     },
@@ -133,17 +152,13 @@ pub struct ParseError {
     pub kind: ParseErrorKind,
 }
 
-/// An error reading a MovingAI file from disk.
+/// An error reading a MovingAI file from disk. The messages name the path, never the content.
 #[derive(Debug, Error)]
 pub enum ReadError {
-    /// The file could not be read.
-    #[error("cannot read {}: {source}", path.display())]
-    Io {
-        /// The file.
-        path: PathBuf,
-        /// The I/O error.
-        source: std::io::Error,
-    },
+    /// The file could not be read: missing, not a regular file, larger than the cap
+    /// ([`MAX_MAP_FILE_BYTES`], [`MAX_SCENARIO_FILE_BYTES`]), not UTF-8.
+    #[error(transparent)]
+    File(#[from] ReadFileError),
     /// The file is not a valid map or scenario file.
     #[error("{}: {source}", path.display())]
     Parse {
@@ -158,20 +173,29 @@ fn err(line: usize, kind: ParseErrorKind) -> ParseError {
     ParseError { line, kind }
 }
 
-/// Lines without their terminators (`\n` or `\r\n`), numbered from 1.
-fn numbered_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.split('\n').map(|l| l.strip_suffix('\r').unwrap_or(l)).enumerate().map(|(i, l)| (i + 1, l))
+/// Lines without their terminators (`\n` or `\r\n`), numbered from 1, each with the number of
+/// bytes of `text` up to and including its `\n`.
+fn numbered_lines(text: &str) -> impl Iterator<Item = (usize, &str, usize)> {
+    let mut consumed = 0;
+    text.split('\n').enumerate().map(move |(i, raw)| {
+        consumed += raw.len() + 1;
+        (i + 1, raw.strip_suffix('\r').unwrap_or(raw), consumed)
+    })
 }
 
 /// Parses the text of a MovingAI `.map` file.
+///
+/// The header (`type`, `height`, `width` in any order, each once, then `map`) is checked before
+/// any row is read, and the size it claims against [`Grid::MAX_CELLS`]; memory for the cells is
+/// then reserved for no more of them than the rest of the text can hold, so a short text
+/// claiming a huge map costs nothing. Blank lines in the header and at the end are skipped.
 pub fn parse_map(text: &str) -> Result<Grid, ParseError> {
     let mut lines = numbered_lines(text);
-    let mut width = None;
-    let mut height = None;
+    let (mut width, mut height, mut kind) = (None, None, false);
     let mut last_line = 0;
-    // Header: key/value lines up to `map`.
-    loop {
-        let Some((n, line)) = lines.next() else {
+    // Header: key/value lines up to `map`; then the bytes of the text it took.
+    let consumed = loop {
+        let Some((n, line, upto)) = lines.next() else {
             let missing = if height.is_none() {
                 "height"
             } else if width.is_none() {
@@ -188,58 +212,77 @@ pub fn parse_map(text: &str) -> Result<Grid, ParseError> {
         }
         let mut parts = line.split_whitespace();
         let key = parts.next().unwrap_or_default();
-        let value = parts.collect::<Vec<_>>().join(" ");
+        let value = parts.next();
+        let extra = parts.next().is_some();
         match key {
-            "map" if value.is_empty() => break,
-            "type" => {}
-            "height" | "width" => {
-                let key: &'static str = if key == "height" { "height" } else { "width" };
-                let v = value
-                    .parse::<usize>()
-                    .map_err(|_| err(n, ParseErrorKind::BadHeaderValue { key, value: value.clone() }))?;
-                if key == "height" { height = Some(v) } else { width = Some(v) }
+            "map" if value.is_none() => break upto,
+            "type" => {
+                if std::mem::replace(&mut kind, true) {
+                    return Err(err(n, ParseErrorKind::DuplicateHeader("type")));
+                }
             }
-            _ => return Err(err(n, ParseErrorKind::UnknownHeader(line.to_string()))),
+            "height" | "width" => {
+                let (key, slot): (&'static str, _) =
+                    if key == "height" { ("height", &mut height) } else { ("width", &mut width) };
+                if slot.is_some() {
+                    return Err(err(n, ParseErrorKind::DuplicateHeader(key)));
+                }
+                let v = value
+                    .filter(|_| !extra)
+                    .and_then(|v| v.parse::<usize>().ok())
+                    .ok_or_else(|| err(n, ParseErrorKind::BadHeaderValue { key }))?;
+                *slot = Some(v);
+            }
+            _ => return Err(err(n, ParseErrorKind::UnknownHeader)),
         }
-    }
+    };
     let height = height.ok_or_else(|| err(last_line, ParseErrorKind::MissingHeader("height")))?;
     let width = width.ok_or_else(|| err(last_line, ParseErrorKind::MissingHeader("width")))?;
-    let mut grid = Grid::new(width, height).map_err(|e| err(last_line, ParseErrorKind::Grid(e)))?;
-    // Blank lines at the end of the file are not rows.
-    let mut rest: Vec<(usize, &str)> = lines.collect();
-    while rest.last().is_some_and(|(_, l)| l.trim().is_empty()) {
-        rest.pop();
-    }
+    let cells = Grid::cell_count(width, height).map_err(|e| err(last_line, ParseErrorKind::Grid(e)))?;
+    // Each cell takes at least one byte of the text: never reserve for more than it holds.
+    let mut costs = Vec::with_capacity(cells.min(text.len().saturating_sub(consumed)));
     let mut row = 0;
-    for (n, line) in rest {
-        last_line = n;
-        if row == height {
-            return Err(err(n, ParseErrorKind::TrailingText));
+    // Blank lines at the end of the file are not rows; a blank line before another line is
+    // (a row of the wrong length) or is text after the last row.
+    let mut blank = None;
+    for (n, line, _) in lines {
+        if line.trim().is_empty() {
+            blank.get_or_insert((n, line));
+            continue;
         }
-        let mut found = 0;
-        for (column, character) in line.chars().enumerate() {
-            found += 1;
-            if column >= width {
-                continue;
+        for (n, line) in blank.take().into_iter().chain([(n, line)]) {
+            if row == height {
+                return Err(err(n, ParseErrorKind::TrailingText));
             }
-            match is_passable_char(character) {
-                Some(true) => {}
-                Some(false) => {
-                    let cell = Cell::new(column as u32, row as u32);
-                    grid.set_blocked(cell, true).map_err(|e| err(n, ParseErrorKind::Grid(e)))?;
-                }
-                None => return Err(err(n, ParseErrorKind::UnknownCell { column, character })),
-            }
+            parse_row(n, line, width, &mut costs)?;
+            (row, last_line) = (row + 1, n);
         }
-        if found != width {
-            return Err(err(n, ParseErrorKind::RowLength { expected: width, found }));
-        }
-        row += 1;
     }
     if row < height {
         return Err(err(last_line, ParseErrorKind::MissingRows { expected: height, found: row }));
     }
-    Ok(grid)
+    Grid::from_costs(width, height, costs).map_err(|e| err(last_line, ParseErrorKind::Grid(e)))
+}
+
+/// Appends the costs of one map row (at most `width` of them) to `costs`: an error unless the
+/// row has exactly `width` cell characters.
+fn parse_row(n: usize, line: &str, width: usize, costs: &mut Vec<f64>) -> Result<(), ParseError> {
+    let mut found = 0;
+    for (column, character) in line.chars().enumerate() {
+        found += 1;
+        if column >= width {
+            continue;
+        }
+        match is_passable_char(character) {
+            Some(true) => costs.push(1.0),
+            Some(false) => costs.push(f64::INFINITY),
+            None => return Err(err(n, ParseErrorKind::UnknownCell { column, character })),
+        }
+    }
+    if found != width {
+        return Err(err(n, ParseErrorKind::RowLength { expected: width, found }));
+    }
+    Ok(())
 }
 
 /// Writes `grid` in the MovingAI `.map` format (`.` passable, `@` blocked, `\n` line ends).
@@ -260,28 +303,29 @@ fn field<T: std::str::FromStr>(
     value: &str,
     expected: &'static str,
 ) -> Result<T, ParseError> {
-    value
-        .parse()
-        .map_err(|_| err(line, ParseErrorKind::BadField { field, value: value.to_string(), expected }))
+    value.parse().map_err(|_| err(line, ParseErrorKind::BadField { field, expected }))
 }
 
 /// Parses the text of a MovingAI `.map.scen` scenario file.
 ///
-/// The `version` line may be absent (the oldest files), `version 1` or `version 1.0`; blank
-/// lines are skipped. Start and goal must lie inside the map size each line declares.
+/// The `version` line may be absent (the oldest files), `version 1` or `version 1.0`, once,
+/// before the first query; blank lines are skipped. Every number must be in range: the bucket,
+/// sizes and cells `u32`, the declared map size a valid grid (at most [`Grid::MAX_CELLS`]
+/// cells), start and goal inside it, and the optimal length finite and non-negative.
 pub fn parse_scenarios(text: &str) -> Result<Vec<Scenario>, ParseError> {
     let mut out = Vec::new();
-    for (n, line) in numbered_lines(text) {
+    let mut version = false;
+    for (n, line, _) in numbered_lines(text) {
         let trimmed = line.trim();
         if trimmed.is_empty() {
             continue;
         }
-        if let Some(version) = trimmed.strip_prefix("version") {
-            let version = version.trim();
-            if out.is_empty() && matches!(version, "1" | "1.0") {
+        if let Some(v) = trimmed.strip_prefix("version") {
+            if out.is_empty() && !version && matches!(v.trim(), "1" | "1.0") {
+                version = true;
                 continue;
             }
-            return Err(err(n, ParseErrorKind::Version(version.to_string())));
+            return Err(err(n, ParseErrorKind::Version));
         }
         // Tabs separate fields when present (so a map name could hold a space); else whitespace.
         let fields: Vec<&str> = if trimmed.contains('\t') {
@@ -289,25 +333,21 @@ pub fn parse_scenarios(text: &str) -> Result<Vec<Scenario>, ParseError> {
         } else {
             trimmed.split_whitespace().collect()
         };
-        if fields.len() != 9 {
+        let [bucket, map, width, height, sx, sy, gx, gy, optimal] = fields[..] else {
             return Err(err(n, ParseErrorKind::FieldCount(fields.len())));
-        }
+        };
         const WHOLE: &str = "whole number";
-        let bucket = field(n, "bucket", fields[0], WHOLE)?;
-        let map_width: u32 = field(n, "width", fields[2], WHOLE)?;
-        let map_height: u32 = field(n, "height", fields[3], WHOLE)?;
-        let start = Cell::new(field(n, "start x", fields[4], WHOLE)?, field(n, "start y", fields[5], WHOLE)?);
-        let goal = Cell::new(field(n, "goal x", fields[6], WHOLE)?, field(n, "goal y", fields[7], WHOLE)?);
-        let optimal_length: f64 = field(n, "optimal length", fields[8], "non-negative number")?;
+        let bucket = field(n, "bucket", bucket, WHOLE)?;
+        let map_width: u32 = field(n, "width", width, WHOLE)?;
+        let map_height: u32 = field(n, "height", height, WHOLE)?;
+        Grid::cell_count(map_width as usize, map_height as usize)
+            .map_err(|e| err(n, ParseErrorKind::Grid(e)))?;
+        let start = Cell::new(field(n, "start x", sx, WHOLE)?, field(n, "start y", sy, WHOLE)?);
+        let goal = Cell::new(field(n, "goal x", gx, WHOLE)?, field(n, "goal y", gy, WHOLE)?);
+        const LENGTH: &str = "non-negative number";
+        let optimal_length: f64 = field(n, "optimal length", optimal, LENGTH)?;
         if !(optimal_length.is_finite() && optimal_length >= 0.0) {
-            return Err(err(
-                n,
-                ParseErrorKind::BadField {
-                    field: "optimal length",
-                    value: fields[8].to_string(),
-                    expected: "non-negative number",
-                },
-            ));
+            return Err(err(n, ParseErrorKind::BadField { field: "optimal length", expected: LENGTH }));
         }
         for (which, cell) in [("start", start), ("goal", goal)] {
             if cell.x >= map_width || cell.y >= map_height {
@@ -319,7 +359,7 @@ pub fn parse_scenarios(text: &str) -> Result<Vec<Scenario>, ParseError> {
         }
         out.push(Scenario {
             bucket,
-            map: fields[1].to_string(),
+            map: map.to_string(),
             map_width,
             map_height,
             start,
@@ -330,20 +370,20 @@ pub fn parse_scenarios(text: &str) -> Result<Vec<Scenario>, ParseError> {
     Ok(out)
 }
 
-fn read(path: &Path) -> Result<String, ReadError> {
-    std::fs::read_to_string(path).map_err(|source| ReadError::Io { path: path.to_path_buf(), source })
-}
-
-/// Reads and parses a `.map` file.
+/// Reads and parses a `.map` file: a regular file of at most [`MAX_MAP_FILE_BYTES`] bytes
+/// (read with [`read_to_string_capped`]).
 pub fn read_map(path: impl AsRef<Path>) -> Result<Grid, ReadError> {
     let path = path.as_ref();
-    parse_map(&read(path)?).map_err(|source| ReadError::Parse { path: path.to_path_buf(), source })
+    let text = read_to_string_capped(path, MAX_MAP_FILE_BYTES)?;
+    parse_map(&text).map_err(|source| ReadError::Parse { path: path.to_path_buf(), source })
 }
 
-/// Reads and parses a `.map.scen` file.
+/// Reads and parses a `.map.scen` file: a regular file of at most [`MAX_SCENARIO_FILE_BYTES`]
+/// bytes (read with [`read_to_string_capped`]).
 pub fn read_scenarios(path: impl AsRef<Path>) -> Result<Vec<Scenario>, ReadError> {
     let path = path.as_ref();
-    parse_scenarios(&read(path)?).map_err(|source| ReadError::Parse { path: path.to_path_buf(), source })
+    let text = read_to_string_capped(path, MAX_SCENARIO_FILE_BYTES)?;
+    parse_scenarios(&text).map_err(|source| ReadError::Parse { path: path.to_path_buf(), source })
 }
 
 #[cfg(test)]
@@ -375,8 +415,8 @@ mod tests {
     fn map_errors_name_the_line() {
         let cases: [(&str, usize, ParseErrorKind); 7] = [
             ("type octile\nheight 2\nmap\n..\n..\n", 3, ParseErrorKind::MissingHeader("width")),
-            ("height x\n", 1, ParseErrorKind::BadHeaderValue { key: "height", value: "x".into() }),
-            ("hight 2\n", 1, ParseErrorKind::UnknownHeader("hight 2".into())),
+            ("height x\n", 1, ParseErrorKind::BadHeaderValue { key: "height" }),
+            ("hight 2\n", 1, ParseErrorKind::UnknownHeader),
             ("height 2\nwidth 2\nmap\n..\n...\n", 5, ParseErrorKind::RowLength { expected: 2, found: 3 }),
             (
                 "height 2\nwidth 2\nmap\n..\n.x\n",
@@ -415,7 +455,8 @@ mod tests {
     #[test]
     fn scenario_errors_name_the_line() {
         let e = |t: &str| parse_scenarios(t).unwrap_err();
-        assert_eq!(e("version 2\n").kind, ParseErrorKind::Version("2".into()));
+        assert_eq!(e("version 2\n").kind, ParseErrorKind::Version);
+        assert_eq!(e("version 1\nversion 1\n"), ParseError { line: 2, kind: ParseErrorKind::Version });
         assert_eq!(
             e("version 1\n0 m 2 2 0 0 1\n"),
             ParseError { line: 2, kind: ParseErrorKind::FieldCount(7) }

@@ -48,7 +48,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::curve::{BSpline, Bezier, CubicHermite, CurveError};
+use crate::curve::{BSpline, Bezier, CubicHermite, CurveError, MAX_SAMPLES};
 use crate::freespace::orient;
 use crate::geometry::{Point, Vector};
 use crate::world::CollisionChecker;
@@ -105,16 +105,30 @@ impl Smoothed {
         self.pieces.iter().map(Bezier::length).sum()
     }
 
-    /// Points along the path, consecutive points at most `step` apart (`None` unless `step`
-    /// is positive and finite).
-    pub fn sample(&self, step: f64) -> Option<Vec<Point>> {
-        let mut points: Vec<Point> = Vec::new();
+    /// Points along the path, consecutive points at most `step` apart (each piece sampled by
+    /// [`Bezier::sample`], the point shared by two pieces once).
+    ///
+    /// Errors with [`CurveError::InvalidStep`] unless `step` is positive and finite, and with
+    /// [`CurveError::TooManySamples`] when all the pieces together would take more than
+    /// [`MAX_SAMPLES`] points (checked before anything is allocated).
+    pub fn sample(&self, step: f64) -> Result<Vec<Point>, CurveError> {
+        if !(step.is_finite() && step > 0.0) {
+            return Err(CurveError::InvalidStep(step));
+        }
+        let mut total = 1usize;
+        for piece in &self.pieces {
+            total = total.saturating_add(piece.sample_intervals(step)?);
+            if total > MAX_SAMPLES {
+                return Err(CurveError::TooManySamples { step });
+            }
+        }
+        let mut points: Vec<Point> = Vec::with_capacity(total);
         for piece in &self.pieces {
             let more = piece.sample(step)?;
             let skip = usize::from(!points.is_empty());
             points.extend(more.into_iter().skip(skip));
         }
-        Some(points)
+        Ok(points)
     }
 }
 

@@ -65,9 +65,9 @@ pub enum SamplerError {
 }
 
 /// The most attempts an obstacle sampler makes per sample: each attempt is up to two
-/// validity tests, so a planner iteration stays within tens of thousands of tests (at
+/// validity tests, so a planner iteration stays within a few hundred thousand tests (at
 /// `u32::MAX`, one iteration in a world without such states ran for hours).
-pub const MAX_ATTEMPTS: u32 = 10_000;
+pub const MAX_ATTEMPTS: u32 = 100_000;
 
 /// A source of the states a planner steers toward.
 pub trait StateSampler<S: StateSpace> {

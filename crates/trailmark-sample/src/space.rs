@@ -32,7 +32,7 @@ use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
 use thiserror::Error;
-use trailmark_core::dubins::DubinsPath;
+use trailmark_core::dubins::{DubinsPath, MAX_MAGNITUDE, MAX_NORMALISED_DISTANCE};
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::Bounds;
 
@@ -54,6 +54,19 @@ pub enum SpaceError {
     NoPosition {
         /// The dimension asked for.
         dimension: usize,
+    },
+    /// A turning radius so small beside the bounds (their diagonal more than
+    /// [`MAX_NORMALISED_DISTANCE`] radii) or so large that Dubins paths between poses of the
+    /// space are outside the solver's supported range.
+    #[error(
+        "a turning radius of {turning_radius:e} in bounds {diagonal:e} across is outside the supported range (the diagonal at most {max:e} radii)",
+        max = MAX_NORMALISED_DISTANCE
+    )]
+    TurningRadiusOutOfScale {
+        /// The turning radius.
+        turning_radius: f64,
+        /// The diagonal of the bounds.
+        diagonal: f64,
     },
     /// A weight or turning radius that is not positive and finite.
     #[error("the {what} must be positive and finite, got {value}")]
@@ -371,6 +384,11 @@ impl Dubins {
         if !(turning_radius.is_finite() && turning_radius > 0.0) {
             return Err(SpaceError::NotPositive { what: "turning radius", value: turning_radius });
         }
+        // Every two poses in the bounds must be within the Dubins solver's supported range.
+        let diagonal = (bounds.max() - bounds.min()).norm();
+        if !(turning_radius <= MAX_MAGNITUDE && diagonal / turning_radius <= MAX_NORMALISED_DISTANCE) {
+            return Err(SpaceError::TurningRadiusOutOfScale { turning_radius, diagonal });
+        }
         Ok(Dubins { bounds, turning_radius })
     }
 
@@ -385,6 +403,12 @@ impl Dubins {
     }
 
     /// The shortest Dubins path from `a` to `b`.
+    ///
+    /// # Panics
+    ///
+    /// If a pose is not finite or lies so far outside the bounds that the two are more than
+    /// [`MAX_NORMALISED_DISTANCE`] turning radii apart ([`new`](Self::new) guarantees the range
+    /// for poses in the bounds, which is where the planners' validity checks keep states).
     pub fn path(&self, a: &Pose, b: &Pose) -> DubinsPath {
         DubinsPath::shortest(a, b, self.turning_radius).expect("a valid radius and finite poses")
     }

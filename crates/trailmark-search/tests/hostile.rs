@@ -11,7 +11,7 @@ mod common;
 
 use common::walk_cost;
 use trailmark_core::cost::Cost;
-use trailmark_core::graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
+use trailmark_core::graph::EdgeChange;
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
 use trailmark_search::{
@@ -19,62 +19,10 @@ use trailmark_search::{
     dfs, dijkstra, weighted_astar,
 };
 
-/// A directed graph of nodes `0..n`, at most one edge per ordered pair.
-#[derive(Debug, Clone)]
-struct Digraph {
-    /// `cost[a][b]`: the cost of `a -> b`, `+inf` for no edge.
-    cost: Vec<Vec<Cost>>,
-}
+#[path = "common/digraph.rs"]
+mod digraph;
 
-impl Digraph {
-    /// `n` nodes and the edges `(from, to, cost)`.
-    fn new(n: usize, edges: &[(usize, usize, Cost)]) -> Self {
-        let mut cost = vec![vec![f64::INFINITY; n]; n];
-        for &(a, b, c) in edges {
-            cost[a][b] = c;
-        }
-        Digraph { cost }
-    }
-}
-
-impl Graph for Digraph {
-    type Node = usize;
-    fn contains(&self, node: usize) -> bool {
-        node < self.cost.len()
-    }
-}
-
-impl Successors for Digraph {
-    fn for_each_successor<F: FnMut(usize, Cost)>(&self, node: usize, mut visit: F) {
-        for (b, &c) in self.cost[node].iter().enumerate() {
-            if c != f64::INFINITY {
-                visit(b, c);
-            }
-        }
-    }
-}
-
-impl Predecessors for Digraph {
-    fn for_each_predecessor<F: FnMut(usize, Cost)>(&self, node: usize, mut visit: F) {
-        for (a, row) in self.cost.iter().enumerate() {
-            if row[node] != f64::INFINITY {
-                visit(a, row[node]);
-            }
-        }
-    }
-}
-
-impl IndexedGraph for Digraph {
-    fn node_bound(&self) -> usize {
-        self.cost.len()
-    }
-    fn index_of(&self, node: usize) -> usize {
-        node
-    }
-    fn node_at(&self, index: usize) -> usize {
-        index
-    }
-}
+use digraph::Digraph;
 
 /// What a planner answered: a path's nodes and reported cost, no path, or an error.
 type Answer = Result<Option<(Vec<usize>, Cost)>, SearchError<usize>>;

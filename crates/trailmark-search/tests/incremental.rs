@@ -7,7 +7,6 @@ mod common;
 use common::walk_cost;
 use proptest::prelude::*;
 use trailmark_core::cost::Cost;
-use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
 use trailmark_search::{
@@ -226,51 +225,10 @@ proptest! {
     }
 }
 
-/// A directed graph of nodes `0..n` with at most one edge per ordered pair, whose costs change.
-#[derive(Debug, Clone)]
-struct Digraph {
-    /// `cost[a][b]`: the cost of `a -> b`, `+inf` for no edge.
-    cost: Vec<Vec<Cost>>,
-}
+#[path = "common/digraph.rs"]
+mod digraph;
 
-impl Graph for Digraph {
-    type Node = usize;
-    fn contains(&self, node: usize) -> bool {
-        node < self.cost.len()
-    }
-}
-
-impl Successors for Digraph {
-    fn for_each_successor<F: FnMut(usize, Cost)>(&self, node: usize, mut visit: F) {
-        for (b, &c) in self.cost[node].iter().enumerate() {
-            if c != f64::INFINITY {
-                visit(b, c);
-            }
-        }
-    }
-}
-
-impl Predecessors for Digraph {
-    fn for_each_predecessor<F: FnMut(usize, Cost)>(&self, node: usize, mut visit: F) {
-        for (a, row) in self.cost.iter().enumerate() {
-            if row[node] != f64::INFINITY {
-                visit(a, row[node]);
-            }
-        }
-    }
-}
-
-impl IndexedGraph for Digraph {
-    fn node_bound(&self) -> usize {
-        self.cost.len()
-    }
-    fn index_of(&self, node: usize) -> usize {
-        node
-    }
-    fn node_at(&self, index: usize) -> usize {
-        index
-    }
-}
+use digraph::Digraph;
 
 /// Edge costs: none, or positive (tiny ones included, and repeated values for ties).
 fn edge_cost() -> impl Strategy<Value = Cost> {
@@ -370,7 +328,7 @@ fn bad_notifications_are_rejected_and_the_planner_stays_usable() {
 /// is fixed and the change told.
 #[test]
 fn invalid_edge_costs_are_reported_then_repaired() {
-    let mut graph = Digraph { cost: vec![vec![f64::INFINITY; 3]; 3] };
+    let mut graph = Digraph::new(3, &[]);
     graph.cost[0][1] = 1.0;
     graph.cost[1][2] = f64::NAN;
     graph.cost[0][2] = 5.0;
@@ -390,7 +348,7 @@ fn invalid_edge_costs_are_reported_then_repaired() {
 /// `valid_cost` in the source), both when met in the search and in a notification.
 #[test]
 fn zero_cost_edges_are_refused() {
-    let mut graph = Digraph { cost: vec![vec![f64::INFINITY; 2]; 2] };
+    let mut graph = Digraph::new(2, &[]);
     graph.cost[0][1] = 1.0;
     let zero = |_: usize, _: usize| 0.0;
     let mut planner = DStarLite::new(&graph, 0, 1, zero).unwrap();

@@ -42,8 +42,8 @@ pub struct Args {
     #[arg(long, default_value_t = 1)]
     seed: u64,
     /// Also compute D* Lite replanning's exact expected cost (one drive per distinct sequence of
-    /// what the vehicle sees, at most 2^n), up to this many choke points.
-    #[arg(long, default_value_t = 24)]
+    /// what the vehicle sees, at most 2^n), up to this many choke points (at most 32).
+    #[arg(long, default_value_t = 24, value_parser = parse_exact_up_to)]
     exact_up_to: usize,
     /// Leave the plan out of the output (print the figures only).
     #[arg(long)]
@@ -62,6 +62,12 @@ fn parse_cell_size(s: &str) -> Result<f64, String> {
     } else {
         Err(format!("{s}: pixels per cell must be in (0, 256]"))
     }
+}
+
+fn parse_exact_up_to(s: &str) -> Result<usize, String> {
+    let n: usize = s.parse().map_err(|e| format!("{s}: {e}"))?;
+    // 2^32 drives is days of work: a larger count would never finish.
+    if n <= 32 { Ok(n) } else { Err(format!("{s}: at most 32 choke points (up to 2^32 drives)")) }
 }
 
 fn parse_depth(s: &str) -> Result<usize, String> {

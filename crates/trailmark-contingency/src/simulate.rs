@@ -41,7 +41,15 @@ pub enum SimulationError {
     /// outcomes (it is deterministic, so this is a defect).
     #[error("naive replanning did not replay the same observations")]
     Replay,
+    /// More Monte Carlo samples than [`MAX_SAMPLES`].
+    #[error("at most {max} Monte Carlo samples, not {0}", max = MAX_SAMPLES)]
+    TooManySamples(usize),
 }
+
+/// The most worlds [`monte_carlo`] draws: it keeps each world's two drives (their routes
+/// included), so memory grows with the samples; a million estimate a mean to about a
+/// thousandth of its standard deviation.
+pub const MAX_SAMPLES: usize = 1_000_000;
 
 impl<N: std::fmt::Debug> From<SearchError<N>> for SimulationError {
     fn from(e: SearchError<N>) -> Self {
@@ -161,13 +169,17 @@ pub struct MonteCarlo {
     pub plan_dearer: usize,
 }
 
-/// Draws `samples` worlds from `seed` and drives both strategies in each.
+/// Draws `samples` worlds from `seed` (at most [`MAX_SAMPLES`]) and drives both strategies in
+/// each.
 pub fn monte_carlo(
     terrain: &Terrain,
     plan: &PlanNode,
     samples: usize,
     seed: u64,
 ) -> Result<MonteCarlo, SimulationError> {
+    if samples > MAX_SAMPLES {
+        return Err(SimulationError::TooManySamples(samples));
+    }
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut planned = Vec::with_capacity(samples);
     let mut naive = Vec::with_capacity(samples);

@@ -94,3 +94,18 @@ fn a_terrain_naming_dev_zero_or_a_directory_as_its_map_is_refused() {
         assert!(peak < 1 << 20, "{map}: {peak} bytes");
     }
 }
+
+/// A Monte Carlo run of `usize::MAX` samples asked for that many slots at once (a capacity
+/// overflow panic): the count has a documented maximum.
+#[test]
+fn monte_carlo_sample_counts_are_bounded() {
+    use trailmark_contingency::simulate::{MAX_SAMPLES, SimulationError, monte_carlo};
+    let terrain = river_terrain(1, &RiverOptions::default()).unwrap();
+    let planned =
+        trailmark_contingency::plan(&terrain, &trailmark_contingency::PlannerOptions::default()).unwrap();
+    for samples in [MAX_SAMPLES + 1, usize::MAX] {
+        let r = monte_carlo(&terrain, &planned.plan, samples, 1);
+        assert!(matches!(r, Err(SimulationError::TooManySamples(n)) if n == samples), "{samples}");
+    }
+    assert!(monte_carlo(&terrain, &planned.plan, 10, 1).is_ok());
+}

@@ -54,7 +54,7 @@ pub enum SearchError<N: Debug> {
     /// that reaches 1 in at most [`MAX_ITERATIONS`](crate::MAX_ITERATIONS) steps, each of which
     /// lowers the inflation (a step lost to rounding, as 1 is beside 1e20, never arrives).
     #[error(
-        "epsilon schedule invalid: initial {initial}, step {step}; need 1 <= initial <= {max}, and a finite step > 0 that lowers it to 1 in at most {iterations} iterations",
+        "epsilon schedule invalid: initial {initial:?}, step {step:?}; need 1 <= initial <= {max}, and a finite step > 0 that lowers it to 1 in at most {iterations} iterations",
         max = crate::MAX_EPSILON,
         iterations = crate::MAX_ITERATIONS
     )]

@@ -115,7 +115,7 @@ pub enum SolveError {
         heuristic: GridHeuristic,
     },
     /// A time limit that is negative, not a number, or above [`MAX_TIME_LIMIT_S`].
-    #[error("\"time_limit_s\" is {0}; it must be a number of seconds from 0 to {max}", max = MAX_TIME_LIMIT_S)]
+    #[error("\"time_limit_s\" is {0:?}; it must be a number of seconds from 0 to {max}", max = MAX_TIME_LIMIT_S)]
     TimeLimit(f64),
     /// A sampling planner's `max_iterations` above [`MAX_ITERATIONS`].
     #[error("\"max_iterations\" is {0}; a sampling planner runs at most {max} iterations", max = MAX_ITERATIONS)]
@@ -746,6 +746,11 @@ where
     let waypoint = |node| Waypoint::Point(query.position(node).coordinates());
     let mut result =
         search(query, query.start(), query.goal(), query.heuristic_between(), &problem.planner, waypoint)?;
+    // A sampled roadmap without a path proves nothing: more samples may find one.
+    let sampled = matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm));
+    if sampled && result.status == Status::NoPath {
+        result.status = Status::Stopped;
+    }
     let roadmap = query.roadmap();
     result.stats.graph = Some(GraphStats {
         nodes: roadmap.node_count(),

@@ -509,3 +509,20 @@ fn enormous_bounds_do_not_call_a_free_start_blocked() {
         assert!(matches!(error, SolveError::BelowResolution { which: "start", .. }), "{graph}: {error}");
     }
 }
+
+/// A sampled roadmap that does not join the start to the goal proves nothing (more samples may
+/// join them): "stopped", not "no_path". Here no sample at all, and edges too short to join.
+#[test]
+fn a_sampled_roadmap_without_a_path_says_stopped() {
+    for extra in [r#""samples": 0"#, r#""samples": 100, "radius": 1e-300"#] {
+        let p = document(
+            0.25,
+            &format!(
+                r#""graph": "prm", {extra}, "start": [1, 1], "goal": [9, 1], "planner": {{"name": "astar"}}"#
+            ),
+        );
+        let result = solve(&p, ".").unwrap();
+        assert_eq!(result.status, Status::Stopped, "{extra}");
+        assert!(result.path.is_empty() && result.cost.is_none(), "{extra}");
+    }
+}

@@ -226,6 +226,17 @@ fn no_path_within_the_limit_is_approximate() {
     assert!(result.stats.sampling.unwrap().goal_distance >= 5.2 - 1e-9);
 }
 
+/// A range so small that no motion leaves the start: the approximate path is the start alone,
+/// at cost +0 (an empty float sum had reported -0).
+#[test]
+fn a_path_of_one_state_costs_plus_zero() {
+    let result = solve(&document(r#""start": [1, 1], "goal": [9, 1], "planner": {"name": "rrt", "range": 1e-300, "max_iterations": 100}"#), ".").unwrap();
+    assert_eq!(result.status, Status::Approximate);
+    assert_eq!(result.path.len(), 1);
+    let cost = result.cost.unwrap();
+    assert!(cost == 0.0 && cost.is_sign_positive(), "{cost}");
+}
+
 #[test]
 fn bad_sampling_documents_give_typed_errors() {
     let err = |rest: &str| solve(&document(rest), ".").unwrap_err();

@@ -166,7 +166,11 @@ impl Run<'_> {
             planned
         };
         let simplify_time_s = clock.elapsed().as_secs_f64();
-        let cost = plan.path.as_ref().map(|_| path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum());
+        // A fold from +0: an empty float sum is -0.0.
+        let cost = plan
+            .path
+            .as_ref()
+            .map(|_| path.windows(2).fold(0.0, |total, m| total + space.distance(&m[0], &m[1])));
         // Sampling planners never prove that no path exists: they stop at their limit. A plan
         // with a path short of the goal is approximate; one with none at all (the planners of
         // trailmark-sample always return at least the start) is stopped, never "no path".

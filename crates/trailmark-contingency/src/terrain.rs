@@ -47,7 +47,7 @@ pub enum TerrainError {
     #[error(transparent)]
     Grid(#[from] GridError),
     /// A choke point's probability of being blocked is not in `[0, 1]` (or is NaN).
-    #[error("choke point {name:?}: probability {probability} is not in [0, 1]")]
+    #[error("choke point {name:?}: probability {probability:?} is not in [0, 1]")]
     Probability {
         /// The choke point's name.
         name: String,

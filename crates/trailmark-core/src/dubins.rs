@@ -150,7 +150,7 @@ impl std::fmt::Display for DubinsWord {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DubinsError {
     /// The turning radius must be positive and at most [`MAX_MAGNITUDE`].
-    #[error("the turning radius must be positive and at most {MAX_MAGNITUDE:e}, got {0}")]
+    #[error("the turning radius must be positive and at most {MAX_MAGNITUDE:e}, got {0:?}")]
     InvalidRadius(f64),
     /// A pose has a NaN or infinite coordinate or heading, a coordinate beyond
     /// [`MAX_MAGNITUDE`] in magnitude, or a rotation that is not a unit complex number (its

@@ -179,7 +179,7 @@ pub enum GridError {
     /// A cell cost is not a positive finite number of at most [`MAX_CELL_COST`], or `+inf`
     /// (blocked).
     #[error(
-        "cell {cell}: cost {cost} is invalid (a cell cost is positive and at most {MAX_CELL_COST:e}, or +inf for blocked)"
+        "cell {cell}: cost {cost:?} is invalid (a cell cost is positive and at most {MAX_CELL_COST:e}, or +inf for blocked)"
     )]
     InvalidCost {
         /// The cell.

@@ -411,13 +411,17 @@ pub struct IterationRecord {
 pub enum Status {
     /// A path was found.
     Solved,
-    /// The planner proved that no path exists (a search that ran to its end).
+    /// The planner proved that no path exists (a search that ran to its end over a grid or an
+    /// exact roadmap: the visibility graph or the trapezoidal cells of the free space, whose
+    /// round corners are polygons outside the exact disc, so a gap narrower than about 2% of
+    /// the robot radius beyond its width counts as closed).
     NoPath,
     /// A sampling planner stopped at its limit without reaching the goal: the path leads to
     /// the state nearest it (no proof that no path exists).
     Approximate,
     /// A limit stopped the planner before it found a path or proved there is none: an anytime
-    /// search out of time or expansions, a sampling planner with nothing to show. There is no
+    /// search out of time or expansions, a sampling planner with nothing to show, a sampled
+    /// roadmap (PRM) whose samples do not join the start to the goal. There is no
     /// path in the result, and nothing is known about whether one exists.
     Stopped,
 }

@@ -112,7 +112,7 @@ pub enum WorldError {
         ymax: f64,
     },
     /// The robot radius is negative or not finite.
-    #[error("robot radius {0} must be finite and non-negative")]
+    #[error("robot radius {0:?} must be finite and non-negative")]
     InvalidRadius(f64),
     /// The robot radius is larger than [`MAX_COORDINATE`].
     #[error("robot radius {0:e} is beyond {max:e}, the largest a world supports", max = MAX_COORDINATE)]

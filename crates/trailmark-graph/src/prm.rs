@@ -285,13 +285,13 @@ pub enum PrmError {
     #[error("a nearest-neighbour connection needs k >= 1")]
     InvalidK,
     /// A connection radius must be positive and finite.
-    #[error("the connection radius must be positive and finite, got {0}")]
+    #[error("the connection radius must be positive and finite, got {0:?}")]
     InvalidRadius(f64),
     /// `attempts_per_sample` must be at least 1.
     #[error("attempts_per_sample must be at least 1")]
     InvalidAttempts,
     /// A Dubins turning radius must be positive and finite.
-    #[error("the turning radius must be positive and finite, got {0}")]
+    #[error("the turning radius must be positive and finite, got {0:?}")]
     InvalidTurningRadius(f64),
     /// [`Prm::grow`] ran out of draws: the free space is empty or very small. The samples
     /// found were added.

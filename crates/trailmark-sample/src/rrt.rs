@@ -409,7 +409,8 @@ fn prepare<S: StateSpace, V: Validity<S>>(
 
 /// The cost of a path: its motions' distances summed.
 pub(crate) fn cost_of<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
-    path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum()
+    // A fold from +0: an empty float sum is -0.0, which a one-state path would report.
+    path.windows(2).fold(0.0, |total, m| total + space.distance(&m[0], &m[1]))
 }
 
 /// RRT for `query`, nearest neighbours from `nearest` (empty), samples from a ChaCha8 generator

@@ -51,10 +51,10 @@ use crate::validity::Validity;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SamplerError {
     /// A standard deviation that is not positive and finite.
-    #[error("the sampler's standard deviation must be positive and finite, got {0}")]
+    #[error("the sampler's standard deviation must be positive and finite, got {0:?}")]
     StdDev(f64),
     /// A share outside `[0, 1]`.
-    #[error("the sampler's share must be in [0, 1], got {0}")]
+    #[error("the sampler's share must be in [0, 1], got {0:?}")]
     Share(f64),
     /// No attempts.
     #[error("the sampler needs at least one attempt")]

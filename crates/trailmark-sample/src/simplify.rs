@@ -42,7 +42,7 @@ pub fn shortcut<S: StateSpace, V: Validity<S>>(
         return path;
     }
     let cost = |path: &[S::State], i: usize, j: usize| -> f64 {
-        path[i..=j].windows(2).map(|m| space.distance(&m[0], &m[1])).sum()
+        path[i..=j].windows(2).fold(0.0, |total, m| total + space.distance(&m[0], &m[1]))
     };
     // Greedy: from each kept state, the farthest state reachable in one cheaper motion.
     let mut kept = vec![path[0].clone()];

@@ -69,7 +69,7 @@ pub enum SpaceError {
         diagonal: f64,
     },
     /// A weight or turning radius that is not positive and finite.
-    #[error("the {what} must be positive and finite, got {value}")]
+    #[error("the {what} must be positive and finite, got {value:?}")]
     NotPositive {
         /// What it is.
         what: &'static str,

@@ -15,7 +15,7 @@ pub enum SearchError<N: Debug> {
     #[error("the goal {0:?} is not a node of the graph (outside it or blocked)")]
     GoalNotInGraph(N),
     /// The graph reported an edge with a negative or NaN cost.
-    #[error("the edge {from:?} -> {to:?} has cost {cost}; edge costs must be non-negative")]
+    #[error("the edge {from:?} -> {to:?} has cost {cost:?}; edge costs must be non-negative")]
     InvalidEdgeCost {
         /// The tail of the edge.
         from: N,
@@ -44,7 +44,7 @@ pub enum SearchError<N: Debug> {
     },
     /// A weighted search was given a weight that is not a number from 1 to
     /// [`MAX_WEIGHT`](crate::MAX_WEIGHT).
-    #[error("weight {0} is invalid: the heuristic weight must be a number from 1 to {max}", max = crate::MAX_WEIGHT)]
+    #[error("weight {0:?} is invalid: the heuristic weight must be a number from 1 to {max}", max = crate::MAX_WEIGHT)]
     InvalidWeight(f64),
     /// A change notification named a node the graph does not have and cannot have (a cell
     /// outside the grid); nothing of the notification was applied.

@@ -78,6 +78,19 @@ pub enum SpaceError {
     },
 }
 
+/// The length of `v`, never 0 for a non-zero vector: the plain norm squares the coordinates,
+/// which underflows to 0 below about 1e-154 (two distinct states at distance 0 had ended a
+/// plan at a state that was not the goal); then the vector is scaled first.
+#[inline]
+fn separation<const N: usize>(v: &SVector<f64, N>) -> f64 {
+    let d = v.norm();
+    if d > 0.0 || v.iter().all(|&c| c == 0.0) {
+        return d;
+    }
+    let largest = v.amax();
+    largest * (v / largest).norm()
+}
+
 /// A space of states a sampling planner moves in.
 pub trait StateSpace {
     /// A state.
@@ -193,7 +206,7 @@ impl StateSpace for R2 {
 
     #[inline]
     fn distance(&self, a: &Point, b: &Point) -> f64 {
-        (b - a).norm()
+        separation(&(b - a).into())
     }
 
     #[inline]
@@ -265,7 +278,7 @@ impl<const N: usize> StateSpace for Rn<N> {
     }
 
     fn distance(&self, a: &SVector<f64, N>, b: &SVector<f64, N>) -> f64 {
-        (b - a).norm()
+        separation(&(b - a))
     }
 
     fn interpolate(&self, a: &SVector<f64, N>, b: &SVector<f64, N>, t: f64) -> SVector<f64, N> {

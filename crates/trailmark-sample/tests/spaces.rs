@@ -125,3 +125,18 @@ fn the_dubins_space_is_asymmetric() {
     assert!((space.distance(&a, &b) - 3.0).abs() < 1e-12); // straight ahead
     assert!(space.distance(&b, &a) > 3.0 + std::f64::consts::PI); // turn around and come back
 }
+
+/// Distances between distinct states are never 0, however close: squaring coordinates of
+/// 1e-300 underflows, and a plan had ended at (0, 0) for a goal at (4e-300, 1e-300).
+#[test]
+fn tiny_distances_do_not_underflow_to_zero() {
+    let bounds = trailmark_core::world::Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap();
+    let r2 = R2::new(bounds);
+    let (a, b) = (
+        trailmark_core::geometry::Point::new(0.0, 0.0),
+        trailmark_core::geometry::Point::new(4e-300, 1e-300),
+    );
+    let d = r2.distance(&a, &b);
+    assert!(d > 0.0 && (d - 17f64.sqrt() * 1e-300).abs() < 1e-310, "{d}");
+    assert_eq!(r2.distance(&a, &a), 0.0);
+}

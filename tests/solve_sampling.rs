@@ -226,6 +226,21 @@ fn no_path_within_the_limit_is_approximate() {
     assert!(result.stats.sampling.unwrap().goal_distance >= 5.2 - 1e-9);
 }
 
+/// RRT-Connect's connect phase is bounded: with a range of 1e-7 across the world one
+/// iteration had run for minutes, past its iteration and time limits.
+#[test]
+fn rrt_connect_with_a_tiny_range_keeps_its_limits() {
+    for limits in [r#""max_iterations": 1"#, r#""max_iterations": 10000000, "time_limit_s": 0.2"#] {
+        let clock = std::time::Instant::now();
+        let doc = format!(
+            r#""start": [1, 1], "goal": [9, 9], "planner": {{"name": "rrt_connect", "range": 1e-7, {limits}}}"#
+        );
+        let result = solve(&document(&doc), ".").unwrap();
+        assert_eq!(result.status, Status::Approximate, "{limits}");
+        assert!(clock.elapsed().as_secs() < 30, "{limits}: {:?}", clock.elapsed());
+    }
+}
+
 /// A range so small that no motion leaves the start: the approximate path is the start alone,
 /// at cost +0 (an empty float sum had reported -0).
 #[test]

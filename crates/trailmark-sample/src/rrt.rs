@@ -130,6 +130,11 @@ impl std::fmt::Debug for Termination {
     }
 }
 
+/// The most extensions one connect phase of RRT-Connect makes toward a new state before the
+/// next iteration begins: the tree keeps what it grew, and the limits are checked again (a range
+/// of 1e-7 across a world of 10 had made one iteration run for minutes).
+pub const MAX_CONNECT_STEPS: usize = 10_000;
+
 impl Termination {
     /// Stop after `n` iterations.
     pub fn iterations(n: u64) -> Self {
@@ -520,7 +525,13 @@ where
         };
         if let Some(new) = new {
             let target = first.state(new).clone();
-            loop {
+            for step in 0..MAX_CONNECT_STEPS {
+                // The connect phase answers to the time limit and the caller's condition too
+                // (checked every 256 steps): with a tiny range it can take millions of steps.
+                // (As of the iteration before: the iteration count's own limit ends the loop.)
+                if step % 256 == 255 && termination.reached(stats.iterations - 1, &clock, None) {
+                    break;
+                }
                 match second.extend(space, validity, &target, range, &mut stats.collision_checks) {
                     Extension::Trapped => break,
                     Extension::Advanced(_) => {}

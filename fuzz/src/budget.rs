@@ -1,0 +1,129 @@
+//! Which inputs are quick enough to run: the targets skip the others (they never edit an input
+//! to make it quick, which would hide the value that mattered).
+//!
+//! The bounds keep one run well under libFuzzer's `-timeout` on a slow machine; they are far
+//! above what the hostile values need (a 100-cell grid shows a bad weight as well as a
+//! 10,000-cell one).
+
+use trailmark::problem::{GraphKind, PlannerSpec, Problem, SamplerSpec, SpaceKind, World};
+use trailmark_core::world::PolygonWorld;
+
+/// The most cells of a grid world.
+pub const MAX_GRID_CELLS: usize = 10_000;
+/// The most vertices of all the obstacles of a polygon world.
+pub const MAX_OBSTACLE_VERTICES: usize = 40;
+/// The most obstacles of a polygon world.
+pub const MAX_OBSTACLES: usize = 8;
+/// The most samples of a straight-line PRM (the default, without `samples`, is 1000).
+pub const MAX_PRM_SAMPLES: usize = 1000;
+/// The most samples of a Dubins PRM.
+pub const MAX_DUBINS_SAMPLES: usize = 150;
+/// The most iterations of a sampling planner.
+pub const MAX_SAMPLING_ITERATIONS: u64 = 3000;
+/// The longest time limit of a planner that has no smaller limit of iterations, in seconds.
+pub const MAX_TIME_LIMIT_S: f64 = 0.5;
+/// The most tries of a bridge or Gaussian sampler per sample (the default is 100).
+pub const MAX_SAMPLER_ATTEMPTS: u32 = 100;
+/// The most (cells x anytime iterations) of an ARA* or AD* run without a smaller limit.
+pub const MAX_ANYTIME_WORK: u64 = 5_000_000;
+
+/// Whether `problem` is small enough to solve in a fuzzing run, and names no file outside the
+/// (nonexistent) base folder.
+pub fn problem_is_quick(problem: &Problem) -> bool {
+    let cells = match &problem.world {
+        World::Grid(world) => {
+            if world.map.as_ref().is_some_and(|m| m.is_absolute() || m.has_root()) {
+                return false; // Path::join would leave the base folder: never read a file.
+            }
+            let rows = world.rows.as_deref().unwrap_or_default();
+            let width = rows.first().map_or(0, |r| r.chars().count());
+            let cells = rows.len().saturating_mul(width);
+            let text: usize = rows.iter().map(String::len).sum();
+            if cells > MAX_GRID_CELLS || text > 4 * MAX_GRID_CELLS {
+                return false;
+            }
+            cells
+        }
+        World::Polygons(world) => {
+            if !polygons_are_quick(world) {
+                return false;
+            }
+            0
+        }
+    };
+    let time_ok = |t: Option<f64>| t.is_some_and(|t| t <= MAX_TIME_LIMIT_S);
+    match &problem.planner {
+        PlannerSpec::AraStar { epsilon, epsilon_step, time_limit_s, max_expansions, .. }
+        | PlannerSpec::AdStar { epsilon, epsilon_step, time_limit_s, max_expansions, .. } => {
+            let schedule =
+                trailmark::search::EpsilonSchedule::new(epsilon.unwrap_or(3.0), epsilon_step.unwrap_or(0.5));
+            let nodes = if cells > 0 { cells } else { roadmap_nodes(problem) };
+            let work = (nodes as u64).saturating_mul(schedule.iterations() as u64);
+            if !(work <= MAX_ANYTIME_WORK
+                || max_expansions.is_some_and(|e| e <= MAX_ANYTIME_WORK)
+                || time_ok(*time_limit_s))
+            {
+                return false;
+            }
+        }
+        PlannerSpec::Rrt(spec) | PlannerSpec::RrtConnect(spec) | PlannerSpec::RrtStar(spec) => {
+            let iterations_ok = match spec.max_iterations {
+                Some(n) => n <= MAX_SAMPLING_ITERATIONS,
+                None => {
+                    spec.time_limit_s.is_none()
+                        && trailmark::solve::DEFAULT_ITERATIONS <= MAX_SAMPLING_ITERATIONS
+                }
+            };
+            if !(iterations_ok || time_ok(spec.time_limit_s)) {
+                return false;
+            }
+            let attempts = match spec.sampler {
+                Some(SamplerSpec::Bridge { attempts, .. } | SamplerSpec::Gaussian { attempts, .. }) => {
+                    attempts
+                }
+                _ => None,
+            };
+            if attempts.is_some_and(|a| a > MAX_SAMPLER_ATTEMPTS) {
+                return false;
+            }
+            // RRT* over Dubins curves is the slowest: fewer iterations.
+            if problem.space == Some(SpaceKind::Dubins)
+                && matches!(problem.planner, PlannerSpec::RrtStar(_))
+                && !(spec.max_iterations.is_some_and(|n| n <= MAX_SAMPLING_ITERATIONS / 3)
+                    || time_ok(spec.time_limit_s))
+            {
+                return false;
+            }
+        }
+        _ => {}
+    }
+    if matches!(problem.world, World::Polygons(_)) {
+        let samples = problem.samples.unwrap_or(trailmark::solve::DEFAULT_SAMPLES);
+        match problem.graph {
+            Some(GraphKind::Prm) if samples > MAX_PRM_SAMPLES => return false,
+            Some(GraphKind::DubinsPrm) if samples > MAX_DUBINS_SAMPLES => return false,
+            _ => {}
+        }
+    }
+    true
+}
+
+/// A rough count of the nodes of the roadmap a polygon-world problem searches.
+fn roadmap_nodes(problem: &Problem) -> usize {
+    match problem.graph {
+        Some(GraphKind::Prm | GraphKind::DubinsPrm) => {
+            problem.samples.unwrap_or(trailmark::solve::DEFAULT_SAMPLES) + 2
+        }
+        _ => match &problem.world {
+            // Grown corners are arcs of up to 16 vertices.
+            World::Polygons(w) => 16 * w.obstacles().iter().map(|o| o.vertices().len()).sum::<usize>() + 6,
+            World::Grid(_) => 0,
+        },
+    }
+}
+
+/// Whether a polygon world has few enough obstacles and vertices.
+pub fn polygons_are_quick(world: &PolygonWorld) -> bool {
+    let vertices: usize = world.obstacles().iter().map(|o| o.vertices().len()).sum();
+    world.obstacles().len() <= MAX_OBSTACLES && vertices <= MAX_OBSTACLE_VERTICES
+}

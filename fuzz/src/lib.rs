@@ -1,0 +1,51 @@
+//! The checks shared by trailmark's fuzz targets (`fuzz_targets/*.rs`).
+//!
+//! Every check here is independent of the code it checks: grid paths are re-costed and compared
+//! with a Dijkstra search and a breadth-first search written here ([`grid`]), polygon paths are
+//! sampled and each sample tested with the plain O(n) distance test
+//! [`PolygonWorld::reference_is_clear`](trailmark_core::world::PolygonWorld::reference_is_clear)
+//! ([`polygon`]). A failed check panics, which libFuzzer reports as a crash with the input.
+//!
+//! Inputs that would take long (large grids, many samples or iterations) are skipped, never
+//! edited: [`budget::problem_is_quick`] says which.
+
+pub mod budget;
+pub mod generate;
+pub mod grid;
+pub mod movingai;
+pub mod polygon;
+pub mod terrain;
+
+use std::path::Path;
+
+use trailmark::problem::{Problem, World};
+
+/// The folder relative map paths are resolved against: one that does not exist, so that no
+/// map file is ever read (absolute paths are skipped by [`budget::problem_is_quick`]).
+pub const NO_DIR: &str = "/nonexistent-dir";
+
+/// Whether `a` and `b` agree to `rel` relative to the larger of them (or are both tiny).
+pub fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * a.abs().max(b.abs()) + 16.0 * f64::MIN_POSITIVE
+}
+
+/// Solves `problem` when it is quick enough, and checks every path it returns.
+pub fn solve_and_check(problem: &Problem) {
+    if !budget::problem_is_quick(problem) {
+        return;
+    }
+    let Ok(result) = trailmark::solve::solve(problem, Path::new(NO_DIR)) else {
+        return;
+    };
+    match &problem.world {
+        World::Grid(world) => grid::check_result(problem, world, &result),
+        World::Polygons(world) => polygon::check_result(problem, world, &result),
+    }
+}
+
+/// Parses `bytes` as a problem document and, when it is one, runs [`solve_and_check`].
+pub fn problem_bytes(bytes: &[u8]) {
+    if let Ok(problem) = serde_json::from_slice::<Problem>(bytes) {
+        solve_and_check(&problem);
+    }
+}

@@ -1,0 +1,199 @@
+//! Polygon worlds: every waypoint in the bounds, every motion sampled every 1/200 of its length
+//! and each sample tested with the plain O(n) distance test
+//! [`PolygonWorld::reference_is_clear`], and the cost equal to the path's length.
+//!
+//! Straight motions for the visibility, trapezoid and PRM roadmaps and the `r2` sampling
+//! planners; shortest Dubins curves for the `dubins_prm` roadmap and the `dubins` space.
+
+use trailmark::problem::{GraphKind, PlannerSpec, Problem, SolveResult, SpaceKind, Status, Waypoint};
+use trailmark_core::dubins::DubinsPath;
+use trailmark_core::geometry::{Point, Pose, Vector};
+use trailmark_core::world::PolygonWorld;
+
+use crate::close;
+
+/// Samples per motion.
+pub const SAMPLES_PER_MOTION: usize = 200;
+
+/// The relative tolerance of a path's cost against its measured length.
+pub const LENGTH_TOLERANCE: f64 = 1e-9;
+
+/// The world's scale: the larger of its bounds' larger side and its largest coordinate
+/// magnitude (distances computed at large coordinates carry rounding of that magnitude).
+pub fn scale(world: &PolygonWorld) -> f64 {
+    let (lo, hi) = (world.bounds().min(), world.bounds().max());
+    let side = (hi.x - lo.x).max(hi.y - lo.y);
+    [lo.x, lo.y, hi.x, hi.y].iter().fold(side, |m, v| m.max(v.abs()))
+}
+
+/// Whether the result is over poses (Dubins curves) rather than points.
+fn is_dubins(problem: &Problem) -> bool {
+    match problem.planner.sampling() {
+        Some(_) => problem.space == Some(SpaceKind::Dubins),
+        None => problem.graph == Some(GraphKind::DubinsPrm),
+    }
+}
+
+/// Checks the result of a polygon-world problem that `solve` accepted.
+pub fn check_result(problem: &Problem, world: &PolygonWorld, result: &SolveResult) {
+    let planner = problem.planner.name();
+    let sampling = problem.planner.sampling().is_some();
+    let sampled_roadmap = !sampling && matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm));
+    match result.status {
+        Status::Solved => {}
+        Status::Approximate => assert!(sampling, "{planner} (a search) gave an approximate path"),
+        Status::NoPath => {
+            assert!(!sampling, "{planner} (a sampling planner) claims to prove no path exists");
+            assert!(!sampled_roadmap, "{planner} on a sampled roadmap claims to prove no path exists");
+            assert!(result.path.is_empty() && result.cost.is_none(), "no_path with a path or cost");
+            return;
+        }
+        Status::Stopped => {
+            // A limit stopped it (sampling and anytime planners), or a sampled roadmap does not
+            // join the ends, which proves nothing.
+            let anytime = matches!(problem.planner, PlannerSpec::AraStar { .. } | PlannerSpec::AdStar { .. });
+            assert!(sampling || anytime || sampled_roadmap, "{planner} stopped on an exact roadmap");
+            assert!(result.path.is_empty() && result.cost.is_none(), "stopped with a path or cost");
+            return;
+        }
+    }
+    let solved = result.status == Status::Solved;
+    let tolerance = 1e-9 * scale(world);
+    let clear = |p: Point, what: &str| {
+        assert!(
+            is_clear(world, p, tolerance),
+            "{planner}: {what} ({}, {}) is not clear (bounds {:?}, radius {})",
+            p.x,
+            p.y,
+            world.bounds(),
+            world.robot_radius()
+        );
+    };
+    // A point computed along a curve may round past the bounds where the curve runs along
+    // them: samples (not waypoints) within the tolerance outside are moved onto the bounds.
+    let (lo, hi) = (world.bounds().min(), world.bounds().max());
+    let onto_bounds = |p: Point| {
+        let near = |v: f64, a: f64, b: f64| {
+            if v < a && v >= a - tolerance {
+                a
+            } else if v > b && v <= b + tolerance {
+                b
+            } else {
+                v
+            }
+        };
+        Point::new(near(p.x, lo.x, hi.x), near(p.y, lo.y, hi.y))
+    };
+    let coordinates: Vec<&[f64]> = result
+        .path
+        .iter()
+        .map(|w| match w {
+            Waypoint::Point(p) => p.as_slice(),
+            Waypoint::Cell(c) => panic!("a polygon-world path holds the cell {c}"),
+        })
+        .collect();
+    assert!(!coordinates.is_empty(), "{planner}: a {:?} result without a path", result.status);
+    let cost = result.cost.unwrap_or_else(|| panic!("{planner}: a path without a cost"));
+    assert!(cost.is_finite() && cost >= 0.0, "{planner}: cost {cost}");
+    let length = if is_dubins(problem) {
+        let radius = problem.turning_radius.expect("a Dubins problem without a turning radius");
+        let pose = |c: &[f64]| match *c {
+            [x, y, theta] => Pose::new(Vector::new(x, y), theta),
+            _ => panic!("{planner}: the Dubins waypoint {c:?} is not [x, y, heading]"),
+        };
+        let poses: Vec<Pose> = coordinates.iter().map(|c| pose(c)).collect();
+        assert_same_pose(&poses[0], &problem.start, "start");
+        if solved {
+            assert_same_pose(poses.last().unwrap(), &problem.goal, "goal");
+        }
+        for (i, p) in poses.iter().enumerate() {
+            clear(Point::from(p.translation.vector), &format!("waypoint {i}"));
+        }
+        let mut length = 0.0;
+        for (i, pair) in poses.windows(2).enumerate() {
+            let curve = DubinsPath::shortest(&pair[0], &pair[1], radius)
+                .unwrap_or_else(|e| panic!("{planner}: no Dubins curve for motion {i}: {e}"));
+            let l = curve.length();
+            for k in 0..=SAMPLES_PER_MOTION {
+                let s = (l * k as f64 / SAMPLES_PER_MOTION as f64).min(l);
+                let at = curve.pose_at(s).unwrap_or_else(|e| panic!("pose_at({s}) of a {l} curve: {e}"));
+                clear(onto_bounds(Point::from(at.translation.vector)), &format!("motion {i} at {s}"));
+            }
+            length += l;
+        }
+        length
+    } else {
+        let point = |c: &[f64]| match *c {
+            [x, y] => Point::new(x, y),
+            _ => panic!("{planner}: the waypoint {c:?} is not [x, y]"),
+        };
+        let points: Vec<Point> = coordinates.iter().map(|c| point(c)).collect();
+        let same = |p: Point, q: &[f64], what: &str| {
+            assert!(
+                q.len() == 2 && p.x == q[0] && p.y == q[1],
+                "{planner}: the path's {what} {p:?} is not {q:?}"
+            );
+        };
+        same(points[0], &problem.start, "first point");
+        if solved {
+            same(*points.last().unwrap(), &problem.goal, "last point");
+        }
+        for (i, &p) in points.iter().enumerate() {
+            clear(p, &format!("waypoint {i}"));
+        }
+        for (i, pair) in points.windows(2).enumerate() {
+            let (a, b) = (pair[0], pair[1]);
+            let (lo, hi) = (Point::new(a.x.min(b.x), a.y.min(b.y)), Point::new(a.x.max(b.x), a.y.max(b.y)));
+            for k in 1..SAMPLES_PER_MOTION {
+                let t = k as f64 / SAMPLES_PER_MOTION as f64;
+                let p = a + (b - a) * t;
+                // Rounding must not carry a sample past the segment's ends (out of the bounds).
+                let p = Point::new(p.x.clamp(lo.x, hi.x), p.y.clamp(lo.y, hi.y));
+                clear(p, &format!("motion {i} at t = {t}"));
+            }
+        }
+        points.windows(2).map(|m| (m[1] - m[0]).norm()).sum()
+    };
+    assert!(close(cost, length, LENGTH_TOLERANCE), "{planner}: cost {cost} but the path is {length} long");
+}
+
+/// Asserts that `pose` is at the position of `given` (`[x, y, heading]`) with its heading.
+fn assert_same_pose(pose: &Pose, given: &[f64], what: &str) {
+    let [x, y, theta] = *given else { panic!("the {what} {given:?} is not a pose") };
+    let at = pose.translation.vector;
+    assert!(at.x == x && at.y == y, "the path's {what} ({}, {}) is not ({x}, {y})", at.x, at.y);
+    // Compare directions, not angles: a heading of 1e12 rad is a direction known to its cos/sin.
+    let (c, s) = (pose.rotation.cos_angle(), pose.rotation.sin_angle());
+    assert!(
+        (c - theta.cos()).abs() <= 1e-9 && (s - theta.sin()).abs() <= 1e-9,
+        "the path's {what} heading {} is not {theta}",
+        pose.rotation.angle()
+    );
+}
+
+/// Whether the robot at `p` is clear of every obstacle to within `tolerance`, its centre in the
+/// bounds: [`PolygonWorld::reference_is_clear`], and where that fails, the same test with the
+/// tolerance applied inside the obstacles too. The reference test counts a point strictly inside
+/// an obstacle as blocked however close to its edge, so that a robot of radius 0 sliding along
+/// an edge fails it wherever a sample rounds to the inside; here such a point passes when its
+/// depth is within the tolerance (its signed distance `-depth >= radius - tolerance`).
+pub fn is_clear(world: &PolygonWorld, p: Point, tolerance: f64) -> bool {
+    if world.reference_is_clear(p, tolerance) {
+        return true;
+    }
+    let r = world.robot_radius() - tolerance;
+    world.bounds().contains(p)
+        && world.obstacles().iter().all(|o| {
+            let v = o.vertices();
+            let edges = (0..v.len()).map(|i| (v[i], v[(i + 1) % v.len()]));
+            let to_edges = edges
+                .map(|(a, b)| {
+                    let ab = b - a;
+                    let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+                    (p - (a + ab * t)).norm()
+                })
+                .fold(f64::INFINITY, f64::min);
+            let signed = if o.contains_strictly(p) { -to_edges } else { to_edges };
+            signed >= r
+        })
+}

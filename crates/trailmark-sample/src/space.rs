@@ -206,7 +206,7 @@ impl StateSpace for R2 {
 
     #[inline]
     fn distance(&self, a: &Point, b: &Point) -> f64 {
-        separation(&(b - a).into())
+        separation(&(b - a))
     }
 
     #[inline]

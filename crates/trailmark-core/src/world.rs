@@ -313,8 +313,11 @@ impl From<Polygon> for Vec<[f64; 2]> {
 }
 
 fn signed_area(v: &[Point]) -> f64 {
+    // Relative to the first vertex: with coordinates near 1e9, the plain shoelace's products
+    // (about 1e18) cancel away a small ring's area and can give it the wrong sign.
+    let Some(&o) = v.first() else { return 0.0 };
     let n = v.len();
-    0.5 * (0..n).map(|i| v[i].x * v[(i + 1) % n].y - v[(i + 1) % n].x * v[i].y).sum::<f64>()
+    0.5 * (1..n.saturating_sub(1)).map(|i| (v[i] - o).perp(&(v[i + 1] - o))).sum::<f64>()
 }
 
 /// The first pair of edges that intersect other than at the shared vertex of consecutive edges
@@ -566,6 +569,26 @@ impl PolygonWorld {
                 // The nearest: two vertices closer than the tolerance must not swap.
                 .min_by(|a, b| (a - p).norm().total_cmp(&(b - p).norm()))
                 .unwrap_or(p)
+        };
+        // Where an obstacle crosses the bounds, the union puts the crossing a rounding away
+        // from the side, inside or out, and a vertex restored exactly on the side (an obstacle
+        // touching it) can then lie outside the free space's outer ring: put points within a
+        // rounding of a side (1/64 of the resolution, which the grown obstacles' margin covers)
+        // on the side, exactly, and those outside onto it.
+        let (lo, hi) = (self.bounds.min, self.bounds.max);
+        let rounding = tolerance / 64.0;
+        let onto_side = |v: f64, min: f64, max: f64| {
+            if v - min <= rounding {
+                min
+            } else if max - v <= rounding {
+                max
+            } else {
+                v
+            }
+        };
+        let restore = |p: Point| {
+            let p = restore(p);
+            Point::new(onto_side(p.x, lo.x, hi.x), onto_side(p.y, lo.y, hi.y))
         };
         let mut rings = Vec::new();
         for polygon in free.iter() {
@@ -930,6 +953,21 @@ mod tests {
 
     fn square(x: f64, y: f64, s: f64) -> Vec<Point> {
         vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]
+    }
+
+    /// Far from the origin, a small ring's area is the same as at the origin (the shoelace on
+    /// raw coordinates cancelled it away and could flip its sign).
+    #[test]
+    fn areas_do_not_depend_on_where_the_ring_is() {
+        for (x, y) in [(0.0, 0.0), (990000098.9042064, 990000098.9042064), (-1e9, 1e9)] {
+            let ring =
+                [p(x + 1.0958, y), p(x + 0.6019, y + 0.6019), p(x, y + 1.0958), p(x + 1.0958, y + 1.0958)];
+            let area = signed_area(&ring);
+            let reference = signed_area(&ring.map(|q| p(q.x - x, q.y - y)));
+            // Clockwise: the pocket the trapezoid sweep met near 1e9.
+            assert!(reference < -0.5, "{reference}");
+            assert!((area - reference).abs() <= 1e-6, "at ({x}, {y}): {area} vs {reference}");
+        }
     }
 
     #[test]

@@ -304,8 +304,11 @@ impl Trapezoids {
             for &v in at_x {
                 for bottom in gap_bottoms(&status, &edges, v) {
                     if open_above[bottom as usize].is_none() {
-                        let k = status.iter().position(|&s| s == bottom).expect("in the status");
-                        let top = status[k + 1];
+                        // A free-above edge has a boundary edge above it in a valid free
+                        // space; rings that break that (crossing each other after rounding)
+                        // leave the gap without a cell rather than panic.
+                        let Some(k) = status.iter().position(|&s| s == bottom) else { continue };
+                        let Some(&top) = status.get(k + 1) else { continue };
                         let open = Open { cell: cells.len() as u32, bottom, top };
                         cells.push(Trapezoid {
                             left: x,

@@ -494,11 +494,17 @@ impl Status {
 
     /// Inserts `edge` at `at`, where the edge it continues (ending at the vertex `edge` starts
     /// from) was: every other edge crossing the ray is nearer or farther than that vertex, so
-    /// the order is unchanged.
+    /// the order is unchanged. Where the neighbours say otherwise (boundary rings that cross
+    /// after rounding), the edge is inserted by search instead.
     fn replace_at(&mut self, at: usize, edge: Active) {
-        debug_assert!(at == 0 || self.edges[at - 1].order(&edge) == Ordering::Less);
-        debug_assert!(self.edges.get(at).is_none_or(|x| x.order(&edge) == Ordering::Greater));
-        self.edges.insert(at, edge);
+        let after_previous =
+            at == 0 || self.edges.get(at - 1).is_some_and(|x| x.order(&edge) == Ordering::Less);
+        let before_next = self.edges.get(at).is_none_or(|x| x.order(&edge) == Ordering::Greater);
+        if after_previous && before_next {
+            self.edges.insert(at, edge);
+        } else {
+            self.insert(edge);
+        }
     }
 
     fn first(&self) -> Option<&Active> {

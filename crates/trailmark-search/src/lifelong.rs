@@ -10,7 +10,7 @@
 //! Lite's goal); the node whose value the loop computes is the *target* (LPA*'s goal, D* Lite's
 //! current start).
 
-use std::collections::HashSet;
+use std::collections::{HashMap, VecDeque};
 use std::fmt::Debug;
 
 use serde::{Deserialize, Serialize};
@@ -820,8 +820,10 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     /// order walked; `None` when the target's value is infinite. Ties prefer the smaller `g`.
     ///
     /// With positive costs `g` falls strictly along such a path, so the walk only takes
-    /// supports of smaller `g` and needs no record of where it has been; should rounding ever
-    /// make two `g` equal there, it walks again remembering the nodes it passed.
+    /// supports of smaller `g` and needs no record of where it has been. Where rounding makes
+    /// the best support's `g` equal to the node's own (an edge far cheaper than the values it
+    /// joins, absorbed in the sum), a greedy walk could go round in circles or, kept from doing
+    /// so, take a worse support: the walk is then made breadth-first over every best support.
     pub fn walk<G>(&self, graph: &G, target: usize) -> Option<Vec<usize>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
@@ -833,30 +835,59 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         let mut at = target;
         while at != self.source {
             let limit = self.v.g(at).min(self.v.rhs(at));
-            let Some(next) = self.best_support(graph, at, |s| self.v.g(s) >= limit) else {
-                return self.walk_remembering(graph, target);
-            };
-            slots.push(next);
-            at = next;
+            match self.best_support(graph, at, |_| false) {
+                Some(next) if self.v.g(next) < limit => {
+                    slots.push(next);
+                    at = next;
+                }
+                _ => return self.walk_breadth_first(graph, target),
+            }
         }
         Some(slots)
     }
 
-    /// [`Lifelong::walk`] with a record of the nodes passed, never taking one twice.
-    fn walk_remembering<G>(&self, graph: &G, target: usize) -> Option<Vec<usize>>
+    /// [`Lifelong::walk`] as a breadth-first search from `target` over the edges to each node's
+    /// best supports (all those with the least `c + g`, rounded): the fewest edges among the
+    /// paths whose every step is a best support, so the path's cost is the target's value.
+    fn walk_breadth_first<G>(&self, graph: &G, target: usize) -> Option<Vec<usize>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        let mut slots = vec![target];
-        let mut seen = HashSet::from([target]);
-        let mut at = target;
-        while at != self.source {
-            let next = self.best_support(graph, at, |s| seen.contains(&s))?;
-            seen.insert(next);
-            slots.push(next);
-            at = next;
+        let mut parent = HashMap::from([(target, target)]);
+        let mut queue = VecDeque::from([target]);
+        let mut supports: Vec<(usize, Cost)> = Vec::new();
+        while let Some(at) = queue.pop_front() {
+            if at == self.source {
+                let mut slots = vec![at];
+                let mut node = at;
+                while node != target {
+                    node = parent[&node];
+                    slots.push(node);
+                }
+                slots.reverse();
+                return Some(slots);
+            }
+            supports.clear();
+            let mut collect = |s: usize, c: Cost| {
+                let via = c + self.v.g(s);
+                // `via < inf` also rejects invalid (NaN) costs.
+                if s != at && via < f64::INFINITY {
+                    supports.push((s, via));
+                }
+            };
+            match self.dir {
+                Direction::Backward => graph.for_each_successor_index(at, |s, _, c| collect(s, c)),
+                Direction::Forward => graph.for_each_predecessor_index(at, |s, _, c| collect(s, c)),
+            }
+            let best = supports.iter().map(|&(_, via)| via).fold(f64::INFINITY, f64::min);
+            for &(s, via) in &supports {
+                if via == best && !parent.contains_key(&s) {
+                    parent.insert(s, at);
+                    queue.push_back(s);
+                }
+            }
         }
-        Some(slots)
+        None
     }
 
     /// The neighbour of `at` that `at`'s value flows through: `argmin c + g` over its supports

@@ -305,3 +305,60 @@ fn an_infinite_key_modifier_is_recovered_from() {
     assert!(planner.key_modifier().is_finite());
     assert_eq!((planner.cost(), planner.path(&graph).map(|p| p.nodes)), (Some(1.0), Some(vec![2, 3])));
 }
+
+/// Cells of 1e-200 beside cells of 1 (found by the fuzzer): a cheap step is absorbed in the sum
+/// `c + g`, so two neighbours hold the same value. LPA\*'s walk then took a worse support and
+/// reported 1.207 for a path of 1.414; D\* Lite's went round in circles and said "no path";
+/// AD\* said "stopped". The walk now goes breadth-first over the best supports.
+#[test]
+fn cells_far_cheaper_than_their_neighbours_keep_paths_and_costs() {
+    let tiny = 1e-200;
+    let grid = Grid::from_costs(2, 4, vec![1.0, 1.0, 1.0, tiny, 1.0, tiny, 1.0, tiny]).unwrap();
+    let graph = GridGraph::new(&grid, Connectivity::Eight);
+    let (start, goal) = (Cell::new(0, 2), Cell::new(0, 0));
+    let h = |_: Cell, _: Cell| 0.0;
+    let expected = dijkstra(&graph, start, goal).unwrap().cost().unwrap();
+    assert!((expected - (0.5 + 0.5f64.sqrt())).abs() < 1e-12, "{expected}");
+    let mut lpa = LpaStar::new(&graph, start, goal, h).unwrap();
+    lpa.compute_shortest_path(&graph).unwrap();
+    let mut dstar = DStarLite::new(&graph, start, goal, h).unwrap();
+    dstar.compute_shortest_path(&graph).unwrap();
+    let mut ad = AdStar::new(&graph, start, goal, h, EpsilonSchedule::new(2.0, 0.5)).unwrap();
+    let ad_path = ad.improve(&graph, Budget::unlimited()).unwrap().path;
+    for (name, path) in [("LPA*", lpa.path(&graph)), ("D* Lite", dstar.path(&graph)), ("AD*", ad_path)] {
+        let path = path.unwrap_or_else(|| panic!("{name}: no path"));
+        assert_eq!(walk_cost(&graph, &path.nodes), Some(path.cost), "{name}: {:?}", path.nodes);
+        assert_eq!(path.cost, expected, "{name}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(500))]
+
+    /// Digraphs mixing edges of 1e-200 and 1e-20 with edges near 1, as above: every planner's
+    /// path costs what it reports, walked in the graph, and the optimal ones cost what
+    /// Dijkstra's does.
+    #[test]
+    fn absorbed_edge_costs_never_give_a_wrong_path(
+        (n, edges, start, goal) in (2usize..9).prop_flat_map(|n| (
+            Just(n),
+            prop::collection::vec(
+                (0..n, 0..n, prop_oneof![Just(1e-200), Just(1e-20), 0.5f64..2.0]), 0..30),
+            0..n,
+            0..n,
+        )),
+    ) {
+        let graph = Digraph::new(n, &edges);
+        let expected = dijkstra(&graph, start, goal).unwrap().cost();
+        for (name, answer) in every_planner(&graph, start, goal, zero) {
+            let answer = answer.unwrap();
+            if let Some((nodes, cost)) = &answer {
+                prop_assert!(same(walk_cost(&graph, nodes), Some(*cost)), "{}: {:?} for {}", name, nodes, cost);
+            }
+            prop_assert_eq!(answer.is_some(), expected.is_some(), "{}", name);
+            if !matches!(name, "bfs" | "dfs" | "weighted_astar" | "ara_star" | "ad_star") {
+                prop_assert!(same(answer.map(|a| a.1), expected), "{}: Dijkstra {:?}", name, expected);
+            }
+        }
+    }
+}

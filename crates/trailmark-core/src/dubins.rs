@@ -372,8 +372,9 @@ impl Normalised {
         check_pose("start", start)?;
         check_pose("goal", goal)?;
         let delta = goal.translation.vector - start.translation.vector;
-        // Finite: both positions are within MAX_MAGNITUDE.
-        let dist = delta.norm();
+        // Finite, both positions being within MAX_MAGNITUDE; by `hypot`, since the plain norm
+        // squares the components and overflows beyond 1e154.
+        let dist = delta.x.hypot(delta.y);
         if dist / radius > MAX_NORMALISED_DISTANCE {
             return Err(DubinsError::OutOfScale { distance: dist, radius });
         }
@@ -562,17 +563,16 @@ impl Normalised {
         DubinsError::OutOfScale { distance: self.d * radius, radius }
     }
 
-    /// For `LSL` or `RSR`: the square of the straight piece's normalised length (negative when
-    /// the word cannot join the poses), and a vector `(x, y)` along the straight piece's
-    /// direction `θ`.
+    /// For `LSL` or `RSR` (which join any two poses): the square of the straight piece's
+    /// normalised length, and the vector `(x, y)` of the straight piece, along its direction `θ`.
+    ///
+    /// The square is taken of the vector rather than expanded (`2 + d² - 2 cos(α - β) ±
+    /// 2d (sin α - sin β)`), whose terms cancel between poses a small fraction of a radius apart.
     #[inline]
     fn same_side(&self, word: DubinsWord) -> (f64, f64, f64) {
-        let Normalised { d, sa, ca, sb, cb, cab, .. } = *self;
-        if word == DubinsWord::Lsl {
-            (2.0 + d * d - 2.0 * cab + 2.0 * d * (sa - sb), d + sa - sb, cb - ca)
-        } else {
-            (2.0 + d * d - 2.0 * cab + 2.0 * d * (sb - sa), d - sa + sb, ca - cb)
-        }
+        let Normalised { d, sa, ca, sb, cb, .. } = *self;
+        let (x, y) = if word == DubinsWord::Lsl { (d + sa - sb, cb - ca) } else { (d - sa + sb, ca - cb) };
+        (x * x + y * y, x, y)
     }
 
     /// The normalised length of `LSL` or `RSR` without evaluating their turn angles: `Some(None)`
@@ -870,6 +870,36 @@ mod tests {
     fn close(a: &Pose, b: &Pose, tol: f64) -> bool {
         (a.translation.vector - b.translation.vector).norm() <= tol
             && angle_between(a.rotation.angle(), b.rotation.angle()) <= tol
+    }
+
+    /// Poses 1e200 apart with a radius of 1e199 are ten radii apart, in range: the plain norm
+    /// of their offset overflowed to infinity and called them out of range (a Dubins space with
+    /// a radius of 4e210 then panicked when its planner's steps went past 1e154).
+    #[test]
+    fn huge_offsets_are_measured_without_overflow() {
+        let far = pose(1e200, 0.0, 0.0);
+        let path = DubinsPath::shortest(&pose(0.0, 0.0, 0.0), &far, 1e199).unwrap();
+        assert!((path.length() - 1e200).abs() <= 1e-9 * 1e200, "{}", path.length());
+    }
+
+    /// A left arc of angle φ from the origin, then a straight piece as long, for φ down to 1e-6:
+    /// the length is twice the arc's, to nine digits.
+    #[test]
+    fn short_curves_keep_their_length() {
+        for radius in [1.0f64, 0.125, 1e6] {
+            for phi in [1e-3f64, 1e-4, 1e-5, 1e-6] {
+                // The arc, then as long a straight piece.
+                let s = radius * phi;
+                let goal =
+                    pose(radius * phi.sin() + s * phi.cos(), radius * (1.0 - phi.cos()) + s * phi.sin(), phi);
+                let length = DubinsPath::shortest(&pose(0.0, 0.0, 0.0), &goal, radius).unwrap().length();
+                let expected = 2.0 * radius * phi;
+                assert!(
+                    (length - expected).abs() <= 1e-9 * expected,
+                    "radius {radius}, angle {phi}: {length} vs {expected}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -721,7 +721,9 @@ impl<S: Steering> Prm<S> {
             connection => {
                 let k = connection.neighbour_count(n, S::DIMENSION).expect("a nearest-neighbour rule");
                 let nearest = self.neighbours_of(p, n);
-                nearest.len() < k || nearest.get(k - 1).is_some_and(|&(_, kth)| d <= kth)
+                // PRM*'s k is 0 in a roadmap of one node: nothing is in reach.
+                nearest.len() < k
+                    || k.checked_sub(1).and_then(|last| nearest.get(last)).is_some_and(|&(_, kth)| d <= kth)
             }
         }
     }

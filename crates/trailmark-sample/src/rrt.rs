@@ -299,6 +299,21 @@ impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
         let Some((near, d)) = self.nearest.nearest(space, target, self.direction) else {
             return Extension::Trapped;
         };
+        self.extend_from(space, validity, near, d, target, range, checks)
+    }
+
+    /// [`Tree::extend`] from the state `near`, `d` from `target` in the tree's direction.
+    #[allow(clippy::too_many_arguments)]
+    fn extend_from<V: Validity<S>>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        near: u32,
+        d: f64,
+        target: &S::State,
+        range: f64,
+        checks: &mut u64,
+    ) -> Extension {
         let from = self.state(near).clone();
         let (new, reached) = if d <= range {
             (target.clone(), true)
@@ -324,6 +339,15 @@ impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
         let id = self.nearest.insert(space, new);
         self.parents.push(near);
         if reached { Extension::Reached(id) } else { Extension::Advanced(id) }
+    }
+
+    /// The distance from state `id` to `target` in the tree's direction (the query's motions
+    /// run from the tree toward it, or from it into the tree).
+    fn gap(&self, space: &S, id: u32, target: &S::State) -> f64 {
+        match self.direction {
+            Direction::ToQuery => space.distance(self.state(id), target),
+            Direction::FromQuery => space.distance(target, self.state(id)),
+        }
     }
 
     /// The states from the root to `id`.
@@ -525,6 +549,11 @@ where
         };
         if let Some(new) = new {
             let target = first.state(new).clone();
+            // After the first step, each step goes on from the state the last one added: in a
+            // metric space it is the nearest to the target (the tree's other states were
+            // farther than the one it grew from), so a nearest-neighbour query per step (what
+            // OMPL does) would find it again, at a cost that grows with the tree.
+            let mut last: Option<u32> = None;
             for step in 0..MAX_CONNECT_STEPS {
                 // The connect phase answers to the time limit and the caller's condition too
                 // (checked every 256 steps): with a tiny range it can take millions of steps.
@@ -532,9 +561,24 @@ where
                 if step % 256 == 255 && termination.reached(stats.iterations - 1, &clock, None) {
                     break;
                 }
-                match second.extend(space, validity, &target, range, &mut stats.collision_checks) {
+                let extension = match last {
+                    None => second.extend(space, validity, &target, range, &mut stats.collision_checks),
+                    Some(id) => {
+                        let d = second.gap(space, id, &target);
+                        second.extend_from(
+                            space,
+                            validity,
+                            id,
+                            d,
+                            &target,
+                            range,
+                            &mut stats.collision_checks,
+                        )
+                    }
+                };
+                match extension {
                     Extension::Trapped => break,
-                    Extension::Advanced(_) => {}
+                    Extension::Advanced(id) => last = Some(id),
                     Extension::Reached(id) => {
                         let mut ids = [0, 0];
                         ids[a] = new;

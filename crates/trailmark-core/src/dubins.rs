@@ -68,6 +68,14 @@ pub const MAX_MAGNITUDE: f64 = 1e300;
 /// [module documentation](self#supported-range)).
 pub const MAX_NORMALISED_DISTANCE: f64 = 1e12;
 
+/// The largest turning radius beside the extent of the poses a planner joins (the diagonal of
+/// its bounds): 1e3. The solver's answers are accurate to a small fraction of the radius, and
+/// near its degenerate cases (two circles that touch) to about 1e-7 radii: with a radius a
+/// thousand times the world, that is still 1e-4 of the world, where a radius of 1e10 in a world
+/// of 10 had called two poses 1 apart the same. Checked by the Dubins state space and roadmap
+/// steering, not by [`DubinsPath::shortest`] (which sees no bounds).
+pub const MAX_RADIUS_PER_EXTENT: f64 = 1e3;
+
 /// The largest normalised length of a straight piece: the distance between the poses plus at
 /// most four radii for the circles' offsets.
 const MAX_STRAIGHT_PARAM: f64 = MAX_NORMALISED_DISTANCE + 4.0;

@@ -116,17 +116,21 @@ impl Smoothed {
             return Err(CurveError::InvalidStep(step));
         }
         let mut total = 1usize;
+        let mut counts = Vec::with_capacity(self.pieces.len());
         for piece in &self.pieces {
-            total = total.saturating_add(piece.sample_intervals(step)?);
+            let count = piece.sample_intervals(step)?;
+            counts.push(count);
+            total = total.saturating_add(count);
             if total > MAX_SAMPLES {
                 return Err(CurveError::TooManySamples { step });
             }
         }
+        // Straight into the one allocation: sampling each piece on its own first had held a
+        // second copy of the largest piece (a peak of twice the answer).
         let mut points: Vec<Point> = Vec::with_capacity(total);
-        for piece in &self.pieces {
-            let more = piece.sample(step)?;
+        for (piece, &count) in self.pieces.iter().zip(&counts) {
             let skip = usize::from(!points.is_empty());
-            points.extend(more.into_iter().skip(skip));
+            points.extend((skip..=count).map(|i| piece.point(i as f64 / count as f64)));
         }
         Ok(points)
     }

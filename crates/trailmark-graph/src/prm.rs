@@ -46,7 +46,7 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use trailmark_core::cost::Cost;
-use trailmark_core::dubins::DubinsPath;
+use trailmark_core::dubins::{DubinsPath, MAX_NORMALISED_DISTANCE, MAX_RADIUS_PER_EXTENT};
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_core::world::{Bounds, CollisionChecker, PolygonWorld, WorldError};
@@ -83,6 +83,13 @@ pub trait Steering: Copy + Debug {
     /// The state with these coordinates, `None` if there are not [`DIMENSION`](Self::DIMENSION)
     /// finite ones.
     fn from_coordinates(coordinates: &[f64]) -> Option<Self::State>;
+
+    /// Whether local paths between states in `bounds` are within this steering's supported
+    /// range (every steering, unless it says otherwise).
+    fn supports(&self, bounds: &Bounds) -> Result<(), PrmError> {
+        let _ = bounds;
+        Ok(())
+    }
 }
 
 /// Straight segments between points: the local path of a disc robot.
@@ -171,6 +178,16 @@ impl Steering for DubinsSteering {
     type State = Pose;
     const DIRECTED: bool = true;
     const DIMENSION: usize = 3;
+
+    fn supports(&self, bounds: &Bounds) -> Result<(), PrmError> {
+        let diagonal = (bounds.max() - bounds.min()).norm();
+        let r = self.turning_radius;
+        if diagonal / r <= MAX_NORMALISED_DISTANCE && r <= MAX_RADIUS_PER_EXTENT * diagonal {
+            Ok(())
+        } else {
+            Err(PrmError::TurningRadiusOutOfScale { turning_radius: r, diagonal })
+        }
+    }
 
     fn state(&self, bounds: &Bounds, unit: [f64; 3]) -> Pose {
         let p = Straight.state(bounds, unit);
@@ -293,6 +310,19 @@ pub enum PrmError {
     /// A Dubins turning radius must be positive and finite.
     #[error("the turning radius must be positive and finite, got {0:?}")]
     InvalidTurningRadius(f64),
+    /// A Dubins turning radius so small beside the bounds (their diagonal more than
+    /// [`MAX_NORMALISED_DISTANCE`] radii) or so large (more than [`MAX_RADIUS_PER_EXTENT`]
+    /// diagonals) that paths between poses in them are outside the solver's supported range.
+    #[error(
+        "a turning radius of {turning_radius:e} in bounds {diagonal:e} across is outside the supported range (the diagonal at most {max:e} radii, the radius at most {ratio:e} diagonals)",
+        max = MAX_NORMALISED_DISTANCE, ratio = MAX_RADIUS_PER_EXTENT
+    )]
+    TurningRadiusOutOfScale {
+        /// The turning radius.
+        turning_radius: f64,
+        /// The diagonal of the bounds.
+        diagonal: f64,
+    },
     /// [`Prm::grow`] ran out of draws: the free space is empty or very small. The samples
     /// found were added.
     #[error("found only {added} of {requested} free samples in {attempts} draws")]
@@ -414,6 +444,7 @@ impl<S: Steering> Prm<S> {
         if options.attempts_per_sample == 0 {
             return Err(PrmError::InvalidAttempts);
         }
+        steering.supports(&world.bounds())?;
         let seed = match options.sampler {
             Sampler::Uniform { seed } => seed,
             Sampler::Halton => 0,

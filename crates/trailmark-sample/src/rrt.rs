@@ -135,6 +135,12 @@ impl std::fmt::Debug for Termination {
 /// of 1e-7 across a world of 10 had made one iteration run for minutes).
 pub const MAX_CONNECT_STEPS: usize = 10_000;
 
+/// The shortest `range` a planner takes, as a share of the space's extent: 1e-4, so that one
+/// connect phase of [`MAX_CONNECT_STEPS`] can cross the space. Shorter steps only pile up
+/// states (a range of 1e-8 of a world had made RRT-Connect run for minutes, its trees
+/// millions of states along lines).
+pub const MIN_RELATIVE_RANGE: f64 = 1e-4;
+
 impl Termination {
     /// Stop after `n` iterations.
     pub fn iterations(n: u64) -> Self {
@@ -176,7 +182,8 @@ impl Termination {
 /// The settings of RRT and RRT-Connect.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RrtOptions {
-    /// The longest motion added at once (default: 0.2 x the space's extent, as OMPL).
+    /// The longest motion added at once (default: 0.2 x the space's extent, as OMPL; at least
+    /// [`MIN_RELATIVE_RANGE`] of it).
     pub range: Option<f64>,
     /// RRT: the probability of steering toward the goal (default 0.05).
     pub goal_bias: f64,
@@ -415,6 +422,13 @@ fn prepare<S: StateSpace, V: Validity<S>>(
         return Err(PlanError::InvalidOption {
             name: "range",
             expected: "positive and finite",
+            value: range,
+        });
+    }
+    if range < MIN_RELATIVE_RANGE * space.extent() {
+        return Err(PlanError::InvalidOption {
+            name: "range",
+            expected: "at least 1e-4 of the space's extent (MIN_RELATIVE_RANGE)",
             value: range,
         });
     }

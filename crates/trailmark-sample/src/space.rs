@@ -32,7 +32,7 @@ use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
 use thiserror::Error;
-use trailmark_core::dubins::{DubinsPath, MAX_MAGNITUDE, MAX_NORMALISED_DISTANCE};
+use trailmark_core::dubins::{DubinsPath, MAX_MAGNITUDE, MAX_NORMALISED_DISTANCE, MAX_RADIUS_PER_EXTENT};
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::Bounds;
 
@@ -56,11 +56,12 @@ pub enum SpaceError {
         dimension: usize,
     },
     /// A turning radius so small beside the bounds (their diagonal more than
-    /// [`MAX_NORMALISED_DISTANCE`] radii) or so large that Dubins paths between poses of the
-    /// space are outside the solver's supported range.
+    /// [`MAX_NORMALISED_DISTANCE`] radii) or so large (more than [`MAX_RADIUS_PER_EXTENT`]
+    /// diagonals) that Dubins paths between poses of the space are outside the solver's
+    /// supported range.
     #[error(
-        "a turning radius of {turning_radius:e} in bounds {diagonal:e} across is outside the supported range (the diagonal at most {max:e} radii)",
-        max = MAX_NORMALISED_DISTANCE
+        "a turning radius of {turning_radius:e} in bounds {diagonal:e} across is outside the supported range (the diagonal at most {max:e} radii, the radius at most {ratio:e} diagonals)",
+        max = MAX_NORMALISED_DISTANCE, ratio = MAX_RADIUS_PER_EXTENT
     )]
     TurningRadiusOutOfScale {
         /// The turning radius.
@@ -399,7 +400,10 @@ impl Dubins {
         }
         // Every two poses in the bounds must be within the Dubins solver's supported range.
         let diagonal = (bounds.max() - bounds.min()).norm();
-        if !(turning_radius <= MAX_MAGNITUDE && diagonal / turning_radius <= MAX_NORMALISED_DISTANCE) {
+        if !(turning_radius <= MAX_MAGNITUDE
+            && diagonal / turning_radius <= MAX_NORMALISED_DISTANCE
+            && turning_radius <= MAX_RADIUS_PER_EXTENT * diagonal)
+        {
             return Err(SpaceError::TurningRadiusOutOfScale { turning_radius, diagonal });
         }
         Ok(Dubins { bounds, turning_radius })

@@ -76,6 +76,35 @@ pub const MAX_NORMALISED_DISTANCE: f64 = 1e12;
 /// steering, not by [`DubinsPath::shortest`] (which sees no bounds).
 pub const MAX_RADIUS_PER_EXTENT: f64 = 1e3;
 
+/// A turning radius outside the supported range for poses within an extent (the diagonal of
+/// the bounds a planner works in): the diagonal more than [`MAX_NORMALISED_DISTANCE`] radii,
+/// or the radius more than [`MAX_RADIUS_PER_EXTENT`] diagonals.
+#[derive(Clone, Copy, Debug, Error, PartialEq)]
+#[error(
+    "a turning radius of {turning_radius:e} in bounds {diagonal:e} across is outside the supported range (the diagonal at most {max:e} radii, the radius at most {ratio:e} diagonals)",
+    max = MAX_NORMALISED_DISTANCE, ratio = MAX_RADIUS_PER_EXTENT
+)]
+pub struct RadiusOutOfScale {
+    /// The turning radius.
+    pub turning_radius: f64,
+    /// The diagonal of the bounds.
+    pub diagonal: f64,
+}
+
+/// Whether Dubins paths of `turning_radius` between any two poses within bounds `diagonal`
+/// across are in the solver's supported range (and the radius itself at most
+/// [`MAX_MAGNITUDE`]).
+pub fn check_extent(turning_radius: f64, diagonal: f64) -> Result<(), RadiusOutOfScale> {
+    if turning_radius <= MAX_MAGNITUDE
+        && diagonal / turning_radius <= MAX_NORMALISED_DISTANCE
+        && turning_radius <= MAX_RADIUS_PER_EXTENT * diagonal
+    {
+        Ok(())
+    } else {
+        Err(RadiusOutOfScale { turning_radius, diagonal })
+    }
+}
+
 /// The largest normalised length of a straight piece: the distance between the poses plus at
 /// most four radii for the circles' offsets.
 const MAX_STRAIGHT_PARAM: f64 = MAX_NORMALISED_DISTANCE + 4.0;

@@ -46,7 +46,7 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use trailmark_core::cost::Cost;
-use trailmark_core::dubins::{DubinsPath, MAX_NORMALISED_DISTANCE, MAX_RADIUS_PER_EXTENT};
+use trailmark_core::dubins::{DubinsPath, RadiusOutOfScale, check_extent};
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_core::world::{Bounds, CollisionChecker, PolygonWorld, WorldError};
@@ -180,13 +180,7 @@ impl Steering for DubinsSteering {
     const DIMENSION: usize = 3;
 
     fn supports(&self, bounds: &Bounds) -> Result<(), PrmError> {
-        let diagonal = (bounds.max() - bounds.min()).norm();
-        let r = self.turning_radius;
-        if diagonal / r <= MAX_NORMALISED_DISTANCE && r <= MAX_RADIUS_PER_EXTENT * diagonal {
-            Ok(())
-        } else {
-            Err(PrmError::TurningRadiusOutOfScale { turning_radius: r, diagonal })
-        }
+        Ok(check_extent(self.turning_radius, (bounds.max() - bounds.min()).norm())?)
     }
 
     fn state(&self, bounds: &Bounds, unit: [f64; 3]) -> Pose {
@@ -310,19 +304,9 @@ pub enum PrmError {
     /// A Dubins turning radius must be positive and finite.
     #[error("the turning radius must be positive and finite, got {0:?}")]
     InvalidTurningRadius(f64),
-    /// A Dubins turning radius so small beside the bounds (their diagonal more than
-    /// [`MAX_NORMALISED_DISTANCE`] radii) or so large (more than [`MAX_RADIUS_PER_EXTENT`]
-    /// diagonals) that paths between poses in them are outside the solver's supported range.
-    #[error(
-        "a turning radius of {turning_radius:e} in bounds {diagonal:e} across is outside the supported range (the diagonal at most {max:e} radii, the radius at most {ratio:e} diagonals)",
-        max = MAX_NORMALISED_DISTANCE, ratio = MAX_RADIUS_PER_EXTENT
-    )]
-    TurningRadiusOutOfScale {
-        /// The turning radius.
-        turning_radius: f64,
-        /// The diagonal of the bounds.
-        diagonal: f64,
-    },
+    /// A Dubins turning radius out of the solver's supported range for the world's bounds.
+    #[error(transparent)]
+    TurningRadiusOutOfScale(#[from] RadiusOutOfScale),
     /// [`Prm::grow`] ran out of draws: the free space is empty or very small. The samples
     /// found were added.
     #[error("found only {added} of {requested} free samples in {attempts} draws")]

@@ -32,7 +32,7 @@ use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
 use thiserror::Error;
-use trailmark_core::dubins::{DubinsPath, MAX_MAGNITUDE, MAX_NORMALISED_DISTANCE, MAX_RADIUS_PER_EXTENT};
+use trailmark_core::dubins::{DubinsPath, RadiusOutOfScale, check_extent};
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::Bounds;
 
@@ -55,20 +55,9 @@ pub enum SpaceError {
         /// The dimension asked for.
         dimension: usize,
     },
-    /// A turning radius so small beside the bounds (their diagonal more than
-    /// [`MAX_NORMALISED_DISTANCE`] radii) or so large (more than [`MAX_RADIUS_PER_EXTENT`]
-    /// diagonals) that Dubins paths between poses of the space are outside the solver's
-    /// supported range.
-    #[error(
-        "a turning radius of {turning_radius:e} in bounds {diagonal:e} across is outside the supported range (the diagonal at most {max:e} radii, the radius at most {ratio:e} diagonals)",
-        max = MAX_NORMALISED_DISTANCE, ratio = MAX_RADIUS_PER_EXTENT
-    )]
-    TurningRadiusOutOfScale {
-        /// The turning radius.
-        turning_radius: f64,
-        /// The diagonal of the bounds.
-        diagonal: f64,
-    },
+    /// A turning radius out of the Dubins solver's supported range for the bounds.
+    #[error(transparent)]
+    TurningRadiusOutOfScale(#[from] RadiusOutOfScale),
     /// A weight or turning radius that is not positive and finite.
     #[error("the {what} must be positive and finite, got {value:?}")]
     NotPositive {
@@ -400,12 +389,7 @@ impl Dubins {
         }
         // Every two poses in the bounds must be within the Dubins solver's supported range.
         let diagonal = (bounds.max() - bounds.min()).norm();
-        if !(turning_radius <= MAX_MAGNITUDE
-            && diagonal / turning_radius <= MAX_NORMALISED_DISTANCE
-            && turning_radius <= MAX_RADIUS_PER_EXTENT * diagonal)
-        {
-            return Err(SpaceError::TurningRadiusOutOfScale { turning_radius, diagonal });
-        }
+        check_extent(turning_radius, diagonal)?;
         Ok(Dubins { bounds, turning_radius })
     }
 
@@ -424,7 +408,7 @@ impl Dubins {
     /// # Panics
     ///
     /// If a pose is not finite or lies so far outside the bounds that the two are more than
-    /// [`MAX_NORMALISED_DISTANCE`] turning radii apart ([`new`](Self::new) guarantees the range
+    /// [`MAX_NORMALISED_DISTANCE`](trailmark_core::dubins::MAX_NORMALISED_DISTANCE) turning radii apart ([`new`](Self::new) guarantees the range
     /// for poses in the bounds, which is where the planners' validity checks keep states).
     pub fn path(&self, a: &Pose, b: &Pose) -> DubinsPath {
         DubinsPath::shortest(a, b, self.turning_radius).expect("a valid radius and finite poses")

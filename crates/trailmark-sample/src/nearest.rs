@@ -47,7 +47,13 @@ pub enum Direction {
     FromQuery,
 }
 
-fn measure<S: StateSpace>(space: &S, stored: &S::State, query: &S::State, direction: Direction) -> f64 {
+/// The distance between a stored state and a query, measured the way `direction` says.
+pub(crate) fn measure<S: StateSpace>(
+    space: &S,
+    stored: &S::State,
+    query: &S::State,
+    direction: Direction,
+) -> f64 {
     match direction {
         Direction::ToQuery => space.distance(stored, query),
         Direction::FromQuery => space.distance(query, stored),

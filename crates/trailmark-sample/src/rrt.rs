@@ -40,7 +40,7 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use thiserror::Error;
 
-use crate::nearest::{Direction, NearestNeighbors};
+use crate::nearest::{Direction, NearestNeighbors, measure};
 use crate::sampler::{StateSampler, Uniform};
 use crate::space::StateSpace;
 use crate::validity::Validity;
@@ -351,10 +351,7 @@ impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
     /// The distance from state `id` to `target` in the tree's direction (the query's motions
     /// run from the tree toward it, or from it into the tree).
     fn gap(&self, space: &S, id: u32, target: &S::State) -> f64 {
-        match self.direction {
-            Direction::ToQuery => space.distance(self.state(id), target),
-            Direction::FromQuery => space.distance(target, self.state(id)),
-        }
+        measure(space, self.state(id), target, self.direction)
     }
 
     /// The states from the root to `id`.

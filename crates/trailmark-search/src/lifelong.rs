@@ -835,7 +835,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
         let mut at = target;
         while at != self.source {
             let limit = self.v.g(at).min(self.v.rhs(at));
-            match self.best_support(graph, at, |_| false) {
+            match self.best_support(graph, at) {
                 Some(next) if self.v.g(next) < limit => {
                     slots.push(next);
                     at = next;
@@ -891,9 +891,9 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
     }
 
     /// The neighbour of `at` that `at`'s value flows through: `argmin c + g` over its supports
-    /// (successors backward, predecessors forward), ties to the smaller `g`, skipping those
-    /// `excluded` says; `None` when every support is infinitely far.
-    pub fn best_support<G>(&self, graph: &G, at: usize, excluded: impl Fn(usize) -> bool) -> Option<usize>
+    /// (successors backward, predecessors forward), ties to the smaller `g`; `None` when every
+    /// support is infinitely far.
+    pub fn best_support<G>(&self, graph: &G, at: usize) -> Option<usize>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
@@ -902,11 +902,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> Lifelong<N> {
             let via = (c + self.v.g(s), self.v.g(s), s);
             // `via.0 < inf` also rejects invalid (NaN) costs; negative ones never come this
             // far, since the search refused them.
-            if via.0 < f64::INFINITY
-                && s != at
-                && best.is_none_or(|b| (via.0, via.1) < (b.0, b.1))
-                && !excluded(s)
-            {
+            if via.0 < f64::INFINITY && s != at && best.is_none_or(|b| (via.0, via.1) < (b.0, b.1)) {
                 best = Some(via);
             }
         };
@@ -1272,7 +1268,7 @@ where
         if target == self.search.source {
             return None;
         }
-        self.search.best_support(graph, target, |_| false).map(|s| graph.node_at(s))
+        self.search.best_support(graph, target).map(|s| graph.node_at(s))
     }
 
     pub fn g<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>

@@ -29,7 +29,7 @@ use trailmark::core::geometry::Point;
 use trailmark::core::world::{Bounds, PolygonWorld};
 use trailmark::sample::arm::{ArmChecker, PlanarArm, densify};
 use trailmark::sample::{
-    KdNearest, Query, Rn, RrtOptions, Sampled, StateSpace, Termination, rrt_connect, shortcut,
+    KdNearest, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace, Termination, shortcut,
 };
 use trailmark::svg::WorldSvg;
 
@@ -120,11 +120,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let start = Joints::new(150.0, 30.0, -120.0).map(f64::to_radians);
     let goal = Joints::new(75.0, -50.0, -70.0).map(f64::to_radians);
 
-    let query = Query::new(&space, &validity, start, goal);
+    let problem = Problem::new(&space, &validity, start, goal);
     let nearest = KdNearest::<Rn<3>, 3>::new(&space)?;
     let options = RrtOptions { range: Some(0.5), ..RrtOptions::default() };
-    let plan = rrt_connect(&query, nearest, &options, &Termination::iterations(100_000), 1)?;
-    let path = plan.path.filter(|_| !plan.approximate).ok_or("RRT-Connect found no path")?;
+    let mut planner = RrtConnect::new(nearest).with_options(options).with_seed(1);
+    let plan = planner.solve(&problem, &Termination::iterations(100_000))?;
+    let path = plan.path().ok_or("RRT-Connect found no path")?.to_vec();
     let clock = Instant::now();
     let short = shortcut(&space, &validity, &path, 200, 1);
     let shortcut_time = clock.elapsed();
@@ -133,7 +134,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "clearance for sampled motion checks: {clearance:.4} (resolution {RESOLUTION} of extent {:.3})",
         space.extent()
     );
-    println!("solved: {}", !plan.approximate);
+    println!("solved: {}", plan.is_exact());
     println!("iterations: {}, tree sizes: {} + {}", s.iterations, s.tree_sizes[0], s.tree_sizes[1]);
     println!("collision checks: {}, planning time: {:.2?}", s.collision_checks, s.elapsed);
     println!(

@@ -113,7 +113,7 @@ fn bridge_samples() -> Result<(), Box<dyn std::error::Error>> {
     use trailmark::core::geometry::Point;
     use trailmark::core::svg::WorldSvg;
     use trailmark::sample::{
-        Bridge, KdNearest, Query, R2, RrtOptions, StateSampler, Termination, rrt_connect,
+        Bridge, Draw, KdNearest, Planner, Problem, R2, RrtConnect, StateSampler, Termination,
     };
 
     let world = generate::narrow_passages(40.0, 6, 1.5, 0.25, 2)?;
@@ -121,20 +121,22 @@ fn bridge_samples() -> Result<(), Box<dyn std::error::Error>> {
     let space = R2::new(world.bounds());
     let (start, goal) = (Point::new(2.0, 8.0), Point::new(38.0, 33.0));
     let bridge = Bridge::new(2.0)?;
-    let query = Query::new(&space, &checker, start, goal).with_sampler(&bridge);
-    let nearest = KdNearest::<R2, 2>::new(&space)?;
-    let plan = rrt_connect(&query, nearest, &RrtOptions::default(), &Termination::iterations(10_000), 1)?;
-    let path = plan.path.ok_or("no RRT-Connect path")?;
+    let problem = Problem::new(&space, &checker, start, goal);
+    let mut planner = RrtConnect::new(KdNearest::<R2, 2>::new(&space)?).with_sampler(&bridge).with_seed(1);
+    let plan = planner.solve(&problem, &Termination::iterations(10_000))?;
+    let path = plan.path().ok_or("no RRT-Connect path")?.to_vec();
     println!(
         "bridge: RRT-Connect {} iterations, {} checks, solved {}",
-        plan.stats.iterations, plan.stats.collision_checks, !plan.approximate
+        plan.stats.iterations,
+        plan.stats.collision_checks,
+        plan.is_exact()
     );
     // 600 samples of the bridge test alone (every draw looks for a bridge).
     let only = Bridge::new(2.0)?.with_share(1.0)?.with_attempts(10_000)?;
     let mut rng = ChaCha8Rng::seed_from_u64(1);
     let mut checks = 0;
-    let samples: Vec<Point> =
-        (0..600).map(|_| only.sample(&space, &checker, &mut rng, &mut checks)).collect();
+    let mut draw = Draw::new(&mut rng, &mut checks);
+    let samples: Vec<Point> = (0..600).filter_map(|_| only.sample(&space, &checker, &mut draw)).collect();
     let svg = WorldSvg::new(&world)
         .free_space(&world.free_space())
         .nodes(samples)

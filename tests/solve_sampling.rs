@@ -316,7 +316,7 @@ fn bad_sampling_documents_give_typed_errors() {
             |e| matches!(e, SolveError::Sampler(SamplerError::TooManyAttempts(_))),
         ),
         (r#""start": [5, 1], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
-            matches!(e, SolveError::Plan(PlanError::InvalidStart))
+            matches!(e, SolveError::Plan(PlanError::InvalidStart { .. }))
         }),
         (format!(r#"{ends}, "planner": {{"name": "rrt", "sampler": {{"name": "bridge", "std_dev": 0}}}}"#), |e| {
             matches!(e, SolveError::Sampler(SamplerError::StdDev(_)))

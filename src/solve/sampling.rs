@@ -14,8 +14,8 @@ use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_graph::prm::{DubinsSteering, Steering, Straight};
 use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
 use trailmark_sample::{
-    Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Query, R2, RrtOptions, StateSampler,
-    StateSpace, Termination, rrt, rrt_connect, rrt_star, shortcut,
+    Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Planner, Problem as PlanningProblem, R2,
+    Rrt, RrtConnect, RrtOptions, RrtStar, Solution, StateSampler, StateSpace, Termination, shortcut,
 };
 
 use super::{Coordinates, SolveError, dubins_curve, roadmap_fields};
@@ -138,27 +138,24 @@ impl Run<'_> {
             ..Termination::default()
         };
         let defaults = RrtOptions::default();
-        let options = RrtOptions {
-            range: spec.range,
-            goal_bias: spec.goal_bias.unwrap_or(defaults.goal_bias),
-            ..defaults
-        };
-        let query = Query::new(space, self.checker, start, goal);
+        let options =
+            RrtOptions { range: spec.range, goal_bias: spec.goal_bias.unwrap_or(defaults.goal_bias) };
+        let problem = PlanningProblem::new(space, self.checker, start, goal);
         let limits = (&options, &termination);
         let plan = match spec.sampler.unwrap_or_default() {
-            SamplerSpec::Uniform {} => self.search(&query, nearest, limits)?,
+            SamplerSpec::Uniform {} => self.search(&problem, nearest, trailmark_sample::Uniform, limits)?,
             SamplerSpec::Bridge { std_dev, share, attempts } => {
                 let bridge = Bridge::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
                 let bridge = bridge.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
-                self.search(&query.with_sampler(bridge), nearest, limits)?
+                self.search(&problem, nearest, bridge, limits)?
             }
             SamplerSpec::Gaussian { std_dev, share, attempts } => {
                 let gaussian = Gaussian::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
                 let gaussian = gaussian.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
-                self.search(&query.with_sampler(gaussian), nearest, limits)?
+                self.search(&problem, nearest, gaussian, limits)?
             }
         };
-        let planned = plan.path.clone().unwrap_or_default();
+        let planned = plan.solution.any_path().map(<[S::State]>::to_vec).unwrap_or_default();
         let clock = Instant::now();
         let path = if spec.simplify == Some(true) && planned.len() > 2 {
             shortcut(space, self.checker, &planned, SHORTCUT_ATTEMPTS, self.seed)
@@ -168,16 +165,18 @@ impl Run<'_> {
         let simplify_time_s = clock.elapsed().as_secs_f64();
         // A fold from +0: an empty float sum is -0.0.
         let cost = plan
-            .path
-            .as_ref()
+            .solution
+            .any_path()
             .map(|_| path.windows(2).fold(0.0, |total, m| total + space.distance(&m[0], &m[1])));
         // Sampling planners never prove that no path exists: they stop at their limit. A plan
         // with a path short of the goal is approximate; one with none at all (the planners of
         // trailmark-sample always return at least the start) is stopped, never "no path".
-        let status = match (&plan.path, plan.approximate) {
-            (None, _) => Status::Stopped,
-            (Some(_), true) => Status::Approximate,
-            (Some(_), false) => Status::Solved,
+        let (status, goal_distance, planned_cost) = match plan.solution {
+            Solution::None => (Status::Stopped, f64::INFINITY, None),
+            Solution::Approximate { cost, goal_distance, .. } => {
+                (Status::Approximate, goal_distance, Some(cost))
+            }
+            Solution::Exact { cost, .. } => (Status::Solved, 0.0, Some(cost)),
         };
         let s = plan.stats;
         let stats = SamplingStats {
@@ -194,8 +193,8 @@ impl Run<'_> {
                     cost: b.cost,
                 })
                 .collect(),
-            goal_distance: plan.goal_distance,
-            planned_cost: plan.cost,
+            goal_distance,
+            planned_cost,
             simplify_time_s,
             smoothed: None,
         };
@@ -212,11 +211,12 @@ impl Run<'_> {
         Ok((result, path))
     }
 
-    /// The problem's planner on `query`.
+    /// The problem's planner on `problem`, drawing from `sampler`.
     fn search<S, N, Q>(
         &self,
-        query: &Query<'_, S, CollisionChecker, Q>,
+        problem: &PlanningProblem<'_, S, CollisionChecker>,
         nearest: N,
+        sampler: Q,
         (options, termination): (&RrtOptions, &Termination),
     ) -> Result<Plan<S::State>, SolveError>
     where
@@ -225,11 +225,17 @@ impl Run<'_> {
         Q: StateSampler<S>,
         CollisionChecker: trailmark_sample::Validity<S>,
     {
-        Ok(match self.problem.planner {
-            PlannerSpec::Rrt(_) => rrt(query, nearest, options, termination, self.seed)?,
-            PlannerSpec::RrtConnect(_) => rrt_connect(query, nearest, options, termination, self.seed)?,
-            _ => rrt_star(query, nearest, options, termination, self.seed)?,
-        })
+        let (options, seed) = (*options, self.seed);
+        let mut planner: Box<dyn Planner<S, CollisionChecker> + '_> = match self.problem.planner {
+            PlannerSpec::Rrt(_) => {
+                Box::new(Rrt::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
+            }
+            PlannerSpec::RrtConnect(_) => {
+                Box::new(RrtConnect::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
+            }
+            _ => Box::new(RrtStar::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed)),
+        };
+        Ok(planner.solve(problem, termination)?)
     }
 }
 

@@ -23,7 +23,7 @@ use trailmark::core::world::{CollisionChecker, PolygonWorld};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::prelude::*;
 use trailmark::sample::{
-    Bridge, KdNearest, Plan, Query, R2, RrtOptions, Termination, rrt, rrt_connect, rrt_star,
+    Bridge, KdNearest, Plan, Planner, Problem, R2, Rrt, RrtConnect, RrtStar, Solution, Termination,
 };
 
 use crate::bench::{Suite, median};
@@ -175,9 +175,11 @@ impl World {
     ) -> Result<(Plan<Point>, LogRun), String> {
         let space = R2::new(self.world.bounds());
         let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
-        let query = Query::new(&space, &self.checker, a, b);
+        let problem = Problem::new(&space, &self.checker, a, b);
         let memory = crate::memory::mark();
-        let plan = rrt_star(&query, nearest, &RrtOptions::default(), termination, seed)
+        let plan = RrtStar::new(nearest)
+            .with_seed(seed)
+            .solve(&problem, termination)
             .map_err(|e| format!("{}: {e}", self.name))?;
         let logged = log_run(&plan, plan.stats.elapsed.as_secs_f64(), crate::memory::peak_since(memory));
         Ok((plan, logged))
@@ -185,7 +187,7 @@ impl World {
 
     /// Whether `plan` is a valid path from `a` to `b` no shorter than the reference allows.
     fn checks(&self, plan: &Plan<Point>, a: Point, b: Point, best: f64) -> bool {
-        plan.path.as_ref().is_some_and(|path| self.checks_path(path, a, b, best))
+        plan.path().is_some_and(|path| self.checks_path(path, a, b, best))
     }
 
     /// Whether `path` runs from `a` to `b`, every motion free, no shorter than the reference
@@ -584,23 +586,25 @@ fn bench_connect(
     let mut tally = Tally::default();
     let mut runs = Vec::with_capacity(queries.len());
     for (i, &(a, b, best)) in queries.iter().enumerate() {
-        let query = Query::new(&space, checker, a, b);
+        let problem = Problem::new(&space, checker, a, b);
         let memory = crate::memory::mark();
         let clock = Instant::now();
-        let (options, seed) = (&RrtOptions::default(), seed + i as u64);
+        let seed = seed + i as u64;
         let plan = match planner {
-            SingleQuery::Rrt => rrt(&query, nearest.clone(), options, &limit, seed),
-            SingleQuery::RrtConnect => rrt_connect(&query, nearest.clone(), options, &limit, seed),
+            SingleQuery::Rrt => Rrt::new(nearest.clone()).with_seed(seed).solve(&problem, &limit),
+            SingleQuery::RrtConnect => {
+                RrtConnect::new(nearest.clone()).with_seed(seed).solve(&problem, &limit)
+            }
             SingleQuery::RrtConnectBridge => {
-                rrt_connect(&query.with_sampler(&bridge), nearest.clone(), options, &limit, seed)
+                RrtConnect::new(nearest.clone()).with_sampler(&bridge).with_seed(seed).solve(&problem, &limit)
             }
         }
         .map_err(|e| format!("{}: {e}", w.name))?;
         let ms = clock.elapsed().as_secs_f64() * 1e3;
         runs.push(log_run(&plan, ms / 1e3, crate::memory::peak_since(memory)));
         let counts = (ms, plan.stats.iterations, plan.stats.collision_checks);
-        tally.add(best, counts, !plan.approximate, |best| {
-            w.checks(&plan, a, b, best).then(|| plan.cost.unwrap_or(f64::NAN))
+        tally.add(best, counts, plan.is_exact(), |best| {
+            w.checks(&plan, a, b, best).then(|| plan.cost().unwrap_or(f64::NAN))
         });
     }
     log.push(PlannerRuns { name: format!("trailmark_{}", planner.ompl_label()), optimizing: false, runs });
@@ -628,11 +632,11 @@ pub(crate) fn ompl_queries(queries: &[(Point, Point, Option<f64>)]) -> Vec<[f64;
 fn log_run(plan: &Plan<Point>, time_s: f64, memory_bytes: usize) -> LogRun {
     LogRun {
         time_s,
-        solved: !plan.approximate,
-        approximate: plan.approximate && plan.path.is_some(),
+        solved: plan.is_exact(),
+        approximate: matches!(plan.solution, Solution::Approximate { .. }),
         memory_bytes: Some(memory_bytes),
         graph_states: plan.stats.tree_sizes.iter().map(|&n| n as u64).sum(),
-        solution_length: plan.cost.filter(|_| !plan.approximate),
+        solution_length: plan.cost(),
         iterations: plan.stats.iterations,
         collision_checks: plan.stats.collision_checks,
         progress: plan.history.iter().map(|h| (h.time.as_secs_f64(), h.cost)).collect(),
@@ -717,9 +721,9 @@ fn star_equal_time(
     let mut our_log = Vec::new();
     for run in 0..runs {
         let (plan, logged) = w.star_run(a, b, &termination, seed + run as u64)?;
-        invalid += usize::from(!plan.approximate && !w.checks(&plan, a, b, best));
+        invalid += usize::from(plan.is_exact() && !w.checks(&plan, a, b, best));
         our_iterations.push(plan.stats.iterations as f64);
-        let cost = if plan.approximate { f64::INFINITY } else { plan.cost.unwrap_or(f64::INFINITY) };
+        let cost = plan.cost().unwrap_or(f64::INFINITY);
         ours.push((cost, logged.progress.clone()));
         our_log.push(logged);
     }
@@ -794,11 +798,11 @@ fn bench_star(
         log_runs.push(logged);
         times.push(plan.stats.elapsed.as_secs_f64());
         firsts.push(plan.stats.time_to_solution.map_or(f64::INFINITY, |t| t.as_secs_f64() * 1e3));
-        if plan.approximate || !w.checks(&plan, a, b, best) {
-            invalid += usize::from(!plan.approximate);
+        if !plan.is_exact() || !w.checks(&plan, a, b, best) {
+            invalid += usize::from(plan.is_exact());
             finals.push(f64::INFINITY);
         } else {
-            finals.push(plan.cost.unwrap_or(f64::INFINITY) / best);
+            finals.push(plan.cost().unwrap_or(f64::INFINITY) / best);
         }
         for (k, &c) in CHECKPOINTS.iter().enumerate() {
             let cost = plan.history.iter().take_while(|h| h.iteration <= c).last().map(|h| h.cost);

@@ -18,7 +18,7 @@ use trailmark::core::geometry::{Point, Pose, Vector};
 use trailmark::core::world::{Bounds, CollisionChecker, PolygonWorld};
 use trailmark::sample::arm::{ArmChecker, PlanarArm, densify};
 use trailmark::sample::{
-    Dubins, KdNearest, Plan, Query, Rn, RrtOptions, Sampled, StateSpace, Termination, rrt_connect,
+    Dubins, KdNearest, Plan, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace, Termination,
 };
 
 use crate::bench_sampling::{ConnectStats, Tally, World};
@@ -52,7 +52,7 @@ pub struct SpaceRow {
 /// `None` when the path fails.
 fn add<T>(tally: &mut Tally, plan: &Plan<T>, ms: f64, bound: f64, checked: impl FnOnce(&[T]) -> Option<f64>) {
     let counts = (ms, plan.stats.iterations, plan.stats.collision_checks);
-    let path = plan.path.as_deref().filter(|_| !plan.approximate);
+    let path = plan.path();
     tally.add(Some(bound), counts, path.is_some(), |_| path.and_then(checked));
 }
 
@@ -77,9 +77,11 @@ pub fn bench_dubins(
             draws.find(|pose| can_circle(&w.checker, pose))
         };
         let (Some(a), Some(b)) = (pose(a), pose(b)) else { continue };
-        let query = Query::new(&space, &w.checker, a, b);
+        let problem = Problem::new(&space, &w.checker, a, b);
         let clock = Instant::now();
-        let plan = rrt_connect(&query, nearest.clone(), &RrtOptions::default(), &limit, seed + i as u64)
+        let plan = RrtConnect::new(nearest.clone())
+            .with_seed(seed + i as u64)
+            .solve(&problem, &limit)
             .map_err(|e| err(&e))?;
         let ms = clock.elapsed().as_secs_f64() * 1e3;
         add(&mut tally, &plan, ms, best, |path| {
@@ -158,10 +160,10 @@ pub fn bench_arm(n: usize, seed: u64) -> Result<SpaceRow, String> {
     let mut tally = Tally::default();
     for i in 0..n {
         let (a, b) = (free(), free());
-        let query = Query::new(&space, &validity, a, b);
+        let problem = Problem::new(&space, &validity, a, b);
         let clock = Instant::now();
-        let plan =
-            rrt_connect(&query, nearest.clone(), &options, &limit, seed + i as u64).map_err(|e| err(&e))?;
+        let mut planner = RrtConnect::new(nearest.clone()).with_options(options).with_seed(seed + i as u64);
+        let plan = planner.solve(&problem, &limit).map_err(|e| err(&e))?;
         let ms = clock.elapsed().as_secs_f64() * 1e3;
         let bound = space.distance(&a, &b);
         add(&mut tally, &plan, ms, bound, |path| {

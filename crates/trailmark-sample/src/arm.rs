@@ -16,7 +16,7 @@
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
 //! use trailmark_sample::arm::{ArmChecker, PlanarArm};
-//! use trailmark_sample::{KdNearest, Query, Rn, RrtOptions, Sampled, Termination, rrt_connect};
+//! use trailmark_sample::{KdNearest, Planner, Problem, Rn, RrtConnect, Sampled, Termination};
 //!
 //! // A 3-link arm on the floor of a 10 x 6 room with a post to reach over.
 //! let post = vec![Point::new(7.0, 0.0), Point::new(7.5, 0.0), Point::new(7.5, 2.0), Point::new(7.0, 2.0)];
@@ -27,11 +27,10 @@
 //! let checker = ArmChecker::new(arm, &room, arm.clearance(&space, resolution))?;
 //! let validity = Sampled::new(|q: &_| checker.is_free(q), resolution)?;
 //! let (start, goal) = ([2.6, -0.5, -0.5].into(), [1.0, -0.7, -1.5].into());
-//! let query = Query::new(&space, &validity, start, goal);
-//! let plan = rrt_connect(&query, KdNearest::<Rn<3>, 3>::new(&space)?, &RrtOptions::default(),
-//!                        &Termination::iterations(20_000), 1)?;
-//! assert!(!plan.approximate);
-//! let path = plan.path.expect("a path");
+//! let problem = Problem::new(&space, &validity, start, goal);
+//! let mut planner = RrtConnect::new(KdNearest::<Rn<3>, 3>::new(&space)?).with_seed(1);
+//! let plan = planner.solve(&problem, &Termination::iterations(20_000))?;
+//! let path = plan.path().expect("a path");
 //! // The hand ends beyond the post, above the floor.
 //! let hand = arm.joints(&path[path.len() - 1])[2];
 //! assert!(hand.x > 7.5 && hand.y > 0.0);

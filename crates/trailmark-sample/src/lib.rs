@@ -7,8 +7,11 @@
 //! - [`validity`]: exact checks against polygon worlds, sampled checks for your own spaces;
 //! - [`sampler`]: where the planners draw samples: uniformly, or near obstacles and in narrow
 //!   passages (the Gaussian and bridge-test samplers);
-//! - [`rrt`](mod@rrt) (RRT, RRT-Connect, termination conditions, plans and statistics) and
-//!   [`rrt_star`](mod@rrt_star);
+//! - [`problem`] (start states and a goal: a state with a tolerance or the user's region),
+//!   [`termination`] (iterations, time, target cost, the caller's condition), [`plan`] (exact,
+//!   approximate or no solution, why the run stopped, statistics);
+//! - [`planner`]: the one interface of every planner, so they swap at run time; [`rrt`](mod@rrt),
+//!   [`rrt_connect`](mod@rrt_connect) and [`rrt_star`](mod@rrt_star) implement it;
 //! - [`arm`]: a planar arm of revolute joints among polygons, for planning in its joint space;
 //! - [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
 //!
@@ -39,22 +42,37 @@
 
 pub mod arm;
 pub mod nearest;
+pub mod plan;
+pub mod planner;
+pub mod problem;
 pub mod rrt;
+pub mod rrt_connect;
 pub mod rrt_star;
+mod run;
 pub mod sampler;
 pub mod simplify;
 pub mod space;
+pub mod termination;
+mod tree;
 pub mod validity;
 
 pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
-pub use rrt::{
-    Condition, Improvement, Plan, PlanError, PlanStats, Progress, Query, RrtOptions, Termination, rrt,
-    rrt_connect,
-};
-pub use rrt_star::rrt_star;
-pub use sampler::{Bridge, Gaussian, SamplerError, StateSampler, Uniform};
+pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution, Stop};
+pub use planner::Planner;
+pub use problem::{Goal, GoalState, Problem};
+/// The `rand` crate (0.10) the generator implements: `rand::RngExt` draws ranges and floats.
+pub use rand;
+/// The random generator the planners and state spaces draw from (`rand_chacha` 0.10), so a
+/// user's own space or sampler needs no version-matched dependency.
+pub use rand_chacha::ChaCha8Rng;
+pub use rrt::Rrt;
+pub use rrt_connect::RrtConnect;
+pub use rrt_star::RrtStar;
+pub use run::{MIN_RELATIVE_RANGE, RrtOptions, cost_of};
+pub use sampler::{Bridge, Draw, Gaussian, SamplerError, StateSampler, Uniform};
 pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};
+pub use termination::{Condition, Progress, Termination};
 pub use validity::{Sampled, Validity};
 
 /// The sampling planners of this crate.

@@ -1,7 +1,7 @@
 //! Where the planners draw the states they steer toward.
 //!
 //! RRT, RRT-Connect and RRT* steer toward a random state each iteration. [`Uniform`] (the
-//! default of every [`Query`](crate::rrt::Query)) draws it uniformly from the space, as OMPL's
+//! default of every planner) draws it uniformly from the space, as OMPL's
 //! planners do. A narrow passage is then found only when a sample happens to fall where its
 //! nearest tree state sees through it, which grows rarer with every passage in a row. The
 //! samplers here spend validity checks to draw where passages are, as OMPL's valid-state
@@ -21,21 +21,17 @@
 //! ```
 //! use trailmark_core::generate;
 //! use trailmark_core::geometry::Point;
-//! use trailmark_sample::nearest::KdNearest;
-//! use trailmark_sample::rrt::{Query, RrtOptions, Termination, rrt_connect};
-//! use trailmark_sample::sampler::Bridge;
-//! use trailmark_sample::space::R2;
+//! use trailmark_sample::{Bridge, KdNearest, Planner, Problem, R2, RrtConnect, Termination};
 //!
 //! // Six walls, each with a door 1.5 wide, for a robot of radius 0.25.
 //! let world = generate::narrow_passages(40.0, 6, 1.5, 0.25, 2)?;
 //! let checker = world.checker();
 //! let space = R2::new(world.bounds());
 //! let bridge = Bridge::new(1.0)?; // partners about one door width away
-//! let query = Query::new(&space, &checker, Point::new(1.0, 20.0), Point::new(39.0, 20.0))
-//!     .with_sampler(&bridge);
-//! let nearest = KdNearest::<R2, 2>::new(&space)?;
-//! let plan = rrt_connect(&query, nearest, &RrtOptions::default(), &Termination::iterations(10_000), 1)?;
-//! assert!(!plan.approximate); // through all six doors
+//! let problem = Problem::new(&space, &checker, Point::new(1.0, 20.0), Point::new(39.0, 20.0));
+//! let mut planner = RrtConnect::new(KdNearest::<R2, 2>::new(&space)?).with_sampler(bridge).with_seed(1);
+//! let plan = planner.solve(&problem, &Termination::iterations(10_000))?;
+//! assert!(plan.is_exact()); // through all six doors
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
@@ -45,6 +41,7 @@ use rand_chacha::ChaCha8Rng;
 use thiserror::Error;
 
 use crate::space::StateSpace;
+use crate::termination::Watch;
 use crate::validity::Validity;
 
 /// A sampler setting out of its range.
@@ -71,26 +68,57 @@ pub const MAX_ATTEMPTS: u32 = 100_000;
 
 /// A source of the states a planner steers toward.
 pub trait StateSampler<S: StateSpace> {
-    /// A state of `space`, possibly found by testing states with `validity`; each test adds one
-    /// to `checks`.
-    fn sample<V: Validity<S>>(
-        &self,
-        space: &S,
-        validity: &V,
-        rng: &mut ChaCha8Rng,
-        checks: &mut u64,
-    ) -> S::State;
+    /// A state of `space`, possibly found by testing states with `validity` through `draw`
+    /// (which counts the tests); `None` when [`Draw::should_stop`] says the run is over, or when
+    /// the sampler has nothing to give this time.
+    fn sample<V: Validity<S>>(&self, space: &S, validity: &V, draw: &mut Draw<'_>) -> Option<S::State>;
 }
 
 impl<S: StateSpace, T: StateSampler<S>> StateSampler<S> for &T {
-    fn sample<V: Validity<S>>(
-        &self,
+    fn sample<V: Validity<S>>(&self, space: &S, validity: &V, draw: &mut Draw<'_>) -> Option<S::State> {
+        (**self).sample(space, validity, draw)
+    }
+}
+
+/// What a sampler draws with: the run's random generator, its count of validity tests, and
+/// whether the run must stop (asked between attempts).
+pub struct Draw<'a> {
+    rng: &'a mut ChaCha8Rng,
+    checks: &'a mut u64,
+    watch: Option<&'a Watch<'a>>,
+}
+
+impl<'a> Draw<'a> {
+    /// Draws from `rng`, counting tests in `checks`, with no termination to answer to (for
+    /// using a sampler outside a planner).
+    pub fn new(rng: &'a mut ChaCha8Rng, checks: &'a mut u64) -> Self {
+        Draw { rng, checks, watch: None }
+    }
+
+    pub(crate) fn watched(rng: &'a mut ChaCha8Rng, checks: &'a mut u64, watch: &'a Watch<'a>) -> Self {
+        Draw { rng, checks, watch: Some(watch) }
+    }
+
+    /// The run's random generator.
+    pub fn rng(&mut self) -> &mut ChaCha8Rng {
+        self.rng
+    }
+
+    /// Whether `state` is valid, counted as one test.
+    pub fn is_valid<S: StateSpace, V: Validity<S>>(
+        &mut self,
         space: &S,
         validity: &V,
-        rng: &mut ChaCha8Rng,
-        checks: &mut u64,
-    ) -> S::State {
-        (**self).sample(space, validity, rng, checks)
+        state: &S::State,
+    ) -> bool {
+        *self.checks += 1;
+        validity.state_is_valid(space, state)
+    }
+
+    /// Whether the run's time limit has passed or its condition asks to stop: a sampler that
+    /// tries many times asks between tries.
+    pub fn should_stop(&self) -> bool {
+        self.watch.is_some_and(|w| w.interrupted().is_some())
     }
 }
 
@@ -99,8 +127,8 @@ impl<S: StateSpace, T: StateSampler<S>> StateSampler<S> for &T {
 pub struct Uniform;
 
 impl<S: StateSpace> StateSampler<S> for Uniform {
-    fn sample<V: Validity<S>>(&self, space: &S, _: &V, rng: &mut ChaCha8Rng, _: &mut u64) -> S::State {
-        space.sample(rng)
+    fn sample<V: Validity<S>>(&self, space: &S, _: &V, draw: &mut Draw<'_>) -> Option<S::State> {
+        Some(space.sample(draw.rng()))
     }
 }
 
@@ -148,27 +176,25 @@ impl Focus {
 
     /// `find` tried up to `attempts` times with probability `share`, else (or when every try
     /// failed) a uniform sample.
+    /// `None` if the run must stop between tries.
     fn draw<S: StateSpace>(
         &self,
         space: &S,
-        rng: &mut ChaCha8Rng,
-        mut find: impl FnMut(&mut ChaCha8Rng) -> Option<S::State>,
-    ) -> S::State {
-        if rng.random::<f64>() < self.share {
+        draw: &mut Draw<'_>,
+        mut find: impl FnMut(&mut Draw<'_>) -> Option<S::State>,
+    ) -> Option<S::State> {
+        if draw.rng().random::<f64>() < self.share {
             for _ in 0..self.attempts {
-                if let Some(state) = find(rng) {
-                    return state;
+                if draw.should_stop() {
+                    return None;
+                }
+                if let Some(state) = find(draw) {
+                    return Some(state);
                 }
             }
         }
-        space.sample(rng)
+        Some(space.sample(draw.rng()))
     }
-}
-
-/// Whether `state` is valid, counted.
-fn valid<S: StateSpace, V: Validity<S>>(space: &S, validity: &V, state: &S::State, checks: &mut u64) -> bool {
-    *checks += 1;
-    validity.state_is_valid(space, state)
 }
 
 macro_rules! focus_settings {
@@ -219,24 +245,18 @@ pub struct Bridge(Focus);
 focus_settings!(Bridge);
 
 impl<S: StateSpace> StateSampler<S> for Bridge {
-    fn sample<V: Validity<S>>(
-        &self,
-        space: &S,
-        validity: &V,
-        rng: &mut ChaCha8Rng,
-        checks: &mut u64,
-    ) -> S::State {
-        self.0.draw(space, rng, |rng| {
-            let a = space.sample(rng);
-            if valid(space, validity, &a, checks) {
+    fn sample<V: Validity<S>>(&self, space: &S, validity: &V, draw: &mut Draw<'_>) -> Option<S::State> {
+        self.0.draw(space, draw, |draw| {
+            let a = space.sample(draw.rng());
+            if draw.is_valid(space, validity, &a) {
                 return None;
             }
-            let b = space.sample_near(&a, self.0.std_dev, rng);
-            if valid(space, validity, &b, checks) {
+            let b = space.sample_near(&a, self.0.std_dev, draw.rng());
+            if draw.is_valid(space, validity, &b) {
                 return None;
             }
             let middle = space.interpolate(&a, &b, 0.5);
-            valid(space, validity, &middle, checks).then_some(middle)
+            draw.is_valid(space, validity, &middle).then_some(middle)
         })
     }
 }
@@ -249,17 +269,11 @@ pub struct Gaussian(Focus);
 focus_settings!(Gaussian);
 
 impl<S: StateSpace> StateSampler<S> for Gaussian {
-    fn sample<V: Validity<S>>(
-        &self,
-        space: &S,
-        validity: &V,
-        rng: &mut ChaCha8Rng,
-        checks: &mut u64,
-    ) -> S::State {
-        self.0.draw(space, rng, |rng| {
-            let a = space.sample(rng);
-            let b = space.sample_near(&a, self.0.std_dev, rng);
-            match (valid(space, validity, &a, checks), valid(space, validity, &b, checks)) {
+    fn sample<V: Validity<S>>(&self, space: &S, validity: &V, draw: &mut Draw<'_>) -> Option<S::State> {
+        self.0.draw(space, draw, |draw| {
+            let a = space.sample(draw.rng());
+            let b = space.sample_near(&a, self.0.std_dev, draw.rng());
+            match (draw.is_valid(space, validity, &a), draw.is_valid(space, validity, &b)) {
                 (true, false) => Some(a),
                 (false, true) => Some(b),
                 _ => None,

@@ -92,6 +92,14 @@ pub trait StateSpace {
     /// The number of coordinates of a state.
     fn dimension(&self) -> usize;
 
+    /// Whether `state` is finite and inside the space's bounds (OMPL's `satisfiesBounds`).
+    /// Planners refuse starts and goals that are not, and every state they return satisfies it.
+    fn satisfies_bounds(&self, state: &Self::State) -> bool;
+
+    /// Moves a finite `state` to the nearest state in the bounds, coordinate by coordinate
+    /// (OMPL's `enforceBounds`); a state that is not finite is left as it is.
+    fn enforce_bounds(&self, state: &mut Self::State);
+
     /// A state drawn uniformly from the space.
     fn sample(&self, rng: &mut ChaCha8Rng) -> Self::State;
 
@@ -163,6 +171,29 @@ fn sample_in(bounds: &Bounds, rng: &mut ChaCha8Rng) -> Point {
     Point::new(rng.random_range(lo.x..hi.x), rng.random_range(lo.y..hi.y))
 }
 
+/// Whether `p` is finite and in `bounds` (sides included).
+fn in_bounds(bounds: &Bounds, p: &Point) -> bool {
+    p.x.is_finite() && p.y.is_finite() && bounds.contains(*p)
+}
+
+/// `p` moved into `bounds` coordinate by coordinate (a NaN stays NaN: `clamp` keeps it).
+fn clamp_into(bounds: &Bounds, p: &mut Point) {
+    let (lo, hi) = (bounds.min(), bounds.max());
+    *p = Point::new(p.x.clamp(lo.x, hi.x), p.y.clamp(lo.y, hi.y));
+}
+
+/// The position of a pose.
+fn place(pose: &Pose) -> Point {
+    Point::from(pose.translation.vector)
+}
+
+/// `pose` with its position moved into `bounds`, its heading kept.
+fn clamp_pose(bounds: &Bounds, pose: &mut Pose) {
+    let mut p = place(pose);
+    clamp_into(bounds, &mut p);
+    pose.translation.vector = p.coords;
+}
+
 fn diagonal(bounds: &Bounds) -> f64 {
     (bounds.max() - bounds.min()).norm()
 }
@@ -188,10 +219,18 @@ impl StateSpace for R2 {
         sample_in(&self.bounds, rng)
     }
 
+    fn satisfies_bounds(&self, p: &Point) -> bool {
+        in_bounds(&self.bounds, p)
+    }
+
+    fn enforce_bounds(&self, p: &mut Point) {
+        clamp_into(&self.bounds, p);
+    }
+
     fn sample_near(&self, near: &Point, std_dev: f64, rng: &mut ChaCha8Rng) -> Point {
-        let (lo, hi) = (self.bounds.min(), self.bounds.max());
-        let x = (near.x + std_dev * gaussian(rng)).clamp(lo.x, hi.x);
-        Point::new(x, (near.y + std_dev * gaussian(rng)).clamp(lo.y, hi.y))
+        let mut p = Point::new(near.x + std_dev * gaussian(rng), near.y + std_dev * gaussian(rng));
+        self.enforce_bounds(&mut p);
+        p
     }
 
     #[inline]
@@ -263,8 +302,21 @@ impl<const N: usize> StateSpace for Rn<N> {
         SVector::from_fn(|i, _| rng.random_range(self.low[i]..self.high[i]))
     }
 
+    fn satisfies_bounds(&self, s: &SVector<f64, N>) -> bool {
+        // `low <= x <= high` is false for a NaN.
+        (0..N).all(|i| self.low[i] <= s[i] && s[i] <= self.high[i])
+    }
+
+    fn enforce_bounds(&self, s: &mut SVector<f64, N>) {
+        for i in 0..N {
+            s[i] = s[i].clamp(self.low[i], self.high[i]);
+        }
+    }
+
     fn sample_near(&self, near: &SVector<f64, N>, std_dev: f64, rng: &mut ChaCha8Rng) -> SVector<f64, N> {
-        SVector::from_fn(|i, _| (near[i] + std_dev * gaussian(rng)).clamp(self.low[i], self.high[i]))
+        let mut s = SVector::from_fn(|i, _| near[i] + std_dev * gaussian(rng));
+        self.enforce_bounds(&mut s);
+        s
     }
 
     fn distance(&self, a: &SVector<f64, N>, b: &SVector<f64, N>) -> f64 {
@@ -339,6 +391,15 @@ impl StateSpace for Se2 {
 
     fn dimension(&self) -> usize {
         3
+    }
+
+    fn satisfies_bounds(&self, s: &Pose) -> bool {
+        // A unit complex heading is in range by construction; a NaN one is not finite.
+        in_bounds(&self.bounds, &place(s)) && s.rotation.re.is_finite() && s.rotation.im.is_finite()
+    }
+
+    fn enforce_bounds(&self, s: &mut Pose) {
+        clamp_pose(&self.bounds, s);
     }
 
     fn sample(&self, rng: &mut ChaCha8Rng) -> Pose {
@@ -421,6 +482,15 @@ impl StateSpace for Dubins {
 
     fn dimension(&self) -> usize {
         3
+    }
+
+    fn satisfies_bounds(&self, s: &Pose) -> bool {
+        // A unit complex heading is in range by construction; a NaN one is not finite.
+        in_bounds(&self.bounds, &place(s)) && s.rotation.re.is_finite() && s.rotation.im.is_finite()
+    }
+
+    fn enforce_bounds(&self, s: &mut Pose) {
+        clamp_pose(&self.bounds, s);
     }
 
     fn sample(&self, rng: &mut ChaCha8Rng) -> Pose {

@@ -78,7 +78,8 @@ impl Validity<Dubins> for CollisionChecker {
 }
 
 /// A state test (a closure) with motions checked at a resolution: states every `resolution x
-/// extent` along the motion, both ends included. Not exact: an obstacle thinner than the step
+/// extent` along the motion, both ends included, each also within the space's bounds (a curve
+/// between two states in bounds may leave them). Not exact: an obstacle thinner than the step
 /// can be missed, as with any sampled check.
 #[derive(Clone, Debug)]
 pub struct Sampled<F> {
@@ -108,6 +109,9 @@ impl<S: StateSpace, F: Fn(&S::State) -> bool> Validity<S> for Sampled<F> {
             return false;
         }
         let n = (steps as u64).max(1);
-        (0..=n).all(|i| (self.is_valid)(&space.interpolate(from, to, i as f64 / n as f64)))
+        (0..=n).all(|i| {
+            let state = space.interpolate(from, to, i as f64 / n as f64);
+            space.satisfies_bounds(&state) && (self.is_valid)(&state)
+        })
     }
 }

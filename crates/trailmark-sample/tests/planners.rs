@@ -10,9 +10,12 @@ use trailmark_core::generate;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::PolygonWorld;
 use trailmark_sample::nearest::{BruteForce, KdNearest, NearestNeighbors};
-use trailmark_sample::rrt::{Plan, PlanError, Query, RrtOptions, Termination, rrt, rrt_connect};
 use trailmark_sample::simplify::shortcut;
 use trailmark_sample::space::{Dubins, R2, StateSpace};
+use trailmark_sample::{
+    Plan, PlanError, Planner, Problem, Rejection, Rrt, RrtConnect, RrtOptions, RrtStar, Solution, Stop,
+    Termination,
+};
 
 /// A generated world of random convex obstacles (40 x 40) and two free points in it.
 fn world_and_ends(count: usize, radius: f64, seed: u64) -> Option<(PolygonWorld, Point, Point)> {
@@ -34,11 +37,18 @@ fn check_r2(
     goal: Point,
 ) -> Result<(), TestCaseError> {
     let checker = world.checker();
-    let path = plan.path.as_ref().expect("a path");
+    let (path, cost) = match &plan.solution {
+        Solution::Exact { path, cost } => {
+            prop_assert_eq!(*path.last().unwrap(), goal);
+            (path, *cost)
+        }
+        Solution::Approximate { path, cost, goal_distance } => {
+            prop_assert!(*goal_distance > 0.0);
+            (path, *cost)
+        }
+        Solution::None => panic!("the tree planners return at least a start"),
+    };
     prop_assert_eq!(path[0], start);
-    if !plan.approximate {
-        prop_assert_eq!(*path.last().unwrap(), goal);
-    }
     for m in path.windows(2) {
         prop_assert!(checker.segment_is_free(m[0], m[1]), "{} -> {} collides", m[0], m[1]);
         let n = ((m[1] - m[0]).norm() / 1e-3).ceil().max(1.0) as usize;
@@ -52,8 +62,8 @@ fn check_r2(
             );
         }
     }
-    let cost: f64 = path.windows(2).map(|m| (m[1] - m[0]).norm()).sum();
-    prop_assert!((cost - plan.cost.unwrap()).abs() <= 1e-9 * cost.max(1.0));
+    let measured: f64 = path.windows(2).map(|m| (m[1] - m[0]).norm()).sum();
+    prop_assert!((measured - cost).abs() <= 1e-9 * cost.max(1.0));
     Ok(())
 }
 
@@ -65,23 +75,21 @@ proptest! {
         let checker = world.checker();
         let space = R2::new(world.bounds());
         let kd = KdNearest::<R2, 2>::new(&space).unwrap();
-        let plan = rrt_connect(&Query::new(&space, &checker, start, goal), kd.clone(), &RrtOptions::default(), &Termination::iterations(5000), seed).unwrap();
+        let problem = Problem::new(&space, &checker, start, goal);
+        let plan = RrtConnect::new(kd.clone()).with_seed(seed).solve(&problem, &Termination::iterations(5000)).unwrap();
         check_r2(&world, &plan, start, goal)?;
         // Shortcuts keep the ends and validity, and never cost more.
-        if let Some(path) = &plan.path {
+        if let Some(path) = plan.path() {
             let short = shortcut(&space, &checker, path, 100, seed);
             let cost = |p: &[Point]| p.windows(2).map(|m| (m[1] - m[0]).norm()).sum::<f64>();
-            let shortened = Plan { path: Some(short.clone()), cost: Some(cost(&short)), ..plan.clone() };
+            let shortened = Plan { solution: Solution::Exact { path: short.clone(), cost: cost(&short) }, ..plan.clone() };
             check_r2(&world, &shortened, start, goal)?;
-            prop_assert!(cost(&short) <= plan.cost.unwrap() + 1e-9);
+            prop_assert!(cost(&short) <= plan.cost().unwrap() + 1e-9);
             prop_assert!(short.len() <= path.len());
         }
         let options = RrtOptions { goal_bias: 0.1, ..RrtOptions::default() };
-        let plan = rrt(&Query::new(&space, &checker, start, goal), kd, &options, &Termination::iterations(3000), seed).unwrap();
+        let plan = Rrt::new(kd).with_options(options).with_seed(seed).solve(&problem, &Termination::iterations(3000)).unwrap();
         check_r2(&world, &plan, start, goal)?;
-        if plan.approximate {
-            prop_assert!(plan.goal_distance > 0.0);
-        }
     }
 
     /// Dubins: each motion of the path is the shortest Dubins curve between its poses, free by
@@ -94,10 +102,10 @@ proptest! {
         let heading = |h: u16| f64::from(h) / 65536.0 * std::f64::consts::TAU;
         let (a, b) = (Pose::new(start.coords, heading(headings[0])), Pose::new(goal.coords, heading(headings[1])));
         let kd = KdNearest::<Dubins, 2>::new(&space).unwrap();
-        let plan = rrt_connect(&Query::new(&space, &checker, a, b), kd, &RrtOptions::default(), &Termination::iterations(4000), seed).unwrap();
-        let path = plan.path.expect("a path, exact or approximate");
+        let plan = RrtConnect::new(kd).with_seed(seed).solve(&Problem::new(&space, &checker, a, b), &Termination::iterations(4000)).unwrap();
+        let path = plan.solution.any_path().expect("a path, exact or approximate").to_vec();
         prop_assert_eq!(path[0], a);
-        if !plan.approximate {
+        if plan.is_exact() {
             prop_assert_eq!(*path.last().unwrap(), b);
         }
         for m in path.windows(2) {
@@ -108,7 +116,8 @@ proptest! {
             }
         }
         let cost: f64 = path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
-        prop_assert!((cost - plan.cost.unwrap()).abs() <= 1e-9 * cost.max(1.0));
+        let (Solution::Exact { cost: planned, .. } | Solution::Approximate { cost: planned, .. }) = plan.solution else { unreachable!() };
+        prop_assert!((cost - planned).abs() <= 1e-9 * cost.max(1.0));
         // Shortcut Dubins paths stay chains of free curves between the same poses.
         let short = shortcut(&space, &checker, &path, 50, seed);
         prop_assert_eq!((short[0], short.last()), (a, path.last()));
@@ -130,25 +139,19 @@ fn the_same_seed_gives_the_same_run() {
         ends: (Point, Point),
         seed: u64,
     ) -> Plan<Point> {
-        let limit = Termination::iterations(5000);
-        rrt_connect(
-            &Query::new(space, &world.checker(), ends.0, ends.1),
-            nearest,
-            &RrtOptions::default(),
-            &limit,
-            seed,
-        )
-        .unwrap()
+        let checker = world.checker();
+        let problem = Problem::new(space, &checker, ends.0, ends.1);
+        RrtConnect::new(nearest).with_seed(seed).solve(&problem, &Termination::iterations(5000)).unwrap()
     }
     let run = |seed: u64| {
         let plan = connect(&space, &world, KdNearest::<R2, 2>::new(&space).unwrap(), (start, goal), seed);
         let again = connect(&space, &world, BruteForce::<R2>::new(), (start, goal), seed);
-        assert_eq!((&plan.path, plan.cost), (&again.path, again.cost), "k-d tree and brute force agree");
+        assert_eq!(plan.solution, again.solution, "k-d tree and brute force agree");
         let s = plan.stats;
-        (plan.path, plan.cost, s.iterations, s.tree_sizes, s.collision_checks)
+        (plan.solution, s.iterations, s.tree_sizes, s.collision_checks)
     };
     assert_eq!(run(11), run(11));
-    assert!(run(11).0.is_some());
+    assert!(run(11).0.is_exact());
     assert_ne!(run(11).0, run(12).0);
 }
 
@@ -157,29 +160,47 @@ fn bad_input_is_a_typed_error() {
     let (world, start, goal) = world_and_ends(10, 0.5, 5).unwrap();
     let checker = world.checker();
     let space = R2::new(world.bounds());
-    let kd = || KdNearest::<R2, 2>::new(&space).unwrap();
+    let kd = KdNearest::<R2, 2>::new(&space).unwrap();
     let inside = world.obstacles()[0].vertices().iter().fold(Point::origin(), |s, v| s + v.coords / 6.0);
     let ok = Termination::iterations(10);
-    let plan = |a: Point, b: Point, o: RrtOptions, t: Termination| {
-        rrt_connect(&Query::new(&space, &checker, a, b), kd(), &o, &t, 1)
+    let planners = |o: RrtOptions| -> Vec<Box<dyn Planner<R2, _>>> {
+        vec![
+            Box::new(Rrt::new(kd.clone()).with_options(o)),
+            Box::new(RrtConnect::new(kd.clone()).with_options(o)),
+            Box::new(RrtStar::new(kd.clone()).with_options(o)),
+        ]
     };
-    assert_eq!(plan(inside, goal, RrtOptions::default(), ok.clone()).unwrap_err(), PlanError::InvalidStart);
-    assert_eq!(plan(start, inside, RrtOptions::default(), ok.clone()).unwrap_err(), PlanError::InvalidGoal);
-    assert_eq!(
-        plan(start, goal, RrtOptions::default(), Termination::default()).unwrap_err(),
-        PlanError::NoLimit
-    );
+    for mut planner in planners(RrtOptions::default()) {
+        let mut plan =
+            |a: Point, b: Point, t: &Termination| planner.solve(&Problem::new(&space, &checker, a, b), t);
+        let invalid = |reason| PlanError::InvalidStart { index: 0, reason };
+        assert_eq!(plan(inside, goal, &ok).unwrap_err(), invalid(Rejection::Invalid));
+        assert_eq!(plan(Point::new(-1.0, 5.0), goal, &ok).unwrap_err(), invalid(Rejection::OutOfBounds));
+        assert_eq!(plan(Point::new(f64::NAN, 5.0), goal, &ok).unwrap_err(), invalid(Rejection::NotFinite));
+        assert_eq!(plan(start, inside, &ok).unwrap_err(), PlanError::InvalidGoal(Rejection::Invalid));
+        assert_eq!(
+            plan(start, Point::new(5.0, 1e6), &ok).unwrap_err(),
+            PlanError::InvalidGoal(Rejection::OutOfBounds)
+        );
+        assert_eq!(
+            plan(start, Point::new(5.0, f64::INFINITY), &ok).unwrap_err(),
+            PlanError::InvalidGoal(Rejection::NotFinite)
+        );
+        assert_eq!(plan(start, goal, &Termination::default()).unwrap_err(), PlanError::NoLimit);
+    }
     for bad in [
         RrtOptions { range: Some(0.0), ..RrtOptions::default() },
         RrtOptions { range: Some(f64::NAN), ..RrtOptions::default() },
         RrtOptions { goal_bias: 1.5, ..RrtOptions::default() },
-        RrtOptions { goal_tolerance: -1.0, ..RrtOptions::default() },
     ] {
-        assert!(
-            matches!(plan(start, goal, bad, ok.clone()), Err(PlanError::InvalidOption { .. })),
-            "{bad:?}"
-        );
+        for mut planner in planners(bad) {
+            let result = planner.solve(&Problem::new(&space, &checker, start, goal), &ok);
+            assert!(matches!(result, Err(PlanError::InvalidOption { .. })), "{bad:?}");
+        }
     }
+    let tolerance = trailmark_sample::GoalState::within(goal, -1.0);
+    let result = Rrt::new(kd.clone()).solve(&Problem::with_goal(&space, &checker, start, tolerance), &ok);
+    assert!(matches!(result, Err(PlanError::InvalidOption { name: "goal tolerance", .. })));
 }
 
 /// A goal inside a closed ring of walls: no exact path, reported as such (the branch to the
@@ -202,29 +223,22 @@ fn a_walled_off_goal_gives_no_path() {
     let kd = KdNearest::<R2, 2>::new(&space).unwrap();
     let (start, goal) = (Point::new(2.0, 2.0), Point::new(15.0, 15.0));
     let limit = Termination::iterations(2000);
-    let plan = rrt_connect(
-        &Query::new(&space, &checker, start, goal),
-        kd.clone(),
-        &RrtOptions::default(),
-        &limit,
-        1,
-    )
-    .unwrap();
-    assert_eq!(plan.stats.iterations, 2000);
-    let connect = plan;
-    let plan =
-        rrt(&Query::new(&space, &checker, start, goal), kd, &RrtOptions::default(), &limit, 1).unwrap();
+    let problem = Problem::new(&space, &checker, start, goal);
+    let connect = RrtConnect::new(kd.clone()).with_seed(1).solve(&problem, &limit).unwrap();
+    assert_eq!(connect.stats.iterations, 2000);
+    let plan = Rrt::new(kd).with_seed(1).solve(&problem, &limit).unwrap();
     for plan in [connect, plan] {
-        assert!(plan.approximate);
-        let path = plan.path.unwrap();
+        assert_eq!(plan.stop, Stop::IterationLimit);
+        assert_eq!((plan.path(), plan.cost()), (None, None), "nothing reads as an answer");
+        let Solution::Approximate { path, cost, goal_distance } = plan.solution else {
+            panic!("approximate")
+        };
         let last = *path.last().unwrap();
         assert_eq!(path[0], start);
         assert!(path.windows(2).all(|m| checker.segment_is_free(m[0], m[1])));
-        assert!(plan.goal_distance >= 5.2 - 1e-9, "{last} is inside the ring"); // the grown outer wall is 5.2 from the goal
-        assert!((plan.goal_distance - (goal - last).norm()).abs() < 1e-12);
-        assert!(
-            (plan.cost.unwrap() - path.windows(2).map(|m| (m[1] - m[0]).norm()).sum::<f64>()).abs() < 1e-9
-        );
+        assert!(goal_distance >= 5.2 - 1e-9, "{last} is inside the ring"); // the grown outer wall is 5.2 from the goal
+        assert!((goal_distance - (goal - last).norm()).abs() < 1e-12);
+        assert!((cost - path.windows(2).map(|m| (m[1] - m[0]).norm()).sum::<f64>()).abs() < 1e-9);
     }
 }
 
@@ -238,8 +252,7 @@ fn a_user_condition_stops_the_run() {
     let space = R2::new(world.bounds());
     let run = |limit: &Termination| {
         let kd = KdNearest::<R2, 2>::new(&space).unwrap();
-        let query = Query::new(&space, &checker, start, goal);
-        trailmark_sample::rrt_star::rrt_star(&query, kd, &RrtOptions::default(), limit, 2).unwrap()
+        RrtStar::new(kd).with_seed(2).solve(&Problem::new(&space, &checker, start, goal), limit).unwrap()
     };
     let seen = Arc::new(Mutex::new(Vec::new()));
     let log = Arc::clone(&seen);
@@ -247,8 +260,12 @@ fn a_user_condition_stops_the_run() {
         log.lock().unwrap().push(progress.iterations);
         progress.iterations >= 300
     }));
-    assert_eq!(plan.stats.iterations, 300);
-    assert_eq!(*seen.lock().unwrap(), (0..=300).collect::<Vec<u64>>());
+    assert_eq!((plan.stats.iterations, plan.stop), (300, Stop::Caller));
+    // Asked before every iteration and within them (before the motion checks of the parent
+    // search and rewiring): the count it sees never falls.
+    let seen = seen.lock().unwrap();
+    assert!(seen.windows(2).all(|w| w[0] <= w[1]));
+    assert_eq!((seen[0], *seen.last().unwrap()), (0, 300));
     // The best cost reaches the condition once there is one.
     let costs = Arc::new(Mutex::new(Vec::new()));
     let log = Arc::clone(&costs);
@@ -257,13 +274,13 @@ fn a_user_condition_stops_the_run() {
         false
     }));
     let costs = costs.lock().unwrap();
-    assert_eq!(costs.len(), 2000);
+    assert!(costs.len() >= 2000);
     assert_eq!(costs.last().copied().flatten(), plan.history.last().map(|b| b.cost));
 }
 
 mod star {
     use super::*;
-    use trailmark_sample::rrt_star::{neighbour_count, rrt_star};
+    use trailmark_sample::rrt_star::neighbour_count;
 
     #[test]
     fn neighbour_count_is_the_published_formula() {
@@ -284,20 +301,20 @@ mod star {
             let space = R2::new(world.bounds());
             let run = || {
                 let kd = KdNearest::<R2, 2>::new(&space).unwrap();
-                rrt_star(&Query::new(&space, &checker, start, goal), kd, &RrtOptions::default(), &Termination::iterations(1200), seed).unwrap()
+                RrtStar::new(kd).with_seed(seed).solve(&Problem::new(&space, &checker, start, goal), &Termination::iterations(1200)).unwrap()
             };
             let plan = run();
             check_r2(&world, &plan, start, goal)?;
             prop_assert!(plan.history.windows(2).all(|w| w[1].cost < w[0].cost && w[1].iteration > w[0].iteration));
             if let Some(last) = plan.history.last() {
-                prop_assert!(!plan.approximate);
-                prop_assert!((last.cost - plan.cost.unwrap()).abs() <= 1e-9 * last.cost.max(1.0));
-                prop_assert!(plan.cost.unwrap() >= (goal - start).norm() - 1e-9);
+                prop_assert!(plan.is_exact());
+                prop_assert!((last.cost - plan.cost().unwrap()).abs() <= 1e-9 * last.cost.max(1.0));
+                prop_assert!(plan.cost().unwrap() >= (goal - start).norm() - 1e-9);
             } else {
-                prop_assert!(plan.approximate);
+                prop_assert!(!plan.is_exact());
             }
             let again = run();
-            prop_assert_eq!((&plan.path, plan.cost, plan.stats.collision_checks), (&again.path, again.cost, again.stats.collision_checks));
+            prop_assert_eq!((&plan.solution, plan.stats.collision_checks), (&again.solution, again.stats.collision_checks));
         }
     }
 
@@ -308,10 +325,11 @@ mod star {
         let world = PolygonWorld::new(bounds, vec![], 0.0).unwrap();
         let checker = world.checker();
         let space = R2::new(bounds);
-        let query = Query::new(&space, &checker, Point::new(1.0, 1.0), Point::new(9.0, 9.0));
-        let limit = Termination { target_cost: Some(20.0), ..Termination::iterations(100_000) };
-        let plan = rrt_star(&query, BruteForce::new(), &RrtOptions::default(), &limit, 3).unwrap();
-        assert!(plan.cost.unwrap() <= 20.0);
+        let problem = Problem::new(&space, &checker, Point::new(1.0, 1.0), Point::new(9.0, 9.0));
+        let limit = Termination::iterations(100_000).and_target_cost(20.0);
+        let plan = RrtStar::new(BruteForce::new()).with_seed(3).solve(&problem, &limit).unwrap();
+        assert!(plan.cost().unwrap() <= 20.0);
+        assert_eq!(plan.stop, Stop::TargetCost);
         assert!(plan.stats.iterations < 100_000);
         assert_eq!(plan.stats.iterations, plan.history.last().unwrap().iteration);
     }
@@ -324,17 +342,13 @@ mod star {
         let space = Dubins::new(world.bounds(), 1.0).unwrap();
         let (a, b) = (Pose::new(start.coords, 0.5), Pose::new(goal.coords, -2.0));
         let kd = KdNearest::<Dubins, 2>::new(&space).unwrap();
-        let plan = rrt_star(
-            &Query::new(&space, &checker, a, b),
-            kd,
-            &RrtOptions::default(),
-            &Termination::iterations(1500),
-            4,
-        )
-        .unwrap();
-        let path = plan.path.unwrap();
+        let plan = RrtStar::new(kd)
+            .with_seed(4)
+            .solve(&Problem::new(&space, &checker, a, b), &Termination::iterations(1500))
+            .unwrap();
+        let path = plan.solution.any_path().unwrap();
         assert_eq!(path[0], a);
-        if !plan.approximate {
+        if plan.is_exact() {
             assert_eq!(*path.last().unwrap(), b);
         }
         for m in path.windows(2) {

@@ -12,10 +12,10 @@ use trailmark_core::generate;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_sample::nearest::KdNearest;
-use trailmark_sample::rrt::{Query, RrtOptions, Termination, rrt_connect};
-use trailmark_sample::sampler::{Bridge, Gaussian, SamplerError, StateSampler, Uniform};
+use trailmark_sample::sampler::{Bridge, Draw, Gaussian, SamplerError, StateSampler, Uniform};
 use trailmark_sample::space::{Dubins, R2, Se2, StateSpace};
 use trailmark_sample::validity::Validity;
+use trailmark_sample::{Planner, Problem, RrtConnect, Termination};
 
 const SIZE: f64 = 40.0;
 const WALLS: usize = 6;
@@ -80,7 +80,9 @@ fn draw<Q: StateSampler<R2>>(
     let space = R2::new(world.bounds());
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut checks = 0;
-    let samples = (0..n).map(|_| sampler.sample(&space, &counting, &mut rng, &mut checks)).collect();
+    let mut draw = Draw::new(&mut rng, &mut checks);
+    let samples =
+        (0..n).map(|_| sampler.sample(&space, &counting, &mut draw).expect("no limit to stop it")).collect();
     (samples, checks, counting.states.get())
 }
 
@@ -144,7 +146,7 @@ fn the_share_splits_the_samples() {
     let tested = (0..4000)
         .filter(|_| {
             let mut checks = 0;
-            once.sample(&space, &checker, &mut rng, &mut checks);
+            once.sample(&space, &checker, &mut Draw::new(&mut rng, &mut checks));
             checks > 0
         })
         .count();
@@ -238,14 +240,13 @@ fn bridge_sampling_gets_rrt_connect_through_six_doors() {
     let queries = 12;
     for seed in 0..queries {
         let (a, b) = (free(0.0, gap), free(SIZE - gap, SIZE));
-        let query = Query::new(&space, &checker, a, b);
-        let plan = rrt_connect(&query, nearest.clone(), &RrtOptions::default(), &limit, seed).unwrap();
-        uniform += usize::from(!plan.approximate);
-        let plan =
-            rrt_connect(&query.with_sampler(&bridge), nearest.clone(), &RrtOptions::default(), &limit, seed)
-                .unwrap();
-        bridged += usize::from(!plan.approximate);
-        let path = plan.path.unwrap();
+        let problem = Problem::new(&space, &checker, a, b);
+        let plan = RrtConnect::new(nearest.clone()).with_seed(seed).solve(&problem, &limit).unwrap();
+        uniform += usize::from(plan.is_exact());
+        let mut planner = RrtConnect::new(nearest.clone()).with_sampler(&bridge).with_seed(seed);
+        let plan = planner.solve(&problem, &limit).unwrap();
+        bridged += usize::from(plan.is_exact());
+        let path = plan.path().unwrap();
         assert!(path.windows(2).all(|m| checker.segment_is_free(m[0], m[1])));
     }
     assert_eq!(bridged, queries as usize, "bridge sampling solved {bridged} of {queries}");

@@ -1,0 +1,185 @@
+//! What every run of a tree planner starts with and ends with: the checked problem and
+//! settings, the clock, the statistics, the seeded generator; and the plan it returns.
+
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use crate::plan::{Improvement, Plan, PlanError, PlanStats, Solution, Stop};
+use crate::problem::Problem;
+use crate::sampler::{Draw, StateSampler};
+use crate::space::StateSpace;
+use crate::termination::{Termination, Watch};
+use crate::validity::Validity;
+
+/// The settings of the tree planners (RRT, RRT-Connect, RRT*).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RrtOptions {
+    /// The longest motion added at once (default: 0.2 x the space's extent, as OMPL; at least
+    /// [`MIN_RELATIVE_RANGE`] of it).
+    pub range: Option<f64>,
+    /// RRT and RRT*: the probability of steering toward a state of the goal (default 0.05).
+    pub goal_bias: f64,
+}
+
+impl Default for RrtOptions {
+    fn default() -> Self {
+        RrtOptions { range: None, goal_bias: 0.05 }
+    }
+}
+
+/// The shortest `range` a planner takes, as a share of the space's extent: 1e-4, so that one
+/// connect phase of [`MAX_CONNECT_STEPS`](crate::rrt_connect::MAX_CONNECT_STEPS) can cross the
+/// space. Shorter steps only pile up states (a range of 1e-8 of a world had made RRT-Connect
+/// run for minutes, its trees millions of states along lines).
+pub const MIN_RELATIVE_RANGE: f64 = 1e-4;
+
+/// A run under way.
+pub(crate) struct Run<'t> {
+    pub(crate) watch: Watch<'t>,
+    pub(crate) stats: PlanStats,
+    pub(crate) range: f64,
+    pub(crate) rng: ChaCha8Rng,
+    pub(crate) history: Vec<Improvement>,
+}
+
+impl<'t> Run<'t> {
+    /// Checks the termination, the settings and the problem, and starts the clock.
+    pub(crate) fn begin<S: StateSpace, V: Validity<S>>(
+        problem: &Problem<'_, S, V>,
+        options: &RrtOptions,
+        termination: &'t Termination,
+        seed: u64,
+    ) -> Result<Self, PlanError> {
+        let watch = Watch::start(termination);
+        if !termination.is_bounded() {
+            return Err(PlanError::NoLimit);
+        }
+        let space = problem.space;
+        let range = options.range.unwrap_or(0.2 * space.extent());
+        if !(range.is_finite() && range > 0.0) {
+            return Err(PlanError::InvalidOption {
+                name: "range",
+                expected: "positive and finite",
+                value: range,
+            });
+        }
+        if range < MIN_RELATIVE_RANGE * space.extent() {
+            return Err(PlanError::InvalidOption {
+                name: "range",
+                expected: "at least 1e-4 of the space's extent (MIN_RELATIVE_RANGE)",
+                value: range,
+            });
+        }
+        if !(0.0..=1.0).contains(&options.goal_bias) {
+            let value = options.goal_bias;
+            return Err(PlanError::InvalidOption { name: "goal_bias", expected: "in [0, 1]", value });
+        }
+        let mut stats = PlanStats::default();
+        problem.check(&mut stats.collision_checks)?;
+        Ok(Run { watch, stats, range, rng: ChaCha8Rng::seed_from_u64(seed), history: Vec::new() })
+    }
+
+    /// A state from `sampler`, or why the run must stop (`Ok(None)`: nothing this time).
+    pub(crate) fn sample<S: StateSpace, V: Validity<S>, Q: StateSampler<S>>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        sampler: &Q,
+    ) -> Result<Option<S::State>, Stop> {
+        let mut draw = Draw::watched(&mut self.rng, &mut self.stats.collision_checks, &self.watch);
+        match sampler.sample(space, validity, &mut draw) {
+            Some(state) => Ok(Some(state)),
+            None => self.watch.interrupted().map_or(Ok(None), Err),
+        }
+    }
+
+    /// Records a solution of cost `cost` if it is the best so far.
+    pub(crate) fn improved(&mut self, cost: f64) {
+        if self.history.last().is_none_or(|b| cost < b.cost) {
+            let at = Improvement { iteration: self.watch.iterations(), time: self.watch.elapsed(), cost };
+            self.stats.time_to_solution.get_or_insert(at.time);
+            self.history.push(at);
+            self.watch.improved(cost);
+        }
+    }
+
+    /// The plan of a run that stopped for `stop` with `path` ending `goal_distance` from the
+    /// goal (`None`: at the goal).
+    pub(crate) fn finish<S: StateSpace>(
+        mut self,
+        space: &S,
+        path: Vec<S::State>,
+        goal_distance: Option<f64>,
+        stop: Stop,
+    ) -> Plan<S::State> {
+        self.stats.iterations = self.watch.iterations();
+        let cost = cost_of(space, &path);
+        let solution = match goal_distance {
+            None => Solution::Exact { path, cost },
+            Some(goal_distance) => Solution::Approximate { path, cost, goal_distance },
+        };
+        self.stats.elapsed = self.watch.elapsed();
+        Plan { solution, stop, history: self.history, stats: self.stats }
+    }
+}
+
+/// The cost of a path: its motions' distances summed.
+pub fn cost_of<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
+    // A fold from +0: an empty float sum is -0.0, which a one-state path would report.
+    path.windows(2).fold(0.0, |total, m| total + space.distance(&m[0], &m[1]))
+}
+
+/// The settings every tree planner has: an empty nearest-neighbour structure to grow its trees
+/// in, a sampler, the options and the seed; with the methods that set them.
+macro_rules! tree_planner {
+    ($(#[$doc:meta])* $name:ident) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone)]
+        pub struct $name<N, Q = $crate::sampler::Uniform> {
+            nearest: N,
+            sampler: Q,
+            /// Range and goal bias.
+            pub options: $crate::run::RrtOptions,
+            /// The seed of the ChaCha8 generator each run starts from: the same seed, the same
+            /// run.
+            pub seed: u64,
+        }
+
+        impl<N> $name<N> {
+            /// The planner with its trees in (clones of) `nearest`, which must be empty, uniform
+            /// samples, the default options and seed 0.
+            pub fn new(nearest: N) -> Self {
+                $name {
+                    nearest,
+                    sampler: $crate::sampler::Uniform,
+                    options: $crate::run::RrtOptions::default(),
+                    seed: 0,
+                }
+            }
+        }
+
+        impl<N, Q> $name<N, Q> {
+            /// The same planner drawing its samples from `sampler`.
+            pub fn with_sampler<R>(self, sampler: R) -> $name<N, R> {
+                $name { nearest: self.nearest, sampler, options: self.options, seed: self.seed }
+            }
+
+            /// The same planner with these options.
+            pub fn with_options(self, options: $crate::run::RrtOptions) -> Self {
+                $name { options, ..self }
+            }
+
+            /// The same planner seeded with `seed`.
+            pub fn with_seed(self, seed: u64) -> Self {
+                $name { seed, ..self }
+            }
+
+            /// The sampler.
+            pub fn sampler(&self) -> &Q {
+                &self.sampler
+            }
+        }
+    };
+}
+
+pub(crate) use tree_planner;

@@ -1,0 +1,122 @@
+//! A tree of valid motions, grown toward targets at most a range at a time: what RRT and
+//! RRT-Connect grow.
+
+use crate::nearest::{Direction, NearestNeighbors, measure};
+use crate::space::StateSpace;
+use crate::validity::Validity;
+
+/// The parent of a root.
+pub(crate) const ROOT: u32 = u32::MAX;
+
+/// A tree of states: each with its parent, searched through a nearest-neighbour structure.
+pub(crate) struct Tree<S: StateSpace, N> {
+    pub(crate) nearest: N,
+    parents: Vec<u32>,
+    /// Forward (motions from the roots out) or backward (motions into the roots).
+    direction: Direction,
+    _space: std::marker::PhantomData<fn() -> S>,
+}
+
+/// What one extension did.
+pub(crate) enum Extension {
+    /// Nothing added: the motion was refused or went nowhere.
+    Trapped,
+    /// A state `range` toward the target.
+    Advanced(u32),
+    /// The target itself.
+    Reached(u32),
+}
+
+impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
+    /// A tree with no states, growing in `direction`.
+    pub(crate) fn new(nearest: N, direction: Direction) -> Self {
+        Tree { nearest, parents: Vec::new(), direction, _space: std::marker::PhantomData }
+    }
+
+    /// Adds `state` as a root; its id.
+    pub(crate) fn add_root(&mut self, space: &S, state: S::State) -> u32 {
+        self.parents.push(ROOT);
+        self.nearest.insert(space, state)
+    }
+
+    pub(crate) fn len(&self) -> usize {
+        self.nearest.len()
+    }
+
+    pub(crate) fn state(&self, id: u32) -> &S::State {
+        self.nearest.state(id)
+    }
+
+    /// Grows one motion of at most `range` toward `target`.
+    pub(crate) fn extend<V: Validity<S>>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        target: &S::State,
+        range: f64,
+        checks: &mut u64,
+    ) -> Extension {
+        let Some((near, d)) = self.nearest.nearest(space, target, self.direction) else {
+            return Extension::Trapped;
+        };
+        self.extend_from(space, validity, near, d, target, range, checks)
+    }
+
+    /// [`Tree::extend`] from the state `near`, `d` from `target` in the tree's direction.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn extend_from<V: Validity<S>>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        near: u32,
+        d: f64,
+        target: &S::State,
+        range: f64,
+        checks: &mut u64,
+    ) -> Extension {
+        let from = self.state(near).clone();
+        let (new, reached) = if d <= range {
+            (target.clone(), true)
+        } else {
+            match self.direction {
+                // Forward: range along the motion from the tree toward the target.
+                Direction::ToQuery => (space.interpolate(&from, target, range / d), false),
+                // Backward: range before the tree along the motion from the target into it.
+                Direction::FromQuery => (space.interpolate(target, &from, 1.0 - range / d), false),
+            }
+        };
+        // Every state of the tree is in bounds: a target outside them, or a step rounded
+        // across them, is refused rather than kept.
+        if new == from || !space.satisfies_bounds(&new) {
+            return Extension::Trapped;
+        }
+        *checks += 1;
+        let valid = match self.direction {
+            Direction::ToQuery => validity.motion_is_valid(space, &from, &new),
+            Direction::FromQuery => validity.motion_is_valid(space, &new, &from),
+        };
+        if !valid {
+            return Extension::Trapped;
+        }
+        let id = self.nearest.insert(space, new);
+        self.parents.push(near);
+        if reached { Extension::Reached(id) } else { Extension::Advanced(id) }
+    }
+
+    /// The distance from state `id` to `target` in the tree's direction (the query's motions
+    /// run from the tree toward it, or from it into the tree).
+    pub(crate) fn gap(&self, space: &S, id: u32, target: &S::State) -> f64 {
+        measure(space, self.state(id), target, self.direction)
+    }
+
+    /// The states from a root to `id`.
+    pub(crate) fn branch(&self, mut id: u32) -> Vec<S::State> {
+        let mut states = Vec::new();
+        while id != ROOT {
+            states.push(self.state(id).clone());
+            id = self.parents[id as usize];
+        }
+        states.reverse();
+        states
+    }
+}

@@ -901,7 +901,10 @@ pub fn run(args: &Args) -> ExitCode {
             let folder = folder.join("ompl");
             std::fs::create_dir_all(&folder)?;
             for e in logs {
-                std::fs::write(folder.join(format!("{}.log", e.name)), crate::ompl_log::write(e))?;
+                std::fs::write(
+                    folder.join(format!("{}.log", e.name)),
+                    trailmark::sample::benchmark::log::write(e),
+                )?;
             }
             Ok(())
         })

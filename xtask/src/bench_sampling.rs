@@ -10,7 +10,7 @@
 //! optimum by more than its approximation allows; a path that fails either is an error that
 //! fails the run.
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use plotters::prelude::*;
 use rand::{RngExt, SeedableRng};
@@ -23,13 +23,13 @@ use trailmark::core::world::{CollisionChecker, PolygonWorld};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::prelude::*;
 use trailmark::sample::{
-    Bridge, KdNearest, Plan, Planner, Problem, R2, Rrt, RrtConnect, RrtStar, Solution, Termination,
+    Bridge, KdNearest, Plan, Planner, Problem, R2, Rrt, RrtConnect, RrtStar, Termination,
 };
 
 use crate::bench::{Suite, median};
 use crate::ompl::Driver;
-use crate::ompl_log::{Experiment, LogRun, PlannerRuns};
 use crate::plots::{BoxSeries, COLOURS, SuccessLine, box_plot_svg, success_svg};
+use trailmark::sample::benchmark::{Experiment, PlannerRuns, RunRecord, benchmark};
 
 /// The side of the square worlds.
 const SIZE: f64 = 40.0;
@@ -172,17 +172,14 @@ impl World {
         b: Point,
         termination: &Termination,
         seed: u64,
-    ) -> Result<(Plan<Point>, LogRun), String> {
+    ) -> Result<(Plan<Point>, RunRecord), String> {
         let space = R2::new(self.world.bounds());
         let nearest = KdNearest::<R2, 2>::new(&space).map_err(|e| e.to_string())?;
         let problem = Problem::new(&space, &self.checker, a, b);
-        let memory = crate::memory::mark();
-        let plan = RrtStar::new(nearest)
-            .with_seed(seed)
-            .solve(&problem, termination)
+        let probe = crate::memory::Probe::default();
+        let mut runs = benchmark(&mut RrtStar::new(nearest), &problem, termination, 1, seed, Some(&probe))
             .map_err(|e| format!("{}: {e}", self.name))?;
-        let logged = log_run(&plan, plan.stats.elapsed.as_secs_f64(), crate::memory::peak_since(memory));
-        Ok((plan, logged))
+        Ok((runs.plans.remove(0), runs.runs.remove(0)))
     }
 
     /// Whether `plan` is a valid path from `a` to `b` no shorter than the reference allows.
@@ -401,6 +398,8 @@ pub struct SamplingReport {
     pub spaces: Vec<crate::bench_spaces::SpaceRow>,
     /// RRT* of trailmark and OMPL with equal time (with `--with-ompl`).
     pub equal_time: Vec<EqualTimeRow>,
+    /// How far past a time limit each planner returns.
+    pub limits: Vec<crate::bench_limits::LimitRow>,
     /// The OMPL version measured (with `--with-ompl`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ompl_version: Option<String>,
@@ -522,6 +521,13 @@ pub fn bench_sampling(
         progress.note(format!("RRT-Connect for the 3-link arm, {space_queries} queries"));
         spaces.push(crate::bench_spaces::bench_arm(space_queries, seed)?);
     }
+    let limits = if only.is_empty() {
+        progress
+            .note(format!("time limits: every planner, {} ms each", crate::bench_limits::LIMIT.as_millis()));
+        crate::bench_limits::bench_limits(seed)?
+    } else {
+        Vec::new()
+    };
     let mut figures = Vec::new();
     if !star.is_empty() {
         figures.push(("sampling-convergence.svg", convergence_svg(&star)?));
@@ -535,6 +541,7 @@ pub fn bench_sampling(
         prm,
         spaces,
         equal_time: equal_times,
+        limits,
         ompl_version: ompl.map(|d| d.version.clone()),
         figures,
         logs,
@@ -587,21 +594,17 @@ fn bench_connect(
     let mut runs = Vec::with_capacity(queries.len());
     for (i, &(a, b, best)) in queries.iter().enumerate() {
         let problem = Problem::new(&space, checker, a, b);
-        let memory = crate::memory::mark();
-        let clock = Instant::now();
-        let seed = seed + i as u64;
-        let plan = match planner {
-            SingleQuery::Rrt => Rrt::new(nearest.clone()).with_seed(seed).solve(&problem, &limit),
-            SingleQuery::RrtConnect => {
-                RrtConnect::new(nearest.clone()).with_seed(seed).solve(&problem, &limit)
-            }
-            SingleQuery::RrtConnectBridge => {
-                RrtConnect::new(nearest.clone()).with_sampler(&bridge).with_seed(seed).solve(&problem, &limit)
-            }
-        }
-        .map_err(|e| format!("{}: {e}", w.name))?;
-        let ms = clock.elapsed().as_secs_f64() * 1e3;
-        runs.push(log_run(&plan, ms / 1e3, crate::memory::peak_since(memory)));
+        let mut ours: Box<dyn Planner<R2, CollisionChecker>> = match planner {
+            SingleQuery::Rrt => Box::new(Rrt::new(nearest.clone())),
+            SingleQuery::RrtConnect => Box::new(RrtConnect::new(nearest.clone())),
+            SingleQuery::RrtConnectBridge => Box::new(RrtConnect::new(nearest.clone()).with_sampler(bridge)),
+        };
+        let probe = crate::memory::Probe::default();
+        let mut measured = benchmark(ours.as_mut(), &problem, &limit, 1, seed + i as u64, Some(&probe))
+            .map_err(|e| format!("{}: {e}", w.name))?;
+        let (plan, record) = (measured.plans.remove(0), measured.runs.remove(0));
+        let ms = record.time_s * 1e3;
+        runs.push(record);
         let counts = (ms, plan.stats.iterations, plan.stats.collision_checks);
         tally.add(best, counts, plan.is_exact(), |best| {
             w.checks(&plan, a, b, best).then(|| plan.cost().unwrap_or(f64::NAN))
@@ -628,24 +631,9 @@ pub(crate) fn ompl_queries(queries: &[(Point, Point, Option<f64>)]) -> Vec<[f64;
     queries.iter().map(|(a, b, _)| [a.x, a.y, b.x, b.y]).collect()
 }
 
-/// A trailmark run for the OMPL-format log.
-fn log_run(plan: &Plan<Point>, time_s: f64, memory_bytes: usize) -> LogRun {
-    LogRun {
-        time_s,
-        solved: plan.is_exact(),
-        approximate: matches!(plan.solution, Solution::Approximate { .. }),
-        memory_bytes: Some(memory_bytes),
-        graph_states: plan.stats.tree_sizes.iter().map(|&n| n as u64).sum(),
-        solution_length: plan.cost(),
-        iterations: plan.stats.iterations,
-        collision_checks: plan.stats.collision_checks,
-        progress: plan.history.iter().map(|h| (h.time.as_secs_f64(), h.cost)).collect(),
-    }
-}
-
 /// An OMPL run for the OMPL-format log.
-fn ompl_log_run(run: &crate::ompl::Run) -> LogRun {
-    LogRun {
+fn ompl_log_run(run: &crate::ompl::Run) -> RunRecord {
+    RunRecord {
         time_s: run.time_s,
         solved: run.exact(),
         approximate: run.status == "approximate",
@@ -655,6 +643,7 @@ fn ompl_log_run(run: &crate::ompl::Run) -> LogRun {
         iterations: run.iterations,
         collision_checks: run.collision_checks,
         progress: run.improvements.clone(),
+        ..RunRecord::default()
     }
 }
 
@@ -1005,6 +994,7 @@ pub fn markdown(report: &SamplingReport) -> String {
     if !report.equal_time.is_empty() {
         s.push_str(&equal_time_markdown(report));
     }
+    s.push_str(&crate::bench_limits::markdown(&report.limits));
     s
 }
 

@@ -23,6 +23,7 @@ mod output;
 
 mod bench;
 mod bench_contingency;
+mod bench_limits;
 mod bench_prm;
 mod bench_replan;
 mod bench_roadmap;
@@ -32,7 +33,6 @@ mod contingency;
 mod memory;
 mod navigate;
 mod ompl;
-mod ompl_log;
 mod plots;
 mod progress;
 mod solve;

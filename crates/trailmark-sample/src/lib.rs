@@ -13,6 +13,7 @@
 //! - [`planner`]: the one interface of every planner, so they swap at run time; [`rrt`](mod@rrt),
 //!   [`rrt_connect`](mod@rrt_connect) and [`rrt_star`](mod@rrt_star) implement it;
 //! - [`arm`]: a planar arm of revolute joints among polygons, for planning in its joint space;
+//! - [`benchmark`]: seeded runs of any planner, measured, and logs in OMPL's format;
 //! - [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
 //!
 //! ```
@@ -41,6 +42,7 @@
 #![deny(missing_docs)]
 
 pub mod arm;
+pub mod benchmark;
 pub mod nearest;
 pub mod plan;
 pub mod planner;

@@ -53,4 +53,15 @@ pub trait Planner<S: StateSpace, V: Validity<S>> {
     /// Forgets what earlier runs built (a roadmap, say), so the next run starts afresh. The
     /// tree planners keep nothing between runs.
     fn clear(&mut self) {}
+
+    /// Seeds the planner's next runs (a deterministic planner ignores it).
+    fn set_seed(&mut self, seed: u64) {
+        let _ = seed;
+    }
+
+    /// Whether the planner improves its solution after the first (RRT*), so that a benchmark
+    /// logs its progress.
+    fn optimizes(&self) -> bool {
+        false
+    }
 }

@@ -70,12 +70,22 @@ where
         "RRT"
     }
 
+    fn set_seed(&mut self, seed: u64) {
+        self.seed = seed;
+    }
+
+    fn clear(&mut self) {
+        self.spent.release();
+    }
+
     fn solve(
         &mut self,
         problem: &Problem<'_, S, V>,
         termination: &Termination,
     ) -> Result<Plan<S::State>, PlanError> {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
+        // The last run's trees are freed before this run's clock starts.
+        self.spent.release();
         let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut tree = Tree::new(self.nearest.clone(), Direction::ToQuery);
         let mut closest: Option<(u32, f64)> = None;
@@ -130,6 +140,9 @@ where
         if goal_distance.is_none() {
             run.improved(crate::run::cost_of(space, &path));
         }
+        let (nearest, parents) = tree.into_parts();
+        self.spent.nearest.push(nearest);
+        self.spent.ids.push(parents);
         Ok(run.finish(space, path, goal_distance, stop))
     }
 }

@@ -128,12 +128,22 @@ where
         "RRT-Connect"
     }
 
+    fn set_seed(&mut self, seed: u64) {
+        self.seed = seed;
+    }
+
+    fn clear(&mut self) {
+        self.spent.release();
+    }
+
     fn solve(
         &mut self,
         problem: &Problem<'_, S, V>,
         termination: &Termination,
     ) -> Result<Plan<S::State>, PlanError> {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
+        // The last run's trees are freed before this run's clock starts.
+        self.spent.release();
         let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut trees = [
             Tree::new(self.nearest.clone(), Direction::ToQuery),
@@ -233,6 +243,7 @@ where
         let Some((from_start, into_goal)) = meeting else {
             // No meeting: the start tree's branch to the state nearest the goal.
             let path = start_tree.branch(closest.id);
+            self.keep(trees);
             return Ok(run.finish(space, path, Some(closest.distance), stop));
         };
         let mut path = start_tree.branch(from_start);
@@ -241,6 +252,18 @@ where
         // The meeting state ends the first part and starts the second.
         path.extend(back.into_iter().skip(1));
         run.improved(crate::run::cost_of(space, &path));
+        self.keep(trees);
         Ok(run.finish(space, path, None, stop))
+    }
+}
+
+impl<N, Q> RrtConnect<N, Q> {
+    /// Keeps the trees until the next run or `clear`.
+    fn keep<S: StateSpace>(&mut self, trees: [Tree<S, N>; 2]) {
+        for tree in trees {
+            let (nearest, parents) = tree.into_parts();
+            self.spent.nearest.push(nearest);
+            self.spent.ids.push(parents);
+        }
     }
 }

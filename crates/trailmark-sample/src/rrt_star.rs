@@ -68,12 +68,26 @@ where
         "RRT*"
     }
 
+    fn set_seed(&mut self, seed: u64) {
+        self.seed = seed;
+    }
+
+    fn clear(&mut self) {
+        self.spent.release();
+    }
+
+    fn optimizes(&self) -> bool {
+        true
+    }
+
     fn solve(
         &mut self,
         problem: &Problem<'_, S, V>,
         termination: &Termination,
     ) -> Result<Plan<S::State>, PlanError> {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
+        // The last run's trees are freed before this run's clock starts.
+        self.spent.release();
         let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut nearest = self.nearest.clone();
         let mut parents = Vec::new();
@@ -230,6 +244,10 @@ where
             u = parents[u as usize];
         }
         path.reverse();
+        self.spent.nearest.push(nearest);
+        self.spent.ids.push(parents);
+        self.spent.costs = costs;
+        self.spent.lists = children;
         Ok(run.finish(space, path, goal_distance, stop))
     }
 }

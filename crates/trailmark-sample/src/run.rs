@@ -129,6 +129,31 @@ pub fn cost_of<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
     path.windows(2).fold(0.0, |total, m| total + space.distance(&m[0], &m[1]))
 }
 
+/// What a run grew: its trees, kept by the planner after the run (OMPL's planners keep their
+/// data until `clear` too). Freeing a large tree returns its pages to the system, which takes
+/// long enough (about 0.3 ms for 28,000 states) to make a run return well past its time limit;
+/// the planner frees it when it is cleared or before the next run starts its clock.
+#[derive(Debug, Clone)]
+pub(crate) struct Spent<N> {
+    pub(crate) nearest: Vec<N>,
+    pub(crate) ids: Vec<Vec<u32>>,
+    pub(crate) costs: Vec<f64>,
+    pub(crate) lists: Vec<Vec<u32>>,
+}
+
+impl<N> Default for Spent<N> {
+    fn default() -> Self {
+        Spent { nearest: Vec::new(), ids: Vec::new(), costs: Vec::new(), lists: Vec::new() }
+    }
+}
+
+impl<N> Spent<N> {
+    /// Frees what the last run grew.
+    pub(crate) fn release(&mut self) {
+        *self = Spent::default();
+    }
+}
+
 /// The settings every tree planner has: an empty nearest-neighbour structure to grow its trees
 /// in, a sampler, the options and the seed; with the methods that set them.
 macro_rules! tree_planner {
@@ -143,6 +168,8 @@ macro_rules! tree_planner {
             /// The seed of the ChaCha8 generator each run starts from: the same seed, the same
             /// run.
             pub seed: u64,
+            /// What the last run grew, kept until the next run or `clear`.
+            spent: $crate::run::Spent<N>,
         }
 
         impl<N> $name<N> {
@@ -154,6 +181,7 @@ macro_rules! tree_planner {
                     sampler: $crate::sampler::Uniform,
                     options: $crate::run::RrtOptions::default(),
                     seed: 0,
+                    spent: $crate::run::Spent::default(),
                 }
             }
         }
@@ -161,7 +189,7 @@ macro_rules! tree_planner {
         impl<N, Q> $name<N, Q> {
             /// The same planner drawing its samples from `sampler`.
             pub fn with_sampler<R>(self, sampler: R) -> $name<N, R> {
-                $name { nearest: self.nearest, sampler, options: self.options, seed: self.seed }
+                $name { nearest: self.nearest, sampler, options: self.options, seed: self.seed, spent: self.spent }
             }
 
             /// The same planner with these options.

@@ -27,6 +27,13 @@ pub(crate) enum Extension {
     Reached(u32),
 }
 
+impl<S: StateSpace, N> Tree<S, N> {
+    /// The nearest-neighbour structure and the parents, for the planner to keep.
+    pub(crate) fn into_parts(self) -> (N, Vec<u32>) {
+        (self.nearest, self.parents)
+    }
+}
+
 impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
     /// A tree with no states, growing in `direction`.
     pub(crate) fn new(nearest: N, direction: Direction) -> Self {

@@ -1,5 +1,5 @@
 //! Benchmark logs in OMPL's format, so that OMPL's `ompl_benchmark_statistics` script turns
-//! trailmark's runs (and the OMPL peer's, side by side) into the database Planner Arena reads.
+//! trailmark's runs (and OMPL's, side by side) into the database Planner Arena reads.
 //!
 //! One log holds one experiment (one world and its queries): a header, then for each planner
 //! its run properties (`NAME TYPE` lines), one line per run (`value; ` for each property) and,
@@ -7,28 +7,7 @@
 
 use std::fmt::Write;
 
-/// One run of a planner.
-#[derive(Debug, Clone, Default)]
-pub struct LogRun {
-    /// Seconds.
-    pub time_s: f64,
-    /// Whether it found an exact solution.
-    pub solved: bool,
-    /// Whether it returned an approximate solution instead.
-    pub approximate: bool,
-    /// Peak heap bytes during the run (`None`: not measured).
-    pub memory_bytes: Option<usize>,
-    /// States in the planner's trees or graph.
-    pub graph_states: u64,
-    /// The solution's length.
-    pub solution_length: Option<f64>,
-    /// Iterations.
-    pub iterations: u64,
-    /// Collision checks.
-    pub collision_checks: u64,
-    /// `(seconds, best cost)` at each improvement (optimizing planners).
-    pub progress: Vec<(f64, f64)>,
-}
+use super::RunRecord;
 
 /// A planner's runs in an experiment.
 #[derive(Debug, Clone)]
@@ -38,7 +17,7 @@ pub struct PlannerRuns {
     /// Whether to log the progress of each run.
     pub optimizing: bool,
     /// The runs.
-    pub runs: Vec<LogRun>,
+    pub runs: Vec<RunRecord>,
 }
 
 /// One experiment: one world, its queries, and the planners run on them.
@@ -74,7 +53,7 @@ const PROPERTIES: [&str; 9] = [
 /// The status enum, as OMPL's `PlannerStatus` numbers it.
 const STATUS: &str = "status|Unknown status|Invalid start|Invalid goal|Unrecognized goal type|Timeout|Approximate solution|Exact solution|Crash|Abort|Infeasible";
 
-fn status(run: &LogRun) -> u8 {
+fn status(run: &RunRecord) -> u8 {
     match (run.solved, run.approximate) {
         (true, _) => 6,
         (false, true) => 5,
@@ -270,7 +249,7 @@ mod tests {
 
     #[test]
     fn logs_follow_the_grammar_of_the_statistics_script() {
-        let run = |solved: bool, progress: Vec<(f64, f64)>| LogRun {
+        let run = |solved: bool, progress: Vec<(f64, f64)>| RunRecord {
             time_s: 0.25,
             solved,
             approximate: !solved,
@@ -280,6 +259,7 @@ mod tests {
             iterations: 300,
             collision_checks: 410,
             progress,
+            ..RunRecord::default()
         };
         let e = Experiment {
             name: "narrow 3".into(),
@@ -323,7 +303,7 @@ mod tests {
             planners: vec![PlannerRuns {
                 name: "p".into(),
                 optimizing: false,
-                runs: vec![LogRun { solved: true, ..LogRun::default() }],
+                runs: vec![RunRecord { solved: true, ..RunRecord::default() }],
             }],
         };
         let log = write(&e);

@@ -10,11 +10,11 @@ use std::time::{Duration, Instant};
 
 use serde::Serialize;
 use trailmark::core::geometry::Point;
-use trailmark::core::world::{Bounds, CollisionChecker, PolygonWorld};
+use trailmark::core::world::CollisionChecker;
 use trailmark::sample::benchmark::benchmark;
 use trailmark::sample::{
-    Bridge, KdNearest, Planner, Problem, R2, Rn, Rrt, RrtConnect, RrtStar, Sampled, StateSpace, Termination,
-    Validity,
+    Bridge, KdNearest, Planner, Prm, Problem, R2, Rn, Rrt, RrtConnect, RrtStar, Sampled, StateSpace,
+    Termination, Validity,
 };
 
 /// A configuration of the six joints.
@@ -87,27 +87,12 @@ where
     rows
 }
 
-/// A 30 x 30 world with the goal inside a closed ring of walls.
-fn ring() -> Result<PolygonWorld, String> {
-    let rect = |x0: f64, y0: f64, x1: f64, y1: f64| {
-        vec![Point::new(x0, y0), Point::new(x1, y0), Point::new(x1, y1), Point::new(x0, y1)]
-    };
-    let walls = vec![
-        rect(10.0, 10.0, 20.0, 11.0),
-        rect(10.0, 19.0, 20.0, 20.0),
-        rect(10.0, 11.0, 11.0, 19.0),
-        rect(19.0, 11.0, 20.0, 19.0),
-    ];
-    let bounds = Bounds::new(0.0, 0.0, 30.0, 30.0).map_err(|e| e.to_string())?;
-    PolygonWorld::new(bounds, walls, 0.2).map_err(|e| e.to_string())
-}
-
 /// Every planner on the three problems.
 pub fn bench_limits(seed: u64) -> Result<Vec<LimitRow>, String> {
     let err = |e: &dyn std::fmt::Display| format!("limits: {e}");
     let mut rows = Vec::new();
     // The plane: the goal walled off.
-    let world = ring()?;
+    let (world, _) = trailmark::core::generate::walled_goal(0.2).map_err(|e| err(&e))?;
     let checker = world.checker();
     let space = R2::new(world.bounds());
     let kd = KdNearest::<R2, 2>::new(&space).map_err(|e| err(&e))?;
@@ -120,7 +105,9 @@ pub fn bench_limits(seed: u64) -> Result<Vec<LimitRow>, String> {
         Box::new(Rrt::new(kd.clone())),
         Box::new(RrtConnect::new(kd.clone())),
         Box::new(RrtConnect::new(kd.clone()).with_sampler(bridge)),
-        Box::new(RrtStar::new(kd)),
+        Box::new(RrtStar::new(kd.clone())),
+        Box::new(Prm::new(kd.clone())),
+        Box::new(Prm::star(kd)),
     ];
     let mut plane = measure("R2, goal walled off", &problem, planners, seed);
     // The bridge RRT-Connect is named apart from the uniform one.
@@ -136,6 +123,8 @@ pub fn bench_limits(seed: u64) -> Result<Vec<LimitRow>, String> {
             Box::new(Rrt::new(kd.clone())),
             Box::new(RrtConnect::new(kd.clone())),
             Box::new(RrtStar::new(kd.clone())),
+            Box::new(Prm::new(kd.clone())),
+            Box::new(Prm::star(kd.clone())),
         ]
     };
     let (start, goal) = (Joints::from([-1.0; 6]), Joints::from([1.0; 6]));

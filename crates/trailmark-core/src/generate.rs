@@ -351,6 +351,34 @@ pub fn bug_trap(
     Ok((PolygonWorld::new(bounds, walls, robot_radius)?, crate::geometry::Point::new(c, c)))
 }
 
+/// A 30 x 30 world whose middle, a 10 x 10 square, is walled all round (walls 1 thick, no
+/// door), for a robot of radius `robot_radius`; the point returned is its centre, which no path
+/// from outside reaches: the problem a planner cannot solve, for tests of its limits.
+///
+/// ```
+/// use trailmark_core::generate;
+/// use trailmark_core::geometry::Point;
+///
+/// let (world, inside) = generate::walled_goal(0.2)?;
+/// let checker = world.checker();
+/// assert!(checker.point_is_free(inside) && checker.point_is_free(Point::new(2.0, 2.0)));
+/// assert!(!checker.segment_is_free(inside, Point::new(2.0, 2.0)));
+/// # Ok::<(), trailmark_core::generate::GenerateError>(())
+/// ```
+pub fn walled_goal(
+    robot_radius: f64,
+) -> Result<(crate::world::PolygonWorld, crate::geometry::Point), GenerateError> {
+    use crate::world::{Bounds, PolygonWorld};
+    let walls = vec![
+        rectangle(10.0, 10.0, 20.0, 11.0),
+        rectangle(10.0, 19.0, 20.0, 20.0),
+        rectangle(10.0, 11.0, 11.0, 19.0),
+        rectangle(19.0, 11.0, 20.0, 19.0),
+    ];
+    let world = PolygonWorld::new(Bounds::new(0.0, 0.0, 30.0, 30.0)?, walls, robot_radius)?;
+    Ok((world, crate::geometry::Point::new(15.0, 15.0)))
+}
+
 /// A square world of side `size` cut by `walls` evenly spaced vertical walls (thickness
 /// `size / 50`), each with one door of width `door` at a random height: every path from the
 /// left edge to the right goes through every door. The robot radius is `robot_radius`, so the

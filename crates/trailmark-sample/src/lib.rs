@@ -11,7 +11,8 @@
 //!   [`termination`] (iterations, time, target cost, the caller's condition), [`plan`] (exact,
 //!   approximate or no solution, why the run stopped, statistics);
 //! - [`planner`]: the one interface of every planner, so they swap at run time; [`rrt`](mod@rrt),
-//!   [`rrt_connect`](mod@rrt_connect) and [`rrt_star`](mod@rrt_star) implement it;
+//!   [`rrt_connect`](mod@rrt_connect), [`rrt_star`](mod@rrt_star) and [`prm`] (PRM and PRM*,
+//!   multi-query) implement it;
 //! - [`arm`]: a planar arm of revolute joints among polygons, for planning in its joint space;
 //! - [`benchmark`]: seeded runs of any planner, measured, and logs in OMPL's format;
 //! - [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
@@ -46,6 +47,7 @@ pub mod benchmark;
 pub mod nearest;
 pub mod plan;
 pub mod planner;
+pub mod prm;
 pub mod problem;
 pub mod rrt;
 pub mod rrt_connect;
@@ -61,6 +63,7 @@ pub mod validity;
 pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
 pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution, Stop};
 pub use planner::Planner;
+pub use prm::Prm;
 pub use problem::{Goal, GoalState, Problem};
 /// The `rand` crate (0.10) the generator implements: `rand::RngExt` draws ranges and floats.
 pub use rand;

@@ -43,7 +43,8 @@ pub(crate) struct Run<'t> {
 }
 
 impl<'t> Run<'t> {
-    /// Checks the termination, the settings and the problem, and starts the clock.
+    /// Checks the termination, the tree planners' settings and the problem, and starts the
+    /// clock.
     pub(crate) fn begin<S: StateSpace, V: Validity<S>>(
         problem: &Problem<'_, S, V>,
         options: &RrtOptions,
@@ -51,28 +52,19 @@ impl<'t> Run<'t> {
         seed: u64,
     ) -> Result<Self, PlanError> {
         let watch = Watch::start(termination);
-        if !termination.is_bounded() {
+        let range = checked_range(problem.space, options)?;
+        Run::checked(problem, watch, range, seed)
+    }
+
+    /// Checks the termination and the problem, with the clock started as `watch`.
+    pub(crate) fn checked<S: StateSpace, V: Validity<S>>(
+        problem: &Problem<'_, S, V>,
+        watch: Watch<'t>,
+        range: f64,
+        seed: u64,
+    ) -> Result<Self, PlanError> {
+        if !watch.termination().is_bounded() {
             return Err(PlanError::NoLimit);
-        }
-        let space = problem.space;
-        let range = options.range.unwrap_or(0.2 * space.extent());
-        if !(range.is_finite() && range > 0.0) {
-            return Err(PlanError::InvalidOption {
-                name: "range",
-                expected: "positive and finite",
-                value: range,
-            });
-        }
-        if range < MIN_RELATIVE_RANGE * space.extent() {
-            return Err(PlanError::InvalidOption {
-                name: "range",
-                expected: "at least 1e-4 of the space's extent (MIN_RELATIVE_RANGE)",
-                value: range,
-            });
-        }
-        if !(0.0..=1.0).contains(&options.goal_bias) {
-            let value = options.goal_bias;
-            return Err(PlanError::InvalidOption { name: "goal_bias", expected: "in [0, 1]", value });
         }
         let mut stats = PlanStats::default();
         problem.check(&mut stats.collision_checks)?;
@@ -120,6 +112,39 @@ impl<'t> Run<'t> {
         };
         self.stats.elapsed = self.watch.elapsed();
         Plan { solution, stop, history: self.history, stats: self.stats }
+    }
+}
+
+/// The range of the tree planners' motions, checked.
+fn checked_range<S: StateSpace>(space: &S, options: &RrtOptions) -> Result<f64, PlanError> {
+    let range = options.range.unwrap_or(0.2 * space.extent());
+    if !(range.is_finite() && range > 0.0) {
+        return Err(PlanError::InvalidOption {
+            name: "range",
+            expected: "positive and finite",
+            value: range,
+        });
+    }
+    if range < MIN_RELATIVE_RANGE * space.extent() {
+        return Err(PlanError::InvalidOption {
+            name: "range",
+            expected: "at least 1e-4 of the space's extent (MIN_RELATIVE_RANGE)",
+            value: range,
+        });
+    }
+    if !(0.0..=1.0).contains(&options.goal_bias) {
+        let value = options.goal_bias;
+        return Err(PlanError::InvalidOption { name: "goal_bias", expected: "in [0, 1]", value });
+    }
+    Ok(range)
+}
+
+impl Run<'_> {
+    /// The plan of a run that stopped for `stop` with nothing to return.
+    pub(crate) fn nothing<T>(mut self, stop: Stop) -> Plan<T> {
+        self.stats.iterations = self.watch.iterations();
+        self.stats.elapsed = self.watch.elapsed();
+        Plan { solution: Solution::None, stop, history: self.history, stats: self.stats }
     }
 }
 

@@ -128,6 +128,11 @@ impl<'t> Watch<'t> {
         Watch { termination, clock: Instant::now(), iterations: 0, best_cost: None }
     }
 
+    /// The termination asked.
+    pub(crate) fn termination(&self) -> &'t Termination {
+        self.termination
+    }
+
     /// The time since the start.
     pub(crate) fn elapsed(&self) -> Duration {
         self.clock.elapsed()

@@ -207,17 +207,8 @@ fn bad_input_is_a_typed_error() {
 /// nearest state, marked approximate), not as an error.
 #[test]
 fn a_walled_off_goal_gives_no_path() {
-    let rect = |x0: f64, y0: f64, x1: f64, y1: f64| {
-        vec![Point::new(x0, y0), Point::new(x1, y0), Point::new(x1, y1), Point::new(x0, y1)]
-    };
-    let walls = vec![
-        rect(10.0, 10.0, 20.0, 11.0),
-        rect(10.0, 19.0, 20.0, 20.0),
-        rect(10.0, 11.0, 11.0, 19.0),
-        rect(19.0, 11.0, 20.0, 19.0),
-    ];
-    let bounds = trailmark_core::world::Bounds::new(0.0, 0.0, 30.0, 30.0).unwrap();
-    let world = PolygonWorld::new(bounds, walls, 0.2).unwrap();
+    let (world, _) = generate::walled_goal(0.2).unwrap();
+    let bounds = world.bounds();
     let checker = world.checker();
     let space = R2::new(bounds);
     let kd = KdNearest::<R2, 2>::new(&space).unwrap();

@@ -8,8 +8,8 @@ use std::time::Duration;
 use trailmark_sample::benchmark::benchmark;
 use trailmark_sample::rand::RngExt;
 use trailmark_sample::{
-    BruteForce, ChaCha8Rng, Goal, Plan, PlanError, Planner, Problem, Rejection, Rrt, RrtConnect, RrtStar,
-    StateSpace, Termination, Validity,
+    BruteForce, ChaCha8Rng, Goal, Plan, PlanError, Planner, Prm, Problem, Rejection, Rrt, RrtConnect,
+    RrtStar, StateSpace, Termination, Validity,
 };
 
 /// Two joints that turn freely: each angle in [-π, π], and -π is π.
@@ -114,6 +114,7 @@ fn planners() -> Vec<Box<dyn Planner<Torus, Post>>> {
         Box::new(Rrt::new(BruteForce::<Torus>::new())),
         Box::new(RrtConnect::new(BruteForce::<Torus>::new())),
         Box::new(RrtStar::new(BruteForce::<Torus>::new())),
+        Box::new(Prm::star(BruteForce::<Torus>::new())),
     ]
 }
 

@@ -1,0 +1,527 @@
+//! PRM and PRM* (Kavraki et al. 1996; Karaman and Frazzoli 2011) over any [`StateSpace`]: a
+//! roadmap of valid states joined by valid motions, kept across queries.
+//!
+//! Each milestone is a sample the validity accepts, joined to its neighbours by the space's own
+//! distance (for an asymmetric space such as Dubins, motions into it from the states nearest
+//! before it and out of it to the states nearest after it): the `k` nearest, those within a
+//! radius, or PRM*'s k = ⌈e (1 + 1/d) ln n⌉. Every motion is checked by the validity; nearest
+//! neighbours come from the planner's [`NearestNeighbors`] structure, exact in every space.
+//!
+//! As a [`Planner`], a run adds the problem's starts and goal states as milestones and grows the
+//! roadmap until a start and a goal state are in one connected component; then A*
+//! (`trailmark-search`) finds the shortest path through the roadmap. PRM stops there; PRM*
+//! ([`Prm::star`]) goes on growing until its termination, searching again as the roadmap grows
+//! and recording each cheaper path. The roadmap stays for the next query (multi-query, as OMPL's
+//! PRM) until [`clear`](Planner::clear). A run that stops before a start and a goal connect
+//! returns [`Solution::None`], as OMPL's PRM does.
+//!
+//! The roadmap is a graph of the core traits (nodes are milestone ids, edges cost their
+//! motion's distance), so any search of `trailmark-search` runs on it.
+//!
+//! ```
+//! use trailmark_core::geometry::Point;
+//! use trailmark_core::world::{Bounds, PolygonWorld};
+//! use trailmark_sample::{KdNearest, Planner, Prm, Problem, R2, Termination};
+//!
+//! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
+//! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
+//! let checker = PolygonWorld::new(bounds, vec![wall], 0.25)?.checker();
+//! let space = R2::new(bounds);
+//! let mut prm = Prm::star(KdNearest::<R2, 2>::new(&space)?).with_seed(3);
+//! // Two queries on one roadmap: the second reuses what the first grew.
+//! let first = prm.solve(&Problem::new(&space, &checker, Point::new(1.0, 1.0), Point::new(9.0, 1.0)),
+//!                       &Termination::iterations(1_000))?;
+//! let grown = prm.node_count();
+//! let second = prm.solve(&Problem::new(&space, &checker, Point::new(1.0, 5.0), Point::new(9.0, 5.0)),
+//!                        &Termination::iterations(200))?;
+//! assert!(first.cost().unwrap() >= 2.0 * (9.0f64 + 7.25 * 7.25).sqrt() + 2.0 - 1e-9); // over the wall
+//! assert!(second.is_exact() && prm.node_count() >= grown);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use std::marker::PhantomData;
+
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
+use trailmark_search::Search;
+
+use crate::nearest::{Direction, NearestNeighbors};
+use crate::plan::{Plan, PlanError, Rejection, Stop};
+use crate::planner::Planner;
+use crate::problem::{Problem, admit};
+use crate::run::Run;
+use crate::sampler::{StateSampler, Uniform};
+use crate::space::StateSpace;
+use crate::termination::{Termination, Watch};
+use crate::validity::Validity;
+
+/// Which milestones a new one is joined to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Connection {
+    /// The `k` nearest.
+    Nearest {
+        /// How many.
+        k: usize,
+    },
+    /// Every milestone within this distance.
+    Radius {
+        /// The distance.
+        radius: f64,
+    },
+    /// The `k = ⌈e (1 + 1/d) ln n⌉` nearest, `n` the milestones and `d` the dimension: PRM*.
+    PrmStar,
+}
+
+impl Connection {
+    /// The neighbours to ask for in a roadmap of `n` milestones in dimension `d` (`None`: by
+    /// radius).
+    fn count(&self, n: usize, d: usize) -> Option<usize> {
+        match *self {
+            Connection::Nearest { k } => Some(k),
+            Connection::Radius { .. } => None,
+            Connection::PrmStar => {
+                let k = std::f64::consts::E * (1.0 + 1.0 / d.max(1) as f64) * (n.max(1) as f64).ln();
+                Some(k.ceil() as usize)
+            }
+        }
+    }
+}
+
+/// The most milestones a goal region adds, as for RRT-Connect's goal tree.
+const MAX_GOAL_STATES: usize = 64;
+
+/// The goal samples refused before the first goal milestone, after which the goal is refused.
+const FIRST_GOAL_ATTEMPTS: usize = 1_000;
+
+/// The roadmap grows this much (as a share of its milestones) between two searches of PRM*.
+const SEARCH_GROWTH: f64 = 0.1;
+
+/// A probabilistic roadmap planner; see the [module](self) documentation.
+#[derive(Debug, Clone)]
+pub struct Prm<S: StateSpace, N, Q = Uniform> {
+    empty: N,
+    nearest: N,
+    sampler: Q,
+    connection: Connection,
+    optimizing: bool,
+    seed: u64,
+    rng: Option<ChaCha8Rng>,
+    out: Vec<Vec<(u32, Cost)>>,
+    into: Vec<Vec<(u32, Cost)>>,
+    edge_count: usize,
+    parent: Vec<u32>,
+    components: usize,
+    checks: u64,
+    _space: PhantomData<fn() -> S>,
+}
+
+impl<S: StateSpace, N: NearestNeighbors<S> + Clone> Prm<S, N> {
+    /// PRM with its milestones in (a clone of) `nearest`, which must be empty: joined to their
+    /// 10 nearest neighbours, uniform samples, seed 0. It stops at the first path.
+    pub fn new(nearest: N) -> Self {
+        Prm {
+            empty: nearest.clone(),
+            nearest,
+            sampler: Uniform,
+            connection: Connection::Nearest { k: 10 },
+            optimizing: false,
+            seed: 0,
+            rng: None,
+            out: Vec::new(),
+            into: Vec::new(),
+            edge_count: 0,
+            parent: Vec::new(),
+            components: 0,
+            checks: 0,
+            _space: PhantomData,
+        }
+    }
+
+    /// PRM*: PRM*'s connection, improving its path until the termination.
+    pub fn star(nearest: N) -> Self {
+        Prm { connection: Connection::PrmStar, optimizing: true, ..Prm::new(nearest) }
+    }
+}
+
+impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
+    /// The same planner drawing its milestones from `sampler` (the roadmap is cleared).
+    pub fn with_sampler<R>(self, sampler: R) -> Prm<S, N, R> {
+        let mut prm = Prm {
+            empty: self.empty,
+            nearest: self.nearest,
+            sampler,
+            connection: self.connection,
+            optimizing: self.optimizing,
+            seed: self.seed,
+            rng: None,
+            out: Vec::new(),
+            into: Vec::new(),
+            edge_count: 0,
+            parent: Vec::new(),
+            components: 0,
+            checks: 0,
+            _space: PhantomData,
+        };
+        prm.reset();
+        prm
+    }
+
+    /// The same planner joining milestones by `connection` (the roadmap is cleared); a
+    /// connection out of range is refused when a run starts.
+    pub fn with_connection(mut self, connection: Connection) -> Self {
+        self.connection = connection;
+        self.reset();
+        self
+    }
+
+    /// The same planner seeded with `seed` (the roadmap is cleared).
+    pub fn with_seed(mut self, seed: u64) -> Self {
+        self.seed = seed;
+        self.reset();
+        self
+    }
+
+    /// The milestones.
+    pub fn node_count(&self) -> usize {
+        self.nearest.len()
+    }
+
+    /// The edges (each undirected edge once).
+    pub fn edge_count(&self) -> usize {
+        self.edge_count
+    }
+
+    /// The connected components (ignoring direction).
+    pub fn component_count(&self) -> usize {
+        self.components
+    }
+
+    /// Motions and states checked by the validity since the roadmap was cleared.
+    pub fn checks(&self) -> u64 {
+        self.checks
+    }
+
+    /// The state of milestone `id`.
+    ///
+    /// # Panics
+    ///
+    /// If `id` is not below [`node_count`](Self::node_count).
+    pub fn state(&self, id: u32) -> &S::State {
+        self.nearest.state(id)
+    }
+
+    /// The edges out of milestone `id`, with their costs.
+    pub fn edges_from(&self, id: u32) -> &[(u32, Cost)] {
+        &self.out[id as usize]
+    }
+
+    /// Forgets the roadmap (as [`Planner::clear`]).
+    pub fn clear(&mut self) {
+        self.reset();
+    }
+
+    fn reset(&mut self) {
+        self.nearest = self.empty.clone();
+        self.rng = None;
+        self.out.clear();
+        self.into.clear();
+        self.edge_count = 0;
+        self.parent.clear();
+        self.components = 0;
+        self.checks = 0;
+    }
+
+    fn check_connection(&self) -> Result<(), PlanError> {
+        match self.connection {
+            Connection::Nearest { k: 0 } => {
+                Err(PlanError::InvalidOption { name: "k", expected: "at least 1", value: 0.0 })
+            }
+            Connection::Radius { radius } if !(radius.is_finite() && radius > 0.0) => {
+                Err(PlanError::InvalidOption {
+                    name: "radius",
+                    expected: "positive and finite",
+                    value: radius,
+                })
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// The milestone at exactly `state`, if any.
+    fn find(&self, space: &S, state: &S::State) -> Option<u32> {
+        let (id, d) = self.nearest.nearest(space, state, Direction::ToQuery)?;
+        (d == 0.0 && self.nearest.state(id) == state).then_some(id)
+    }
+
+    /// The neighbours a new milestone at `state` joins, in `direction`.
+    fn neighbours(&self, space: &S, state: &S::State, direction: Direction) -> Vec<(u32, f64)> {
+        match self.connection.count(self.nearest.len() + 1, space.dimension()) {
+            Some(k) => self.nearest.k_nearest(space, state, k, direction),
+            None => {
+                let Connection::Radius { radius } = self.connection else { unreachable!("a radius rule") };
+                self.nearest.within(space, state, radius, direction)
+            }
+        }
+    }
+
+    /// Adds the admitted `state` as a milestone joined to its neighbours (motion checks stop
+    /// when `watch` is interrupted); its id, or the id of the milestone already there.
+    fn add<V: Validity<S>>(&mut self, space: &S, validity: &V, state: S::State, watch: &Watch<'_>) -> u32 {
+        if let Some(id) = self.find(space, &state) {
+            return id;
+        }
+        let into = self.neighbours(space, &state, Direction::ToQuery);
+        let out =
+            if S::SYMMETRIC { Vec::new() } else { self.neighbours(space, &state, Direction::FromQuery) };
+        let id = self.nearest.insert(space, state);
+        self.out.push(Vec::new());
+        if !S::SYMMETRIC {
+            self.into.push(Vec::new());
+        }
+        self.parent.push(id);
+        self.components += 1;
+        for (v, d) in into {
+            if watch.interrupted().is_some() {
+                return id;
+            }
+            self.checks += 1;
+            if validity.motion_is_valid(space, self.nearest.state(v), self.nearest.state(id)) {
+                self.join(v, id, d);
+            }
+        }
+        for (v, d) in out {
+            if watch.interrupted().is_some() {
+                return id;
+            }
+            self.checks += 1;
+            if validity.motion_is_valid(space, self.nearest.state(id), self.nearest.state(v)) {
+                self.join(id, v, d);
+            }
+        }
+        id
+    }
+
+    /// The edge `from -> to` of cost `cost` (both ways in a symmetric space).
+    fn join(&mut self, from: u32, to: u32, cost: Cost) {
+        self.out[from as usize].push((to, cost));
+        if S::SYMMETRIC {
+            self.out[to as usize].push((from, cost));
+        } else {
+            self.into[to as usize].push((from, cost));
+        }
+        self.edge_count += 1;
+        let (a, b) = (self.root(from), self.root(to));
+        if a != b {
+            self.parent[a.max(b) as usize] = a.min(b);
+            self.components -= 1;
+        }
+    }
+
+    fn root(&mut self, mut x: u32) -> u32 {
+        while self.parent[x as usize] != x {
+            let grand = self.parent[self.parent[x as usize] as usize];
+            self.parent[x as usize] = grand;
+            x = grand;
+        }
+        x
+    }
+
+    /// Searches the roadmap; keeps the path found in `best` if it is cheaper.
+    fn improve(
+        &mut self,
+        space: &S,
+        (starts, goals): (&[u32], &[u32]),
+        best: &mut Option<(Vec<u32>, f64)>,
+        run: &mut Run<'_>,
+    ) {
+        if let Some(found) = self.search(space, starts, goals)
+            && best.as_ref().is_none_or(|b| found.1 < b.1)
+        {
+            run.improved(found.1);
+            *best = Some(found);
+        }
+    }
+
+    /// The cheapest path from a start to a goal milestone through the roadmap, as milestone
+    /// ids and cost.
+    fn search(&mut self, space: &S, starts: &[u32], goals: &[u32]) -> Option<(Vec<u32>, f64)> {
+        let mut best: Option<(Vec<u32>, f64)> = None;
+        let mut search = Search::new();
+        for &g in goals {
+            for &s in starts {
+                if self.root(s) != self.root(g) {
+                    continue;
+                }
+                let goal = self.nearest.state(g).clone();
+                let heuristic = |n: u32| space.distance(self.nearest.state(n), &goal);
+                let Ok(found) = search.astar(&*self, s, g, heuristic) else { continue };
+                if let Some(path) = found.path
+                    && best.as_ref().is_none_or(|b| path.cost < b.1)
+                {
+                    best = Some((path.nodes, path.cost));
+                }
+            }
+        }
+        best
+    }
+}
+
+impl<S, V, N, Q> Planner<S, V> for Prm<S, N, Q>
+where
+    S: StateSpace,
+    V: Validity<S>,
+    N: NearestNeighbors<S> + Clone,
+    Q: StateSampler<S>,
+{
+    fn name(&self) -> &str {
+        if self.optimizing { "PRM*" } else { "PRM" }
+    }
+
+    fn solve(
+        &mut self,
+        problem: &Problem<'_, S, V>,
+        termination: &Termination,
+    ) -> Result<Plan<S::State>, PlanError> {
+        let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
+        self.check_connection()?;
+        let mut run = Run::checked(problem, Watch::start(termination), f64::INFINITY, self.seed)?;
+        // The roadmap's own stream of samples goes on from one query to the next.
+        let mut rng = self.rng.take().unwrap_or_else(|| ChaCha8Rng::seed_from_u64(self.seed));
+        let starts: Vec<u32> =
+            problem.starts.iter().map(|s| self.add(space, validity, s.clone(), &run.watch)).collect();
+        let mut goals: Vec<u32> = Vec::new();
+        let (mut refused, mut exhausted) = (0, false);
+        let mut best: Option<(Vec<u32>, f64)> = None;
+        let mut searched_at = 0usize;
+        let stop = loop {
+            // Goal milestones: one at first, then more from a region while they are fewer than
+            // half the roadmap.
+            if !exhausted
+                && (goals.is_empty()
+                    || (goals.len() < MAX_GOAL_STATES && 2 * goals.len() < self.node_count()))
+            {
+                match goal.sample(space, &mut rng) {
+                    None => exhausted = true,
+                    // A goal that gives the same state again has no others (a goal state).
+                    Some(state) if goals.last().is_some_and(|&g| *self.nearest.state(g) == state) => {
+                        exhausted = true;
+                    }
+                    Some(state) => {
+                        run.stats.collision_checks += 1;
+                        if admit(space, validity, &state).is_ok() {
+                            let id = self.add(space, validity, state, &run.watch);
+                            if !goals.contains(&id) {
+                                goals.push(id);
+                            }
+                        } else {
+                            refused += 1;
+                        }
+                    }
+                }
+            }
+            if goals.is_empty() {
+                if exhausted {
+                    return Err(PlanError::GoalNotSampleable { planner: "PRM" });
+                }
+                if refused >= FIRST_GOAL_ATTEMPTS {
+                    return Err(PlanError::InvalidGoal(Rejection::Invalid));
+                }
+            }
+            // Search when a start and a goal share a component, and for PRM* again each time
+            // the roadmap has grown by a tenth.
+            let due =
+                best.is_none() || self.node_count() as f64 >= searched_at as f64 * (1.0 + SEARCH_GROWTH);
+            if due && !goals.is_empty() {
+                searched_at = self.node_count();
+                self.improve(space, (&starts, &goals), &mut best, &mut run);
+            }
+            if best.is_some() && !self.optimizing {
+                break Stop::Solved;
+            }
+            if let Some(stop) = run.watch.next_iteration() {
+                break stop;
+            }
+            std::mem::swap(&mut run.rng, &mut rng);
+            let sample = run.sample(space, validity, &self.sampler);
+            std::mem::swap(&mut run.rng, &mut rng);
+            let state = match sample {
+                Ok(Some(state)) => state,
+                Ok(None) => continue,
+                Err(stop) => break stop,
+            };
+            run.stats.collision_checks += 1;
+            if admit(space, validity, &state).is_ok() {
+                self.add(space, validity, state, &run.watch);
+            }
+        };
+        // A last search, so that what PRM* grew since its last one counts.
+        if self.optimizing && !goals.is_empty() && searched_at < self.node_count() {
+            self.improve(space, (&starts, &goals), &mut best, &mut run);
+        }
+        self.rng = Some(rng);
+        run.stats.collision_checks += self.checks;
+        self.checks = 0;
+        run.stats.tree_sizes = [self.node_count(), self.edge_count];
+        Ok(match best {
+            Some((nodes, _)) => {
+                let path = nodes.iter().map(|&n| self.nearest.state(n).clone()).collect();
+                run.finish(space, path, None, stop)
+            }
+            None => run.nothing(stop),
+        })
+    }
+
+    fn clear(&mut self) {
+        self.reset();
+    }
+
+    fn set_seed(&mut self, seed: u64) {
+        self.seed = seed;
+        self.reset();
+    }
+
+    fn optimizes(&self) -> bool {
+        self.optimizing
+    }
+}
+
+impl<S: StateSpace, N, Q> Graph for Prm<S, N, Q> {
+    type Node = u32;
+
+    fn contains(&self, node: u32) -> bool {
+        (node as usize) < self.out.len()
+    }
+}
+
+impl<S: StateSpace, N, Q> Successors for Prm<S, N, Q> {
+    fn for_each_successor<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
+        for &(v, c) in &self.out[node as usize] {
+            visit(v, c);
+        }
+    }
+}
+
+impl<S: StateSpace, N, Q> Predecessors for Prm<S, N, Q> {
+    fn for_each_predecessor<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
+        let edges = if S::SYMMETRIC { &self.out } else { &self.into };
+        for &(u, c) in &edges[node as usize] {
+            visit(u, c);
+        }
+    }
+}
+
+impl<S: StateSpace, N, Q> IndexedGraph for Prm<S, N, Q> {
+    fn node_bound(&self) -> usize {
+        self.out.len()
+    }
+
+    fn index_of(&self, node: u32) -> usize {
+        node as usize
+    }
+
+    fn node_at(&self, index: usize) -> u32 {
+        index as u32
+    }
+}

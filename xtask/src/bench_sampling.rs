@@ -400,6 +400,8 @@ pub struct SamplingReport {
     pub equal_time: Vec<EqualTimeRow>,
     /// How far past a time limit each planner returns.
     pub limits: Vec<crate::bench_limits::LimitRow>,
+    /// Rⁿ among random boxes.
+    pub boxes: Vec<crate::bench_boxes::BoxRow>,
     /// The OMPL version measured (with `--with-ompl`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ompl_version: Option<String>,
@@ -421,6 +423,7 @@ impl SamplingReport {
             + self.star.iter().map(|r| r.invalid).sum::<usize>()
             + self.equal_time.iter().map(|r| r.invalid).sum::<usize>()
             + self.spaces.iter().map(|r| r.stats.invalid).sum::<usize>()
+            + self.boxes.iter().map(|r| r.invalid).sum::<usize>()
             + self
                 .prm
                 .iter()
@@ -528,6 +531,16 @@ pub fn bench_sampling(
     } else {
         Vec::new()
     };
+    let boxes = if only.is_empty() {
+        progress.note("R4 and R8 among random boxes");
+        let box_queries = match suite {
+            Suite::Quick => 50,
+            Suite::Full => 200,
+        };
+        crate::bench_boxes::bench_boxes(box_queries, star_runs, Duration::from_millis(250), seed)?
+    } else {
+        Vec::new()
+    };
     let mut figures = Vec::new();
     if !star.is_empty() {
         figures.push(("sampling-convergence.svg", convergence_svg(&star)?));
@@ -542,6 +555,7 @@ pub fn bench_sampling(
         spaces,
         equal_time: equal_times,
         limits,
+        boxes,
         ompl_version: ompl.map(|d| d.version.clone()),
         figures,
         logs,
@@ -994,6 +1008,7 @@ pub fn markdown(report: &SamplingReport) -> String {
     if !report.equal_time.is_empty() {
         s.push_str(&equal_time_markdown(report));
     }
+    s.push_str(&crate::bench_boxes::markdown(&report.boxes));
     s.push_str(&crate::bench_limits::markdown(&report.limits));
     s
 }

@@ -22,6 +22,7 @@ use trailmark::graph::visibility::Edges;
 mod output;
 
 mod bench;
+mod bench_boxes;
 mod bench_contingency;
 mod bench_limits;
 mod bench_prm;

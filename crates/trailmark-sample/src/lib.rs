@@ -5,6 +5,7 @@
 //! - [`nearest`]: exact nearest-neighbour structures for every space (a k-d tree over positions,
 //!   pruned by the straight-line lower bound, and brute force);
 //! - [`validity`]: exact checks against polygon worlds, sampled checks for your own spaces;
+//!   [`boxes`]: worlds of axis-aligned boxes in `N` dimensions, checked exactly;
 //! - [`sampler`]: where the planners draw samples: uniformly, or near obstacles and in narrow
 //!   passages (the Gaussian and bridge-test samplers);
 //! - [`problem`] (start states and a goal: a state with a tolerance or the user's region),
@@ -44,6 +45,7 @@
 
 pub mod arm;
 pub mod benchmark;
+pub mod boxes;
 pub mod nearest;
 pub mod plan;
 pub mod planner;
@@ -60,6 +62,7 @@ pub mod termination;
 mod tree;
 pub mod validity;
 
+pub use boxes::BoxWorld;
 pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
 pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution, Stop};
 pub use planner::Planner;

@@ -433,7 +433,7 @@ where
             // the roadmap has grown by a tenth.
             let due =
                 best.is_none() || self.node_count() as f64 >= searched_at as f64 * (1.0 + SEARCH_GROWTH);
-            if due && !goals.is_empty() {
+            if due && !goals.is_empty() && run.watch.interrupted().is_none() {
                 searched_at = self.node_count();
                 self.improve(space, (&starts, &goals), &mut best, &mut run);
             }
@@ -456,8 +456,10 @@ where
                 self.add(space, validity, state, &run.watch);
             }
         };
-        // A last search, so that what PRM* grew since its last one counts.
-        if self.optimizing && !goals.is_empty() && searched_at < self.node_count() {
+        // A last search, so that what PRM* grew since its last one counts; not past a time
+        // limit or the caller's word (a search of a large roadmap takes milliseconds).
+        let timed = matches!(stop, Stop::TimeLimit | Stop::Caller);
+        if self.optimizing && !timed && !goals.is_empty() && searched_at < self.node_count() {
             self.improve(space, (&starts, &goals), &mut best, &mut run);
         }
         self.rng = Some(rng);

@@ -204,8 +204,20 @@ pub enum SolveError {
         /// The planner.
         planner: &'static str,
     },
+    /// A graph planner on a box world, which only the sampling planners take.
+    #[error("a box world takes the sampling planners (rrt, rrt_connect, rrt_star), not \"{planner}\"")]
+    NeedsSampling {
+        /// The planner.
+        planner: &'static str,
+    },
+    /// `"space": "rn"` over a world that is not of boxes.
+    #[error("\"space\": \"rn\" plans in a box world (\"world\": {{\"boxes\": ...}})")]
+    RnNeedsBoxes,
+    /// A box world whose dimension, region or boxes are not valid.
+    #[error("the box world {0}")]
+    InvalidBoxes(String),
     /// A start or goal of a sampling planner that is not a finite state of its space.
-    #[error("the {which} {value:?} is not a state of the \"{space}\" space: expected {}", if *space == "dubins" { "[x, y, heading]" } else { "[x, y]" })]
+    #[error("the {which} {value:?} is not a state of the \"{space}\" space: expected {}", match *space { "dubins" => "[x, y, heading]", "rn" => "one finite coordinate per axis of the box world", _ => "[x, y]" })]
     NotAState {
         /// `"start"` or `"goal"`.
         which: &'static str,
@@ -377,6 +389,11 @@ fn solve_inner(
         (World::Grid(world), None) => solve_grid(problem, world, base_dir, picture),
         (World::Polygons(world), Some(spec)) => sampling::solve_sampling(problem, world, spec, picture),
         (World::Polygons(world), None) => solve_polygons(problem, world, picture),
+        (World::Boxes(_), Some(_)) if picture.is_some() => {
+            Err(SolveError::InvalidBoxes("cannot be drawn: pictures are of grid and polygon worlds".into()))
+        }
+        (World::Boxes(world), Some(spec)) => sampling::solve_boxes(problem, world, spec),
+        (World::Boxes(_), None) => Err(SolveError::NeedsSampling { planner: problem.planner.name() }),
     }
 }
 
@@ -775,6 +792,12 @@ impl Coordinates for Point {
 impl Coordinates for Pose {
     fn coordinates(&self) -> Vec<f64> {
         DubinsSteering::coordinates(self)
+    }
+}
+
+impl<const N: usize> Coordinates for trailmark_core::geometry::SVector<f64, N> {
+    fn coordinates(&self) -> Vec<f64> {
+        self.iter().copied().collect()
     }
 }
 

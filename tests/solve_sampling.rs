@@ -25,7 +25,7 @@ fn document(rest: &str) -> Problem {
 fn world(problem: &Problem) -> &PolygonWorld {
     match &problem.world {
         World::Polygons(world) => world,
-        World::Grid(_) => panic!("a grid"),
+        _ => panic!("not a polygon world"),
     }
 }
 
@@ -369,4 +369,97 @@ fn turning_radii_far_beyond_the_world_are_refused() {
     ));
     let result = solve(&problem, ".").unwrap();
     assert_ne!(result.status, Status::Solved, "a loop of 88,000 in a world of 10");
+}
+
+/// A 3-D box world: the unit cube with a slab across it, open above z = 0.8.
+fn box_document(rest: &str) -> Problem {
+    let json = format!(
+        r#"{{"world": {{"boxes": {{"bounds": [[0, 1], [0, 1], [0, 1]],
+             "obstacles": [[[0.4, 0, 0], [0.6, 1, 0.8]]]}}}}, {rest}}}"#
+    );
+    serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}: {json}"))
+}
+
+#[test]
+fn box_worlds_in_rn_for_every_sampling_planner() {
+    for planner in ["rrt", "rrt_connect", "rrt_star"] {
+        let problem = box_document(&format!(
+            r#""space": "rn", "seed": 2, "start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1],
+               "planner": {{"name": "{planner}", "max_iterations": 3000, "simplify": true}}"#
+        ));
+        let result = solve(&problem, ".").unwrap();
+        assert_eq!(result.status, Status::Solved, "{planner}");
+        let path = states(&result);
+        assert_eq!(
+            (path[0].as_slice(), path[path.len() - 1].as_slice()),
+            ([0.1, 0.5, 0.1].as_slice(), [0.9, 0.5, 0.1].as_slice())
+        );
+        // Over the slab: every sample of every leg outside it, every 1e-3.
+        let mut length = 0.0;
+        for m in path.windows(2) {
+            let d: f64 = (0..3).map(|i| (m[1][i] - m[0][i]).powi(2)).sum::<f64>().sqrt();
+            let n = (d / 1e-3).ceil().max(1.0) as usize;
+            for k in 0..=n {
+                let q: Vec<f64> =
+                    (0..3).map(|i| m[0][i] + (m[1][i] - m[0][i]) * k as f64 / n as f64).collect();
+                assert!(!(q[0] > 0.4 && q[0] < 0.6 && q[2] < 0.8), "{planner}: {q:?} in the slab");
+            }
+            length += d;
+        }
+        assert!((result.cost.unwrap() - length).abs() < 1e-9);
+        assert!(length >= 0.3 + 2.0 * (0.1f64.powi(2) + 0.7f64.powi(2)).sqrt() - 1e-9, "{planner}: {length}");
+        // The same seed gives the same document.
+        assert_eq!(without_times(result), without_times(solve(&problem, ".").unwrap()));
+    }
+}
+
+#[test]
+fn bad_box_documents_are_typed_errors() {
+    let ends = r#""start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1]"#;
+    type Expected = fn(&SolveError) -> bool;
+    let cases: Vec<(String, Expected)> = vec![
+        (format!(r#"{ends}, "planner": {{"name": "astar"}}"#), |e| {
+            matches!(e, SolveError::NeedsSampling { .. })
+        }),
+        (format!(r#"{ends}, "space": "r2", "planner": {{"name": "rrt"}}"#), |e| {
+            matches!(e, SolveError::InvalidBoxes(_))
+        }),
+        (r#""start": [0.1, 0.5], "goal": [0.9, 0.5, 0.1], "planner": {"name": "rrt"}"#.into(), |e| {
+            matches!(e, SolveError::NotAState { which: "start", .. })
+        }),
+        (r#""start": [0.5, 0.5, 0.5], "goal": [0.9, 0.5, 0.1], "planner": {"name": "rrt"}"#.into(), |e| {
+            matches!(e, SolveError::Plan(PlanError::InvalidStart { .. }))
+        }),
+        (
+            r#""start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 7], "planner": {"name": "rrt_connect"}"#.into(),
+            |e| matches!(e, SolveError::Plan(PlanError::InvalidGoal(_))),
+        ),
+        (format!(r#"{ends}, "planner": {{"name": "rrt", "smooth": "bspline"}}"#), |e| {
+            matches!(e, SolveError::NotForSpace { .. })
+        }),
+    ];
+    for (rest, expected) in cases {
+        let error = solve(&box_document(&rest), ".").unwrap_err();
+        assert!(expected(&error), "{rest}: {error}");
+    }
+    // Nine axes, a box of the wrong dimension, a box with low >= high.
+    let nine = serde_json::from_str::<Problem>(
+        r#"{"world": {"boxes": {"bounds": [[0,1],[0,1],[0,1],[0,1],[0,1],[0,1],[0,1],[0,1],[0,1]]}},
+            "start": [0,0,0,0,0,0,0,0,0], "goal": [1,1,1,1,1,1,1,1,1], "planner": {"name": "rrt"}}"#,
+    )
+    .unwrap();
+    assert!(matches!(solve(&nine, "."), Err(SolveError::InvalidBoxes(_))));
+    for obstacles in [r#"[[[0.4, 0], [0.6, 1]]]"#, r#"[[[0.6, 0, 0], [0.4, 1, 1]]]"#] {
+        let json = format!(
+            r#"{{"world": {{"boxes": {{"bounds": [[0, 1], [0, 1], [0, 1]], "obstacles": {obstacles}}}}},
+                "start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1], "planner": {{"name": "rrt"}}}}"#
+        );
+        let problem: Problem = serde_json::from_str(&json).unwrap();
+        assert!(solve(&problem, ".").is_err(), "{obstacles}");
+    }
+    // "space": "rn" over polygons, and no picture of a box world.
+    let polygons = document(r#""space": "rn", "start": [1, 1], "goal": [9, 1], "planner": {"name": "rrt"}"#);
+    assert!(matches!(solve(&polygons, "."), Err(SolveError::RnNeedsBoxes)));
+    let boxes = box_document(&format!(r#"{ends}, "planner": {{"name": "rrt"}}"#));
+    assert!(matches!(solve_and_draw(&boxes, "."), Err(SolveError::InvalidBoxes(_))));
 }

@@ -14,6 +14,8 @@ pub const MAX_GRID_CELLS: usize = 10_000;
 pub const MAX_OBSTACLE_VERTICES: usize = 40;
 /// The most obstacles of a polygon world.
 pub const MAX_OBSTACLES: usize = 8;
+/// The most boxes of a box world.
+pub const MAX_BOXES: usize = 64;
 /// The most samples of a straight-line PRM (the default, without `samples`, is 1000).
 pub const MAX_PRM_SAMPLES: usize = 1000;
 /// The most samples of a Dubins PRM.
@@ -46,6 +48,12 @@ pub fn problem_is_quick(problem: &Problem) -> bool {
         }
         World::Polygons(world) => {
             if !polygons_are_quick(world) {
+                return false;
+            }
+            0
+        }
+        World::Boxes(world) => {
+            if world.bounds.len() > 8 || world.obstacles.len() > MAX_BOXES {
                 return false;
             }
             0
@@ -117,7 +125,7 @@ fn roadmap_nodes(problem: &Problem) -> usize {
         _ => match &problem.world {
             // Grown corners are arcs of up to 16 vertices.
             World::Polygons(w) => 16 * w.obstacles().iter().map(|o| o.vertices().len()).sum::<usize>() + 6,
-            World::Grid(_) => 0,
+            World::Grid(_) | World::Boxes(_) => 0,
         },
     }
 }

@@ -194,7 +194,9 @@ pub fn problem(u: &mut Unstructured) -> Result<Value> {
         planner = PlannerName::Astar;
     }
     let mut doc = Map::new();
-    if grid {
+    if !grid && planner.is_sampling() && u.ratio(1u8, 4)? {
+        box_world(u, &mut doc)?;
+    } else if grid {
         let (world, width, height) = grid_world(u)?;
         doc.insert("world".into(), world);
         doc.insert("start".into(), grid_end(u, width, height)?);
@@ -235,6 +237,31 @@ pub fn problem(u: &mut Unstructured) -> Result<Value> {
     }
     doc.insert("planner".into(), planner_spec(u, planner, grid)?);
     Ok(Value::Object(doc))
+}
+
+/// A box world of 1 to 9 axes (9 is refused) with up to six boxes, its ends and its space.
+fn box_world(u: &mut Unstructured, doc: &mut Map<String, Value>) -> Result<()> {
+    let axes = u.int_in_range(1usize..=9)?;
+    let value = |u: &mut Unstructured, lo: f64, hi: f64| -> Result<f64> {
+        if u.ratio(1u8, 32)? { hostile_f64(u) } else { float(u, lo, hi) }
+    };
+    let bounds: Vec<Value> = (0..axes).map(|_| Ok(json!([num(value(u, -1.0, 0.0)?), num(value(u, 1.0, 2.0)?)]))).collect::<Result<_>>()?;
+    let mut obstacles = Vec::new();
+    for _ in 0..u.int_in_range(0u8..=6)? {
+        let lo: Vec<Value> = (0..axes).map(|_| value(u, -0.5, 1.0).map(num)).collect::<Result<_>>()?;
+        let hi: Vec<Value> = (0..axes).map(|_| value(u, 0.0, 1.5).map(num)).collect::<Result<_>>()?;
+        obstacles.push(json!([lo, hi]));
+    }
+    doc.insert("world".into(), json!({"boxes": {"bounds": bounds, "obstacles": obstacles}}));
+    for end in ["start", "goal"] {
+        let n = if u.ratio(1u8, 16)? { axes + 1 } else { axes };
+        let at: Vec<Value> = (0..n).map(|_| value(u, -0.2, 1.2).map(num)).collect::<Result<_>>()?;
+        doc.insert(end.into(), Value::Array(at));
+    }
+    if u.ratio(1u8, 2)? {
+        doc.insert("space".into(), json!(if u.ratio(1u8, 8)? { "r2" } else { "rn" }));
+    }
+    Ok(())
 }
 
 /// A small grid world: its JSON, width and height.

@@ -9,6 +9,7 @@
 //! Inputs that would take long (large grids, many samples or iterations) are skipped, never
 //! edited: [`budget::problem_is_quick`] says which.
 
+pub mod boxes;
 pub mod budget;
 pub mod generate;
 pub mod grid;
@@ -40,6 +41,7 @@ pub fn solve_and_check(problem: &Problem) {
     match &problem.world {
         World::Grid(world) => grid::check_result(problem, world, &result),
         World::Polygons(world) => polygon::check_result(problem, world, &result),
+        World::Boxes(world) => boxes::check_result(problem, world, &result),
     }
 }
 

@@ -4,18 +4,20 @@
 use std::time::{Duration, Instant};
 
 use trailmark_core::geometry::Point;
+use trailmark_core::geometry::SVector;
 use trailmark_core::problem::{
-    ImprovementRecord, PlannerSpec, Problem, ResultStats, SamplerSpec, SamplingSpec, SamplingStats,
-    SmoothedRecord, SolveResult, SpaceKind, Status, Waypoint,
+    BoxesWorld, ImprovementRecord, PlannerSpec, Problem, ResultStats, SamplerSpec, SamplingSpec,
+    SamplingStats, SmoothedRecord, SolveResult, SpaceKind, Status, Waypoint,
 };
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
-use trailmark_core::world::{CollisionChecker, PolygonWorld};
+use trailmark_core::world::PolygonWorld;
 use trailmark_graph::prm::{DubinsSteering, Steering, Straight};
 use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
 use trailmark_sample::{
-    Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Planner, Problem as PlanningProblem, R2,
-    Rrt, RrtConnect, RrtOptions, RrtStar, Solution, StateSampler, StateSpace, Termination, shortcut,
+    BoxWorld, Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Planner,
+    Problem as PlanningProblem, R2, Rn, Rrt, RrtConnect, RrtOptions, RrtStar, Solution, StateSampler,
+    StateSpace, Termination, shortcut,
 };
 
 use super::{Coordinates, SolveError, dubins_curve, roadmap_fields};
@@ -43,6 +45,7 @@ pub(super) fn solve_sampling(
     let seed = problem.seed.unwrap_or(0);
     let run = Run { problem, spec, checker: &checker, seed };
     match space_kind {
+        SpaceKind::Rn => Err(SolveError::RnNeedsBoxes),
         SpaceKind::R2 => {
             if problem.turning_radius.is_some() {
                 return Err(SolveError::NotForSpace { field: "turning_radius", space: "r2" });
@@ -106,15 +109,82 @@ pub(super) fn solve_sampling(
     }
 }
 
-/// A sampling planner's run: the problem, its settings, the world's checker and the seed.
-struct Run<'a> {
+/// The most axes of a box world.
+pub const MAX_BOX_DIMENSION: usize = 8;
+
+/// Solves a sampling-planner problem over a box world, in `"space": "rn"`.
+pub(super) fn solve_boxes(
+    problem: &Problem,
+    world: &BoxesWorld,
+    spec: &SamplingSpec,
+) -> Result<SolveResult, SolveError> {
+    let planner = problem.planner.name();
+    if let Some(&field) = roadmap_fields(problem).first() {
+        return Err(SolveError::NotForPlanner { field, planner });
+    }
+    let space = problem.space.unwrap_or(SpaceKind::Rn);
+    if space != SpaceKind::Rn {
+        return Err(SolveError::InvalidBoxes(format!("takes \"space\": \"rn\", not \"{}\"", space.name())));
+    }
+    if spec.smooth.is_some() {
+        return Err(SolveError::NotForSpace { field: "smooth", space: "rn" });
+    }
+    // Each dimension is its own type (the states are fixed-size vectors).
+    macro_rules! dimensions {
+        ($($n:literal)*) => {
+            match world.bounds.len() {
+                $($n => boxes::<$n>(problem, world, spec),)*
+                d => Err(SolveError::InvalidBoxes(format!(
+                    "has {d} axes; from 1 to {MAX_BOX_DIMENSION} are supported"
+                ))),
+            }
+        };
+    }
+    dimensions!(1 2 3 4 5 6 7 8)
+}
+
+/// [`solve_boxes`] in `N` dimensions.
+fn boxes<const N: usize>(
+    problem: &Problem,
+    world: &BoxesWorld,
+    spec: &SamplingSpec,
+) -> Result<SolveResult, SolveError> {
+    let corner = |v: &[f64], what: &str| -> Result<[f64; N], SolveError> {
+        <[f64; N]>::try_from(v)
+            .map_err(|_| SolveError::InvalidBoxes(format!("{what} has {} coordinates, not {N}", v.len())))
+    };
+    let low: Vec<f64> = world.bounds.iter().map(|b| b[0]).collect();
+    let high: Vec<f64> = world.bounds.iter().map(|b| b[1]).collect();
+    let obstacles = world
+        .obstacles
+        .iter()
+        .enumerate()
+        .map(|(i, [lo, hi])| Ok((corner(lo, &format!("box {i}"))?, corner(hi, &format!("box {i}"))?)))
+        .collect::<Result<Vec<_>, SolveError>>()?;
+    let world = BoxWorld::new(corner(&low, "bounds")?, corner(&high, "bounds")?, obstacles)?;
+    let state = |which, value: &[f64]| {
+        <[f64; N]>::try_from(value)
+            .ok()
+            .filter(|c| c.iter().all(|x| x.is_finite()))
+            .map(SVector::from)
+            .ok_or_else(|| SolveError::NotAState { which, value: value.to_vec(), space: "rn" })
+    };
+    let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
+    let space = world.space();
+    let run = Run { problem, spec, checker: &world, seed: problem.seed.unwrap_or(0) };
+    let (result, _) = run.plan(&space, KdNearest::<Rn<N>, N>::new(&space)?, start, goal)?;
+    Ok(result)
+}
+
+/// A sampling planner's run: the problem, its settings, the world's validity and the seed.
+struct Run<'a, V> {
     problem: &'a Problem,
     spec: &'a SamplingSpec,
-    checker: &'a CollisionChecker,
+    checker: &'a V,
     seed: u64,
 }
 
-impl Run<'_> {
+impl<V> Run<'_, V> {
     /// Plans from `start` to `goal` in `space`, simplifies when asked; the result and the path.
     fn plan<S, N>(
         &self,
@@ -127,7 +197,7 @@ impl Run<'_> {
         S: StateSpace,
         S::State: Coordinates,
         N: NearestNeighbors<S> + Clone,
-        CollisionChecker: trailmark_sample::Validity<S>,
+        V: trailmark_sample::Validity<S>,
     {
         let spec = self.spec;
         // A limit too large for a Duration has been refused by solve_inner.
@@ -214,7 +284,7 @@ impl Run<'_> {
     /// The problem's planner on `problem`, drawing from `sampler`.
     fn search<S, N, Q>(
         &self,
-        problem: &PlanningProblem<'_, S, CollisionChecker>,
+        problem: &PlanningProblem<'_, S, V>,
         nearest: N,
         sampler: Q,
         (options, termination): (&RrtOptions, &Termination),
@@ -223,10 +293,10 @@ impl Run<'_> {
         S: StateSpace,
         N: NearestNeighbors<S> + Clone,
         Q: StateSampler<S>,
-        CollisionChecker: trailmark_sample::Validity<S>,
+        V: trailmark_sample::Validity<S>,
     {
         let (options, seed) = (*options, self.seed);
-        let mut planner: Box<dyn Planner<S, CollisionChecker> + '_> = match self.problem.planner {
+        let mut planner: Box<dyn Planner<S, V> + '_> = match self.problem.planner {
             PlannerSpec::Rrt(_) => {
                 Box::new(Rrt::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
             }

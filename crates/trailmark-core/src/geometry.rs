@@ -4,7 +4,7 @@
 //! [`Vector2<f64>`], rigid poses [`Isometry2<f64>`]. Lengths are in the world's units and angles
 //! in radians, counter-clockwise from the +x axis.
 
-pub use nalgebra::{Isometry2, Point2, Vector2};
+pub use nalgebra::{Isometry2, Point2, SVector, Vector2};
 
 /// A position in the plane, in world units.
 pub type Point = Point2<f64>;

@@ -144,7 +144,8 @@ pub enum SamplerKind {
     Halton,
 }
 
-/// The state space of a sampling planner over a polygon world.
+/// The state space of a sampling planner: over a polygon world, `r2` or `dubins`; over a box
+/// world, `rn`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SpaceKind {
@@ -153,6 +154,8 @@ pub enum SpaceKind {
     /// Poses `[x, y, θ]` of a car joined by shortest Dubins curves of the problem's
     /// `turning_radius`.
     Dubins,
+    /// Points of a box world's dimension, joined by straight motions.
+    Rn,
 }
 
 impl SpaceKind {
@@ -161,6 +164,7 @@ impl SpaceKind {
         match self {
             SpaceKind::R2 => "r2",
             SpaceKind::Dubins => "dubins",
+            SpaceKind::Rn => "rn",
         }
     }
 }
@@ -242,6 +246,21 @@ pub enum World {
     /// Polygonal obstacles for a disc robot: `{"polygons": {"bounds": [xmin, ymin, xmax, ymax],
     /// "obstacles": [[[x, y], ...], ...], "robot_radius": r}}`, checked as it is read.
     Polygons(PolygonWorld),
+    /// Axis-aligned boxes in any dimension, for the sampling planners in `"space": "rn"`:
+    /// `{"boxes": {"bounds": [[lo, hi], ...], "obstacles": [[[lo, ...], [hi, ...]], ...]}}`.
+    Boxes(BoxesWorld),
+}
+
+/// A world of axis-aligned boxes: the region, one `[lo, hi]` per axis, and the obstacles, each
+/// its low and high corners. The dimensions and sides are checked when it is solved.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoxesWorld {
+    /// `[lo, hi]` per axis.
+    pub bounds: Vec<[f64; 2]>,
+    /// `[[lo, ...], [hi, ...]]` per box.
+    #[serde(default)]
+    pub obstacles: Vec<[Vec<f64>; 2]>,
 }
 
 /// A grid world: a MovingAI map file or inline rows, with its connectivity and optional costs.

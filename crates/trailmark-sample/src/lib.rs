@@ -63,6 +63,8 @@ mod tree;
 pub mod validity;
 
 pub use boxes::BoxWorld;
+/// The states of [`Rn`]: nalgebra's fixed-size column vectors (nalgebra 0.35).
+pub use nalgebra::SVector;
 pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
 pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution, Stop};
 pub use planner::Planner;

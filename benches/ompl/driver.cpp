@@ -15,6 +15,13 @@
 // and every run prints as {"query", "run", "status": "exact" | "approximate" | "none",
 // "time_s", "iterations", "collision_checks", "states", "cost", "path", "improvements"}.
 //
+// A box world instead: {"boxes": {"low": [...], "high": [...], "obstacles": [[[lo...], [hi...]],
+// ...]}} in place of "world", queries of 2n numbers (start, then goal), paths of n-vectors.
+// States and motions are then checked by the same tests trailmark's BoxWorld makes, written here
+// in C++: a state inside no box's open interior, a segment entering none (the slab test). The
+// planners: rrt_connect, rrt_star, informed_rrt_star, bit_star and prm_star (here through
+// solve(), each run its own roadmap, under the time limit).
+//
 // `prm_star` is multi-query: one roadmap of `roadmap_size` milestones is grown first (printed as
 // "build": {"time_s", "milestones", "edges", "collision_checks"}), then each query joins its
 // start and goal to it as PRM::solve does (addMilestone, which keeps them in the roadmap) and
@@ -22,10 +29,12 @@
 // is not called: it polls for a solution from a second thread every millisecond, which would
 // time the polling, not the planner.
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -44,7 +53,9 @@
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/config.h>
 #include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
 #include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
 #include <ompl/geometric/planners/rrt/RRT.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/geometric/planners/rrt/RRTstar.h>
@@ -70,28 +81,81 @@ std::atomic<unsigned long> g_checks{0};
 
 const double *xy(const ob::State *s) { return s->as<ob::RealVectorStateSpace::StateType>()->values; }
 
+// Axis-aligned boxes, tested as trailmark's BoxWorld tests them.
+struct Boxes {
+    unsigned n = 0;
+    std::vector<std::vector<double>> lo, hi;
+
+    bool state_free(const double *q) const {
+        for (size_t b = 0; b < lo.size(); ++b) {
+            bool inside = true;
+            for (unsigned i = 0; i < n && inside; ++i) {
+                inside = q[i] > lo[b][i] && q[i] < hi[b][i];
+            }
+            if (inside) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    // Whether the segment a-b meets box b's open interior: a non-empty open interval of t in
+    // [0, 1] strictly inside on every axis.
+    bool enters(const double *a, const double *c, size_t b) const {
+        double t0 = 0.0, t1 = 1.0;
+        for (unsigned i = 0; i < n; ++i) {
+            double d = c[i] - a[i];
+            if (d == 0.0) {
+                if (!(a[i] > lo[b][i] && a[i] < hi[b][i])) {
+                    return false;
+                }
+                continue;
+            }
+            double u = (lo[b][i] - a[i]) / d, v = (hi[b][i] - a[i]) / d;
+            t0 = std::max(t0, std::min(u, v));
+            t1 = std::min(t1, std::max(u, v));
+            if (t0 >= t1) {
+                return false;
+            }
+        }
+        return t0 < t1;
+    }
+
+    bool segment_free(const double *a, const double *c) const {
+        for (size_t b = 0; b < lo.size(); ++b) {
+            if (enters(a, c, b)) {
+                return false;
+            }
+        }
+        return true;
+    }
+};
+
+
+
+// A state test and an exact segment test, the same questions trailmark's planners ask (no
+// fixed-resolution sampling of motions).
+using StateTest = std::function<bool(const double *)>;
+using SegmentTest = std::function<bool(const double *, const double *)>;
+
 class StateChecker : public ob::StateValidityChecker {
   public:
-    StateChecker(const ob::SpaceInformationPtr &si, const TmChecker *c) : ob::StateValidityChecker(si), c_(c) {}
+    StateChecker(const ob::SpaceInformationPtr &si, StateTest test) : ob::StateValidityChecker(si), test_(std::move(test)) {}
     bool isValid(const ob::State *s) const override {
         ++g_checks;
-        const double *p = xy(s);
-        return tm_point_is_free(c_, p[0], p[1]);
+        return test_(xy(s));
     }
 
   private:
-    const TmChecker *c_;
+    StateTest test_;
 };
 
-// Exact straight-line motions, as trailmark checks them (no fixed-resolution sampling).
 class SegmentValidator : public ob::MotionValidator {
   public:
-    SegmentValidator(const ob::SpaceInformationPtr &si, const TmChecker *c) : ob::MotionValidator(si), c_(c) {}
+    SegmentValidator(const ob::SpaceInformationPtr &si, SegmentTest test) : ob::MotionValidator(si), test_(std::move(test)) {}
     bool checkMotion(const ob::State *s1, const ob::State *s2) const override {
         ++g_checks;
-        const double *a = xy(s1);
-        const double *b = xy(s2);
-        bool ok = tm_segment_is_free(c_, a[0], a[1], b[0], b[1]);
+        bool ok = test_(xy(s1), xy(s2));
         if (ok) {
             ++valid_;
         } else {
@@ -112,7 +176,7 @@ class SegmentValidator : public ob::MotionValidator {
     }
 
   private:
-    const TmChecker *c_;
+    SegmentTest test_;
 };
 
 // PRMstar with its query steps public: what PRM::solve does for one start and one goal, without
@@ -142,6 +206,15 @@ ob::PlannerPtr make_planner(const std::string &name, const ob::SpaceInformationP
     if (name == "rrt_star") {
         return std::make_shared<og::RRTstar>(si);
     }
+    if (name == "informed_rrt_star") {
+        return std::make_shared<og::InformedRRTstar>(si);
+    }
+    if (name == "bit_star") {
+        return std::make_shared<og::BITstar>(si);
+    }
+    if (name == "prm_star") {
+        return std::make_shared<og::PRMstar>(si);
+    }
     return nullptr;
 }
 
@@ -161,10 +234,10 @@ void print(const json &runs, const json *build) {
     std::cout << doc.dump() << "\n";
 }
 
-json path_of(og::PathGeometric &path) {
+json path_of(og::PathGeometric &path, unsigned n) {
     json points = json::array();
     for (const ob::State *s : path.getStates()) {
-        points.push_back({xy(s)[0], xy(s)[1]});
+        points.push_back(std::vector<double>(xy(s), xy(s) + n));
     }
     return points;
 }
@@ -218,7 +291,7 @@ int run_prm(const json &input, const ob::SpaceInformationPtr &si, const ob::Stat
         if (path) {
             auto *geometric = path->as<og::PathGeometric>();
             row["cost"] = geometric->length();
-            row["path"] = path_of(*geometric);
+            row["path"] = path_of(*geometric, 2);
         } else {
             row["cost"] = nullptr;
             row["path"] = json::array();
@@ -251,27 +324,70 @@ int main(int argc, char **argv) {
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     ompl::RNG::setSeed(input.value("seed", 1UL));
 
-    std::string world_text = input.at("world").dump();
-    TmChecker *checker = tm_checker_new(world_text.c_str());
-    if (checker == nullptr) {
-        std::cerr << "bad world\n";
-        return 2;
+    TmChecker *checker = nullptr;
+    Boxes boxes;
+    std::shared_ptr<ob::RealVectorStateSpace> space;
+    if (input.contains("boxes")) {
+        const auto &w = input.at("boxes");
+        std::vector<double> low = w.at("low").get<std::vector<double>>();
+        std::vector<double> high = w.at("high").get<std::vector<double>>();
+        boxes.n = low.size();
+        for (const auto &o : w.at("obstacles")) {
+            boxes.lo.push_back(o.at(0).get<std::vector<double>>());
+            boxes.hi.push_back(o.at(1).get<std::vector<double>>());
+        }
+        space = std::make_shared<ob::RealVectorStateSpace>(boxes.n);
+        ob::RealVectorBounds b(boxes.n);
+        for (unsigned i = 0; i < boxes.n; ++i) {
+            b.setLow(i, low[i]);
+            b.setHigh(i, high[i]);
+        }
+        space->setBounds(b);
+    } else {
+        std::string world_text = input.at("world").dump();
+        checker = tm_checker_new(world_text.c_str());
+        if (checker == nullptr) {
+            std::cerr << "bad world\n";
+            return 2;
+        }
+        std::vector<double> bounds = input.at("world").at("bounds").get<std::vector<double>>();
+        space = std::make_shared<ob::RealVectorStateSpace>(2);
+        ob::RealVectorBounds b(2);
+        b.setLow(0, bounds[0]);
+        b.setLow(1, bounds[1]);
+        b.setHigh(0, bounds[2]);
+        b.setHigh(1, bounds[3]);
+        space->setBounds(b);
     }
-    std::vector<double> bounds = input.at("world").at("bounds").get<std::vector<double>>();
-    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
-    ob::RealVectorBounds b(2);
-    b.setLow(0, bounds[0]);
-    b.setLow(1, bounds[1]);
-    b.setHigh(0, bounds[2]);
-    b.setHigh(1, bounds[3]);
-    space->setBounds(b);
+    const unsigned n = space->getDimension();
     auto si = std::make_shared<ob::SpaceInformation>(space);
-    si->setStateValidityChecker(std::make_shared<StateChecker>(si, checker));
-    si->setMotionValidator(std::make_shared<SegmentValidator>(si, checker));
+    if (checker != nullptr) {
+        si->setStateValidityChecker(std::make_shared<StateChecker>(
+            si, [checker](const double *p) { return tm_point_is_free(checker, p[0], p[1]); }));
+        si->setMotionValidator(std::make_shared<SegmentValidator>(si, [checker](const double *a, const double *b) {
+            return tm_segment_is_free(checker, a[0], a[1], b[0], b[1]);
+        }));
+    } else {
+        // In the region (trailmark's planners refuse what is not), outside every box.
+        auto in_region = [space](const double *q) {
+            const auto &b = space->getBounds();
+            for (size_t i = 0; i < b.low.size(); ++i) {
+                if (!(q[i] >= b.low[i] && q[i] <= b.high[i])) {
+                    return false;
+                }
+            }
+            return true;
+        };
+        si->setStateValidityChecker(std::make_shared<StateChecker>(
+            si, [&boxes, in_region](const double *q) { return in_region(q) && boxes.state_free(q); }));
+        si->setMotionValidator(std::make_shared<SegmentValidator>(si, [&boxes, in_region](const double *a, const double *b) {
+            return in_region(a) && in_region(b) && boxes.segment_free(a, b);
+        }));
+    }
     si->setup();
 
     std::string name = input.at("planner").get<std::string>();
-    if (name == "prm_star") {
+    if (name == "prm_star" && checker != nullptr) {
         int code = run_prm(input, si, space);
         tm_checker_free(checker);
         return code;
@@ -291,10 +407,10 @@ int main(int argc, char **argv) {
             }
             auto pdef = std::make_shared<ob::ProblemDefinition>(si);
             ob::ScopedState<> start(space), goal(space);
-            start[0] = ends[0];
-            start[1] = ends[1];
-            goal[0] = ends[2];
-            goal[1] = ends[3];
+            for (unsigned i = 0; i < n; ++i) {
+                start[i] = ends[i];
+                goal[i] = ends[n + i];
+            }
             pdef->setStartAndGoalStates(start, goal);
             pdef->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
             json improvements = json::array();
@@ -331,7 +447,7 @@ int main(int argc, char **argv) {
             json path = json::array();
             if (exact || approximate) {
                 auto *geometric = pdef->getSolutionPath()->as<og::PathGeometric>();
-                path = path_of(*geometric);
+                path = path_of(*geometric, n);
                 row["cost"] = geometric->length();
             } else {
                 row["cost"] = nullptr;

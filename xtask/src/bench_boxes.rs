@@ -20,6 +20,8 @@ const CONNECT_ITERATIONS: u64 = 10_000;
 pub struct BoxRow {
     /// The world.
     pub world: String,
+    /// `trailmark` or `OMPL`.
+    pub library: String,
     /// The planner.
     pub planner: String,
     /// Runs.
@@ -93,70 +95,160 @@ fn tally<'p, const N: usize>(
     (ratios, solved, invalid)
 }
 
+/// A row from re-checked paths and run times.
+fn row<const N: usize>(
+    (world, library, planner): (&str, &str, String),
+    paths: &[(Option<Vec<<Rn<N> as StateSpace>::State>>, f64)],
+    boxes: &BoxWorld<N>,
+    ends: &[(<Rn<N> as StateSpace>::State, <Rn<N> as StateSpace>::State)],
+) -> BoxRow {
+    let (mut ratios, mut invalid) = (Vec::new(), 0);
+    for (i, (path, _)) in paths.iter().enumerate() {
+        let (a, b) = &ends[i.min(ends.len() - 1)];
+        let (ratio, _, bad) = tally(boxes, path.as_deref().into_iter(), a, b);
+        ratios.extend(ratio);
+        invalid += bad;
+    }
+    BoxRow {
+        world: world.into(),
+        library: library.into(),
+        planner,
+        runs: paths.len(),
+        solved: ratios.len(),
+        median_ms: median(paths.iter().map(|p| p.1).collect()),
+        median_cost_ratio: median(ratios),
+        invalid,
+    }
+}
+
+/// The driver's box world for `world`.
+fn ompl_boxes<const N: usize>(world: &BoxWorld<N>) -> crate::ompl::Boxes {
+    let space = world.space();
+    crate::ompl::Boxes {
+        low: space.low().iter().copied().collect(),
+        high: space.high().iter().copied().collect(),
+        obstacles: world.boxes().iter().map(|(lo, hi)| [lo.to_vec(), hi.to_vec()]).collect(),
+    }
+}
+
+/// The runs of OMPL's `planner` on `ends`, as paths and times (ms).
+#[allow(clippy::type_complexity)]
+fn ompl_runs<const N: usize>(
+    driver: &crate::ompl::Driver,
+    world: &BoxWorld<N>,
+    planner: &str,
+    ends: &[(<Rn<N> as StateSpace>::State, <Rn<N> as StateSpace>::State)],
+    (runs, max_iterations, limit): (usize, u64, Duration),
+    seed: u64,
+) -> Result<Vec<(Option<Vec<<Rn<N> as StateSpace>::State>>, f64)>, String> {
+    let input = crate::ompl::Input {
+        world: None,
+        boxes: Some(ompl_boxes(world)),
+        planner,
+        queries: ends.iter().map(|(a, b)| a.iter().chain(b.iter()).copied().collect()).collect(),
+        runs,
+        seed,
+        max_iterations,
+        time_limit_s: limit.as_secs_f64(),
+        roadmap_size: 0,
+    };
+    let out = driver.run(&input)?;
+    Ok(out
+        .iter()
+        .map(|r| {
+            let path = r
+                .exact()
+                .then(|| r.path.iter().map(|p| <Rn<N> as StateSpace>::State::from_fn(|i, _| p[i])).collect());
+            (path, r.time_s * 1e3)
+        })
+        .collect())
+}
+
 /// The rows of one world.
 fn world_rows<const N: usize>(
     name: &str,
     world: &BoxWorld<N>,
     (queries, runs, limit): (usize, usize, Duration),
     seed: u64,
+    ompl: Option<&crate::ompl::Driver>,
 ) -> Result<Vec<BoxRow>, String> {
     let err = |e: &dyn std::fmt::Display| format!("{name}: {e}");
     let space = world.space();
     let kd = KdNearest::<Rn<N>, N>::new(&space).map_err(|e| err(&e))?;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let ends: Vec<_> =
+        (0..queries).map(|_| (free_near(world, 0.1, &mut rng), free_near(world, 0.9, &mut rng))).collect();
     let mut rows = Vec::new();
     // RRT-Connect: one run per seeded query.
-    let (mut times, mut ratios, mut solved, mut invalid) = (Vec::new(), Vec::new(), 0, 0);
-    for i in 0..queries {
-        let (a, b) = (free_near(world, 0.1, &mut rng), free_near(world, 0.9, &mut rng));
-        let problem = Problem::new(&space, world, a, b);
+    let connect = format!("RRT-Connect (≤ {CONNECT_ITERATIONS} iterations)");
+    let mut ours = Vec::new();
+    for (i, (a, b)) in ends.iter().enumerate() {
+        let problem = Problem::new(&space, world, *a, *b);
         let limit = Termination::iterations(CONNECT_ITERATIONS);
-        let mut runs =
+        let mut measured =
             benchmark(&mut RrtConnect::new(kd.clone()), &problem, &limit, 1, seed + i as u64, None)
                 .map_err(|e| err(&e))?;
-        let (plan, record) = (runs.plans.remove(0), runs.runs.remove(0));
-        times.push(record.time_s * 1e3);
-        let (ratio, ok, bad) = tally(world, plan.path().into_iter(), &a, &b);
-        ratios.extend(ratio);
-        (solved, invalid) = (solved + ok, invalid + bad);
+        let (plan, record) = (measured.plans.remove(0), measured.runs.remove(0));
+        ours.push((plan.path().map(<[_]>::to_vec), record.time_s * 1e3));
     }
-    rows.push(BoxRow {
-        world: name.into(),
-        planner: format!("RRT-Connect (≤ {CONNECT_ITERATIONS} iterations)"),
-        runs: queries,
-        solved,
-        median_ms: median(times),
-        median_cost_ratio: median(ratios),
-        invalid,
-    });
-    // RRT* and PRM*: seeded runs on one query, each for `limit`.
-    let (a, b) = (free_near(world, 0.1, &mut rng), free_near(world, 0.9, &mut rng));
-    let problem = Problem::new(&space, world, a, b);
+    rows.push(row((name, "trailmark", connect.clone()), &ours, world, &ends));
+    if let Some(driver) = ompl {
+        let theirs = ompl_runs(
+            driver,
+            world,
+            "rrt_connect",
+            &ends,
+            (1, CONNECT_ITERATIONS, Duration::from_secs(60)),
+            seed,
+        )?;
+        rows.push(row((name, "OMPL", connect), &theirs, world, &ends));
+    }
+    // The optimizing planners: seeded runs on one query, each for `limit`.
+    let one = [ends[0]];
+    let problem = Problem::new(&space, world, one[0].0, one[0].1);
     let planners: Vec<Box<dyn Planner<Rn<N>, BoxWorld<N>>>> =
         vec![Box::new(RrtStar::new(kd.clone())), Box::new(Prm::star(kd.clone()))];
     for mut planner in planners {
         let measured = benchmark(planner.as_mut(), &problem, &Termination::time(limit), runs, seed, None)
             .map_err(|e| err(&e))?;
-        let (ratios, solved, invalid) = tally(world, measured.plans.iter().filter_map(|p| p.path()), &a, &b);
-        rows.push(BoxRow {
-            world: name.into(),
-            planner: format!("{} ({} ms)", measured.planner, limit.as_millis()),
-            runs,
-            solved,
-            median_ms: median(measured.runs.iter().map(|r| r.time_s * 1e3).collect()),
-            median_cost_ratio: median(ratios),
-            invalid,
-        });
+        let runs: Vec<_> = measured
+            .plans
+            .iter()
+            .zip(&measured.runs)
+            .map(|(p, r)| (p.path().map(<[_]>::to_vec), r.time_s * 1e3))
+            .collect();
+        let label = format!("{} ({} ms)", measured.planner, limit.as_millis());
+        rows.push(row((name, "trailmark", label), &runs, world, &one));
+    }
+    if let Some(driver) = ompl {
+        for (planner, label) in [
+            ("rrt_star", "RRTstar"),
+            ("prm_star", "PRMstar"),
+            ("informed_rrt_star", "InformedRRTstar"),
+            ("bit_star", "BITstar"),
+        ] {
+            let theirs = ompl_runs(driver, world, planner, &one, (runs, 0, limit), seed)?;
+            rows.push(row(
+                (name, "OMPL", format!("{label} ({} ms)", limit.as_millis())),
+                &theirs,
+                world,
+                &one,
+            ));
+        }
     }
     Ok(rows)
 }
 
 /// Both worlds: R⁴ with 50 boxes of side 0.15 to 0.35, R⁸ with 100 of side 0.4 to 0.6.
-pub fn bench_boxes(queries: usize, runs: usize, limit: Duration, seed: u64) -> Result<Vec<BoxRow>, String> {
+pub fn bench_boxes(
+    (queries, runs, limit): (usize, usize, Duration),
+    seed: u64,
+    ompl: Option<&crate::ompl::Driver>,
+) -> Result<Vec<BoxRow>, String> {
     let r4 = BoxWorld::<4>::random(50, 0.15..0.35, seed).map_err(|e| e.to_string())?;
     let r8 = BoxWorld::<8>::random(100, 0.4..0.6, seed).map_err(|e| e.to_string())?;
-    let mut rows = world_rows("R4, 50 boxes", &r4, (queries, runs, limit), seed)?;
-    rows.extend(world_rows("R8, 100 boxes", &r8, (queries, runs, limit), seed)?);
+    let mut rows = world_rows("R4, 50 boxes", &r4, (queries, runs, limit), seed, ompl)?;
+    rows.extend(world_rows("R8, 100 boxes", &r8, (queries, runs, limit), seed, ompl)?);
     Ok(rows)
 }
 
@@ -169,14 +261,15 @@ pub fn markdown(rows: &[BoxRow]) -> String {
         "### Rⁿ among random boxes (unit hypercube, exact box checks)\n\n\
          RRT-Connect over seeded queries from near one corner to near the other; RRT* and PRM* for a \
          fixed time on one query. Costs over the straight line between the ends (a lower bound); every \
-         path re-checked every 1e-3. OMPL's side of these rows is not in the harness yet.\n\n\
-         | world | planner | runs | solved | median ms | median cost / straight line | invalid |\n\
-         |---|---|---:|---:|---:|---:|---:|\n",
+         path re-checked every 1e-3. With `--with-ompl`, OMPL's planners on the same queries, with the \
+         same box tests written in C++ (its planners' time is `solve` alone).\n\n\
+         | world | library | planner | runs | solved | median ms | median cost / straight line | invalid |\n\
+         |---|---|---|---:|---:|---:|---:|---:|\n",
     );
     for r in rows {
         s.push_str(&format!(
-            "| {} | {} | {} | {} | {:.3} | {:.4} | {} |\n",
-            r.world, r.planner, r.runs, r.solved, r.median_ms, r.median_cost_ratio, r.invalid
+            "| {} | {} | {} | {} | {} | {:.3} | {:.4} | {} |\n",
+            r.world, r.library, r.planner, r.runs, r.solved, r.median_ms, r.median_cost_ratio, r.invalid
         ));
     }
     s.push('\n');

@@ -164,7 +164,8 @@ fn ompl_prm(
     driver: &Driver,
 ) -> Result<PrmStats, String> {
     let input = crate::ompl::Input {
-        world: &w.world,
+        world: Some(&w.world),
+        boxes: None,
         planner: NAME,
         queries: ompl_queries(queries),
         runs: 1,

@@ -537,7 +537,7 @@ pub fn bench_sampling(
             Suite::Quick => 50,
             Suite::Full => 200,
         };
-        crate::bench_boxes::bench_boxes(box_queries, star_runs, Duration::from_millis(250), seed)?
+        crate::bench_boxes::bench_boxes((box_queries, star_runs, Duration::from_millis(250)), seed, ompl)?
     } else {
         Vec::new()
     };
@@ -636,13 +636,13 @@ fn bench_connect(
 }
 
 /// The points of a path as the OMPL driver prints it.
-pub(crate) fn points(path: &[[f64; 2]]) -> Vec<Point> {
-    path.iter().map(|&[x, y]| Point::new(x, y)).collect()
+pub(crate) fn points(path: &[Vec<f64>]) -> Vec<Point> {
+    path.iter().map(|p| Point::new(p[0], p[1])).collect()
 }
 
 /// The queries as the OMPL driver reads them: `[ax, ay, bx, by]` each.
-pub(crate) fn ompl_queries(queries: &[(Point, Point, Option<f64>)]) -> Vec<[f64; 4]> {
-    queries.iter().map(|(a, b, _)| [a.x, a.y, b.x, b.y]).collect()
+pub(crate) fn ompl_queries(queries: &[(Point, Point, Option<f64>)]) -> Vec<Vec<f64>> {
+    queries.iter().map(|(a, b, _)| vec![a.x, a.y, b.x, b.y]).collect()
 }
 
 /// An OMPL run for the OMPL-format log.
@@ -672,7 +672,8 @@ fn ompl_connect(
     log: &mut Vec<PlannerRuns>,
 ) -> Result<ConnectStats, String> {
     let input = crate::ompl::Input {
-        world: &w.world,
+        world: Some(&w.world),
+        boxes: None,
         planner: planner.name(),
         queries: ompl_queries(queries),
         runs: 1,
@@ -731,9 +732,10 @@ fn star_equal_time(
         our_log.push(logged);
     }
     let input = crate::ompl::Input {
-        world: &w.world,
+        world: Some(&w.world),
+        boxes: None,
         planner: "rrt_star",
-        queries: vec![[a.x, a.y, b.x, b.y]],
+        queries: vec![vec![a.x, a.y, b.x, b.y]],
         runs,
         seed,
         max_iterations: 0,

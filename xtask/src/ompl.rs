@@ -23,12 +23,17 @@ pub struct Driver {
 /// What the driver is asked to run.
 #[derive(Serialize)]
 pub struct Input<'a> {
-    /// The world (the same document trailmark reads).
-    pub world: &'a PolygonWorld,
-    /// `rrt`, `rrt_connect`, `rrt_star` or `prm_star`.
+    /// A polygon world (the same document trailmark reads).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub world: Option<&'a PolygonWorld>,
+    /// Or a box world.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub boxes: Option<Boxes>,
+    /// `rrt`, `rrt_connect`, `rrt_star` or `prm_star`; in a box world also `informed_rrt_star`
+    /// and `bit_star`.
     pub planner: &'a str,
-    /// `[ax, ay, bx, by]` per query.
-    pub queries: Vec<[f64; 4]>,
+    /// The start's coordinates, then the goal's, per query.
+    pub queries: Vec<Vec<f64>>,
     /// Runs per query.
     pub runs: usize,
     /// OMPL's global seed.
@@ -39,6 +44,17 @@ pub struct Input<'a> {
     pub time_limit_s: f64,
     /// For `prm_star`: the milestones of the roadmap the queries share (0 for the others).
     pub roadmap_size: usize,
+}
+
+/// A box world for the driver: the region and the boxes' corners.
+#[derive(Serialize)]
+pub struct Boxes {
+    /// The region's low corner.
+    pub low: Vec<f64>,
+    /// Its high corner.
+    pub high: Vec<f64>,
+    /// `[low corner, high corner]` per box.
+    pub obstacles: Vec<[Vec<f64>; 2]>,
 }
 
 /// How OMPL's PRMstar grew the roadmap its queries share.
@@ -74,7 +90,7 @@ pub struct Run {
     /// The path length (`None` without a path).
     pub cost: Option<f64>,
     /// The path's states.
-    pub path: Vec<[f64; 2]>,
+    pub path: Vec<Vec<f64>>,
     /// `(seconds, cost)` at every improvement the planner reported.
     pub improvements: Vec<(f64, f64)>,
 }

@@ -16,7 +16,8 @@
 //!   multi-query) implement it;
 //! - [`arm`]: a planar arm of revolute joints among polygons, for planning in its joint space;
 //! - [`benchmark`]: seeded runs of any planner, measured, and logs in OMPL's format;
-//! - [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
+//! - [`paths`]: a path's length, interpolation to a resolution, and a re-check of every state and
+//!   motion; [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
 //!
 //! ```
 //! use rand::SeedableRng;
@@ -47,6 +48,7 @@ pub mod arm;
 pub mod benchmark;
 pub mod boxes;
 pub mod nearest;
+pub mod paths;
 pub mod plan;
 pub mod planner;
 pub mod prm;
@@ -78,7 +80,7 @@ pub use rand_chacha::ChaCha8Rng;
 pub use rrt::Rrt;
 pub use rrt_connect::RrtConnect;
 pub use rrt_star::RrtStar;
-pub use run::{MIN_RELATIVE_RANGE, RrtOptions, cost_of};
+pub use run::{MIN_RELATIVE_RANGE, RrtOptions};
 pub use sampler::{Bridge, Draw, Gaussian, SamplerError, StateSampler, Uniform};
 pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};

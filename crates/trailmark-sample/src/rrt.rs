@@ -138,7 +138,7 @@ where
         };
         let path = tree.branch(end);
         if goal_distance.is_none() {
-            run.improved(crate::run::cost_of(space, &path));
+            run.improved(crate::paths::length(space, &path));
         }
         let (nearest, parents) = tree.into_parts();
         self.spent.nearest.push(nearest);

@@ -251,7 +251,7 @@ where
         back.reverse();
         // The meeting state ends the first part and starts the second.
         path.extend(back.into_iter().skip(1));
-        run.improved(crate::run::cost_of(space, &path));
+        run.improved(crate::paths::length(space, &path));
         self.keep(trees);
         Ok(run.finish(space, path, None, stop))
     }

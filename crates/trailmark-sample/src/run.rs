@@ -105,7 +105,7 @@ impl<'t> Run<'t> {
         stop: Stop,
     ) -> Plan<S::State> {
         self.stats.iterations = self.watch.iterations();
-        let cost = cost_of(space, &path);
+        let cost = crate::paths::length(space, &path);
         let solution = match goal_distance {
             None => Solution::Exact { path, cost },
             Some(goal_distance) => Solution::Approximate { path, cost, goal_distance },
@@ -146,12 +146,6 @@ impl Run<'_> {
         self.stats.elapsed = self.watch.elapsed();
         Plan { solution: Solution::None, stop, history: self.history, stats: self.stats }
     }
-}
-
-/// The cost of a path: its motions' distances summed.
-pub fn cost_of<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
-    // A fold from +0: an empty float sum is -0.0, which a one-state path would report.
-    path.windows(2).fold(0.0, |total, m| total + space.distance(&m[0], &m[1]))
 }
 
 /// What a run grew: its trees, kept by the planner after the run (OMPL's planners keep their

@@ -1,0 +1,79 @@
+//! Path utilities: lengths, interpolation to a resolution (in R² and along Dubins curves), and
+//! the re-check's first fault.
+
+use proptest::prelude::*;
+use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::world::{Bounds, PolygonWorld};
+use trailmark_sample::paths::{PathFault, check, interpolate, length};
+use trailmark_sample::{Dubins, R2, Rejection, StateSpace};
+
+fn pose(x: f64, y: f64, heading: f64) -> Pose {
+    Pose::new(Point::new(x, y).coords, heading)
+}
+
+proptest! {
+    /// Interpolated R² paths keep every state, cut every motion to the resolution, and keep the
+    /// length; along Dubins curves, the ends are kept.
+    #[test]
+    fn interpolation_keeps_the_path(points in prop::collection::vec((0.0f64..20.0, 0.0f64..20.0, -3.0f64..3.0), 1..6), resolution in 0.05f64..3.0) {
+        let bounds = Bounds::new(0.0, 0.0, 20.0, 20.0).unwrap();
+        let r2 = R2::new(bounds);
+        let path: Vec<Point> = points.iter().map(|&(x, y, _)| Point::new(x, y)).collect();
+        let fine = interpolate(&r2, &path, resolution).unwrap();
+        prop_assert!(fine.windows(2).all(|m| r2.distance(&m[0], &m[1]) <= resolution * (1.0 + 1e-12)));
+        prop_assert!(path.iter().all(|p| fine.contains(p)));
+        prop_assert!((length(&r2, &fine) - length(&r2, &path)).abs() <= 1e-9 * length(&r2, &path).max(1.0));
+        let dubins = Dubins::new(bounds, 1.0).unwrap();
+        let poses: Vec<Pose> = points.iter().map(|&(x, y, h)| pose(x, y, h)).collect();
+        let fine = interpolate(&dubins, &poses, resolution).unwrap();
+        prop_assert_eq!((fine.first(), fine.last()), (poses.first(), poses.last()));
+        prop_assert!(poses.iter().all(|p| fine.contains(p)));
+    }
+}
+
+/// Each piece of an interpolated Dubins path is a part of one shortest curve, so the pieces'
+/// own shortest curves should add up to it. They do not always: the pose 0.05 before the end of
+/// this curve, taken on its last arc, measures 6.333 to the end (a near-full loop, LSR) instead
+/// of 0.0499 (the rest of the arc). A defect of the Dubins solver for poses on one circle, open
+/// in issue 24's note; ignored until it is fixed.
+#[test]
+#[ignore = "a known defect of the Dubins solver for two poses on one turning circle"]
+fn pieces_of_a_dubins_curve_add_up_to_it() {
+    let dubins = Dubins::new(Bounds::new(0.0, 0.0, 20.0, 20.0).unwrap(), 1.0).unwrap();
+    let a = pose(0.2719940372087154, 16.272373998146577, -0.018812472045116005);
+    let b = pose(9.561902456278117, 4.627374238340356, 2.6393592039599465);
+    let fine = interpolate(&dubins, &[a, b], 0.05).unwrap();
+    let (whole, pieces) = (dubins.distance(&a, &b), length(&dubins, &fine));
+    assert!((pieces - whole).abs() <= 1e-6 * whole, "{pieces} against {whole}");
+}
+
+#[test]
+fn lengths_and_bad_resolutions() {
+    let r2 = R2::new(Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap());
+    assert_eq!(length(&r2, &[]), 0.0);
+    assert_eq!(length(&r2, &[Point::new(1.0, 1.0)]).to_bits(), 0.0f64.to_bits()); // +0, not -0
+    assert_eq!(length(&r2, &[Point::new(0.0, 0.0), Point::new(3.0, 4.0), Point::new(3.0, 0.0)]), 9.0);
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(matches!(interpolate(&r2, &[Point::new(1.0, 1.0)], bad), Err(PathFault::Resolution(_))));
+    }
+    assert_eq!(interpolate(&r2, &[], 0.1).unwrap(), Vec::<Point>::new());
+}
+
+#[test]
+fn the_check_names_the_first_fault() {
+    let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap();
+    let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
+    let checker = PolygonWorld::new(bounds, vec![wall], 0.0).unwrap().checker();
+    let r2 = R2::new(bounds);
+    let p = Point::new;
+    assert_eq!(check(&r2, &checker, &[]), Err(PathFault::Empty));
+    assert_eq!(check(&r2, &checker, &[p(1.0, 1.0)]), Ok(()));
+    let state = |index, reason| Err(PathFault::State { index, reason });
+    assert_eq!(check(&r2, &checker, &[p(1.0, 1.0), p(5.0, 4.0)]), state(1, Rejection::Invalid));
+    assert_eq!(check(&r2, &checker, &[p(1.0, 1.0), p(11.0, 4.0)]), state(1, Rejection::OutOfBounds));
+    assert_eq!(check(&r2, &checker, &[p(f64::NAN, 1.0)]), state(0, Rejection::NotFinite));
+    // Over the wall and back through it.
+    let around = [p(1.0, 1.0), p(4.0, 9.0), p(6.0, 9.0), p(9.0, 1.0), p(1.0, 1.0)];
+    assert_eq!(check(&r2, &checker, &around[..4]), Ok(()));
+    assert_eq!(check(&r2, &checker, &around), Err(PathFault::Motion { index: 3 }));
+}

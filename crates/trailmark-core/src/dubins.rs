@@ -460,8 +460,11 @@ impl Normalised {
                 // The straight piece's direction is only as good as its coordinates over its
                 // length: when that uncertainty could put t on the wrong side of `whole` (or of
                 // 0), which would add a full turn, keep t in [0, whole]. The end moves by at most
-                // p times the uncertainty.
-                let noise = 1e-14 * (2.0 + d) / p;
+                // p times the uncertainty. Once the coordinates' error reaches p (the two
+                // circles are one, as for two poses on one arc), the direction is not known at
+                // all: any t may be the true one.
+                let ratio = 1e-14 * (2.0 + d) / p;
+                let noise = if ratio >= 1.0 { std::f64::consts::PI } else { ratio.asin() };
                 if t > whole && (t - whole <= noise || TAU - t <= noise) {
                     t = if t - whole <= TAU - t { whole } else { 0.0 };
                 }

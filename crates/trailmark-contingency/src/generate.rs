@@ -222,12 +222,18 @@ pub fn river_terrain(seed: u64, options: &RiverOptions) -> Result<Terrain, Terra
 
     // Start and goal: passable cells near the left and right edges, outside every choke point.
     let in_choke = |c: &Cell| chokes.iter().any(|k: &ChokePoint| k.cells.contains(c));
-    let pick = |rng: &mut ChaCha8Rng, x: usize| -> Option<Cell> {
-        (0..100)
-            .map(|_| Cell::new(x as u32, rng.random_range(0..h) as u32))
-            .find(|c| costs[at(c.x as usize, c.y as usize)] == 1.0 && !in_choke(c))
+    let open = |c: &Cell| costs[at(c.x as usize, c.y as usize)] == 1.0 && !in_choke(c);
+    // A random open cell of the edge column; when a forest covers that column, the first open
+    // cell of the columns further in (up to a quarter of the width), scanned.
+    let pick = |rng: &mut ChaCha8Rng, x: usize, inward: isize| -> Option<Cell> {
+        (0..100).map(|_| Cell::new(x as u32, rng.random_range(0..h) as u32)).find(|c| open(c)).or_else(|| {
+            (0..=(w / 4) as isize)
+                .map(|k| (x as isize + k * inward) as u32)
+                .flat_map(|x| (0..h as u32).map(move |y| Cell::new(x, y)))
+                .find(|c| open(c))
+        })
     };
-    let (Some(start), Some(goal)) = (pick(&mut rng, 1), pick(&mut rng, w - 2)) else {
+    let (Some(start), Some(goal)) = (pick(&mut rng, 1, 1), pick(&mut rng, w - 2, -1)) else {
         return bad("no open cell for the start or the goal");
     };
     let grid = Grid::from_costs(w, h, costs)?;

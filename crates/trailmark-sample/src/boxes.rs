@@ -47,9 +47,13 @@ impl<const N: usize> BoxWorld<N> {
     }
 
     /// `count` random boxes in the unit hypercube, each side drawn from `side` (as the random
-    /// worlds of the BIT* papers), seeded.
+    /// worlds of the BIT* papers), seeded; `side` must lie in `(0, 1]` and not be empty.
     pub fn random(count: usize, side: std::ops::Range<f64>, seed: u64) -> Result<Self, SpaceError> {
         use rand::SeedableRng;
+        // Sides in (0, 1], a range that is not empty.
+        if !(side.start > 0.0 && side.start < side.end && side.end <= 1.0) {
+            return Err(SpaceError::InvalidBounds { axis: 0, low: side.start, high: side.end });
+        }
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let boxes = (0..count)
             .map(|_| {

@@ -241,7 +241,8 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
         let mut best: Vec<(u32, f64)> = Vec::new();
         // One candidate more than asked: where the distance is the straight-line one (R², Rⁿ),
         // the k-th best is then below the bound of the next and one tree query suffices.
-        let mut asked = (k + 1).min(self.head.len());
+        let k = k.min(self.states.len());
+        let mut asked = k.saturating_add(1).min(self.head.len());
         // The groups measured, kept once a second, wider query is needed.
         let mut measured: Option<HashSet<u64>> = None;
         loop {

@@ -48,10 +48,19 @@ pub enum PathFault {
         /// The first state's index.
         index: usize,
     },
+    /// [`interpolate`] at this resolution would return more than [`MAX_INTERPOLATED`] states.
+    #[error("interpolating at {resolution} would give more than {max} states", max = MAX_INTERPOLATED)]
+    TooManyStates {
+        /// The resolution asked for.
+        resolution: f64,
+    },
     /// The resolution of [`interpolate`] is not positive and finite.
     #[error("the resolution must be positive and finite, got {0}")]
     Resolution(f64),
 }
+
+/// The most states [`interpolate`] returns.
+pub const MAX_INTERPOLATED: usize = 10_000_000;
 
 /// The length of `path`: its motions' distances summed (0 for one state or none).
 pub fn length<S: StateSpace>(space: &S, path: &[S::State]) -> f64 {
@@ -71,10 +80,13 @@ pub fn interpolate<S: StateSpace>(
     }
     let Some(first) = path.first() else { return Ok(Vec::new()) };
     let mut states = vec![first.clone()];
-    for m in path.windows(2) {
+    for (index, m) in path.windows(2).enumerate() {
         let n = (space.distance(&m[0], &m[1]) / resolution).ceil().max(1.0);
         if !n.is_finite() {
-            return Err(PathFault::Motion { index: states.len() - 1 });
+            return Err(PathFault::Motion { index });
+        }
+        if states.len() as f64 + n > MAX_INTERPOLATED as f64 {
+            return Err(PathFault::TooManyStates { resolution });
         }
         let n = n as usize;
         states.extend((1..n).map(|i| space.interpolate(&m[0], &m[1], i as f64 / n as f64)));

@@ -132,8 +132,8 @@ impl<T> Solution<T> {
 pub struct PlanStats {
     /// Iterations (samples drawn).
     pub iterations: u64,
-    /// States in the start tree and in the goal tree (RRT-Connect), or the roadmap's nodes and
-    /// edges (PRM).
+    /// States in the start tree and in the goal tree (RRT-Connect), or the roadmap's milestones
+    /// (PRM; its edges are [`Prm::edge_count`](crate::Prm::edge_count)).
     pub tree_sizes: [usize; 2],
     /// State and motion validity checks.
     pub collision_checks: u64,

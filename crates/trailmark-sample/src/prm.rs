@@ -12,8 +12,10 @@
 //! (`trailmark-search`) finds the shortest path through the roadmap. PRM stops there; PRM*
 //! ([`Prm::star`]) goes on growing until its termination, searching again as the roadmap grows
 //! and recording each cheaper path. The roadmap stays for the next query (multi-query, as OMPL's
-//! PRM) until [`clear`](Planner::clear). A run that stops before a start and a goal connect
-//! returns [`Solution::None`], as OMPL's PRM does.
+//! PRM) until [`clear`](Planner::clear): queries must share the space and the validity the
+//! roadmap was checked with; clear it when the world changes (its edges are not checked again).
+//! A run that stops before a start and a goal connect returns [`Solution::None`], as OMPL's PRM
+//! does.
 //!
 //! The roadmap is a graph of the core traits (nodes are milestone ids, edges cost their
 //! motion's distance), so any search of `trailmark-search` runs on it.
@@ -198,11 +200,6 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         self.components
     }
 
-    /// Motions and states checked by the validity since the roadmap was cleared.
-    pub fn checks(&self) -> u64 {
-        self.checks
-    }
-
     /// The state of milestone `id`.
     ///
     /// # Panics
@@ -328,6 +325,15 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         x
     }
 
+    /// Whether a start and a goal milestone share a component.
+    fn connects(&mut self, starts: &[u32], goals: &[u32]) -> bool {
+        let roots: Vec<u32> = starts.iter().map(|&s| self.root(s)).collect();
+        goals.iter().any(|&g| {
+            let r = self.root(g);
+            roots.contains(&r)
+        })
+    }
+
     /// Searches the roadmap; keeps the path found in `best` if it is cheaper.
     fn improve(
         &mut self,
@@ -386,6 +392,7 @@ where
     ) -> Result<Plan<S::State>, PlanError> {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
         self.check_connection()?;
+        crate::run::check_empty(&self.empty)?;
         let mut run = Run::checked(problem, Watch::start(termination), f64::INFINITY, self.seed)?;
         // The roadmap's own stream of samples goes on from one query to the next.
         let mut rng = self.rng.take().unwrap_or_else(|| ChaCha8Rng::seed_from_u64(self.seed));
@@ -395,6 +402,10 @@ where
         let (mut refused, mut exhausted) = (0, false);
         let mut best: Option<(Vec<u32>, f64)> = None;
         let mut searched_at = 0usize;
+        // The components when the roadmap was last searched: before the first path, a search
+        // pays only once a start and a goal may have been joined (in a directed roadmap a shared
+        // component does not yet mean a path, so the components, not just the ends, decide).
+        let mut searched_components = usize::MAX;
         let stop = loop {
             // Goal milestones: one at first, then more from a region while they are fewer than
             // half the roadmap.
@@ -423,18 +434,22 @@ where
             }
             if goals.is_empty() {
                 if exhausted {
+                    self.rng = Some(rng);
                     return Err(PlanError::GoalNotSampleable { planner: "PRM" });
                 }
                 if refused >= FIRST_GOAL_ATTEMPTS {
+                    self.rng = Some(rng);
                     return Err(PlanError::InvalidGoal(Rejection::Invalid));
                 }
             }
             // Search when a start and a goal share a component, and for PRM* again each time
             // the roadmap has grown by a tenth.
-            let due =
-                best.is_none() || self.node_count() as f64 >= searched_at as f64 * (1.0 + SEARCH_GROWTH);
+            let joined = self.components != searched_components && self.connects(&starts, &goals);
+            let grown = self.node_count() as f64 >= searched_at as f64 * (1.0 + SEARCH_GROWTH);
+            let due = if best.is_none() { joined && (S::SYMMETRIC || grown) } else { grown };
             if due && !goals.is_empty() && run.watch.interrupted().is_none() {
                 searched_at = self.node_count();
+                searched_components = self.components;
                 self.improve(space, (&starts, &goals), &mut best, &mut run);
             }
             if best.is_some() && !self.optimizing {
@@ -465,7 +480,7 @@ where
         self.rng = Some(rng);
         run.stats.collision_checks += self.checks;
         self.checks = 0;
-        run.stats.tree_sizes = [self.node_count(), self.edge_count];
+        run.stats.tree_sizes = [self.node_count(), 0];
         Ok(match best {
             Some((nodes, _)) => {
                 let path = nodes.iter().map(|&n| self.nearest.state(n).clone()).collect();

@@ -86,6 +86,7 @@ where
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
         // The last run's trees are freed before this run's clock starts.
         self.spent.release();
+        crate::run::check_empty(&self.nearest)?;
         let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut tree = Tree::new(self.nearest.clone(), Direction::ToQuery);
         let mut closest: Option<(u32, f64)> = None;

@@ -102,17 +102,23 @@ impl<T: Clone + PartialEq> GoalRoots<T> {
     }
 }
 
-/// The start tree's state nearest the goal, kept up to date as the tree grows.
+/// The start tree's state nearest the goal, kept up to date as the tree grows, and the first
+/// of its states that satisfies the goal (a region or a tolerance can be met before the trees
+/// meet).
 struct Closest {
     id: u32,
     distance: f64,
+    satisfied: Option<u32>,
 }
 
 impl Closest {
     fn offer<S: StateSpace, V>(&mut self, problem: &Problem<'_, S, V>, id: u32, state: &S::State) {
         let d = problem.goal.distance(problem.space, state);
         if d < self.distance {
-            *self = Closest { id, distance: d };
+            (self.id, self.distance) = (id, d);
+        }
+        if self.satisfied.is_none() && problem.goal.is_satisfied(problem.space, state) {
+            self.satisfied = Some(id);
         }
     }
 }
@@ -144,6 +150,7 @@ where
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
         // The last run's trees are freed before this run's clock starts.
         self.spent.release();
+        crate::run::check_empty(&self.nearest)?;
         let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut trees = [
             Tree::new(self.nearest.clone(), Direction::ToQuery),
@@ -159,7 +166,7 @@ where
             }
         }
         let mut roots = GoalRoots { roots: Vec::new(), refused: 0, exhausted: false };
-        let mut closest = Closest { id: 0, distance: f64::INFINITY };
+        let mut closest = Closest { id: 0, distance: f64::INFINITY, satisfied: None };
         for (id, start) in problem.starts.iter().enumerate() {
             closest.offer(problem, id as u32, start);
         }
@@ -168,7 +175,7 @@ where
         let mut grow = 0;
         let mut meeting = None;
         let stop = 'run: loop {
-            if meeting.is_some() {
+            if meeting.is_some() || closest.satisfied.is_some() {
                 break Stop::Solved;
             }
             if let Some(stop) = run.watch.next_iteration() {
@@ -240,6 +247,13 @@ where
             }
         };
         run.stats.tree_sizes = [start_tree.len(), goal_tree.len()];
+        if let (None, Some(id)) = (meeting, closest.satisfied) {
+            // The start tree reached the goal before the trees met.
+            let path = start_tree.branch(id);
+            run.improved(crate::paths::length(space, &path));
+            self.keep(trees);
+            return Ok(run.finish(space, path, None, stop));
+        }
         let Some((from_start, into_goal)) = meeting else {
             // No meeting: the start tree's branch to the state nearest the goal.
             let path = start_tree.branch(closest.id);

@@ -88,6 +88,7 @@ where
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
         // The last run's trees are freed before this run's clock starts.
         self.spent.release();
+        crate::run::check_empty(&self.nearest)?;
         let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut nearest = self.nearest.clone();
         let mut parents = Vec::new();

@@ -115,6 +115,19 @@ impl<'t> Run<'t> {
     }
 }
 
+/// Refuses a nearest-neighbour structure that already holds states: a planner's ids are its
+/// own trees' (a state stored before would belong to no tree).
+pub(crate) fn check_empty<S: StateSpace, N: crate::nearest::NearestNeighbors<S>>(
+    nearest: &N,
+) -> Result<(), PlanError> {
+    if nearest.is_empty() {
+        Ok(())
+    } else {
+        let value = nearest.len() as f64;
+        Err(PlanError::InvalidOption { name: "nearest", expected: "an empty structure", value })
+    }
+}
+
 /// The range of the tree planners' motions, checked.
 fn checked_range<S: StateSpace>(space: &S, options: &RrtOptions) -> Result<f64, PlanError> {
     let range = options.range.unwrap_or(0.2 * space.extent());

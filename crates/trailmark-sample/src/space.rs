@@ -39,8 +39,8 @@ use trailmark_core::world::Bounds;
 /// Why a space could not be made.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SpaceError {
-    /// A box side with `low >= high` or a bound that is not finite.
-    #[error("axis {axis}: the bounds [{low}, {high}] must be finite with low < high")]
+    /// A box side with `low >= high`, a bound that is not finite, or a width beyond `f64`.
+    #[error("axis {axis}: the bounds [{low}, {high}] must be finite with low < high and a finite width")]
     InvalidBounds {
         /// The axis.
         axis: usize,
@@ -272,7 +272,8 @@ impl<const N: usize> Rn<N> {
     pub fn new(low: [f64; N], high: [f64; N]) -> Result<Self, SpaceError> {
         for axis in 0..N {
             let (l, h) = (low[axis], high[axis]);
-            if !(l.is_finite() && h.is_finite() && l < h) {
+            // The width too must be finite: samples are drawn across it.
+            if !(l.is_finite() && h.is_finite() && l < h && (h - l).is_finite()) {
                 return Err(SpaceError::InvalidBounds { axis, low: l, high: h });
             }
         }

@@ -78,3 +78,10 @@ fn the_check_names_the_first_fault() {
     assert_eq!(check(&r2, &checker, &around[..4]), Ok(()));
     assert_eq!(check(&r2, &checker, &around), Err(PathFault::Motion { index: 3 }));
 }
+
+#[test]
+fn interpolation_refuses_too_many_states() {
+    let r2 = R2::new(Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap());
+    let path = [Point::new(0.0, 0.0), Point::new(10.0, 10.0)];
+    assert!(matches!(interpolate(&r2, &path, 1e-12), Err(PathFault::TooManyStates { .. })));
+}

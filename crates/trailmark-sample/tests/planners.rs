@@ -355,3 +355,45 @@ mod star {
         }
     }
 }
+
+/// A nearest-neighbour structure that already holds states is refused; a goal tolerance that the
+/// start tree meets before the trees meet ends RRT-Connect with an exact path there; a huge `k`
+/// neither overflows nor hangs.
+#[test]
+fn review_cases() {
+    use trailmark_sample::prm::Connection;
+    use trailmark_sample::{GoalState, Prm};
+    let (world, start, goal) = world_and_ends(10, 0.5, 5).unwrap();
+    let checker = world.checker();
+    let space = R2::new(world.bounds());
+    let mut used = KdNearest::<R2, 2>::new(&space).unwrap();
+    used.insert(&space, start);
+    let problem = Problem::new(&space, &checker, start, goal);
+    let limit = Termination::iterations(100);
+    let planners: Vec<Box<dyn Planner<R2, _>>> = vec![
+        Box::new(Rrt::new(used.clone())),
+        Box::new(RrtConnect::new(used.clone())),
+        Box::new(RrtStar::new(used.clone())),
+        Box::new(Prm::new(used.clone())),
+    ];
+    for mut planner in planners {
+        let error = planner.solve(&problem, &limit).unwrap_err();
+        assert!(matches!(error, PlanError::InvalidOption { name: "nearest", .. }), "{}", planner.name());
+    }
+    let kd = KdNearest::<R2, 2>::new(&space).unwrap();
+    let tolerance = 0.45 * (goal - start).norm();
+    let near = Problem::with_goal(&space, &checker, start, GoalState::within(goal, tolerance));
+    let mut short = 0;
+    for seed in 0..40 {
+        let plan =
+            RrtConnect::new(kd.clone()).with_seed(seed).solve(&near, &Termination::iterations(5000)).unwrap();
+        let path = plan.path().expect("within the tolerance");
+        assert!((path[path.len() - 1] - goal).norm() <= tolerance);
+        // Where the start tree met the tolerance before the trees met, the path ends there,
+        // short of the goal state the goal tree grows from.
+        short += usize::from(path[path.len() - 1] != goal);
+    }
+    assert!(short > 0, "no run ended where the start tree met the tolerance");
+    let mut huge = Prm::new(kd).with_connection(Connection::Nearest { k: usize::MAX });
+    huge.solve(&problem, &Termination::iterations(50)).unwrap();
+}

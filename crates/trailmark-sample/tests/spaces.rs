@@ -106,6 +106,7 @@ proptest! {
 fn bad_spaces_are_typed_errors() {
     assert!(matches!(Rn::new([0.0, 1.0], [1.0, 1.0]), Err(SpaceError::InvalidBounds { axis: 1, .. })));
     assert!(matches!(Rn::new([f64::NAN], [1.0]), Err(SpaceError::InvalidBounds { axis: 0, .. })));
+    assert!(matches!(Rn::new([-1e308], [1e308]), Err(SpaceError::InvalidBounds { axis: 0, .. }))); // infinite width
     assert!(matches!(Dubins::new(bounds(), 0.0), Err(SpaceError::NotPositive { .. })));
     assert!(matches!(Se2::with_heading_weight(bounds(), f64::INFINITY), Err(SpaceError::NotPositive { .. })));
     assert!(matches!(

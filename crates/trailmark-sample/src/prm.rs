@@ -14,7 +14,7 @@
 //! and recording each cheaper path. The roadmap stays for the next query (multi-query, as OMPL's
 //! PRM) until [`clear`](Planner::clear): queries must share the space and the validity the
 //! roadmap was checked with; clear it when the world changes (its edges are not checked again).
-//! A run that stops before a start and a goal connect returns [`Solution::None`], as OMPL's PRM
+//! A run that stops before a start and a goal connect returns [`Solution::None`](crate::Solution::None), as OMPL's PRM
 //! does.
 //!
 //! The roadmap is a graph of the core traits (nodes are milestone ids, edges cost their

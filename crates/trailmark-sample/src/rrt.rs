@@ -2,7 +2,7 @@
 //!
 //! RRT grows a tree of valid motions from the start states by steering toward random samples,
 //! at most `range` at a time, and with probability `goal_bias` toward a state of the goal.
-//! It stops at the first state that satisfies the goal, or at its [`Termination`]; then the
+//! It stops at the first state that satisfies the goal, or at its [`Termination`](crate::termination::Termination); then the
 //! plan is approximate: the path to the state nearest the goal.
 //!
 //! Runs are reproducible: the same seed gives the same tree, path and statistics.
@@ -31,18 +31,16 @@ use rand::RngExt;
 
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{Plan, PlanError, Stop};
-use crate::planner::Planner;
 use crate::problem::{Problem, admit};
 use crate::run::{Run, tree_planner};
 use crate::sampler::StateSampler;
 use crate::space::StateSpace;
-use crate::termination::Termination;
 use crate::tree::{Extension, Tree};
 use crate::validity::Validity;
 
 tree_planner! {
     /// RRT: one tree from the start states; see the [module](self) documentation.
-    Rrt
+    Rrt, "RRT", optimizes: false
 }
 
 /// A state of the goal to steer toward, with probability `bias`: sampled, in bounds and valid.
@@ -59,35 +57,20 @@ pub(crate) fn goal_target<S: StateSpace, V: Validity<S>>(
     admit(problem.space, problem.validity, &state).ok().map(|_| state)
 }
 
-impl<S, V, N, Q> Planner<S, V> for Rrt<N, Q>
-where
-    S: StateSpace,
-    V: Validity<S>,
-    N: NearestNeighbors<S> + Clone,
-    Q: StateSampler<S>,
-{
-    fn name(&self) -> &str {
-        "RRT"
-    }
-
-    fn set_seed(&mut self, seed: u64) {
-        self.seed = seed;
-    }
-
-    fn clear(&mut self) {
-        self.spent.release();
-    }
-
-    fn solve(
+impl<N, Q> Rrt<N, Q> {
+    /// A run checked by [`Planner::solve`](crate::planner::Planner::solve): the trees grown until it stops.
+    fn grow<S, V>(
         &mut self,
         problem: &Problem<'_, S, V>,
-        termination: &Termination,
-    ) -> Result<Plan<S::State>, PlanError> {
+        mut run: Run<'_>,
+    ) -> Result<Plan<S::State>, PlanError>
+    where
+        S: StateSpace,
+        V: Validity<S>,
+        N: NearestNeighbors<S> + Clone,
+        Q: StateSampler<S>,
+    {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
-        // The last run's trees are freed before this run's clock starts.
-        self.spent.release();
-        crate::run::check_empty(&self.nearest)?;
-        let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut tree = Tree::new(self.nearest.clone(), Direction::ToQuery);
         let mut closest: Option<(u32, f64)> = None;
         let mut solved = None;

@@ -33,12 +33,10 @@
 
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{Plan, PlanError, Rejection, Stop};
-use crate::planner::Planner;
 use crate::problem::{Problem, admit};
 use crate::run::{Run, tree_planner};
 use crate::sampler::StateSampler;
 use crate::space::StateSpace;
-use crate::termination::Termination;
 use crate::tree::{Extension, Tree};
 use crate::validity::Validity;
 
@@ -57,7 +55,7 @@ const FIRST_ROOT_ATTEMPTS: usize = 1_000;
 tree_planner! {
     /// RRT-Connect: a tree from the start and one into the goal, grown toward each other; see
     /// the [module](self) documentation.
-    RrtConnect
+    RrtConnect, "RRT-Connect", optimizes: false
 }
 
 /// The goal tree's roots: states the goal sampled, each in bounds and valid.
@@ -123,35 +121,20 @@ impl Closest {
     }
 }
 
-impl<S, V, N, Q> Planner<S, V> for RrtConnect<N, Q>
-where
-    S: StateSpace,
-    V: Validity<S>,
-    N: NearestNeighbors<S> + Clone,
-    Q: StateSampler<S>,
-{
-    fn name(&self) -> &str {
-        "RRT-Connect"
-    }
-
-    fn set_seed(&mut self, seed: u64) {
-        self.seed = seed;
-    }
-
-    fn clear(&mut self) {
-        self.spent.release();
-    }
-
-    fn solve(
+impl<N, Q> RrtConnect<N, Q> {
+    /// A run checked by [`Planner::solve`](crate::planner::Planner::solve): the trees grown until it stops.
+    fn grow<S, V>(
         &mut self,
         problem: &Problem<'_, S, V>,
-        termination: &Termination,
-    ) -> Result<Plan<S::State>, PlanError> {
+        mut run: Run<'_>,
+    ) -> Result<Plan<S::State>, PlanError>
+    where
+        S: StateSpace,
+        V: Validity<S>,
+        N: NearestNeighbors<S> + Clone,
+        Q: StateSampler<S>,
+    {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
-        // The last run's trees are freed before this run's clock starts.
-        self.spent.release();
-        crate::run::check_empty(&self.nearest)?;
-        let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut trees = [
             Tree::new(self.nearest.clone(), Direction::ToQuery),
             Tree::new(self.nearest.clone(), Direction::FromQuery),

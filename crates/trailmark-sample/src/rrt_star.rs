@@ -6,7 +6,7 @@
 //! k = ⌈k_rrt ln n⌉ with k_rrt = 1.1 · 2^(d+1) · e · (1 + 1/d) (OMPL's choice), and then offers
 //! itself as a cheaper parent to those neighbours (*rewiring*); a rewired node's new cost flows
 //! down to all its descendants. The run goes on after the first solution until its
-//! [`Termination`] (iterations, time, or a target cost), recording every improvement of the
+//! [`Termination`](crate::termination::Termination) (iterations, time, or a target cost), recording every improvement of the
 //! best path. Distances are taken in the motion's direction both ways, so asymmetric spaces
 //! (Dubins) work. The parent search and the rewiring ask the termination's time limit and
 //! condition before each motion check: a run stops within one check of its limit.
@@ -33,13 +33,11 @@
 
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{Plan, PlanError};
-use crate::planner::Planner;
 use crate::problem::Problem;
 use crate::rrt::goal_target;
 use crate::run::{Run, tree_planner};
 use crate::sampler::StateSampler;
 use crate::space::StateSpace;
-use crate::termination::Termination;
 use crate::tree::ROOT;
 use crate::validity::Validity;
 
@@ -54,42 +52,23 @@ pub fn neighbour_count(n: usize, dimension: usize) -> usize {
 tree_planner! {
     /// RRT*: one tree from the start states, rewired toward lower costs until the termination;
     /// see the [module](self) documentation.
-    RrtStar
+    RrtStar, "RRT*", optimizes: true
 }
 
-impl<S, V, N, Q> Planner<S, V> for RrtStar<N, Q>
-where
-    S: StateSpace,
-    V: Validity<S>,
-    N: NearestNeighbors<S> + Clone,
-    Q: StateSampler<S>,
-{
-    fn name(&self) -> &str {
-        "RRT*"
-    }
-
-    fn set_seed(&mut self, seed: u64) {
-        self.seed = seed;
-    }
-
-    fn clear(&mut self) {
-        self.spent.release();
-    }
-
-    fn optimizes(&self) -> bool {
-        true
-    }
-
-    fn solve(
+impl<N, Q> RrtStar<N, Q> {
+    /// A run checked by [`Planner::solve`](crate::planner::Planner::solve): the trees grown until it stops.
+    fn grow<S, V>(
         &mut self,
         problem: &Problem<'_, S, V>,
-        termination: &Termination,
-    ) -> Result<Plan<S::State>, PlanError> {
+        mut run: Run<'_>,
+    ) -> Result<Plan<S::State>, PlanError>
+    where
+        S: StateSpace,
+        V: Validity<S>,
+        N: NearestNeighbors<S> + Clone,
+        Q: StateSampler<S>,
+    {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
-        // The last run's trees are freed before this run's clock starts.
-        self.spent.release();
-        crate::run::check_empty(&self.nearest)?;
-        let mut run = Run::begin(problem, &self.options, termination, self.seed)?;
         let mut nearest = self.nearest.clone();
         let mut parents = Vec::new();
         let mut costs = Vec::new();

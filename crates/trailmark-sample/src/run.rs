@@ -187,9 +187,10 @@ impl<N> Spent<N> {
 }
 
 /// The settings every tree planner has: an empty nearest-neighbour structure to grow its trees
-/// in, a sampler, the options and the seed; with the methods that set them.
+/// in, a sampler, the options and the seed; with the methods that set them, and the `Planner`
+/// impl that checks a run and hands it to the planner's own `grow`.
 macro_rules! tree_planner {
-    ($(#[$doc:meta])* $name:ident) => {
+    ($(#[$doc:meta])* $name:ident, $label:literal, optimizes: $optimizes:literal) => {
         $(#[$doc])*
         #[derive(Debug, Clone)]
         pub struct $name<N, Q = $crate::sampler::Uniform> {
@@ -237,6 +238,42 @@ macro_rules! tree_planner {
             /// The sampler.
             pub fn sampler(&self) -> &Q {
                 &self.sampler
+            }
+        }
+
+        impl<S, V, N, Q> $crate::planner::Planner<S, V> for $name<N, Q>
+        where
+            S: $crate::space::StateSpace,
+            V: $crate::validity::Validity<S>,
+            N: $crate::nearest::NearestNeighbors<S> + Clone,
+            Q: $crate::sampler::StateSampler<S>,
+        {
+            fn name(&self) -> &str {
+                $label
+            }
+
+            fn set_seed(&mut self, seed: u64) {
+                self.seed = seed;
+            }
+
+            fn clear(&mut self) {
+                self.spent.release();
+            }
+
+            fn optimizes(&self) -> bool {
+                $optimizes
+            }
+
+            fn solve(
+                &mut self,
+                problem: &$crate::problem::Problem<'_, S, V>,
+                termination: &$crate::termination::Termination,
+            ) -> Result<$crate::plan::Plan<S::State>, $crate::plan::PlanError> {
+                // The last run's trees are freed before this run's clock starts.
+                self.spent.release();
+                $crate::run::check_empty(&self.nearest)?;
+                let run = $crate::run::Run::begin(problem, &self.options, termination, self.seed)?;
+                self.grow(problem, run)
             }
         }
     };

@@ -155,9 +155,10 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
     use trailmark::core::geometry::{Point, Pose};
     use trailmark::core::svg::WorldSvg;
     use trailmark::graph::Roadmap;
-    use trailmark::graph::prm::{Connection, DubinsSteering, Prm, PrmOptions, Sampler};
+    use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
     use trailmark::graph::trapezoid::Trapezoids;
     use trailmark::graph::visibility::{Edges, VisibilityGraph};
+    use trailmark::sample::Dubins;
 
     let world = generate::convex_obstacles(40.0, 24, 6, 0.5, 7)?;
     // Round corners in quarter-turn steps keep the pictures small.
@@ -229,13 +230,13 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
         .to_svg();
     write("graph-prm.svg", svg)?;
 
-    let steering = DubinsSteering::new(1.0)?;
+    let space = Dubins::new(world.bounds(), 1.0)?;
     let options = PrmOptions {
         sampler: Sampler::Halton,
         connection: Connection::Nearest { k: 15 },
         ..PrmOptions::default()
     };
-    let mut dubins = Prm::with_steering(world.clone(), steering, options)?;
+    let mut dubins = Prm::with_space(world.clone(), space, options)?;
     dubins.grow(1500)?;
     let (a, b) = (
         Pose::new(start.coords, std::f64::consts::FRAC_PI_4),

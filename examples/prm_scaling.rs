@@ -8,7 +8,8 @@
 use std::time::Instant;
 
 use trailmark::core::generate::convex_obstacles;
-use trailmark::graph::prm::{Connection, DubinsSteering, Prm, PrmOptions, Sampler};
+use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
+use trailmark::sample::Dubins;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!(
@@ -33,7 +34,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             ..PrmOptions::default()
         };
         let clock = Instant::now();
-        let mut prm = Prm::with_steering(world, DubinsSteering::new(10.0)?, options)?;
+        let space = Dubins::new(world.bounds(), 10.0)?;
+        let mut prm = Prm::with_space(world, space, options)?;
         prm.grow(samples)?;
         report(obstacles, samples, prm.edge_count(), prm.component_count(), prm.local_paths_checked(), clock);
     }

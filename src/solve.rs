@@ -43,13 +43,11 @@ use trailmark_core::problem::{
 };
 use trailmark_core::svg::{GridSvg, WorldSvg};
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
-use trailmark_graph::prm::{
-    Connection, DubinsSteering, Prm, PrmError, PrmOptions, Sampler, Steering, Straight,
-};
+use trailmark_graph::prm::{Connection, PlanarSpace, Prm, PrmError, PrmOptions, Sampler};
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::{Edges, VisibilityError};
 use trailmark_graph::{CornerCutting, GridGraph, Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
-use trailmark_sample::{PlanError, SpaceError};
+use trailmark_sample::{Dubins, PlanError, SpaceError, StateSpace};
 use trailmark_search::{
     AdStar, AnytimeResult, Budget, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult,
 };
@@ -635,15 +633,16 @@ fn solve_dubins(
     world: &PolygonWorld,
     picture: Option<&mut String>,
 ) -> Result<SolveResult, SolveError> {
+    let radius = problem.turning_radius.ok_or(SolveError::NoTurningRadius)?;
+    let space = Dubins::new(world.bounds(), radius)?;
     let pose = |which, value: &[f64]| {
-        DubinsSteering::from_coordinates(value)
+        space
+            .state_from_coordinates(value)
             .ok_or_else(|| SolveError::NotAPose { which, value: value.to_vec() })
     };
-    let radius = problem.turning_radius.ok_or(SolveError::NoTurningRadius)?;
-    let steering = DubinsSteering::new(radius)?;
     let (start, goal) = (pose("start", &problem.start)?, pose("goal", &problem.goal)?);
     let clock = Instant::now();
-    let prm = grow(problem, Prm::with_steering(world.clone(), steering, prm_options(problem)?)?)?;
+    let prm = grow(problem, Prm::with_space(world.clone(), space, prm_options(problem)?)?)?;
     let built = clock.elapsed();
     let result =
         search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed().saturating_sub(built))?;
@@ -651,7 +650,7 @@ fn solve_dubins(
         .path
         .iter()
         .filter_map(|w| match w {
-            Waypoint::Point(c) => DubinsSteering::from_coordinates(c),
+            Waypoint::Point(c) => space.state_from_coordinates(c),
             Waypoint::Cell(_) => None,
         })
         .collect();
@@ -741,7 +740,7 @@ fn prm_options(problem: &Problem) -> Result<PrmOptions, SolveError> {
 }
 
 /// `prm` grown by the problem's number of samples.
-fn grow<S: Steering>(problem: &Problem, mut prm: Prm<S>) -> Result<Prm<S>, SolveError> {
+fn grow<S: PlanarSpace>(problem: &Problem, mut prm: Prm<S>) -> Result<Prm<S>, SolveError> {
     prm.grow(problem.samples.unwrap_or(DEFAULT_SAMPLES))?;
     Ok(prm)
 }
@@ -785,13 +784,13 @@ trait Coordinates {
 
 impl Coordinates for Point {
     fn coordinates(&self) -> Vec<f64> {
-        Straight::coordinates(self)
+        vec![self.x, self.y]
     }
 }
 
 impl Coordinates for Pose {
     fn coordinates(&self) -> Vec<f64> {
-        DubinsSteering::coordinates(self)
+        vec![self.translation.x, self.translation.y, self.rotation.angle()]
     }
 }
 

@@ -206,7 +206,7 @@ fn bad_polygon_documents_give_typed_errors() {
     ));
     assert!(matches!(
         err(0.0, &format!(r#""graph": "dubins_prm", "turning_radius": -1, {ends}, {astar}"#)),
-        SolveError::Prm(_)
+        SolveError::Space(_)
     ));
     assert!(matches!(
         err(0.0, &format!(r#""start": [1, 1, 0], "goal": [9, 1], {astar}"#)),

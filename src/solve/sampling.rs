@@ -12,7 +12,6 @@ use trailmark_core::problem::{
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::PolygonWorld;
-use trailmark_graph::prm::{DubinsSteering, Steering, Straight};
 use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
 use trailmark_sample::{
     BoxWorld, Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Planner,
@@ -50,15 +49,15 @@ pub(super) fn solve_sampling(
             if problem.turning_radius.is_some() {
                 return Err(SolveError::NotForSpace { field: "turning_radius", space: "r2" });
             }
+            let space = R2::new(world.bounds());
             let state = |which, value: &[f64]| {
-                Straight::from_coordinates(value).ok_or_else(|| SolveError::NotAState {
+                space.state_from_coordinates(value).ok_or_else(|| SolveError::NotAState {
                     which,
                     value: value.to_vec(),
                     space: "r2",
                 })
             };
             let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
-            let space = R2::new(world.bounds());
             let (mut result, path) = run.plan(&space, KdNearest::<R2, 2>::new(&space)?, start, goal)?;
             if let (Some(method), Some(stats)) = (spec.smooth, result.stats.sampling.as_mut()) {
                 let smoothed = smooth(&checker, &path, method)?;
@@ -89,15 +88,15 @@ pub(super) fn solve_sampling(
                 return Err(SolveError::NotForSpace { field: "smooth", space: "dubins" });
             }
             let radius = problem.turning_radius.ok_or(SolveError::NoTurningRadius)?;
+            let space = Dubins::new(world.bounds(), radius)?;
             let state = |which, value: &[f64]| {
-                DubinsSteering::from_coordinates(value).ok_or_else(|| SolveError::NotAState {
+                space.state_from_coordinates(value).ok_or_else(|| SolveError::NotAState {
                     which,
                     value: value.to_vec(),
                     space: "dubins",
                 })
             };
             let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
-            let space = Dubins::new(world.bounds(), radius)?;
             let (result, path) = run.plan(&space, KdNearest::<Dubins, 2>::new(&space)?, start, goal)?;
             if let Some(picture) = picture {
                 let curve = dubins_curve(&path, radius);

@@ -3,11 +3,11 @@
 //! Grid graphs ([`grid::GridGraph`]): 4- or 8-connected, with per-cell costs and a choice of
 //! corner-cutting rule. Roadmaps of polygon worlds: visibility graphs
 //! ([`visibility::VisibilityGraph`]) by Lee's rotational sweep with exact predicates, trapezoidal
-//! cell decompositions ([`trapezoid::Trapezoids`]), probabilistic roadmaps of segments or Dubins
-//! curves ([`prm::Prm`]), all queried through [`roadmap::RoadmapQuery`]; and roadmaps of worlds
-//! whose obstacles change, with stable node ids and the changed edges for D* Lite
-//! ([`dynamic::DynamicRoadmap`]). The graphs implement the traits of [`trailmark_core::graph`],
-//! and nothing here depends on a search algorithm.
+//! cell decompositions ([`trapezoid::Trapezoids`]), probabilistic roadmaps over the state spaces
+//! of `trailmark-sample` (segments in `R2`, Dubins curves, ...) ([`prm::Prm`]), all queried
+//! through [`roadmap::RoadmapQuery`]; and roadmaps of worlds whose obstacles change, with stable
+//! node ids and the changed edges for D* Lite ([`dynamic::DynamicRoadmap`]). The graphs
+//! implement the traits of [`trailmark_core::graph`]; no builder here runs a search.
 //!
 //! ```
 //! use trailmark_core::{Cell, Connectivity, Grid, IndexedGraph, Successors};
@@ -37,9 +37,7 @@ pub mod visibility;
 
 pub use dynamic::{DynamicError, DynamicRoadmap};
 pub use grid::{CornerCutting, GridGraph, Neighbours};
-pub use prm::{
-    Connection, DubinsPrm, DubinsSteering, Prm, PrmError, PrmOptions, PrmQuery, Sampler, Steering, Straight,
-};
+pub use prm::{Connection, DubinsPrm, PlanarSpace, Prm, PrmError, PrmOptions, PrmQuery, Sampler};
 pub use roadmap::{Roadmap, RoadmapQuery};
 pub use trapezoid::{TrapezoidError, TrapezoidQuery, Trapezoids};
 pub use visibility::{VisibilityGraph, VisibilityQuery};

@@ -7,8 +7,9 @@
 //! path is checked exactly against the obstacles by the world's [`CollisionChecker`] (segment
 //! and arc distances, not sampling); nearest neighbours come from a k-d tree (kiddo).
 //!
-//! The local path is a [`Steering`]: [`Straight`] segments for a disc robot (an undirected
-//! roadmap over points), or [`DubinsSteering`] curves for a car-like robot (a directed roadmap
+//! The states, motions and distances are a state space of `trailmark-sample` ([`PlanarSpace`]):
+//! [`R2`] segments for a disc robot (an undirected
+//! roadmap over points), or [`Dubins`](trailmark_sample::Dubins) curves for a car-like robot (a directed roadmap
 //! over poses, since a Dubins path from `a` to `b` is not the reverse of one from `b` to `a`).
 //!
 //! A roadmap grows incrementally ([`Prm::grow`], [`Prm::insert`]), tracks its connected
@@ -40,222 +41,117 @@
 
 use std::fmt::Debug;
 
-use kiddo::SquaredEuclidean;
-use rand::{RngExt, SeedableRng};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use trailmark_core::cost::Cost;
-use trailmark_core::dubins::{DubinsPath, RadiusOutOfScale, check_extent};
-use trailmark_core::geometry::{Point, Pose, Vector};
+use trailmark_core::geometry::Point;
 use trailmark_core::graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
-use trailmark_core::world::{Bounds, CollisionChecker, PolygonWorld, WorldError};
+use trailmark_core::world::{CollisionChecker, PolygonWorld, WorldError};
+use trailmark_sample::nearest::{Direction, KdNearest, NearestNeighbors};
+use trailmark_sample::sampler::{Bridge, Draw, Gaussian, Halton, SamplerError, StateSampler, Uniform};
+use trailmark_sample::space::{R2, SpaceError, UnitCube};
+use trailmark_sample::validity::Validity;
+
+pub use trailmark_sample::prm::Connection;
 
 use crate::roadmap::{Roadmap, RoadmapQuery};
 
-type KdTree = kiddo::KdTree<f64, 2>;
+/// A state space a roadmap over a polygon world is built in: one whose states the world's exact
+/// [`CollisionChecker`] checks ([`R2`] for a disc robot, [`Se2`](trailmark_sample::Se2),
+/// [`Dubins`](trailmark_sample::Dubins) for a car), that maps the unit cube (for the Halton
+/// sequence) and whose states are small values. Every such space of `trailmark-sample` is one.
+pub trait PlanarSpace: UnitCube<State: Copy> + Clone + Debug {
+    /// Whether the world of `checker` leaves `state` free.
+    fn state_is_free(&self, checker: &CollisionChecker, state: &Self::State) -> bool;
 
-/// How a roadmap joins two configurations: the local path, its exact collision test and its
-/// cost.
-pub trait Steering: Copy + Debug {
-    /// A configuration: a point, or a pose.
-    type State: Copy + Debug + PartialEq;
+    /// Whether the world of `checker` leaves the space's motion from `from` to `to` free.
+    fn motion_is_free(&self, checker: &CollisionChecker, from: &Self::State, to: &Self::State) -> bool;
+}
 
-    /// Whether the local path from `a` to `b` differs from the reverse of the one from `b` to
-    /// `a`, so the roadmap's edges are directed.
-    const DIRECTED: bool;
+impl<S> PlanarSpace for S
+where
+    S: UnitCube<State: Copy> + Clone + Debug,
+    CollisionChecker: Validity<S>,
+{
+    fn state_is_free(&self, checker: &CollisionChecker, state: &S::State) -> bool {
+        checker.state_is_valid(self, state)
+    }
 
-    /// The dimension of the configuration space (for PRM*'s number of neighbours).
-    const DIMENSION: usize;
-
-    /// The configuration at `unit` (coordinates in `[0, 1)`, one per dimension) of the bounds.
-    fn state(&self, bounds: &Bounds, unit: [f64; 3]) -> Self::State;
-
-    /// Where the robot's centre is in `state`.
-    fn point(state: &Self::State) -> Point;
-
-    /// The cost of the local path from `from` to `to`, `None` if it collides.
-    fn connect(&self, checker: &CollisionChecker, from: &Self::State, to: &Self::State) -> Option<Cost>;
-
-    /// The state's coordinates, for saving: `[x, y]` or `[x, y, heading]`.
-    fn coordinates(state: &Self::State) -> Vec<f64>;
-
-    /// The state with these coordinates, `None` if there are not [`DIMENSION`](Self::DIMENSION)
-    /// finite ones.
-    fn from_coordinates(coordinates: &[f64]) -> Option<Self::State>;
-
-    /// Whether local paths between states in `bounds` are within this steering's supported
-    /// range (every steering, unless it says otherwise).
-    fn supports(&self, bounds: &Bounds) -> Result<(), PrmError> {
-        let _ = bounds;
-        Ok(())
+    fn motion_is_free(&self, checker: &CollisionChecker, from: &S::State, to: &S::State) -> bool {
+        checker.motion_is_valid(self, from, to)
     }
 }
 
-/// Straight segments between points: the local path of a disc robot.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Straight;
+/// The world's checker as the samplers' validity.
+struct Exact<'a>(&'a CollisionChecker);
 
-impl Steering for Straight {
-    type State = Point;
-    const DIRECTED: bool = false;
-    const DIMENSION: usize = 2;
-
-    fn state(&self, bounds: &Bounds, unit: [f64; 3]) -> Point {
-        let (min, max) = (bounds.min(), bounds.max());
-        Point::new(min.x + unit[0] * (max.x - min.x), min.y + unit[1] * (max.y - min.y))
+impl<S: PlanarSpace> Validity<S> for Exact<'_> {
+    fn state_is_valid(&self, space: &S, state: &S::State) -> bool {
+        space.state_is_free(self.0, state)
     }
 
-    fn point(state: &Point) -> Point {
-        *state
-    }
-
-    fn connect(&self, checker: &CollisionChecker, from: &Point, to: &Point) -> Option<Cost> {
-        checker.segment_is_free(*from, *to).then(|| (to - from).norm())
-    }
-
-    fn coordinates(state: &Point) -> Vec<f64> {
-        vec![state.x, state.y]
-    }
-
-    fn from_coordinates(c: &[f64]) -> Option<Point> {
-        match *c {
-            [x, y] if x.is_finite() && y.is_finite() => Some(Point::new(x, y)),
-            _ => None,
-        }
+    fn motion_is_valid(&self, space: &S, from: &S::State, to: &S::State) -> bool {
+        space.motion_is_free(self.0, from, to)
     }
 }
 
-/// Shortest Dubins paths between poses: the local path of a car that drives forward with a
-/// bounded turning radius.
+/// How samples are drawn: which of `trailmark-sample`'s samplers, with its settings.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(try_from = "DubinsSteeringDocument", into = "DubinsSteeringDocument")]
-pub struct DubinsSteering {
-    turning_radius: f64,
-}
-
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct DubinsSteeringDocument {
-    turning_radius: f64,
-}
-
-impl TryFrom<DubinsSteeringDocument> for DubinsSteering {
-    type Error = PrmError;
-    fn try_from(d: DubinsSteeringDocument) -> Result<Self, PrmError> {
-        DubinsSteering::new(d.turning_radius)
-    }
-}
-
-impl From<DubinsSteering> for DubinsSteeringDocument {
-    fn from(s: DubinsSteering) -> Self {
-        DubinsSteeringDocument { turning_radius: s.turning_radius }
-    }
-}
-
-impl DubinsSteering {
-    /// Dubins paths with this turning radius, which must be positive and finite.
-    pub fn new(turning_radius: f64) -> Result<Self, PrmError> {
-        if turning_radius.is_finite() && turning_radius > 0.0 {
-            Ok(DubinsSteering { turning_radius })
-        } else {
-            Err(PrmError::InvalidTurningRadius(turning_radius))
-        }
-    }
-
-    /// The turning radius.
-    pub fn turning_radius(&self) -> f64 {
-        self.turning_radius
-    }
-
-    /// The shortest Dubins path from `from` to `to`.
-    pub fn path(&self, from: &Pose, to: &Pose) -> Option<DubinsPath> {
-        DubinsPath::shortest(from, to, self.turning_radius).ok()
-    }
-}
-
-impl Steering for DubinsSteering {
-    type State = Pose;
-    const DIRECTED: bool = true;
-    const DIMENSION: usize = 3;
-
-    fn supports(&self, bounds: &Bounds) -> Result<(), PrmError> {
-        Ok(check_extent(self.turning_radius, (bounds.max() - bounds.min()).norm())?)
-    }
-
-    fn state(&self, bounds: &Bounds, unit: [f64; 3]) -> Pose {
-        let p = Straight.state(bounds, unit);
-        Pose::new(p.coords, (2.0 * unit[2] - 1.0) * std::f64::consts::PI)
-    }
-
-    fn point(state: &Pose) -> Point {
-        Point::from(state.translation.vector)
-    }
-
-    fn connect(&self, checker: &CollisionChecker, from: &Pose, to: &Pose) -> Option<Cost> {
-        let path = self.path(from, to)?;
-        checker.dubins_is_free(&path).then(|| path.length())
-    }
-
-    fn coordinates(state: &Pose) -> Vec<f64> {
-        vec![state.translation.x, state.translation.y, state.rotation.angle()]
-    }
-
-    fn from_coordinates(c: &[f64]) -> Option<Pose> {
-        match *c {
-            [x, y, heading] if x.is_finite() && y.is_finite() && heading.is_finite() => {
-                Some(Pose::new(Vector::new(x, y), heading))
-            }
-            _ => None,
-        }
-    }
-}
-
-/// How samples are drawn.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Sampler {
-    /// Independent uniform samples from a ChaCha8 generator with this seed: the same seed gives
-    /// the same roadmap on every machine.
+    /// Independent uniform samples ([`Uniform`]) from a ChaCha8 generator with this seed: the
+    /// same seed gives the same roadmap on every machine.
     Uniform {
         /// The generator's seed.
         seed: u64,
     },
-    /// The Halton sequence in bases 2, 3 (and 5 for a heading): deterministic, and more even
-    /// than independent samples.
+    /// The Halton sequence ([`Halton`]) in bases 2, 3 (and 5 for a heading): deterministic, and
+    /// more even than independent samples.
     Halton,
+    /// Near obstacles' surfaces ([`Gaussian`]), half the draws, the others uniform.
+    Gaussian {
+        /// The generator's seed.
+        seed: u64,
+        /// The standard deviation of the partner's distance.
+        std_dev: f64,
+    },
+    /// In narrow passages ([`Bridge`], the bridge test), half the draws, the others uniform.
+    Bridge {
+        /// The generator's seed.
+        seed: u64,
+        /// The standard deviation of the partner's distance (about a passage's width).
+        std_dev: f64,
+    },
 }
 
-/// Which existing nodes a new node is joined to.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Connection {
-    /// The `k` nearest nodes.
-    Nearest {
-        /// How many.
-        k: usize,
-    },
-    /// Every node within this distance.
-    Radius {
-        /// The distance.
-        radius: f64,
-    },
-    /// The `k = ⌈e (1 + 1/d) ln n⌉` nearest, `n` the number of nodes and `d` the dimension:
-    /// the asymptotically optimal PRM* of Karaman and Frazzoli.
-    PrmStar,
+/// A [`Sampler`] made.
+#[derive(Clone, Debug)]
+enum Drawer {
+    Uniform,
+    Halton(Halton),
+    Gaussian(Gaussian),
+    Bridge(Bridge),
 }
 
-impl Connection {
-    /// The number of nearest neighbours for a roadmap of `n` nodes in dimension `d`, `None`
-    /// for a radius connection.
-    fn neighbour_count(&self, n: usize, d: usize) -> Option<usize> {
+impl Drawer {
+    fn new(sampler: Sampler) -> Result<Self, PrmError> {
+        Ok(match sampler {
+            Sampler::Uniform { .. } => Drawer::Uniform,
+            Sampler::Halton => Drawer::Halton(Halton::new()),
+            Sampler::Gaussian { std_dev, .. } => Drawer::Gaussian(Gaussian::new(std_dev)?),
+            Sampler::Bridge { std_dev, .. } => Drawer::Bridge(Bridge::new(std_dev)?),
+        })
+    }
+}
+
+impl Sampler {
+    /// The generator's seed (0 for the Halton sequence, which does not use it).
+    fn seed(&self) -> u64 {
         match *self {
-            Connection::Nearest { k } => Some(k),
-            Connection::Radius { .. } => None,
-            Connection::PrmStar => {
-                let k = std::f64::consts::E * (1.0 + 1.0 / d as f64) * (n.max(1) as f64).ln();
-                Some(k.ceil() as usize)
-            }
+            Sampler::Uniform { seed } | Sampler::Gaussian { seed, .. } | Sampler::Bridge { seed, .. } => seed,
+            Sampler::Halton => 0,
         }
     }
 }
@@ -301,12 +197,13 @@ pub enum PrmError {
     /// `attempts_per_sample` must be at least 1.
     #[error("attempts_per_sample must be at least 1")]
     InvalidAttempts,
-    /// A Dubins turning radius must be positive and finite.
-    #[error("the turning radius must be positive and finite, got {0:?}")]
-    InvalidTurningRadius(f64),
-    /// A Dubins turning radius out of the solver's supported range for the world's bounds.
+    /// The space could not be made (a Dubins turning radius that is not positive and finite,
+    /// or out of the solver's range for the bounds).
     #[error(transparent)]
-    TurningRadiusOutOfScale(#[from] RadiusOutOfScale),
+    Space(#[from] SpaceError),
+    /// A sampler setting out of its range.
+    #[error(transparent)]
+    Sampler(#[from] SamplerError),
     /// [`Prm::grow`] ran out of draws: the free space is empty or very small. The samples
     /// found were added.
     #[error("found only {added} of {requested} free samples in {attempts} draws")]
@@ -373,22 +270,24 @@ struct Candidate {
 #[derive(Clone, Debug)]
 struct Stream {
     rng: ChaCha8Rng,
-    halton_index: u64,
+    drawer: Drawer,
     attempts: u64,
 }
 
-/// A probabilistic roadmap over a polygon world, with [`Straight`] or [`DubinsSteering`] local
-/// paths. Node `i` is at [`Prm::position`]; edges cost their local path's length.
+/// A probabilistic roadmap over a polygon world, in any [`PlanarSpace`]: [`R2`] (straight
+/// segments for a disc robot, an undirected roadmap over points) by default, or
+/// [`Dubins`](trailmark_sample::Dubins) (a directed roadmap over poses, since a Dubins path
+/// from `a` to `b` is not the reverse of one from `b` to `a`). Node `i` is at
+/// [`Prm::position`]; edges cost their motion's distance in the space.
 ///
 /// It implements the graph traits itself (with permanent nodes from [`Prm::insert`]) and
 /// [`Roadmap`], so [`Prm::query`] joins a start and a goal without changing it.
 #[derive(Clone, Debug)]
-pub struct Prm<S: Steering = Straight> {
+pub struct Prm<S: PlanarSpace = R2> {
     checker: CollisionChecker,
-    steering: S,
+    space: S,
     options: PrmOptions,
-    states: Vec<S::State>,
-    tree: KdTree,
+    nearest: KdNearest<S, 2>,
     candidates: Vec<Candidate>,
     /// Candidate ids leaving each node (both ends' lists when undirected).
     out: Vec<Vec<u32>>,
@@ -403,21 +302,22 @@ pub struct Prm<S: Steering = Straight> {
 }
 
 /// A probabilistic roadmap of Dubins paths between poses.
-pub type DubinsPrm = Prm<DubinsSteering>;
+pub type DubinsPrm = Prm<trailmark_sample::Dubins>;
 
 /// A [`Prm`] with a start and a goal joined to it.
-pub type PrmQuery<'g, S = Straight> = RoadmapQuery<'g, Prm<S>>;
+pub type PrmQuery<'g, S = R2> = RoadmapQuery<'g, Prm<S>>;
 
-impl Prm<Straight> {
-    /// An empty roadmap of straight segments over `world`.
+impl Prm<R2> {
+    /// An empty roadmap of straight segments over `world` (the space [`R2`] of its bounds).
     pub fn new(world: PolygonWorld, options: PrmOptions) -> Result<Self, PrmError> {
-        Self::with_steering(world, Straight, options)
+        let space = R2::new(world.bounds());
+        Self::with_space(world, space, options)
     }
 }
 
-impl<S: Steering> Prm<S> {
-    /// An empty roadmap over `world` whose local paths are `steering`'s.
-    pub fn with_steering(world: PolygonWorld, steering: S, options: PrmOptions) -> Result<Self, PrmError> {
+impl<S: PlanarSpace> Prm<S> {
+    /// An empty roadmap over `world` whose states and motions are `space`'s.
+    pub fn with_space(world: PolygonWorld, space: S, options: PrmOptions) -> Result<Self, PrmError> {
         match options.connection {
             Connection::Nearest { k: 0 } => return Err(PrmError::InvalidK),
             Connection::Radius { radius } if !(radius.is_finite() && radius > 0.0) => {
@@ -428,24 +328,20 @@ impl<S: Steering> Prm<S> {
         if options.attempts_per_sample == 0 {
             return Err(PrmError::InvalidAttempts);
         }
-        steering.supports(&world.bounds())?;
-        let seed = match options.sampler {
-            Sampler::Uniform { seed } => seed,
-            Sampler::Halton => 0,
-        };
+        let nearest = KdNearest::new(&space)?;
+        let drawer = Drawer::new(options.sampler)?;
         Ok(Prm {
             checker: world.checker(),
-            steering,
+            space,
             options,
-            states: Vec::new(),
-            tree: KdTree::new(),
+            nearest,
             candidates: Vec::new(),
             out: Vec::new(),
             into: Vec::new(),
             edge_count: 0,
             parent: Vec::new(),
             components: 0,
-            stream: Stream { rng: ChaCha8Rng::seed_from_u64(seed), halton_index: 0, attempts: 0 },
+            stream: Stream { rng: ChaCha8Rng::seed_from_u64(options.sampler.seed()), drawer, attempts: 0 },
             local_paths_checked: 0,
         })
     }
@@ -457,10 +353,10 @@ impl<S: Steering> Prm<S> {
     /// keeping the samples found; with [`PrmError::TooManyNodes`] before any draw if the
     /// roadmap would pass [`MAX_NODES`].
     pub fn grow(&mut self, samples: usize) -> Result<std::ops::Range<u32>, PrmError> {
-        if self.states.len().saturating_add(samples) > MAX_NODES {
+        if self.node_count().saturating_add(samples) > MAX_NODES {
             return Err(PrmError::TooManyNodes);
         }
-        let first = self.states.len() as u32;
+        let first = self.node_count() as u32;
         let attempts = u64::from(self.options.attempts_per_sample);
         let budget = attempts.saturating_mul(samples as u64);
         let mut draws = 0u64;
@@ -473,20 +369,22 @@ impl<S: Steering> Prm<S> {
                 return Err(PrmError::SamplingExhausted { requested: samples, added, attempts: draws });
             }
             draws += 1;
-            let state = self.draw();
-            if self.is_free(&state) && self.find(&state).is_none() {
+            if let Some(state) = self.draw()
+                && self.is_free(&state)
+                && self.find(&state).is_none()
+            {
                 self.add_node(state)?;
                 added += 1;
             }
         }
-        Ok(first..self.states.len() as u32)
+        Ok(first..self.node_count() as u32)
     }
 
     /// Adds `state` as a node (joined like a sample) and returns its index; if a node is
     /// already there, returns that node's index.
     pub fn insert(&mut self, state: S::State) -> Result<u32, PrmError> {
         if !self.is_free(&state) {
-            return Err(PrmError::Blocked(S::coordinates(&state)));
+            return Err(PrmError::Blocked(self.space.coordinates(&state)));
         }
         match self.find(&state) {
             Some(node) => Ok(node),
@@ -495,31 +393,31 @@ impl<S: Steering> Prm<S> {
     }
 
     /// The graph with `start` and `goal` joined to their neighbours (by the roadmap's
-    /// connection rule) and to each other when the goal is among the start's neighbours.
-    /// The roadmap is not changed.
+    /// connection rule, measured by the space's distance) and to each other when the goal is
+    /// among the start's neighbours. The roadmap is not changed.
     pub fn query(&self, start: S::State, goal: S::State) -> Result<PrmQuery<'_, S>, PrmError> {
         if !self.is_free(&start) {
-            return Err(PrmError::StartBlocked(S::coordinates(&start)));
+            return Err(PrmError::StartBlocked(self.space.coordinates(&start)));
         }
         if !self.is_free(&goal) {
-            return Err(PrmError::GoalBlocked(S::coordinates(&goal)));
+            return Err(PrmError::GoalBlocked(self.space.coordinates(&goal)));
         }
-        let n = self.states.len();
+        let n = self.node_count();
         let (mut from_start, mut to_goal) = (vec![Cost::INFINITY; n], vec![Cost::INFINITY; n]);
-        for (u, _) in self.neighbours_of(S::point(&start), n + 1) {
-            if let Some(c) = self.steering.connect(&self.checker, &start, &self.states[u as usize]) {
+        for (u, _) in self.neighbours_of(&start, Direction::FromQuery, n + 1) {
+            if let Some(c) = self.connect(&self.checker, &start, self.nearest.state(u)) {
                 from_start[u as usize] = c;
             }
         }
-        for (u, _) in self.neighbours_of(S::point(&goal), n + 1) {
-            if let Some(c) = self.steering.connect(&self.checker, &self.states[u as usize], &goal) {
+        for (u, _) in self.neighbours_of(&goal, Direction::ToQuery, n + 1) {
+            if let Some(c) = self.connect(&self.checker, self.nearest.state(u), &goal) {
                 to_goal[u as usize] = c;
             }
         }
         let direct = if start == goal {
             Some(0.0)
-        } else if self.within_reach(S::point(&start), S::point(&goal), n + 2) {
-            self.steering.connect(&self.checker, &start, &goal)
+        } else if self.within_reach(&start, &goal, n + 2) {
+            self.connect(&self.checker, &start, &goal)
         } else {
             None
         };
@@ -583,9 +481,9 @@ impl<S: Steering> Prm<S> {
         &self.checker
     }
 
-    /// The local path.
-    pub fn steering(&self) -> S {
-        self.steering
+    /// The state space: its states, motions and distances.
+    pub fn space(&self) -> &S {
+        &self.space
     }
 
     /// The settings.
@@ -595,7 +493,7 @@ impl<S: Steering> Prm<S> {
 
     /// The number of nodes.
     pub fn node_count(&self) -> usize {
-        self.states.len()
+        self.nearest.len()
     }
 
     /// The number of free edges (each undirected edge once).
@@ -615,12 +513,12 @@ impl<S: Steering> Prm<S> {
     /// If `node` is not below [`node_count`](Self::node_count): node ids are indices, as a
     /// slice's. [`get_position`](Self::get_position) is the checked form.
     pub fn position(&self, node: u32) -> S::State {
-        self.states[node as usize]
+        *self.nearest.state(node)
     }
 
     /// The configuration of `node`, `None` if the roadmap has no such node.
     pub fn get_position(&self, node: u32) -> Option<S::State> {
-        self.states.get(node as usize).copied()
+        ((node as usize) < self.node_count()).then(|| self.position(node))
     }
 
     /// The free edges, as `(from, to, cost)`, each undirected edge once.
@@ -661,81 +559,63 @@ impl<S: Steering> Prm<S> {
     /// The representative of `node`'s connected component, `None` if the roadmap has no such
     /// node.
     pub fn get_component(&self, node: u32) -> Option<u32> {
-        ((node as usize) < self.states.len()).then(|| self.component(node))
+        ((node as usize) < self.node_count()).then(|| self.component(node))
     }
 
-    fn draw(&mut self) -> S::State {
+    /// One draw of the sampler (`None` when it found nothing).
+    fn draw(&mut self) -> Option<S::State> {
         self.stream.attempts += 1;
-        let unit = match self.options.sampler {
-            Sampler::Uniform { .. } => {
-                let rng = &mut self.stream.rng;
-                [rng.random::<f64>(), rng.random::<f64>(), rng.random::<f64>()]
-            }
-            Sampler::Halton => {
-                self.stream.halton_index += 1;
-                let i = self.stream.halton_index;
-                [radical_inverse(i, 2), radical_inverse(i, 3), radical_inverse(i, 5)]
-            }
-        };
-        self.steering.state(&self.checker.world().bounds(), unit)
+        let validity = Exact(&self.checker);
+        let mut checks = 0;
+        let mut draw = Draw::new(&mut self.stream.rng, &mut checks);
+        let space = &self.space;
+        match &self.stream.drawer {
+            Drawer::Uniform => Uniform.sample(space, &validity, &mut draw),
+            Drawer::Halton(halton) => halton.sample(space, &validity, &mut draw),
+            Drawer::Gaussian(gaussian) => gaussian.sample(space, &validity, &mut draw),
+            Drawer::Bridge(bridge) => bridge.sample(space, &validity, &mut draw),
+        }
     }
 
+    /// Whether `state` is within the space's bounds and free.
     fn is_free(&self, state: &S::State) -> bool {
-        S::from_coordinates(&S::coordinates(state)).is_some() && self.checker.point_is_free(S::point(state))
+        self.space.satisfies_bounds(state) && self.space.state_is_free(&self.checker, state)
+    }
+
+    /// The cost of the motion from `from` to `to` in the world of `checker`, `None` if it
+    /// collides.
+    fn connect(&self, checker: &CollisionChecker, from: &S::State, to: &S::State) -> Option<Cost> {
+        self.space.motion_is_free(checker, from, to).then(|| self.space.distance(from, to))
     }
 
     /// The node at exactly `state`, if any.
     fn find(&self, state: &S::State) -> Option<u32> {
-        if self.states.is_empty() {
-            return None;
-        }
-        let p = S::point(state);
-        self.tree
-            .within_unsorted::<SquaredEuclidean>(&[p.x, p.y], 0.0)
-            .into_iter()
-            .map(|n| n.item as u32)
-            .find(|&u| self.states[u as usize] == *state)
+        let (id, d) = self.nearest.nearest(&self.space, state, Direction::ToQuery)?;
+        (d == 0.0 && self.nearest.state(id) == state).then_some(id)
     }
 
-    /// The nodes a configuration at `p` joins in a roadmap of `n` nodes, nearest first, with
-    /// their distances.
-    fn neighbours_of(&self, p: Point, n: usize) -> Vec<(u32, f64)> {
-        if self.states.is_empty() {
-            return Vec::new();
-        }
-        match self.options.connection.neighbour_count(n, S::DIMENSION) {
-            Some(k) => self
-                .tree
-                .nearest_n::<SquaredEuclidean>(&[p.x, p.y], k.min(self.states.len()))
-                .into_iter()
-                .map(|m| m.item as u32)
-                .map(|u| (u, (S::point(&self.states[u as usize]) - p).norm()))
-                .collect(),
+    /// The nodes a configuration `state` joins in a roadmap of `n` nodes, nearest first, with
+    /// their distances measured the way `direction` says.
+    fn neighbours_of(&self, state: &S::State, direction: Direction, n: usize) -> Vec<(u32, f64)> {
+        match self.options.connection.neighbour_count(n, self.space.dimension()) {
+            Some(k) => self.nearest.k_nearest(&self.space, state, k, direction),
             None => {
                 let Connection::Radius { radius } = self.options.connection else { unreachable!() };
-                let mut within: Vec<(u32, f64)> = self
-                    .tree
-                    .within_unsorted::<SquaredEuclidean>(&[p.x, p.y], radius * radius)
-                    .into_iter()
-                    .map(|m| m.item as u32)
-                    .map(|u| (u, (S::point(&self.states[u as usize]) - p).norm()))
-                    .filter(|&(_, d)| d <= radius)
-                    .collect();
-                within.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
-                within
+                self.nearest.within(&self.space, state, radius, direction)
             }
         }
     }
 
-    /// Whether `q` is among the neighbours of `p` by the connection rule, in a roadmap of `n`
-    /// nodes that holds `q`.
-    fn within_reach(&self, p: Point, q: Point, n: usize) -> bool {
-        let d = (q - p).norm();
+    /// Whether `goal` is among the neighbours of `start` (the motions out of it) by the
+    /// connection rule, in a roadmap of `n` nodes that holds `goal`.
+    fn within_reach(&self, start: &S::State, goal: &S::State, n: usize) -> bool {
+        let d = self.space.distance(start, goal);
         match self.options.connection {
             Connection::Radius { radius } => d <= radius,
             connection => {
-                let k = connection.neighbour_count(n, S::DIMENSION).expect("a nearest-neighbour rule");
-                let nearest = self.neighbours_of(p, n);
+                let k =
+                    connection.neighbour_count(n, self.space.dimension()).expect("a nearest-neighbour rule");
+                let nearest = self.neighbours_of(start, Direction::FromQuery, n);
                 // PRM*'s k is 0 in a roadmap of one node: nothing is in reach.
                 nearest.len() < k
                     || k.checked_sub(1).and_then(|last| nearest.get(last)).is_some_and(|&(_, kth)| d <= kth)
@@ -744,28 +624,27 @@ impl<S: Steering> Prm<S> {
     }
 
     fn add_node(&mut self, state: S::State) -> Result<u32, PrmError> {
-        if self.states.len() >= MAX_NODES {
+        if self.node_count() >= MAX_NODES {
             return Err(PrmError::TooManyNodes);
         }
-        let neighbours = self.neighbours_of(S::point(&state), self.states.len() + 1);
+        let n = self.node_count() + 1;
+        let into = self.neighbours_of(&state, Direction::ToQuery, n);
+        let out = if S::SYMMETRIC { Vec::new() } else { self.neighbours_of(&state, Direction::FromQuery, n) };
         let u = self.push_node(state);
-        for (v, _) in neighbours {
+        for (v, _) in into {
+            self.try_edge(v, u);
+        }
+        for (v, _) in out {
             self.try_edge(u, v);
-            if S::DIRECTED {
-                self.try_edge(v, u);
-            }
         }
         Ok(u)
     }
 
     /// Stores `state` as a new node without edges (its own component) and returns its index.
     fn push_node(&mut self, state: S::State) -> u32 {
-        let u = self.states.len() as u32;
-        let p = S::point(&state);
-        self.states.push(state);
-        self.tree.add(&[p.x, p.y], u64::from(u));
+        let u = self.nearest.insert(&self.space, state);
         self.out.push(Vec::new());
-        if S::DIRECTED {
+        if !S::SYMMETRIC {
             self.into.push(Vec::new());
         }
         self.parent.push(u);
@@ -780,10 +659,10 @@ impl<S: Steering> Prm<S> {
         let id = self.candidates.len() as u32;
         self.candidates.push(Candidate { ends: [from, to], cost });
         self.out[from as usize].push(id);
-        if S::DIRECTED {
-            self.into[to as usize].push(id);
-        } else {
+        if S::SYMMETRIC {
             self.out[to as usize].push(id);
+        } else {
+            self.into[to as usize].push(id);
         }
         if cost.is_finite() {
             self.edge_count += 1;
@@ -792,12 +671,12 @@ impl<S: Steering> Prm<S> {
     }
 
     fn local_path(&self, checker: &CollisionChecker, from: u32, to: u32) -> Option<Cost> {
-        self.steering.connect(checker, &self.states[from as usize], &self.states[to as usize])
+        self.connect(checker, self.nearest.state(from), self.nearest.state(to))
     }
 
     fn report(&self, changes: &mut Vec<EdgeChange<u32>>, a: u32, b: u32, old_cost: Cost) {
         changes.push(EdgeChange { from: a, to: b, old_cost });
-        if !S::DIRECTED {
+        if S::SYMMETRIC {
             changes.push(EdgeChange { from: b, to: a, old_cost });
         }
     }
@@ -824,8 +703,8 @@ impl<S: Steering> Prm<S> {
     }
 
     fn rebuild_components(&mut self) {
-        self.parent = (0..self.states.len() as u32).collect();
-        self.components = self.states.len();
+        self.parent = (0..self.node_count() as u32).collect();
+        self.components = self.node_count();
         for id in 0..self.candidates.len() {
             let Candidate { ends: [a, b], cost } = self.candidates[id];
             if cost.is_finite() {
@@ -840,31 +719,23 @@ impl<S: Steering> Prm<S> {
     }
 }
 
-/// The radical inverse of `i` in `base`: the `i`-th element of the van der Corput sequence.
-fn radical_inverse(mut i: u64, base: u64) -> f64 {
-    let (mut result, mut scale) = (0.0, 1.0 / base as f64);
-    while i > 0 {
-        result += (i % base) as f64 * scale;
-        i /= base;
-        scale /= base as f64;
-    }
-    result
-}
-
-impl<S: Steering> Roadmap for Prm<S> {
+impl<S: PlanarSpace> Roadmap for Prm<S> {
     type Position = S::State;
-    const DIRECTED: bool = S::DIRECTED;
+    const DIRECTED: bool = !S::SYMMETRIC;
 
     fn node_count(&self) -> usize {
-        self.states.len()
+        self.nearest.len()
     }
 
     fn position(&self, node: u32) -> S::State {
-        self.states[node as usize]
+        *self.nearest.state(node)
     }
 
+    /// The space's distance: every edge costs its motion's distance, and a path of motions is
+    /// no shorter than the shortest motion between its ends (in `R2` the straight line, in
+    /// `Dubins` the shortest Dubins path).
     fn lower_bound(&self, a: S::State, b: S::State) -> Cost {
-        (S::point(&b) - S::point(&a)).norm()
+        self.space.distance(&a, &b)
     }
 
     fn for_each_out<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
@@ -877,7 +748,7 @@ impl<S: Steering> Roadmap for Prm<S> {
     }
 
     fn for_each_in<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
-        if !S::DIRECTED {
+        if S::SYMMETRIC {
             return self.for_each_out(node, visit);
         }
         for &id in &self.into[node as usize] {
@@ -889,29 +760,29 @@ impl<S: Steering> Roadmap for Prm<S> {
     }
 }
 
-impl<S: Steering> Graph for Prm<S> {
+impl<S: PlanarSpace> Graph for Prm<S> {
     type Node = u32;
 
     fn contains(&self, node: u32) -> bool {
-        (node as usize) < self.states.len()
+        (node as usize) < self.nearest.len()
     }
 }
 
-impl<S: Steering> Successors for Prm<S> {
+impl<S: PlanarSpace> Successors for Prm<S> {
     fn for_each_successor<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
         self.for_each_out(node, visit)
     }
 }
 
-impl<S: Steering> Predecessors for Prm<S> {
+impl<S: PlanarSpace> Predecessors for Prm<S> {
     fn for_each_predecessor<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
         self.for_each_in(node, visit)
     }
 }
 
-impl<S: Steering> IndexedGraph for Prm<S> {
+impl<S: PlanarSpace> IndexedGraph for Prm<S> {
     fn node_bound(&self) -> usize {
-        self.states.len()
+        self.nearest.len()
     }
 
     fn index_of(&self, node: u32) -> usize {
@@ -923,13 +794,13 @@ impl<S: Steering> IndexedGraph for Prm<S> {
     }
 }
 
-/// A saved roadmap: the world, the settings, the nodes, every edge tried and where the sample
-/// stream stands.
+/// A saved roadmap: the world, the space, the settings, the nodes, every edge tried and where
+/// the sample stream stands.
 #[derive(Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct PrmDocument<S> {
     world: PolygonWorld,
-    steering: S,
+    space: S,
     options: PrmOptions,
     /// `[x, y]` or `[x, y, heading]`.
     nodes: Vec<Vec<f64>>,
@@ -948,14 +819,16 @@ struct StreamDocument {
     attempts: u64,
 }
 
-impl<S: Steering + Serialize> Serialize for Prm<S> {
-    /// Saves as `{"world", "steering", "options", "nodes", "edges", "stream"}`.
+impl<S: PlanarSpace + Serialize> Serialize for Prm<S> {
+    /// Saves as `{"world", "space", "options", "nodes", "edges", "stream"}`.
     fn serialize<Ser: serde::Serializer>(&self, serializer: Ser) -> Result<Ser::Ok, Ser::Error> {
         PrmDocument {
             world: self.checker.world().clone(),
-            steering: self.steering,
+            space: self.space.clone(),
             options: self.options,
-            nodes: self.states.iter().map(S::coordinates).collect(),
+            nodes: (0..self.node_count() as u32)
+                .map(|u| self.space.coordinates(self.nearest.state(u)))
+                .collect(),
             edges: self
                 .candidates
                 .iter()
@@ -963,7 +836,10 @@ impl<S: Steering + Serialize> Serialize for Prm<S> {
                 .collect(),
             stream: StreamDocument {
                 word_position: self.stream.rng.get_word_pos().to_string(),
-                halton_index: self.stream.halton_index,
+                halton_index: match &self.stream.drawer {
+                    Drawer::Halton(halton) => halton.drawn(),
+                    _ => 0,
+                },
                 attempts: self.stream.attempts,
             },
         }
@@ -971,7 +847,7 @@ impl<S: Steering + Serialize> Serialize for Prm<S> {
     }
 }
 
-impl<'de, S: Steering + Deserialize<'de>> Deserialize<'de> for Prm<S> {
+impl<'de, S: PlanarSpace + Deserialize<'de>> Deserialize<'de> for Prm<S> {
     /// Loads a saved roadmap, re-checking every node and every edge's free or blocked state in
     /// the saved world; a mismatch is an error, not a silent repair.
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
@@ -980,17 +856,18 @@ impl<'de, S: Steering + Deserialize<'de>> Deserialize<'de> for Prm<S> {
     }
 }
 
-impl<S: Steering> Prm<S> {
+impl<S: PlanarSpace> Prm<S> {
     fn from_document(d: PrmDocument<S>) -> Result<Self, PrmError> {
-        let mut prm = Prm::with_steering(d.world, d.steering, d.options)?;
+        let mut prm = Prm::with_space(d.world, d.space, d.options)?;
         for (index, coordinates) in d.nodes.iter().enumerate() {
-            let state = S::from_coordinates(coordinates).ok_or(PrmError::InvalidNode { index })?;
+            let state =
+                prm.space.state_from_coordinates(coordinates).ok_or(PrmError::InvalidNode { index })?;
             if !prm.is_free(&state) || prm.find(&state).is_some() {
                 return Err(PrmError::InvalidNode { index });
             }
             prm.push_node(state);
         }
-        let n = prm.states.len() as u32;
+        let n = prm.node_count() as u32;
         for (index, &[from, to, free]) in d.edges.iter().enumerate() {
             if from >= n || to >= n || from == to || free > 1 {
                 return Err(PrmError::InvalidEdge { index });
@@ -1002,7 +879,9 @@ impl<S: Steering> Prm<S> {
         }
         let word_position: u128 = d.stream.word_position.parse().map_err(|_| PrmError::InvalidStream)?;
         prm.stream.rng.set_word_pos(word_position);
-        prm.stream.halton_index = d.stream.halton_index;
+        if let Drawer::Halton(halton) = &mut prm.stream.drawer {
+            *halton = Halton::after(d.stream.halton_index);
+        }
         prm.stream.attempts = d.stream.attempts;
         prm.local_paths_checked = 0;
         Ok(prm)
@@ -1014,6 +893,9 @@ mod tests {
     use std::collections::BTreeSet;
 
     use trailmark_core::generate::convex_obstacles;
+    use trailmark_core::geometry::Vector;
+    use trailmark_core::world::Bounds;
+    use trailmark_sample::Dubins;
 
     use super::*;
 
@@ -1021,23 +903,17 @@ mod tests {
         convex_obstacles(20.0, 12, 6, radius, seed).expect("a valid world")
     }
 
+    fn nodes<S: PlanarSpace>(prm: &Prm<S>) -> Vec<S::State> {
+        (0..prm.node_count() as u32).map(|u| prm.position(u)).collect()
+    }
+
     fn options(connection: Connection) -> PrmOptions {
         PrmOptions { connection, ..PrmOptions::default() }
     }
 
     #[test]
-    fn halton_matches_the_van_der_corput_sequence() {
-        let base2: Vec<f64> = (1..=7).map(|i| radical_inverse(i, 2)).collect();
-        assert_eq!(base2, [0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875]);
-        let base3: Vec<f64> = (1..=4).map(|i| radical_inverse(i, 3)).collect();
-        let expected = [1.0 / 3.0, 2.0 / 3.0, 1.0 / 9.0, 4.0 / 9.0];
-        for (got, want) in base3.iter().zip(expected) {
-            assert!((got - want).abs() < 1e-15, "{got} vs {want}");
-        }
-    }
-
-    #[test]
     fn prm_star_uses_karaman_and_frazzolis_k() {
+        // The connection rule is trailmark-sample's, shared by both roadmaps.
         // e (1 + 1/2) ln 1000 = 28.17 and e (1 + 1/3) ln 1000 = 25.04.
         assert_eq!(Connection::PrmStar.neighbour_count(1000, 2), Some(29));
         assert_eq!(Connection::PrmStar.neighbour_count(1000, 3), Some(26));
@@ -1056,8 +932,12 @@ mod tests {
             assert!(matches!(e, Some(PrmError::InvalidRadius(_))), "{e:?}");
         }
         let none = PrmOptions { attempts_per_sample: 0, ..PrmOptions::default() };
-        assert_eq!(Prm::new(w, none).err(), Some(PrmError::InvalidAttempts));
-        assert!(DubinsSteering::new(0.0).is_err() && DubinsSteering::new(f64::NAN).is_err());
+        assert_eq!(Prm::new(w.clone(), none).err(), Some(PrmError::InvalidAttempts));
+        let b = w.bounds();
+        assert!(Dubins::new(b, 0.0).is_err() && Dubins::new(b, f64::NAN).is_err());
+        let bad =
+            PrmOptions { sampler: Sampler::Gaussian { seed: 0, std_dev: -1.0 }, ..PrmOptions::default() };
+        assert!(matches!(Prm::new(w, bad).err(), Some(PrmError::Sampler(_))));
     }
 
     #[test]
@@ -1141,14 +1021,15 @@ mod tests {
 
     #[test]
     fn growing_in_steps_equals_growing_at_once() {
-        for sampler in [Sampler::Halton, Sampler::Uniform { seed: 9 }] {
+        let bridge = Sampler::Bridge { seed: 4, std_dev: 0.5 };
+        for sampler in [Sampler::Halton, Sampler::Uniform { seed: 9 }, bridge] {
             let o = PrmOptions { sampler, ..options(Connection::PrmStar) };
             let mut once = Prm::new(world(6, 0.3), o).unwrap();
             once.grow(90).unwrap();
             let mut steps = Prm::new(world(6, 0.3), o).unwrap();
             steps.grow(40).unwrap();
             steps.grow(50).unwrap();
-            assert_eq!(once.states, steps.states);
+            assert_eq!(nodes(&once), nodes(&steps));
             assert_eq!(once.edges().collect::<Vec<_>>(), steps.edges().collect::<Vec<_>>());
         }
     }
@@ -1161,13 +1042,13 @@ mod tests {
         prm.grow(60).unwrap();
         let text = serde_json::to_string(&prm).unwrap();
         let mut loaded: Prm = serde_json::from_str(&text).unwrap();
-        assert_eq!(loaded.states, prm.states);
+        assert_eq!(nodes(&loaded), nodes(&prm));
         assert_eq!(loaded.edges().collect::<Vec<_>>(), prm.edges().collect::<Vec<_>>());
         assert_eq!(loaded.candidate_count(), prm.candidate_count());
         assert_eq!(loaded.component_count(), prm.component_count());
         prm.grow(20).unwrap();
         loaded.grow(20).unwrap();
-        assert_eq!(loaded.states, prm.states);
+        assert_eq!(nodes(&loaded), nodes(&prm));
         assert_eq!(loaded.attempts(), prm.attempts());
 
         // A flipped free flag, an edge to a missing node, a node moved into an obstacle.
@@ -1229,16 +1110,18 @@ mod tests {
     /// the exact checker, and the reverse edge is checked on its own.
     #[test]
     fn dubins_edges_are_directed_and_free() {
-        let steering = DubinsSteering::new(1.5).unwrap();
+        let w = world(9, 0.3);
+        let space = Dubins::new(w.bounds(), 1.5).unwrap();
         let o = PrmOptions { sampler: Sampler::Halton, ..options(Connection::Nearest { k: 8 }) };
-        let mut prm = Prm::with_steering(world(9, 0.3), steering, o).unwrap();
+        let mut prm = Prm::with_space(w, space, o).unwrap();
         prm.grow(80).unwrap();
         let checker = prm.world().checker();
         let mut asymmetric = 0;
         for (a, b, cost) in prm.edges() {
-            let path = steering.path(&prm.position(a), &prm.position(b)).unwrap();
+            let path = space.path(&prm.position(a), &prm.position(b));
             assert!(checker.dubins_is_free(&path));
-            assert_eq!(cost, path.length());
+            // The space's distance is the length-only solver's, within rounding of the path's.
+            assert!((cost - path.length()).abs() <= 1e-12 * cost, "{cost} vs {}", path.length());
             let mut back = None;
             prm.for_each_successor(b, |v, c| {
                 if v == a {

@@ -81,9 +81,9 @@ pub use rrt::Rrt;
 pub use rrt_connect::RrtConnect;
 pub use rrt_star::RrtStar;
 pub use run::{MIN_RELATIVE_RANGE, RrtOptions};
-pub use sampler::{Bridge, Draw, Gaussian, SamplerError, StateSampler, Uniform};
+pub use sampler::{Bridge, Draw, Gaussian, Halton, SamplerError, StateSampler, Uniform};
 pub use simplify::shortcut;
-pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};
+pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace, UnitCube};
 pub use termination::{Condition, Progress, Termination};
 pub use validity::{Sampled, Validity};
 

@@ -45,6 +45,7 @@ use std::marker::PhantomData;
 
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_search::Search;
@@ -54,13 +55,15 @@ use crate::plan::{Plan, PlanError, Rejection, Stop};
 use crate::planner::Planner;
 use crate::problem::{Problem, admit};
 use crate::run::Run;
-use crate::sampler::{StateSampler, Uniform};
+use crate::sampler::{Draw, StateSampler, Uniform};
 use crate::space::StateSpace;
 use crate::termination::{Termination, Watch};
 use crate::validity::Validity;
 
-/// Which milestones a new one is joined to.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// Which milestones a new one is joined to. Saved as `{"nearest": {"k": 10}}`,
+/// `{"radius": {"radius": 2.5}}` or `"prm_star"`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Connection {
     /// The `k` nearest.
     Nearest {
@@ -79,7 +82,7 @@ pub enum Connection {
 impl Connection {
     /// The neighbours to ask for in a roadmap of `n` milestones in dimension `d` (`None`: by
     /// radius).
-    fn count(&self, n: usize, d: usize) -> Option<usize> {
+    pub fn neighbour_count(&self, n: usize, d: usize) -> Option<usize> {
         match *self {
             Connection::Nearest { k } => Some(k),
             Connection::Radius { .. } => None,
@@ -89,6 +92,16 @@ impl Connection {
             }
         }
     }
+}
+
+/// What [`Prm::grow`] did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Growth {
+    /// `None` when the roadmap has the milestones asked for; else why the termination stopped
+    /// it first.
+    pub stop: Option<Stop>,
+    /// The state and motion checks made.
+    pub collision_checks: u64,
 }
 
 /// The most milestones a goal region adds, as for RRT-Connect's goal tree.
@@ -214,6 +227,51 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         &self.out[id as usize]
     }
 
+    /// Grows the roadmap to `milestones` milestones before any query (OMPL's `growRoadmap`),
+    /// from the roadmap's own sample stream, which later queries go on with. It stops early if
+    /// `termination` (which must be bounded: the free space may be empty) says so; what it grew
+    /// stays either way.
+    pub fn grow<V: Validity<S>>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        milestones: usize,
+        termination: &Termination,
+    ) -> Result<Growth, PlanError>
+    where
+        Q: StateSampler<S>,
+    {
+        self.check_connection()?;
+        if !termination.is_bounded() {
+            return Err(PlanError::NoLimit);
+        }
+        let mut watch = Watch::start(termination);
+        let mut rng = self.rng.take().unwrap_or_else(|| ChaCha8Rng::seed_from_u64(self.seed));
+        let mut checks = 0;
+        let stop = loop {
+            if self.node_count() >= milestones {
+                break None;
+            }
+            if let Some(stop) = watch.next_iteration() {
+                break Some(stop);
+            }
+            let mut draw = Draw::watched(&mut rng, &mut checks, &watch);
+            let Some(state) = self.sampler.sample(space, validity, &mut draw) else {
+                match watch.interrupted() {
+                    Some(stop) => break Some(stop),
+                    None => continue,
+                }
+            };
+            checks += 1;
+            if admit(space, validity, &state).is_ok() {
+                self.add(space, validity, state, &watch);
+            }
+        };
+        self.rng = Some(rng);
+        let collision_checks = checks + std::mem::take(&mut self.checks);
+        Ok(Growth { stop, collision_checks })
+    }
+
     /// Forgets the roadmap (as [`Planner::clear`]).
     pub fn clear(&mut self) {
         self.reset();
@@ -254,7 +312,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
 
     /// The neighbours a new milestone at `state` joins, in `direction`.
     fn neighbours(&self, space: &S, state: &S::State, direction: Direction) -> Vec<(u32, f64)> {
-        match self.connection.count(self.nearest.len() + 1, space.dimension()) {
+        match self.connection.neighbour_count(self.nearest.len() + 1, space.dimension()) {
             Some(k) => self.nearest.k_nearest(space, state, k, direction),
             None => {
                 let Connection::Radius { radius } = self.connection else { unreachable!("a radius rule") };

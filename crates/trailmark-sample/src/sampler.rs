@@ -13,7 +13,10 @@
 //! - [`Gaussian`] (Boor, Overmars and van der Stappen 1999): two states near each other, one
 //!   free and one not; the free one lies near an obstacle's surface.
 //!
-//! Each draws such a state with probability `share` and a uniform one otherwise, so the trees
+//! [`Halton`] draws the deterministic Halton sequence instead, for spaces that map the unit cube
+//! ([`UnitCube`]): evener than independent draws, as OMPL's quasi-random samplers.
+//!
+//! Each of the first two draws such a state with probability `share` and a uniform one otherwise, so the trees
 //! keep their spread over open space; after `attempts` failed tries it draws uniformly too.
 //! Every validity check a sampler makes is counted in the plan's collision checks. Users
 //! implement [`StateSampler`] for their own strategies.
@@ -35,12 +38,14 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use std::sync::atomic::{AtomicU64, Ordering};
+
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 
 use thiserror::Error;
 
-use crate::space::StateSpace;
+use crate::space::{StateSpace, UnitCube};
 use crate::termination::Watch;
 use crate::validity::Validity;
 
@@ -129,6 +134,66 @@ pub struct Uniform;
 impl<S: StateSpace> StateSampler<S> for Uniform {
     fn sample<V: Validity<S>>(&self, space: &S, _: &V, draw: &mut Draw<'_>) -> Option<S::State> {
         Some(space.sample(draw.rng()))
+    }
+}
+
+/// The primes that serve as [`Halton`]'s bases, one per coordinate.
+const HALTON_BASES: [u64; 32] = [
+    2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103,
+    107, 109, 113, 127, 131,
+];
+
+/// The Halton sequence (Halton 1960): element `i` has coordinate `j` the radical inverse of `i`
+/// in the `j`-th prime (2, 3, 5, ...), mapped onto the space by [`UnitCube::state_from_unit`].
+/// Deterministic, and more even than independent samples in few dimensions; the seed is not
+/// used. It counts its own elements, so a roadmap grown in two steps draws what one step of the
+/// same total would. Up to 32 dimensions; beyond that it draws nothing (`None`).
+#[derive(Debug, Default)]
+pub struct Halton {
+    /// Elements drawn so far (an atomic, so that a planner sharing it stays `Sync`).
+    drawn: AtomicU64,
+}
+
+impl Halton {
+    /// The sequence from its first element (element 1: element 0 is the cube's corner).
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The sequence after its first `drawn` elements, to go on where a saved one stopped.
+    pub fn after(drawn: u64) -> Self {
+        Halton { drawn: AtomicU64::new(drawn) }
+    }
+
+    /// The elements drawn so far.
+    pub fn drawn(&self) -> u64 {
+        self.drawn.load(Ordering::Relaxed)
+    }
+}
+
+impl Clone for Halton {
+    fn clone(&self) -> Self {
+        Halton::after(self.drawn())
+    }
+}
+
+/// The radical inverse of `i` in `base`: the `i`-th element of the van der Corput sequence.
+fn radical_inverse(mut i: u64, base: u64) -> f64 {
+    let (mut result, mut scale) = (0.0, 1.0 / base as f64);
+    while i > 0 {
+        result += (i % base) as f64 * scale;
+        i /= base;
+        scale /= base as f64;
+    }
+    result
+}
+
+impl<S: UnitCube> StateSampler<S> for Halton {
+    fn sample<V: Validity<S>>(&self, space: &S, _: &V, _: &mut Draw<'_>) -> Option<S::State> {
+        let bases = HALTON_BASES.get(..space.dimension())?;
+        let i = self.drawn.fetch_add(1, Ordering::Relaxed) + 1;
+        let unit: Vec<f64> = bases.iter().map(|&b| radical_inverse(i, b)).collect();
+        Some(space.state_from_unit(&unit))
     }
 }
 

@@ -31,6 +31,7 @@ use nalgebra::SVector;
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use trailmark_core::dubins::{DubinsPath, RadiusOutOfScale, check_extent};
 use trailmark_core::geometry::{Point, Pose};
@@ -137,10 +138,50 @@ pub trait StateSpace {
     /// The coordinates of a state, for results and pictures.
     fn coordinates(&self, state: &Self::State) -> Vec<f64>;
 
+    /// The state with these [`coordinates`](Self::coordinates), for loading saved states:
+    /// `None` if they are not [`dimension`](Self::dimension) finite numbers, or if the space
+    /// cannot build states from coordinates (the default). Bounds are not checked here.
+    fn state_from_coordinates(&self, coordinates: &[f64]) -> Option<Self::State> {
+        let _ = coordinates;
+        None
+    }
+
     /// A lower bound on `distance(a, b)` (and on `distance(b, a)`) from the positions only: the
     /// straight-line distance between `position(a)` and `position(b)` in `D` dimensions. What
     /// lets a k-d tree over positions answer exact nearest-neighbour queries.
     fn position<const D: usize>(&self, state: &Self::State) -> Option<[f64; D]>;
+}
+
+/// A space whose states are the image of the unit cube `[0, 1)^d` (`d` its
+/// [`dimension`](StateSpace::dimension)): what lets a deterministic low-discrepancy sequence
+/// such as [`Halton`](crate::sampler::Halton) cover it evenly.
+pub trait UnitCube: StateSpace {
+    /// The state at `unit` (`d` coordinates in `[0, 1)`): an affine map of each coordinate onto
+    /// its bounds, so uniform points of the cube give uniform states.
+    fn state_from_unit(&self, unit: &[f64]) -> Self::State;
+}
+
+/// The finite coordinates `c` if there are exactly `N`.
+fn finite<const N: usize>(c: &[f64]) -> Option<[f64; N]> {
+    let c: [f64; N] = c.try_into().ok()?;
+    c.iter().all(|x| x.is_finite()).then_some(c)
+}
+
+/// The point at `unit` (at least two coordinates in `[0, 1)`) of `bounds`.
+fn unit_point(bounds: &Bounds, unit: &[f64]) -> Point {
+    let (lo, hi) = (bounds.min(), bounds.max());
+    Point::new(lo.x + unit[0] * (hi.x - lo.x), lo.y + unit[1] * (hi.y - lo.y))
+}
+
+/// The pose at `unit` (three coordinates in `[0, 1)`) of `bounds`, the heading in `[-π, π)`.
+fn unit_pose(bounds: &Bounds, unit: &[f64]) -> Pose {
+    Pose::new(unit_point(bounds, unit).coords, (2.0 * unit[2] - 1.0) * PI)
+}
+
+/// The pose at coordinates `[x, y, heading]`.
+fn pose_at(c: &[f64]) -> Option<Pose> {
+    let [x, y, heading] = finite::<3>(c)?;
+    Some(Pose::new(Point::new(x, y).coords, heading))
 }
 
 /// A draw from the standard normal distribution.
@@ -148,8 +189,10 @@ fn gaussian(rng: &mut ChaCha8Rng) -> f64 {
     StandardNormal.sample(rng)
 }
 
-/// The plane region of a [`Bounds`]: states are points, distances Euclidean.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The plane region of a [`Bounds`]: states are points, distances Euclidean. Saved as
+/// `{"bounds": [xmin, ymin, xmax, ymax]}`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct R2 {
     bounds: Bounds,
 }
@@ -255,6 +298,10 @@ impl StateSpace for R2 {
         vec![p.x, p.y]
     }
 
+    fn state_from_coordinates(&self, c: &[f64]) -> Option<Point> {
+        finite::<2>(c).map(|[x, y]| Point::new(x, y))
+    }
+
     fn position<const D: usize>(&self, p: &Point) -> Option<[f64; D]> {
         planar(*p)
     }
@@ -340,6 +387,10 @@ impl<const N: usize> StateSpace for Rn<N> {
         s.iter().copied().collect()
     }
 
+    fn state_from_coordinates(&self, c: &[f64]) -> Option<SVector<f64, N>> {
+        finite::<N>(c).map(SVector::from)
+    }
+
     fn position<const D: usize>(&self, s: &SVector<f64, N>) -> Option<[f64; D]> {
         (D == N).then(|| std::array::from_fn(|i| s[i]))
     }
@@ -359,8 +410,9 @@ fn sample_pose(bounds: &Bounds, rng: &mut ChaCha8Rng) -> Pose {
 /// Poses in a plane region (position and heading), as OMPL's SE(2): the distance is the
 /// Euclidean distance of the positions plus `heading_weight` times the smaller angle between
 /// the headings; motions move the position in a straight line and turn the heading the short
-/// way round.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// way round. Saved as `{"bounds", "heading_weight"}`, checked on loading.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "Se2Document", into = "Se2Document")]
 pub struct Se2 {
     bounds: Bounds,
     heading_weight: f64,
@@ -429,6 +481,10 @@ impl StateSpace for Se2 {
         vec![s.translation.x, s.translation.y, s.rotation.angle()]
     }
 
+    fn state_from_coordinates(&self, c: &[f64]) -> Option<Pose> {
+        pose_at(c)
+    }
+
     fn position<const D: usize>(&self, s: &Pose) -> Option<[f64; D]> {
         planar(Point::from(s.translation.vector))
     }
@@ -436,8 +492,9 @@ impl StateSpace for Se2 {
 
 /// Poses of a car that only drives forward and turns no tighter than `turning_radius`: the
 /// distance from `a` to `b` is the length of the shortest Dubins path (not symmetric), and
-/// motions follow it.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// motions follow it. Saved as `{"bounds", "turning_radius"}`, checked on loading.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "DubinsDocument", into = "DubinsDocument")]
 pub struct Dubins {
     bounds: Bounds,
     turning_radius: f64,
@@ -523,7 +580,77 @@ impl StateSpace for Dubins {
         vec![s.translation.x, s.translation.y, s.rotation.angle()]
     }
 
+    fn state_from_coordinates(&self, c: &[f64]) -> Option<Pose> {
+        pose_at(c)
+    }
+
     fn position<const D: usize>(&self, s: &Pose) -> Option<[f64; D]> {
         planar(Point::from(s.translation.vector))
+    }
+}
+
+impl UnitCube for R2 {
+    fn state_from_unit(&self, unit: &[f64]) -> Point {
+        unit_point(&self.bounds, unit)
+    }
+}
+
+impl<const N: usize> UnitCube for Rn<N> {
+    fn state_from_unit(&self, unit: &[f64]) -> SVector<f64, N> {
+        SVector::from_fn(|i, _| self.low[i] + unit[i] * (self.high[i] - self.low[i]))
+    }
+}
+
+impl UnitCube for Se2 {
+    fn state_from_unit(&self, unit: &[f64]) -> Pose {
+        unit_pose(&self.bounds, unit)
+    }
+}
+
+impl UnitCube for Dubins {
+    fn state_from_unit(&self, unit: &[f64]) -> Pose {
+        unit_pose(&self.bounds, unit)
+    }
+}
+
+/// A saved [`Se2`].
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Se2Document {
+    bounds: Bounds,
+    heading_weight: f64,
+}
+
+impl TryFrom<Se2Document> for Se2 {
+    type Error = SpaceError;
+    fn try_from(d: Se2Document) -> Result<Self, SpaceError> {
+        Se2::with_heading_weight(d.bounds, d.heading_weight)
+    }
+}
+
+impl From<Se2> for Se2Document {
+    fn from(s: Se2) -> Self {
+        Se2Document { bounds: s.bounds, heading_weight: s.heading_weight }
+    }
+}
+
+/// A saved [`Dubins`].
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct DubinsDocument {
+    bounds: Bounds,
+    turning_radius: f64,
+}
+
+impl TryFrom<DubinsDocument> for Dubins {
+    type Error = SpaceError;
+    fn try_from(d: DubinsDocument) -> Result<Self, SpaceError> {
+        Dubins::new(d.bounds, d.turning_radius)
+    }
+}
+
+impl From<Dubins> for DubinsDocument {
+    fn from(s: Dubins) -> Self {
+        DubinsDocument { bounds: s.bounds, turning_radius: s.turning_radius }
     }
 }

@@ -148,3 +148,31 @@ fn a_walled_off_goal_gives_no_solution_and_bad_settings_are_errors() {
         assert!(matches!(result, Err(PlanError::InvalidOption { .. })), "{connection:?}");
     }
 }
+
+/// `grow` builds the roadmap before any query, from the stream the queries go on with: a
+/// roadmap grown then queried with no further iterations answers from what was grown, and a
+/// termination stops the growth early.
+#[test]
+fn a_roadmap_grown_first_answers_queries_without_growing() {
+    let world = wall_world();
+    let checker = world.checker();
+    let space = R2::new(world.bounds());
+    let mut prm = Prm::star(KdNearest::<R2, 2>::new(&space).unwrap()).with_seed(8);
+    let growth = prm.grow(&space, &checker, 500, &Termination::iterations(100_000)).unwrap();
+    assert_eq!(growth.stop, None);
+    assert_eq!(prm.node_count(), 500);
+    assert!(growth.collision_checks >= 500);
+    edges_are_valid(&prm, &space, &checker);
+    let problem = Problem::new(&space, &checker, Point::new(1.0, 1.0), Point::new(9.0, 1.0));
+    let plan = prm.solve(&problem, &Termination::iterations(0)).unwrap();
+    let optimum = 2.0 * 58f64.sqrt() + 2.0;
+    assert!(plan.cost().is_some_and(|c| c >= optimum - 1e-9 && c < 1.2 * optimum), "{plan:?}");
+    assert_eq!(prm.node_count(), 502, "only the start and the goal were added");
+    let stopped = prm.grow(&space, &checker, 10_000, &Termination::iterations(50)).unwrap();
+    assert_eq!(stopped.stop, Some(Stop::IterationLimit));
+    assert!(prm.node_count() <= 552);
+    assert!(matches!(
+        prm.grow(&space, &checker, 10, &Termination::default().and_target_cost(1.0)),
+        Err(PlanError::NoLimit)
+    ));
+}

@@ -252,3 +252,31 @@ fn bridge_sampling_gets_rrt_connect_through_six_doors() {
     assert_eq!(bridged, queries as usize, "bridge sampling solved {bridged} of {queries}");
     assert!(uniform <= bridged, "uniform {uniform}, bridge {bridged}");
 }
+
+/// Halton's first elements are the van der Corput sequences in bases 2 and 3 (computed by hand
+/// from the definition), mapped onto the bounds; a sequence resumed after `k` elements draws
+/// what the whole one draws from element `k + 1`; beyond 32 dimensions it draws nothing.
+#[test]
+fn halton_is_the_van_der_corput_sequence_per_axis_and_resumes() {
+    use trailmark_sample::Halton;
+    use trailmark_sample::space::Rn;
+    let space = R2::new(trailmark_core::world::Bounds::new(0.0, 0.0, 2.0, 6.0).unwrap());
+    let world = narrow();
+    let checker = world.checker();
+    let (mut rng, mut checks) = (ChaCha8Rng::seed_from_u64(0), 0);
+    let halton = Halton::new();
+    let mut draw = Draw::new(&mut rng, &mut checks);
+    let got: Vec<Point> = (0..4).map(|_| halton.sample(&space, &checker, &mut draw).unwrap()).collect();
+    // Base 2: 1/2, 1/4, 3/4, 1/8; base 3: 1/3, 2/3, 1/9, 4/9.
+    let want = [(0.5, 1.0 / 3.0), (0.25, 2.0 / 3.0), (0.75, 1.0 / 9.0), (0.125, 4.0 / 9.0)];
+    for (p, (u, v)) in got.iter().zip(want) {
+        assert!((p.x - 2.0 * u).abs() < 1e-12 && (p.y - 6.0 * v).abs() < 1e-12, "{p}");
+    }
+    assert_eq!(halton.drawn(), 4);
+    let resumed = Halton::after(2);
+    assert_eq!(resumed.sample(&space, &checker, &mut draw), Some(got[2]));
+    let wide = Rn::<33>::new([0.0; 33], [1.0; 33]).unwrap();
+    let always = |_: &<Rn<33> as StateSpace>::State| true;
+    let validity = trailmark_sample::Sampled::new(always, 0.01).unwrap();
+    assert_eq!(Halton::new().sample(&wide, &validity, &mut draw), None);
+}

@@ -141,3 +141,31 @@ fn tiny_distances_do_not_underflow_to_zero() {
     assert!(d > 0.0 && (d - 17f64.sqrt() * 1e-300).abs() < 1e-310, "{d}");
     assert_eq!(r2.distance(&a, &a), 0.0);
 }
+
+/// States go back from their coordinates, and spaces save and load, refusing bad settings.
+#[test]
+fn coordinates_and_saved_spaces_round_trip() {
+    use trailmark_core::world::Bounds;
+    use trailmark_sample::space::{Dubins, R2, Rn, Se2, StateSpace};
+    let bounds = Bounds::new(0.0, 0.0, 10.0, 5.0).unwrap();
+    let dubins = Dubins::new(bounds, 1.5).unwrap();
+    let pose = trailmark_core::geometry::Pose::new(trailmark_core::geometry::Vector::new(2.0, 3.0), 1.25);
+    let back = dubins.state_from_coordinates(&dubins.coordinates(&pose)).unwrap();
+    assert!((back.rotation.angle() - 1.25).abs() < 1e-12 && back.translation == pose.translation);
+    assert_eq!(dubins.state_from_coordinates(&[1.0, f64::NAN, 0.0]), None);
+    assert_eq!(dubins.state_from_coordinates(&[1.0, 2.0]), None);
+    let r2 = R2::new(bounds);
+    assert_eq!(r2.state_from_coordinates(&[1.0, 2.0]), Some(trailmark_core::geometry::Point::new(1.0, 2.0)));
+    let rn = Rn::<3>::new([0.0; 3], [1.0; 3]).unwrap();
+    let q = rn.state_from_coordinates(&[0.1, 0.2, 0.3]).unwrap();
+    assert_eq!(rn.coordinates(&q), [0.1, 0.2, 0.3]);
+
+    let text = serde_json::to_string(&dubins).unwrap();
+    assert_eq!(serde_json::from_str::<Dubins>(&text).unwrap(), dubins);
+    let bad = text.replace("1.5", "-1.5");
+    assert!(serde_json::from_str::<Dubins>(&bad).unwrap_err().to_string().contains("turning radius"));
+    let se2 = Se2::with_heading_weight(bounds, 2.0).unwrap();
+    assert_eq!(serde_json::from_str::<Se2>(&serde_json::to_string(&se2).unwrap()).unwrap(), se2);
+    assert!(serde_json::from_str::<Se2>(r#"{"bounds": [0, 0, 1, 1], "heading_weight": 0}"#).is_err());
+    assert_eq!(serde_json::from_str::<R2>(&serde_json::to_string(&r2).unwrap()).unwrap(), r2);
+}

@@ -19,8 +19,8 @@
 // ...]}} in place of "world", queries of 2n numbers (start, then goal), paths of n-vectors.
 // States and motions are then checked by the same tests trailmark's BoxWorld makes, written here
 // in C++: a state inside no box's open interior, a segment entering none (the slab test). The
-// planners: rrt_connect, rrt_star, informed_rrt_star, bit_star and prm_star (here through
-// solve(), each run its own roadmap, under the time limit).
+// planners: rrt_connect, rrt_star, informed_rrt_star, bit_star and prm_star (through solve(),
+// each run its own roadmap, under the time limit; or, given a roadmap_size, multi-query as below).
 //
 // `prm_star` is multi-query: one roadmap of `roadmap_size` milestones is grown first (printed as
 // "build": {"time_s", "milestones", "edges", "collision_checks"}), then each query joins its
@@ -244,6 +244,7 @@ json path_of(og::PathGeometric &path, unsigned n) {
 
 // PRMstar, multi-query: one roadmap, then every query on it.
 int run_prm(const json &input, const ob::SpaceInformationPtr &si, const ob::StateSpacePtr &space) {
+    const unsigned n = space->getDimension();
     unsigned long size = input.value("roadmap_size", 0UL);
     double time_limit = input.value("time_limit_s", 10.0);
     const auto &queries = input.at("queries");
@@ -272,10 +273,10 @@ int run_prm(const json &input, const ob::SpaceInformationPtr &si, const ob::Stat
     ob::ScopedState<> start(space), goal(space);
     for (size_t q = 0; q < queries.size(); ++q) {
         std::vector<double> ends = queries[q].get<std::vector<double>>();
-        start[0] = ends[0];
-        start[1] = ends[1];
-        goal[0] = ends[2];
-        goal[1] = ends[3];
+        for (unsigned i = 0; i < n; ++i) {
+            start[i] = ends[i];
+            goal[i] = ends[n + i];
+        }
         g_checks = 0;
         clock = std::chrono::steady_clock::now();
         ob::PathPtr path = prm->query(start.get(), goal.get());
@@ -291,7 +292,7 @@ int run_prm(const json &input, const ob::SpaceInformationPtr &si, const ob::Stat
         if (path) {
             auto *geometric = path->as<og::PathGeometric>();
             row["cost"] = geometric->length();
-            row["path"] = path_of(*geometric, 2);
+            row["path"] = path_of(*geometric, n);
         } else {
             row["cost"] = nullptr;
             row["path"] = json::array();
@@ -387,7 +388,9 @@ int main(int argc, char **argv) {
     si->setup();
 
     std::string name = input.at("planner").get<std::string>();
-    if (name == "prm_star" && checker != nullptr) {
+    // A polygon world's PRMstar always builds one roadmap for its queries; a box world's does
+    // when it is given a roadmap size (otherwise each run is its own solve()).
+    if (name == "prm_star" && (checker != nullptr || input.value("roadmap_size", 0UL) > 0)) {
         int code = run_prm(input, si, space);
         tm_checker_free(checker);
         return code;

@@ -3,7 +3,7 @@
 //! time over seeded queries, RRT*'s and PRM*'s cost after a fixed time, every path re-checked
 //! by dense samples.
 
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use serde::Serialize;
 use trailmark::sample::benchmark::benchmark;
@@ -14,6 +14,9 @@ use trailmark::sample::{
 
 /// RRT-Connect's iteration limit per query.
 const CONNECT_ITERATIONS: u64 = 10_000;
+
+/// The milestones of the PRM* roadmap built before its queries.
+const ROADMAP_SIZE: usize = 2_000;
 
 /// One planner in one world.
 #[derive(Debug, Clone, Serialize)]
@@ -141,7 +144,20 @@ fn ompl_runs<const N: usize>(
     (runs, max_iterations, limit): (usize, u64, Duration),
     seed: u64,
 ) -> Result<Vec<(Option<Vec<<Rn<N> as StateSpace>::State>>, f64)>, String> {
-    let input = crate::ompl::Input {
+    let input = ompl_input(world, planner, ends, (runs, max_iterations, limit), seed, 0);
+    Ok(paths_and_times(&driver.run(&input)?))
+}
+
+/// The driver's input for `planner` on `ends`; a roadmap of `roadmap_size` first if not 0.
+fn ompl_input<'a, const N: usize>(
+    world: &BoxWorld<N>,
+    planner: &'a str,
+    ends: &[(<Rn<N> as StateSpace>::State, <Rn<N> as StateSpace>::State)],
+    (runs, max_iterations, limit): (usize, u64, Duration),
+    seed: u64,
+    roadmap_size: usize,
+) -> crate::ompl::Input<'a> {
+    crate::ompl::Input {
         world: None,
         boxes: Some(ompl_boxes(world)),
         planner,
@@ -150,18 +166,91 @@ fn ompl_runs<const N: usize>(
         seed,
         max_iterations,
         time_limit_s: limit.as_secs_f64(),
-        roadmap_size: 0,
-    };
-    let out = driver.run(&input)?;
-    Ok(out
-        .iter()
+        roadmap_size,
+    }
+}
+
+/// The driver's runs as paths (exact ones) and times in ms.
+#[allow(clippy::type_complexity)]
+fn paths_and_times<const N: usize>(
+    runs: &[crate::ompl::Run],
+) -> Vec<(Option<Vec<<Rn<N> as StateSpace>::State>>, f64)> {
+    runs.iter()
         .map(|r| {
             let path = r
                 .exact()
                 .then(|| r.path.iter().map(|p| <Rn<N> as StateSpace>::State::from_fn(|i, _| p[i])).collect());
             (path, r.time_s * 1e3)
         })
-        .collect())
+        .collect()
+}
+
+/// PRM* multi-query: a roadmap of [`ROADMAP_SIZE`] milestones, then every query on it (a query
+/// adds its start and goal and searches, growing nothing), trailmark's and OMPL's. Two rows per
+/// library: the build (one run) and the queries.
+fn roadmap_rows<const N: usize>(
+    (name, world): (&str, &BoxWorld<N>),
+    kd: KdNearest<Rn<N>, N>,
+    ends: &[(<Rn<N> as StateSpace>::State, <Rn<N> as StateSpace>::State)],
+    seed: u64,
+    ompl: Option<&crate::ompl::Driver>,
+) -> Result<Vec<BoxRow>, String> {
+    let err = |e: &dyn std::fmt::Display| format!("{name}: PRM* roadmap: {e}");
+    let space = world.space();
+    let mut prm = Prm::star(kd).with_seed(seed);
+    let clock = Instant::now();
+    let growth = prm
+        .grow(&space, world, ROADMAP_SIZE, &Termination::time(Duration::from_secs(60)))
+        .map_err(|e| err(&e))?;
+    let build_ms = clock.elapsed().as_secs_f64() * 1e3;
+    if growth.stop.is_some() {
+        return Err(err(&format!("grew {} of {ROADMAP_SIZE} milestones in 60 s", prm.node_count())));
+    }
+    let mut answers = Vec::new();
+    for (a, b) in ends {
+        let clock = Instant::now();
+        let plan = prm
+            .solve(&Problem::new(&space, world, *a, *b), &Termination::iterations(0))
+            .map_err(|e| err(&e))?;
+        answers.push((plan.path().map(<[_]>::to_vec), clock.elapsed().as_secs_f64() * 1e3));
+    }
+    let build = format!("PRM* build ({ROADMAP_SIZE} milestones)");
+    let query = "PRM* query (on that roadmap)".to_string();
+    let mut rows = vec![
+        BoxRow {
+            world: name.into(),
+            library: "trailmark".into(),
+            planner: build.clone(),
+            runs: 1,
+            solved: 1,
+            median_ms: build_ms,
+            median_cost_ratio: f64::NAN,
+            invalid: 0,
+        },
+        row((name, "trailmark", query.clone()), &answers, world, ends),
+    ];
+    if let Some(driver) = ompl {
+        let input = ompl_input(world, "prm_star", ends, (1, 0, Duration::from_secs(60)), seed, ROADMAP_SIZE);
+        let (built, runs) = driver.run_roadmap(&input)?;
+        if built.milestones < ROADMAP_SIZE as u64 {
+            return Err(err(&format!(
+                "OMPL's PRMstar grew {} of {ROADMAP_SIZE} milestones",
+                built.milestones
+            )));
+        }
+        rows.push(BoxRow {
+            world: name.into(),
+            library: "OMPL".into(),
+            planner: build,
+            runs: 1,
+            solved: 1,
+            median_ms: built.time_s * 1e3,
+            median_cost_ratio: f64::NAN,
+            invalid: 0,
+        });
+        rows.push(row((name, "OMPL", query), &paths_and_times::<N>(&runs), world, ends));
+    }
+    Ok(rows)
 }
 
 /// The rows of one world.
@@ -203,6 +292,7 @@ fn world_rows<const N: usize>(
         )?;
         rows.push(row((name, "OMPL", connect), &theirs, world, &ends));
     }
+    rows.extend(roadmap_rows((name, world), kd.clone(), &ends, seed, ompl)?);
     // The optimizing planners: seeded runs on one query, each for `limit`.
     let one = [ends[0]];
     let problem = Problem::new(&space, world, one[0].0, one[0].1);
@@ -260,7 +350,9 @@ pub fn markdown(rows: &[BoxRow]) -> String {
     let mut s = String::from(
         "### Rⁿ among random boxes (unit hypercube, exact box checks)\n\n\
          RRT-Connect over seeded queries from near one corner to near the other; RRT* and PRM* for a \
-         fixed time on one query. Costs over the straight line between the ends (a lower bound); every \
+         fixed time on one query; PRM* also multi-query, one roadmap built first and every query on it \
+         (its build row's time is the build; its query rows' time is one query's, joining the ends and \
+         searching). Costs over the straight line between the ends (a lower bound); every \
          path re-checked every 1e-3. With `--with-ompl`, OMPL's planners on the same queries, with the \
          same box tests written in C++ (its planners' time is `solve` alone).\n\n\
          | world | library | planner | runs | solved | median ms | median cost / straight line | invalid |\n\
@@ -268,8 +360,19 @@ pub fn markdown(rows: &[BoxRow]) -> String {
     );
     for r in rows {
         s.push_str(&format!(
-            "| {} | {} | {} | {} | {} | {:.3} | {:.4} | {} |\n",
-            r.world, r.library, r.planner, r.runs, r.solved, r.median_ms, r.median_cost_ratio, r.invalid
+            "| {} | {} | {} | {} | {} | {:.3} | {} | {} |\n",
+            r.world,
+            r.library,
+            r.planner,
+            r.runs,
+            r.solved,
+            r.median_ms,
+            if r.median_cost_ratio.is_nan() {
+                "–".to_string()
+            } else {
+                format!("{:.4}", r.median_cost_ratio)
+            },
+            r.invalid
         ));
     }
     s.push('\n');

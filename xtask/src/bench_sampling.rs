@@ -101,9 +101,9 @@ impl SingleQuery {
 /// The worlds where RRT-Connect also plans for a Dubins car.
 const DUBINS_WORLDS: [&str; 2] = ["convex-30", "bug-trap"];
 
-/// The sampling planners `--only` can name.
-pub const PLANNERS: [&str; 5] =
-    ["rrt", "rrt_connect", "rrt_connect_bridge", "rrt_star", crate::bench_prm::NAME];
+/// The sampling planners `--only` can name, and `boxes` for the Rⁿ box worlds.
+pub const PLANNERS: [&str; 6] =
+    ["rrt", "rrt_connect", "rrt_connect_bridge", "rrt_star", crate::bench_prm::NAME, "boxes"];
 
 /// A generated world and how its queries are drawn.
 pub(crate) struct World {
@@ -531,7 +531,7 @@ pub fn bench_sampling(
     } else {
         Vec::new()
     };
-    let boxes = if only.is_empty() {
+    let boxes = if wanted("boxes") {
         progress.note("R4 and R8 among random boxes");
         let box_queries = match suite {
             Suite::Quick => 50,

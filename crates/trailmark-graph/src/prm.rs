@@ -371,9 +371,8 @@ impl<S: PlanarSpace> Prm<S> {
             draws += 1;
             if let Some(state) = self.draw()
                 && self.is_free(&state)
-                && self.find(&state).is_none()
+                && self.add_node(state)?.1
             {
-                self.add_node(state)?;
                 added += 1;
             }
         }
@@ -386,10 +385,7 @@ impl<S: PlanarSpace> Prm<S> {
         if !self.is_free(&state) {
             return Err(PrmError::Blocked(self.space.coordinates(&state)));
         }
-        match self.find(&state) {
-            Some(node) => Ok(node),
-            None => self.add_node(state),
-        }
+        Ok(self.add_node(state)?.0)
     }
 
     /// The graph with `start` and `goal` joined to their neighbours (by the roadmap's
@@ -623,12 +619,20 @@ impl<S: PlanarSpace> Prm<S> {
         }
     }
 
-    fn add_node(&mut self, state: S::State) -> Result<u32, PrmError> {
+    /// Adds `state` as a node joined to its neighbours: its index and `true`, or the index of
+    /// the node already at `state` and `false`.
+    fn add_node(&mut self, state: S::State) -> Result<(u32, bool), PrmError> {
+        let n = self.node_count() + 1;
+        let into = self.neighbours_of(&state, Direction::ToQuery, n);
+        // A node at `state` is at distance 0, so it leads the neighbours (every rule keeps the
+        // nearest once the roadmap has a node); the search for neighbours finds it too.
+        let mut at_zero = into.iter().take_while(|&&(_, d)| d == 0.0);
+        if let Some(&(v, _)) = at_zero.find(|&&(v, _)| *self.nearest.state(v) == state) {
+            return Ok((v, false));
+        }
         if self.node_count() >= MAX_NODES {
             return Err(PrmError::TooManyNodes);
         }
-        let n = self.node_count() + 1;
-        let into = self.neighbours_of(&state, Direction::ToQuery, n);
         let out = if S::SYMMETRIC { Vec::new() } else { self.neighbours_of(&state, Direction::FromQuery, n) };
         let u = self.push_node(state);
         for (v, _) in into {
@@ -637,7 +641,7 @@ impl<S: PlanarSpace> Prm<S> {
         for (v, _) in out {
             self.try_edge(u, v);
         }
-        Ok(u)
+        Ok((u, true))
     }
 
     /// Stores `state` as a new node without edges (its own component) and returns its index.

@@ -21,6 +21,7 @@
 // Integer casts of user-derived values are checked conversions here, not silent truncation.
 #![deny(clippy::cast_possible_truncation)]
 
+mod box_roadmap;
 mod sampling;
 
 pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
@@ -202,11 +203,14 @@ pub enum SolveError {
         /// The planner.
         planner: &'static str,
     },
-    /// A graph planner on a box world, which only the sampling planners take.
-    #[error("a box world takes the sampling planners (rrt, rrt_connect, rrt_star), not \"{planner}\"")]
-    NeedsSampling {
-        /// The planner.
-        planner: &'static str,
+    /// A roadmap over a box world that could not draw the samples asked for: the free space is
+    /// empty or very small.
+    #[error("found only {added} of {requested} free samples for the roadmap")]
+    SamplingExhausted {
+        /// Samples asked for.
+        requested: usize,
+        /// Samples found.
+        added: usize,
     },
     /// `"space": "rn"` over a world that is not of boxes.
     #[error("\"space\": \"rn\" plans in a box world (\"world\": {{\"boxes\": ...}})")]
@@ -391,7 +395,10 @@ fn solve_inner(
             Err(SolveError::InvalidBoxes("cannot be drawn: pictures are of grid and polygon worlds".into()))
         }
         (World::Boxes(world), Some(spec)) => sampling::solve_boxes(problem, world, spec),
-        (World::Boxes(_), None) => Err(SolveError::NeedsSampling { planner: problem.planner.name() }),
+        (World::Boxes(_), None) if picture.is_some() => {
+            Err(SolveError::InvalidBoxes("cannot be drawn: pictures are of grid and polygon worlds".into()))
+        }
+        (World::Boxes(world), None) => box_roadmap::solve_box_roadmap(problem, world),
     }
 }
 
@@ -646,14 +653,7 @@ fn solve_dubins(
     let built = clock.elapsed();
     let result =
         search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed().saturating_sub(built))?;
-    let poses: Vec<Pose> = result
-        .path
-        .iter()
-        .filter_map(|w| match w {
-            Waypoint::Point(c) => space.state_from_coordinates(c),
-            Waypoint::Cell(_) => None,
-        })
-        .collect();
+    let poses: Vec<Pose> = states_of(&space, &result);
     if let Some(cost) = result.cost {
         check_dubins(&world.checker(), &poses, radius, cost)?;
     }
@@ -714,6 +714,15 @@ fn dubins_curve(poses: &[Pose], radius: f64) -> Vec<Point> {
         curve.extend(samples.iter().map(|p| Point::from(p.translation.vector)));
     }
     curve
+}
+
+/// The states of a result's path in `space` (its waypoints' coordinates).
+fn states_of<S: StateSpace>(space: &S, result: &SolveResult) -> Vec<S::State> {
+    let state = |w: &Waypoint| match w {
+        Waypoint::Point(c) => space.state_from_coordinates(c),
+        Waypoint::Cell(_) => None,
+    };
+    result.path.iter().filter_map(state).collect()
 }
 
 /// The point of a waypoint (the position of a pose).

@@ -371,6 +371,33 @@ fn turning_radii_far_beyond_the_world_are_refused() {
     assert_ne!(result.status, Status::Solved, "a loop of 88,000 in a world of 10");
 }
 
+/// `"graph": "prm"` over a box world: a PRM* roadmap of the asked samples, searched by the
+/// problem's graph planner; the path goes over the slab, and Dijkstra and A* agree on its cost.
+#[test]
+fn box_worlds_take_a_prm_roadmap_and_every_graph_search() {
+    let mut costs = Vec::new();
+    for (planner, sampler) in [("astar", "uniform"), ("dijkstra", "uniform"), ("astar", "halton")] {
+        let problem = box_document(&format!(
+            r#""graph": "prm", "samples": 1500, "sampler": "{sampler}", "seed": 3,
+               "start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1], "planner": {{"name": "{planner}"}}"#
+        ));
+        let result = solve(&problem, ".").unwrap();
+        assert_eq!(result.status, Status::Solved, "{planner}, {sampler}");
+        let graph = result.stats.graph.as_ref().unwrap();
+        assert_eq!(graph.nodes, 1500);
+        let path = states(&result);
+        for p in &path {
+            assert!(!(p[0] > 0.4 && p[0] < 0.6 && p[2] < 0.8), "{p:?} in the slab");
+        }
+        let length: f64 =
+            path.windows(2).map(|m| (0..3).map(|i| (m[1][i] - m[0][i]).powi(2)).sum::<f64>().sqrt()).sum();
+        assert!((result.cost.unwrap() - length).abs() < 1e-9);
+        assert!(length >= 0.3 + 2.0 * (0.1f64.powi(2) + 0.7f64.powi(2)).sqrt() - 1e-9, "{length}");
+        costs.push(length);
+    }
+    assert!((costs[0] - costs[1]).abs() < 1e-9, "A* and Dijkstra on one roadmap: {costs:?}");
+}
+
 /// A 3-D box world: the unit cube with a slab across it, open above z = 0.8.
 fn box_document(rest: &str) -> Problem {
     let json = format!(
@@ -418,8 +445,17 @@ fn bad_box_documents_are_typed_errors() {
     let ends = r#""start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1]"#;
     type Expected = fn(&SolveError) -> bool;
     let cases: Vec<(String, Expected)> = vec![
-        (format!(r#"{ends}, "planner": {{"name": "astar"}}"#), |e| {
-            matches!(e, SolveError::NeedsSampling { .. })
+        (format!(r#"{ends}, "graph": "visibility", "planner": {{"name": "astar"}}"#), |e| {
+            matches!(e, SolveError::InvalidBoxes(_))
+        }),
+        (format!(r#"{ends}, "graph": "prm", "k": 5, "radius": 1, "planner": {{"name": "astar"}}"#), |e| {
+            matches!(e, SolveError::KAndRadius)
+        }),
+        (format!(r#"{ends}, "turning_radius": 1, "planner": {{"name": "dijkstra"}}"#), |e| {
+            matches!(e, SolveError::NotForGraph { .. })
+        }),
+        (r#""start": [0.5, 0.5, 0.5], "goal": [0.9, 0.5, 0.1], "graph": "prm", "planner": {"name": "astar"}"#.into(), |e| {
+            matches!(e, SolveError::Plan(PlanError::InvalidStart { .. }))
         }),
         (format!(r#"{ends}, "space": "r2", "planner": {{"name": "rrt"}}"#), |e| {
             matches!(e, SolveError::InvalidBoxes(_))

@@ -128,19 +128,26 @@ pub(super) fn solve_boxes(
     if spec.smooth.is_some() {
         return Err(SolveError::NotForSpace { field: "smooth", space: "rn" });
     }
-    // Each dimension is its own type (the states are fixed-size vectors).
-    macro_rules! dimensions {
-        ($($n:literal)*) => {
-            match world.bounds.len() {
-                $($n => boxes::<$n>(problem, world, spec),)*
-                d => Err(SolveError::InvalidBoxes(format!(
-                    "has {d} axes; from 1 to {MAX_BOX_DIMENSION} are supported"
-                ))),
-            }
-        };
-    }
-    dimensions!(1 2 3 4 5 6 7 8)
+    by_dimension!(world, boxes(problem, world, spec))
 }
+
+/// `$f::<N>($args)` for the box world's dimension `N`: each dimension is its own type (the
+/// states are fixed-size vectors), from 1 to [`MAX_BOX_DIMENSION`].
+macro_rules! by_dimension {
+    ($world:expr, $f:ident $args:tt) => {
+        by_dimension!(@ $world, $f $args, 1 2 3 4 5 6 7 8)
+    };
+    (@ $world:expr, $f:ident $args:tt, $($n:literal)*) => {
+        match $world.bounds.len() {
+            $($n => $f::<$n> $args,)*
+            d => Err(SolveError::InvalidBoxes(format!(
+                "has {d} axes; from 1 to {} are supported",
+                $crate::solve::sampling::MAX_BOX_DIMENSION
+            ))),
+        }
+    };
+}
+pub(super) use by_dimension;
 
 /// [`solve_boxes`] in `N` dimensions.
 fn boxes<const N: usize>(
@@ -148,6 +155,16 @@ fn boxes<const N: usize>(
     world: &BoxesWorld,
     spec: &SamplingSpec,
 ) -> Result<SolveResult, SolveError> {
+    let world = box_world::<N>(world)?;
+    let (start, goal) = box_ends::<N>(problem)?;
+    let space = world.space();
+    let run = Run { problem, spec, checker: &world, seed: problem.seed.unwrap_or(0) };
+    let (result, _) = run.plan(&space, KdNearest::<Rn<N>, N>::new(&space)?, start, goal)?;
+    Ok(result)
+}
+
+/// The box world of a document, in `N` dimensions.
+pub(super) fn box_world<const N: usize>(world: &BoxesWorld) -> Result<BoxWorld<N>, SolveError> {
     let corner = |v: &[f64], what: &str| -> Result<[f64; N], SolveError> {
         <[f64; N]>::try_from(v)
             .map_err(|_| SolveError::InvalidBoxes(format!("{what} has {} coordinates, not {N}", v.len())))
@@ -160,7 +177,13 @@ fn boxes<const N: usize>(
         .enumerate()
         .map(|(i, [lo, hi])| Ok((corner(lo, &format!("box {i}"))?, corner(hi, &format!("box {i}"))?)))
         .collect::<Result<Vec<_>, SolveError>>()?;
-    let world = BoxWorld::new(corner(&low, "bounds")?, corner(&high, "bounds")?, obstacles)?;
+    Ok(BoxWorld::new(corner(&low, "bounds")?, corner(&high, "bounds")?, obstacles)?)
+}
+
+/// The start and goal of a box-world problem, in `N` dimensions.
+pub(super) fn box_ends<const N: usize>(
+    problem: &Problem,
+) -> Result<(SVector<f64, N>, SVector<f64, N>), SolveError> {
     let state = |which, value: &[f64]| {
         <[f64; N]>::try_from(value)
             .ok()
@@ -168,11 +191,7 @@ fn boxes<const N: usize>(
             .map(SVector::from)
             .ok_or_else(|| SolveError::NotAState { which, value: value.to_vec(), space: "rn" })
     };
-    let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
-    let space = world.space();
-    let run = Run { problem, spec, checker: &world, seed: problem.seed.unwrap_or(0) };
-    let (result, _) = run.plan(&space, KdNearest::<Rn<N>, N>::new(&space)?, start, goal)?;
-    Ok(result)
+    Ok((state("start", &problem.start)?, state("goal", &problem.goal)?))
 }
 
 /// A sampling planner's run: the problem, its settings, the world's validity and the seed.

@@ -272,6 +272,21 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         Ok(Growth { stop, collision_checks })
     }
 
+    /// Adds `state` as a milestone joined to its neighbours, as a run adds its starts and goals
+    /// (OMPL's `addMilestone`); its id, or the id of the milestone already there. A state that
+    /// is not finite, in bounds and valid is refused.
+    pub fn insert<V: Validity<S>>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        state: S::State,
+    ) -> Result<u32, Rejection> {
+        admit(space, validity, &state)?;
+        let unlimited = Termination::default();
+        let id = self.add(space, validity, state, &Watch::start(&unlimited));
+        Ok(id)
+    }
+
     /// Forgets the roadmap (as [`Planner::clear`]).
     pub fn clear(&mut self) {
         self.reset();

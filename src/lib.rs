@@ -40,7 +40,33 @@ pub use trailmark_graph as graph;
 pub use trailmark_sample as sample;
 pub use trailmark_search as search;
 
-pub use trailmark_core::{movingai, problem, svg};
+// Second paths of core modules, kept for one release; `trailmark::core::movingai` and
+// `trailmark::core::svg` are the paths.
+#[doc(hidden)]
+pub use trailmark_core::{movingai, svg};
+
+/// The problem and result documents under their names before they moved to [`solve`]
+/// (renamed there to end in `Spec` where they describe a document's part), kept for one release.
+#[doc(hidden)]
+pub mod problem {
+    /// Old name of [`ProblemSpec`](crate::solve::ProblemSpec).
+    #[deprecated(since = "0.2.0", note = "use trailmark::solve::ProblemSpec")]
+    pub type Problem = crate::solve::ProblemSpec;
+    /// Old name of [`WorldSpec`](crate::solve::WorldSpec).
+    #[deprecated(since = "0.2.0", note = "use trailmark::solve::WorldSpec")]
+    pub type World = crate::solve::WorldSpec;
+    /// Old name of [`GridSpec`](crate::solve::GridSpec).
+    #[deprecated(since = "0.2.0", note = "use trailmark::solve::GridSpec")]
+    pub type GridWorld = crate::solve::GridSpec;
+    /// Old name of [`BoxesSpec`](crate::solve::BoxesSpec).
+    #[deprecated(since = "0.2.0", note = "use trailmark::solve::BoxesSpec")]
+    pub type BoxesWorld = crate::solve::BoxesSpec;
+    pub use crate::solve::{
+        ErrorReport, GraphKind, GraphStats, ImprovementRecord, IterationRecord, PlannerSpec, ResultStats,
+        SamplerKind, SamplerSpec, SamplingSpec, SamplingStats, SmoothedRecord, SolveResult, SpaceKind,
+        Status, Waypoint,
+    };
+}
 
 /// The README's example, run as a doc test.
 #[cfg(doctest)]

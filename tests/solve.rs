@@ -2,15 +2,15 @@
 //! its typed error; random documents never panic.
 
 use proptest::prelude::*;
-use trailmark::problem::{GridWorld, PlannerSpec, Problem, Status, Waypoint, World};
-use trailmark::solve::{SolveError, solve};
+use trailmark::solve::{AnytimeSpec, GridSpec, PlannerSpec, ProblemSpec, Status, Waypoint, WorldSpec};
+use trailmark::solve::{DocumentError, SolveError, solve};
 
-fn problem(rows: &[&str], start: Vec<f64>, goal: Vec<f64>, planner: PlannerSpec) -> Problem {
-    let world = World::Grid(GridWorld {
+fn problem(rows: &[&str], start: Vec<f64>, goal: Vec<f64>, planner: PlannerSpec) -> ProblemSpec {
+    let world = WorldSpec::Grid(GridSpec {
         rows: Some(rows.iter().map(|r| r.to_string()).collect()),
         ..Default::default()
     });
-    Problem::new(world, start, goal, planner)
+    ProblemSpec::new(world, start, goal, planner)
 }
 
 const ROWS: [&str; 3] = ["....", ".@@.", "...."];
@@ -31,23 +31,8 @@ fn planners() -> Vec<PlannerSpec> {
 
 /// ARA* (`backward` false) or AD* with a schedule and default limits.
 fn anytime(backward: bool, epsilon: Option<f64>, epsilon_step: Option<f64>) -> PlannerSpec {
-    if backward {
-        PlannerSpec::AdStar {
-            epsilon,
-            epsilon_step,
-            heuristic: None,
-            time_limit_s: None,
-            max_expansions: None,
-        }
-    } else {
-        PlannerSpec::AraStar {
-            epsilon,
-            epsilon_step,
-            heuristic: None,
-            time_limit_s: None,
-            max_expansions: None,
-        }
-    }
+    let spec = AnytimeSpec { epsilon, epsilon_step, ..AnytimeSpec::default() };
+    if backward { PlannerSpec::AdStar(spec) } else { PlannerSpec::AraStar(spec) }
 }
 
 /// On a static world the anytime planners end at epsilon = 1 with the optimal cost, and report
@@ -100,19 +85,19 @@ fn no_path_is_a_result_not_an_error() {
 #[test]
 fn bad_input_gives_typed_errors() {
     let astar = PlannerSpec::AStar { heuristic: None };
-    let err = |p: Problem| solve(&p, ".").unwrap_err();
+    let err = |p: ProblemSpec| solve(&p, ".").unwrap_err();
     assert!(matches!(
         err(problem(&ROWS, vec![1.0, 1.0], vec![0.0, 0.0], astar.clone())),
-        SolveError::Blocked { which: "start", .. }
+        SolveError::Document(DocumentError::Blocked { which: "start", .. })
     ));
     assert!(matches!(
         err(problem(&ROWS, vec![0.0, 0.0], vec![9.0, 0.0], astar.clone())),
-        SolveError::Outside { which: "goal", .. }
+        SolveError::Document(DocumentError::Outside { which: "goal", .. })
     ));
     for bad in [vec![0.5, 0.0], vec![-1.0, 0.0], vec![0.0], vec![0.0, 0.0, 0.0], vec![f64::NAN, 0.0]] {
         assert!(matches!(
             err(problem(&ROWS, bad, vec![0.0, 0.0], astar.clone())),
-            SolveError::NotACell { .. }
+            SolveError::Document(DocumentError::NotACell { .. })
         ));
     }
     let weight = PlannerSpec::WeightedAStar { weight: 0.5, heuristic: None };
@@ -120,21 +105,21 @@ fn bad_input_gives_typed_errors() {
     let manhattan = PlannerSpec::AStar { heuristic: Some(trailmark::prelude::GridHeuristic::Manhattan) };
     assert!(matches!(
         err(problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], manhattan)),
-        SolveError::Inadmissible { .. }
+        SolveError::Document(DocumentError::Inadmissible { .. })
     ));
     assert!(matches!(
         err(problem(&["..", "."], vec![0.0, 0.0], vec![1.0, 0.0], astar.clone())),
         SolveError::Grid(_)
     ));
 
-    let with = |edit: &dyn Fn(&mut GridWorld)| {
+    let with = |edit: &dyn Fn(&mut GridSpec)| {
         let mut p = problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], PlannerSpec::AStar { heuristic: None });
-        let World::Grid(world) = &mut p.world else { unreachable!() };
+        let WorldSpec::Grid(world) = &mut p.world else { unreachable!() };
         edit(world);
         p
     };
     let both = with(&|w| w.map = Some("missing.map".into()));
-    assert!(matches!(err(both), SolveError::GridSource), "map and rows together");
+    assert!(matches!(err(both), SolveError::Document(DocumentError::GridSource)), "map and rows together");
     let missing = with(&|w| {
         w.map = Some("missing.map".into());
         w.rows = None;
@@ -142,7 +127,7 @@ fn bad_input_gives_typed_errors() {
     let message = err(missing).to_string();
     assert!(message.contains("missing.map"), "{message}");
     let short = with(&|w| w.costs = Some(vec![vec![1.0; 4], vec![1.0; 4]]));
-    assert!(matches!(err(short), SolveError::CostsShape { row: 2, .. }));
+    assert!(matches!(err(short), SolveError::Document(DocumentError::CostsShape { row: 2, .. })));
     let negative = with(&|w| w.costs = Some(vec![vec![1.0; 4], vec![1.0; 4], vec![1.0, -2.0, 1.0, 1.0]]));
     assert!(matches!(err(negative), SolveError::Grid(_)));
 
@@ -151,14 +136,12 @@ fn bad_input_gives_typed_errors() {
         assert!(matches!(err(problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], low)), SolveError::Search(_)));
         let mut late = anytime(backward, None, None);
         match &mut late {
-            PlannerSpec::AraStar { time_limit_s, .. } | PlannerSpec::AdStar { time_limit_s, .. } => {
-                *time_limit_s = Some(-1.0)
-            }
+            PlannerSpec::AraStar(spec) | PlannerSpec::AdStar(spec) => spec.time_limit_s = Some(-1.0),
             _ => unreachable!(),
         }
         assert!(matches!(
             err(problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], late)),
-            SolveError::TimeLimit(_)
+            SolveError::Document(DocumentError::TimeLimit(_))
         ));
     }
 }
@@ -191,7 +174,7 @@ fn path_costs_past_f64_max_are_errors() {
     use trailmark::search::SearchError;
     for planner in planners() {
         let mut p = problem(&["...."], vec![0.0, 0.0], vec![3.0, 0.0], planner.clone());
-        let World::Grid(world) = &mut p.world else { unreachable!() };
+        let WorldSpec::Grid(world) = &mut p.world else { unreachable!() };
         world.costs = Some(vec![vec![8e307; 4]]);
         let result = solve(&p, ".");
         assert!(
@@ -221,7 +204,7 @@ fn costs_change_the_route() {
     // The bottom route is cheaper unless its cells cost 10.
     let rows = ["...", ".@.", "..."];
     let mut p = problem(&rows, vec![0.0, 1.0], vec![2.0, 1.0], PlannerSpec::Dijkstra {});
-    let World::Grid(world) = &mut p.world else { unreachable!() };
+    let WorldSpec::Grid(world) = &mut p.world else { unreachable!() };
     world.costs = Some(vec![vec![1.0; 3], vec![1.0; 3], vec![10.0; 3]]);
     let result = solve(&p, ".").unwrap();
     assert!(result.path.contains(&Waypoint::Cell([1, 0].into())), "{:?}", result.path);
@@ -254,14 +237,14 @@ proptest! {
             7 => anytime(false, Some(weight), Some(0.5)),
             _ => anytime(true, Some(weight), Some(0.5)),
         };
-        let world = GridWorld {
+        let world = GridSpec {
             rows: Some(rows),
             costs,
             connectivity: if eight { trailmark::prelude::Connectivity::Eight } else { trailmark::prelude::Connectivity::Four },
             corner_cutting: cut,
             ..Default::default()
         };
-        let p = Problem::new(World::Grid(world), start, goal, planner);
+        let p = ProblemSpec::new(WorldSpec::Grid(world), start, goal, planner);
         if let Ok(result) = solve(&p, ".") {
             prop_assert_eq!(result.cost.is_some(), result.status == Status::Solved);
         }

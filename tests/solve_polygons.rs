@@ -1,4 +1,4 @@
-//! Problem documents over polygon worlds: each roadmap kind solves a wall world, written as a
+//! ProblemSpec documents over polygon worlds: each roadmap kind solves a wall world, written as a
 //! user writes it (JSON), with costs checked against a hand-computed shortest path and paths
 //! re-checked against the obstacles; every kind of bad input gives its typed error; random
 //! documents never panic.
@@ -6,12 +6,12 @@
 use proptest::prelude::*;
 use trailmark::core::dubins::DubinsPath;
 use trailmark::core::geometry::{Point, Pose, Vector};
-use trailmark::problem::{Problem, SolveResult, Status, Waypoint, World};
-use trailmark::solve::{SolveError, solve};
+use trailmark::solve::{DocumentError, SolveError, solve};
+use trailmark::solve::{ProblemSpec, SolveResult, Status, Waypoint, WorldSpec};
 
 /// A 10 x 10 world with a wall from the floor up to y = 8 between x = 4 and x = 6, the robot
 /// radius `r`, and the rest of the document (graph, endpoints, planner) from `rest`.
-fn document(r: f64, rest: &str) -> Problem {
+fn document(r: f64, rest: &str) -> ProblemSpec {
     let json = format!(
         r#"{{"world": {{"polygons": {{"bounds": [0, 0, 10, 10],
              "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]], "robot_radius": {r}}}}},
@@ -185,24 +185,24 @@ fn bad_polygon_documents_give_typed_errors() {
     ));
     assert!(matches!(
         err(0.0, &format!(r#""k": 5, {ends}, {astar}"#)),
-        SolveError::NotForGraph { field: "k", graph: "visibility" }
+        SolveError::Document(DocumentError::NotForGraph { field: "k", graph: "visibility" })
     ));
     assert!(matches!(
         err(0.0, &format!(r#""graph": "prm", "turning_radius": 1, {ends}, {astar}"#)),
-        SolveError::NotForGraph { field: "turning_radius", graph: "prm" }
+        SolveError::Document(DocumentError::NotForGraph { field: "turning_radius", graph: "prm" })
     ));
     assert!(matches!(
         err(0.0, &format!(r#""graph": "prm", "k": 5, "radius": 2, {ends}, {astar}"#)),
-        SolveError::KAndRadius
+        SolveError::Document(DocumentError::KAndRadius)
     ));
     assert!(matches!(err(0.0, &format!(r#""graph": "prm", "k": 0, {ends}, {astar}"#)), SolveError::Prm(_)));
     assert!(matches!(
         err(0.0, &format!(r#""graph": "dubins_prm", {ends}, {astar}"#)),
-        SolveError::NoTurningRadius
+        SolveError::Document(DocumentError::NoTurningRadius)
     ));
     assert!(matches!(
         err(0.0, &format!(r#""graph": "dubins_prm", "turning_radius": 1, {ends}, {astar}"#)),
-        SolveError::NotAPose { which: "start", .. }
+        SolveError::Document(DocumentError::NotAPose { which: "start", .. })
     ));
     assert!(matches!(
         err(0.0, &format!(r#""graph": "dubins_prm", "turning_radius": -1, {ends}, {astar}"#)),
@@ -210,21 +210,24 @@ fn bad_polygon_documents_give_typed_errors() {
     ));
     assert!(matches!(
         err(0.0, &format!(r#""start": [1, 1, 0], "goal": [9, 1], {astar}"#)),
-        SolveError::NotAPoint { which: "start", .. }
+        SolveError::Document(DocumentError::NotAPoint { which: "start", .. })
     ));
     assert!(matches!(
         err(0.0, &format!(r#"{ends}, "planner": {{"name": "astar", "heuristic": "octile"}}"#)),
-        SolveError::NotEuclidean { .. }
+        SolveError::Document(DocumentError::NotEuclidean { .. })
     ));
     for limit in ["-1", "1e20"] {
         let planner = format!(r#"{ends}, "planner": {{"name": "ara_star", "time_limit_s": {limit}}}"#);
-        assert!(matches!(err(0.0, &planner), SolveError::TimeLimit(_)), "{limit}");
+        assert!(matches!(err(0.0, &planner), SolveError::Document(DocumentError::TimeLimit(_))), "{limit}");
     }
     // Roadmap fields on a grid problem.
     let grid = r#"{"world": {"grid": {"rows": [".."]}}, "graph": "prm", "start": [0, 0], "goal": [1, 0],
                    "planner": {"name": "astar"}}"#;
-    let p: Problem = serde_json::from_str(grid).unwrap();
-    assert!(matches!(solve(&p, ".").unwrap_err(), SolveError::NotForGrids { field: "graph" }));
+    let p: ProblemSpec = serde_json::from_str(grid).unwrap();
+    assert!(matches!(
+        solve(&p, ".").unwrap_err(),
+        SolveError::Document(DocumentError::NotForGrids { field: "graph" })
+    ));
     // Invalid worlds and graph names are rejected as the document is read.
     for bad in [
         r#"{"polygons": {"bounds": [0, 0, 10, 10], "obstacles": [[[1, 1], [2, 2], [3, 3]]]}}"#,
@@ -234,12 +237,12 @@ fn bad_polygon_documents_give_typed_errors() {
         r#"{"polygons": {"bounds": [0, 0, 10, 10], "holes": []}}"#,
     ] {
         let json = format!(r#"{{"world": {bad}, {ends}, {astar}}}"#);
-        assert!(serde_json::from_str::<Problem>(&json).is_err(), "{bad}");
+        assert!(serde_json::from_str::<ProblemSpec>(&json).is_err(), "{bad}");
     }
     let json = format!(
         r#"{{"world": {{"polygons": {{"bounds": [0, 0, 1, 1]}}}}, "graph": "voronoi", {ends}, {astar}}}"#
     );
-    assert!(serde_json::from_str::<Problem>(&json).unwrap_err().to_string().contains("voronoi"));
+    assert!(serde_json::from_str::<ProblemSpec>(&json).unwrap_err().to_string().contains("voronoi"));
 }
 
 #[test]
@@ -248,7 +251,7 @@ fn a_start_that_sees_the_goal_needs_no_roadmap_detour() {
     let result = solve(&p, ".").unwrap();
     assert_eq!(result.cost, Some(8.0));
     assert_eq!(result.path.len(), 2);
-    let World::Polygons(world) = &p.world else { unreachable!() };
+    let WorldSpec::Polygons(world) = &p.world else { unreachable!() };
     assert!(world.checker().segment_is_free(Point::new(1.0, 9.0), Point::new(9.0, 9.0)));
 }
 
@@ -286,7 +289,7 @@ fn drawings_show_the_result_they_come_with() {
             assert_eq!(vertices, drawn.path.len(), "{rest}");
         }
     }
-    let grid: Problem = serde_json::from_str(
+    let grid: ProblemSpec = serde_json::from_str(
         r#"{"world": {"grid": {"rows": ["...", ".@.", "..."]}}, "start": [0, 1], "goal": [2, 1], "planner": {"name": "bfs"}}"#,
     )
     .unwrap();
@@ -338,7 +341,7 @@ proptest! {
             "[0, 0]",
             "[0, 0]",
         );
-        let Ok(mut problem) = serde_json::from_str::<Problem>(&json) else { return Ok(()) };
+        let Ok(mut problem) = serde_json::from_str::<ProblemSpec>(&json) else { return Ok(()) };
         // The right number of coordinates, but now and then a wrong count or a non-finite one
         // (which JSON cannot carry).
         let dimension = if graph == "dubins_prm" { 3 } else { 2 };
@@ -368,7 +371,7 @@ fn example_problems_solve() {
     for entry in std::fs::read_dir(&dir).unwrap() {
         let path = entry.unwrap().path();
         let text = std::fs::read_to_string(&path).unwrap();
-        let problem: Problem =
+        let problem: ProblemSpec =
             serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let result = solve(&problem, &dir).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert_eq!(result.status, Status::Solved, "{}", path.display());
@@ -378,7 +381,7 @@ fn example_problems_solve() {
 }
 
 /// The wall world with every length times `scale` (bounds, wall, radius 0.25 and ends).
-fn scaled(scale: f64, graph: &str) -> Result<Problem, serde_json::Error> {
+fn scaled(scale: f64, graph: &str) -> Result<ProblemSpec, serde_json::Error> {
     let s = |v: f64| v * scale;
     let json = format!(
         r#"{{"world": {{"polygons": {{"bounds": [0, 0, {ten:?}, {ten:?}],
@@ -504,7 +507,7 @@ fn enormous_bounds_do_not_call_a_free_start_blocked() {
         )
     };
     for graph in ["visibility", "trapezoid"] {
-        let problem: Problem = serde_json::from_str(&json(graph)).unwrap();
+        let problem: ProblemSpec = serde_json::from_str(&json(graph)).unwrap();
         let error = solve(&problem, ".").expect_err(graph);
         assert!(matches!(error, SolveError::BelowResolution { which: "start", .. }), "{graph}: {error}");
     }
@@ -545,7 +548,8 @@ fn obstacles_at_the_bounds_keep_the_free_space_consistent() {
     for (name, json, shortest) in [("on the side", on_the_side, 5.5), ("far out", far_out, 32f64.hypot(48.0))]
     {
         for graph in ["visibility", "trapezoid"] {
-            let problem: Problem = serde_json::from_str(&format!(r#"{json}, "graph": "{graph}"}}"#)).unwrap();
+            let problem: ProblemSpec =
+                serde_json::from_str(&format!(r#"{json}, "graph": "{graph}"}}"#)).unwrap();
             let result = solve(&problem, ".").unwrap_or_else(|e| panic!("{name}, {graph}: {e}"));
             assert_eq!(result.status, Status::Solved, "{name}, {graph}");
             let path = points(&result);

@@ -8,12 +8,12 @@ use trailmark::core::curve::Bezier;
 use trailmark::core::dubins::{DubinsPath, Piece};
 use trailmark::core::geometry::{Point, Pose};
 use trailmark::core::world::PolygonWorld;
-use trailmark::problem::{Problem, SolveResult, Status, Waypoint, World};
 use trailmark::sample::{PlanError, SamplerError};
-use trailmark::solve::{SolveError, solve, solve_and_draw};
+use trailmark::solve::{DocumentError, SolveError, solve, solve_and_draw};
+use trailmark::solve::{ProblemSpec, SolveResult, Status, Waypoint, WorldSpec};
 
 /// The wall world of the examples (a wall and a triangle, robot radius 0.3) with `rest`.
-fn document(rest: &str) -> Problem {
+fn document(rest: &str) -> ProblemSpec {
     let json = format!(
         r#"{{"world": {{"polygons": {{"bounds": [0, 0, 10, 10],
              "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]], [[1.5, 4], [3, 3.5], [2.5, 6]]],
@@ -22,9 +22,9 @@ fn document(rest: &str) -> Problem {
     serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}: {json}"))
 }
 
-fn world(problem: &Problem) -> &PolygonWorld {
+fn world(problem: &ProblemSpec) -> &PolygonWorld {
     match &problem.world {
-        World::Polygons(world) => world,
+        WorldSpec::Polygons(world) => world,
         _ => panic!("not a polygon world"),
     }
 }
@@ -219,7 +219,7 @@ fn no_path_within_the_limit_is_approximate() {
         "obstacles": [[[10, 10], [20, 10], [20, 11], [10, 11]], [[10, 19], [20, 19], [20, 20], [10, 20]],
                       [[10, 11], [11, 11], [11, 19], [10, 19]], [[19, 11], [20, 11], [20, 19], [19, 19]]]}},
         "seed": 1, "start": [2, 2], "goal": [15, 15], "planner": {"name": "rrt_connect", "max_iterations": 500}}"#;
-    let problem: Problem = serde_json::from_str(json).unwrap();
+    let problem: ProblemSpec = serde_json::from_str(json).unwrap();
     let result = solve(&problem, ".").unwrap();
     assert_eq!(result.status, Status::Approximate);
     assert_eq!(states(&result)[0], vec![2.0, 2.0]);
@@ -267,30 +267,30 @@ fn bad_sampling_documents_give_typed_errors() {
     type Expected = fn(&SolveError) -> bool;
     let cases: Vec<(String, Expected)> = vec![
         (format!(r#"{ends}, "graph": "prm", "planner": {{"name": "rrt"}}"#), |e| {
-            matches!(e, SolveError::NotForPlanner { field: "graph", planner: "rrt" })
+            matches!(e, SolveError::Document(DocumentError::NotForPlanner { field: "graph", planner: "rrt" }))
         }),
         (format!(r#"{ends}, "space": "r2", "planner": {{"name": "astar"}}"#), |e| {
-            matches!(e, SolveError::NotForPlanner { field: "space", .. })
+            matches!(e, SolveError::Document(DocumentError::NotForPlanner { field: "space", .. }))
         }),
         (format!(r#"{ends}, "turning_radius": 1, "planner": {{"name": "rrt"}}"#), |e| {
-            matches!(e, SolveError::NotForSpace { field: "turning_radius", space: "r2" })
+            matches!(e, SolveError::Document(DocumentError::NotForSpace { field: "turning_radius", space: "r2" }))
         }),
         (r#""space": "dubins", "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt"}"#.into(), |e| {
-            matches!(e, SolveError::NoTurningRadius)
+            matches!(e, SolveError::Document(DocumentError::NoTurningRadius))
         }),
         (
             r#""space": "dubins", "turning_radius": 1, "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt", "smooth": "bezier"}"#.into(),
-            |e| matches!(e, SolveError::NotForSpace { field: "smooth", space: "dubins" }),
+            |e| matches!(e, SolveError::Document(DocumentError::NotForSpace { field: "smooth", space: "dubins" })),
         ),
         (
             r#""space": "dubins", "turning_radius": -1, "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt"}"#.into(),
             |e| matches!(e, SolveError::Space(_)),
         ),
         (r#""start": [1, 1, 0], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
-            matches!(e, SolveError::NotAState { which: "start", space: "r2", .. })
+            matches!(e, SolveError::Document(DocumentError::NotAState { which: "start", space: "r2", .. }))
         }),
         (r#""space": "dubins", "turning_radius": 1, "start": [1, 1, 0], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
-            matches!(e, SolveError::NotAState { which: "goal", space: "dubins", .. })
+            matches!(e, SolveError::Document(DocumentError::NotAState { which: "goal", space: "dubins", .. }))
         }),
         (format!(r#"{ends}, "planner": {{"name": "rrt", "range": -1}}"#), |e| {
             matches!(e, SolveError::Plan(PlanError::InvalidOption { name: "range", .. }))
@@ -299,17 +299,17 @@ fn bad_sampling_documents_give_typed_errors() {
             matches!(e, SolveError::Plan(PlanError::InvalidOption { name: "goal_bias", .. }))
         }),
         (format!(r#"{ends}, "planner": {{"name": "rrt_connect", "time_limit_s": -1}}"#), |e| {
-            matches!(e, SolveError::TimeLimit(_))
+            matches!(e, SolveError::Document(DocumentError::TimeLimit(_)))
         }),
         (format!(r#"{ends}, "planner": {{"name": "rrt_star", "time_limit_s": 1e20}}"#), |e| {
-            matches!(e, SolveError::TimeLimit(_))
+            matches!(e, SolveError::Document(DocumentError::TimeLimit(_)))
         }),
         // Limits that ran without end: a year of time, 1e15 iterations, u32::MAX attempts.
         (format!(r#"{ends}, "planner": {{"name": "rrt_star", "time_limit_s": 3.2e7}}"#), |e| {
-            matches!(e, SolveError::TimeLimit(_))
+            matches!(e, SolveError::Document(DocumentError::TimeLimit(_)))
         }),
         (format!(r#"{ends}, "planner": {{"name": "rrt", "max_iterations": 1000000000000000}}"#), |e| {
-            matches!(e, SolveError::TooManyIterations(_))
+            matches!(e, SolveError::Document(DocumentError::TooManyIterations(_)))
         }),
         (
             format!(r#"{ends}, "planner": {{"name": "rrt_connect", "sampler": {{"name": "bridge", "std_dev": 1, "attempts": 4294967295}}}}"#),
@@ -335,15 +335,18 @@ fn bad_sampling_documents_give_typed_errors() {
         assert!(expected(&e), "{rest}: {e:?}");
         assert!(!e.to_string().is_empty());
     }
-    let grid: Problem = serde_json::from_str(
+    let grid: ProblemSpec = serde_json::from_str(
         r#"{"world": {"grid": {"rows": [".."]}}, "start": [0, 0], "goal": [1, 0], "planner": {"name": "rrt"}}"#,
     )
     .unwrap();
-    assert!(matches!(solve(&grid, "."), Err(SolveError::NeedsPolygons { planner: "rrt" })));
+    assert!(matches!(
+        solve(&grid, "."),
+        Err(SolveError::Document(DocumentError::NeedsPolygons { planner: "rrt" }))
+    ));
     let unknown = format!(
         r#"{{"world": {{"polygons": {{"bounds": [0, 0, 1, 1], "obstacles": []}}}}, {ends}, "planner": {{"name": "rrt", "weight": 2}}}}"#
     );
-    assert!(serde_json::from_str::<Problem>(&unknown).is_err(), "a setting the planner does not take");
+    assert!(serde_json::from_str::<ProblemSpec>(&unknown).is_err(), "a setting the planner does not take");
 }
 
 /// Turning radii far beyond the world (found by the fuzzer): with a radius of 4e210 the Dubins
@@ -399,7 +402,7 @@ fn box_worlds_take_a_prm_roadmap_and_every_graph_search() {
 }
 
 /// A 3-D box world: the unit cube with a slab across it, open above z = 0.8.
-fn box_document(rest: &str) -> Problem {
+fn box_document(rest: &str) -> ProblemSpec {
     let json = format!(
         r#"{{"world": {{"boxes": {{"bounds": [[0, 1], [0, 1], [0, 1]],
              "obstacles": [[[0.4, 0, 0], [0.6, 1, 0.8]]]}}}}, {rest}}}"#
@@ -446,22 +449,22 @@ fn bad_box_documents_are_typed_errors() {
     type Expected = fn(&SolveError) -> bool;
     let cases: Vec<(String, Expected)> = vec![
         (format!(r#"{ends}, "graph": "visibility", "planner": {{"name": "astar"}}"#), |e| {
-            matches!(e, SolveError::InvalidBoxes(_))
+            matches!(e, SolveError::Document(DocumentError::InvalidBoxes(_)))
         }),
         (format!(r#"{ends}, "graph": "prm", "k": 5, "radius": 1, "planner": {{"name": "astar"}}"#), |e| {
-            matches!(e, SolveError::KAndRadius)
+            matches!(e, SolveError::Document(DocumentError::KAndRadius))
         }),
         (format!(r#"{ends}, "turning_radius": 1, "planner": {{"name": "dijkstra"}}"#), |e| {
-            matches!(e, SolveError::NotForGraph { .. })
+            matches!(e, SolveError::Document(DocumentError::NotForGraph { .. }))
         }),
         (r#""start": [0.5, 0.5, 0.5], "goal": [0.9, 0.5, 0.1], "graph": "prm", "planner": {"name": "astar"}"#.into(), |e| {
             matches!(e, SolveError::Plan(PlanError::InvalidStart { .. }))
         }),
         (format!(r#"{ends}, "space": "r2", "planner": {{"name": "rrt"}}"#), |e| {
-            matches!(e, SolveError::InvalidBoxes(_))
+            matches!(e, SolveError::Document(DocumentError::InvalidBoxes(_)))
         }),
         (r#""start": [0.1, 0.5], "goal": [0.9, 0.5, 0.1], "planner": {"name": "rrt"}"#.into(), |e| {
-            matches!(e, SolveError::NotAState { which: "start", .. })
+            matches!(e, SolveError::Document(DocumentError::NotAState { which: "start", .. }))
         }),
         (r#""start": [0.5, 0.5, 0.5], "goal": [0.9, 0.5, 0.1], "planner": {"name": "rrt"}"#.into(), |e| {
             matches!(e, SolveError::Plan(PlanError::InvalidStart { .. }))
@@ -471,7 +474,7 @@ fn bad_box_documents_are_typed_errors() {
             |e| matches!(e, SolveError::Plan(PlanError::InvalidGoal(_))),
         ),
         (format!(r#"{ends}, "planner": {{"name": "rrt", "smooth": "bspline"}}"#), |e| {
-            matches!(e, SolveError::NotForSpace { .. })
+            matches!(e, SolveError::Document(DocumentError::NotForSpace { .. }))
         }),
     ];
     for (rest, expected) in cases {
@@ -479,23 +482,23 @@ fn bad_box_documents_are_typed_errors() {
         assert!(expected(&error), "{rest}: {error}");
     }
     // Nine axes, a box of the wrong dimension, a box with low >= high.
-    let nine = serde_json::from_str::<Problem>(
+    let nine = serde_json::from_str::<ProblemSpec>(
         r#"{"world": {"boxes": {"bounds": [[0,1],[0,1],[0,1],[0,1],[0,1],[0,1],[0,1],[0,1],[0,1]]}},
             "start": [0,0,0,0,0,0,0,0,0], "goal": [1,1,1,1,1,1,1,1,1], "planner": {"name": "rrt"}}"#,
     )
     .unwrap();
-    assert!(matches!(solve(&nine, "."), Err(SolveError::InvalidBoxes(_))));
+    assert!(matches!(solve(&nine, "."), Err(SolveError::Document(DocumentError::InvalidBoxes(_)))));
     for obstacles in [r#"[[[0.4, 0], [0.6, 1]]]"#, r#"[[[0.6, 0, 0], [0.4, 1, 1]]]"#] {
         let json = format!(
             r#"{{"world": {{"boxes": {{"bounds": [[0, 1], [0, 1], [0, 1]], "obstacles": {obstacles}}}}},
                 "start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1], "planner": {{"name": "rrt"}}}}"#
         );
-        let problem: Problem = serde_json::from_str(&json).unwrap();
+        let problem: ProblemSpec = serde_json::from_str(&json).unwrap();
         assert!(solve(&problem, ".").is_err(), "{obstacles}");
     }
     // "space": "rn" over polygons, and no picture of a box world.
     let polygons = document(r#""space": "rn", "start": [1, 1], "goal": [9, 1], "planner": {"name": "rrt"}"#);
-    assert!(matches!(solve(&polygons, "."), Err(SolveError::RnNeedsBoxes)));
+    assert!(matches!(solve(&polygons, "."), Err(SolveError::Document(DocumentError::RnNeedsBoxes))));
     let boxes = box_document(&format!(r#"{ends}, "planner": {{"name": "rrt"}}"#));
-    assert!(matches!(solve_and_draw(&boxes, "."), Err(SolveError::InvalidBoxes(_))));
+    assert!(matches!(solve_and_draw(&boxes, "."), Err(SolveError::Document(DocumentError::InvalidBoxes(_)))));
 }

@@ -2,7 +2,7 @@
 //! sampled every 1/200 of its length with each sample tested against the boxes directly, the
 //! path from the start (to the goal when solved), and the cost equal to the path's length.
 
-use trailmark::problem::{BoxesWorld, Problem, SolveResult, Status, Waypoint};
+use trailmark::solve::{BoxesSpec, ProblemSpec, SolveResult, Status, Waypoint};
 
 use crate::close;
 
@@ -10,14 +10,14 @@ use crate::close;
 pub const SAMPLES_PER_MOTION: usize = 200;
 
 /// Whether `q` is in the bounds and inside no box's interior.
-fn clear(world: &BoxesWorld, q: &[f64]) -> bool {
+fn clear(world: &BoxesSpec, q: &[f64]) -> bool {
     let inside = |lo: &[f64], hi: &[f64]| q.iter().zip(lo.iter().zip(hi)).all(|(x, (l, h))| x > l && x < h);
     let in_bounds = q.len() == world.bounds.len() && q.iter().zip(&world.bounds).all(|(x, [l, h])| x >= l && x <= h);
     in_bounds && !world.obstacles.iter().any(|[lo, hi]| inside(lo, hi))
 }
 
 /// Checks the result of a box-world problem that `solve` accepted.
-pub fn check_result(problem: &Problem, world: &BoxesWorld, result: &SolveResult) {
+pub fn check_result(problem: &ProblemSpec, world: &BoxesSpec, result: &SolveResult) {
     match result.status {
         Status::Solved | Status::Approximate => {}
         Status::NoPath => panic!("a sampling planner claims to prove no path exists"),

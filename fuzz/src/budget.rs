@@ -5,7 +5,7 @@
 //! above what the hostile values need (a 100-cell grid shows a bad weight as well as a
 //! 10,000-cell one).
 
-use trailmark::problem::{GraphKind, PlannerSpec, Problem, SamplerSpec, SpaceKind, World};
+use trailmark::solve::{AnytimeSpec, GraphKind, PlannerSpec, ProblemSpec, SamplerSpec, SpaceKind, WorldSpec};
 use trailmark_core::world::PolygonWorld;
 
 /// The most cells of a grid world.
@@ -31,9 +31,9 @@ pub const MAX_ANYTIME_WORK: u64 = 5_000_000;
 
 /// Whether `problem` is small enough to solve in a fuzzing run, and names no file outside the
 /// (nonexistent) base folder.
-pub fn problem_is_quick(problem: &Problem) -> bool {
+pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
     let cells = match &problem.world {
-        World::Grid(world) => {
+        WorldSpec::Grid(world) => {
             if world.map.as_ref().is_some_and(|m| m.is_absolute() || m.has_root()) {
                 return false; // Path::join would leave the base folder: never read a file.
             }
@@ -46,13 +46,13 @@ pub fn problem_is_quick(problem: &Problem) -> bool {
             }
             cells
         }
-        World::Polygons(world) => {
+        WorldSpec::Polygons(world) => {
             if !polygons_are_quick(world) {
                 return false;
             }
             0
         }
-        World::Boxes(world) => {
+        WorldSpec::Boxes(world) => {
             if world.bounds.len() > 8 || world.obstacles.len() > MAX_BOXES {
                 return false;
             }
@@ -61,8 +61,8 @@ pub fn problem_is_quick(problem: &Problem) -> bool {
     };
     let time_ok = |t: Option<f64>| t.is_some_and(|t| t <= MAX_TIME_LIMIT_S);
     match &problem.planner {
-        PlannerSpec::AraStar { epsilon, epsilon_step, time_limit_s, max_expansions, .. }
-        | PlannerSpec::AdStar { epsilon, epsilon_step, time_limit_s, max_expansions, .. } => {
+        PlannerSpec::AraStar(AnytimeSpec { epsilon, epsilon_step, time_limit_s, max_expansions, .. })
+        | PlannerSpec::AdStar(AnytimeSpec { epsilon, epsilon_step, time_limit_s, max_expansions, .. }) => {
             let schedule =
                 trailmark::search::EpsilonSchedule::new(epsilon.unwrap_or(3.0), epsilon_step.unwrap_or(0.5));
             let nodes = if cells > 0 { cells } else { roadmap_nodes(problem) };
@@ -105,7 +105,7 @@ pub fn problem_is_quick(problem: &Problem) -> bool {
         }
         _ => {}
     }
-    if matches!(problem.world, World::Polygons(_)) {
+    if matches!(problem.world, WorldSpec::Polygons(_)) {
         let samples = problem.samples.unwrap_or(trailmark::solve::DEFAULT_SAMPLES);
         match problem.graph {
             Some(GraphKind::Prm) if samples > MAX_PRM_SAMPLES => return false,
@@ -117,15 +117,15 @@ pub fn problem_is_quick(problem: &Problem) -> bool {
 }
 
 /// A rough count of the nodes of the roadmap a polygon-world problem searches.
-fn roadmap_nodes(problem: &Problem) -> usize {
+fn roadmap_nodes(problem: &ProblemSpec) -> usize {
     match problem.graph {
         Some(GraphKind::Prm | GraphKind::DubinsPrm) => {
             problem.samples.unwrap_or(trailmark::solve::DEFAULT_SAMPLES) + 2
         }
         _ => match &problem.world {
             // Grown corners are arcs of up to 16 vertices.
-            World::Polygons(w) => 16 * w.obstacles().iter().map(|o| o.vertices().len()).sum::<usize>() + 6,
-            World::Grid(_) | World::Boxes(_) => 0,
+            WorldSpec::Polygons(w) => 16 * w.obstacles().iter().map(|o| o.vertices().len()).sum::<usize>() + 6,
+            WorldSpec::Grid(_) | WorldSpec::Boxes(_) => 0,
         },
     }
 }

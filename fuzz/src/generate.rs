@@ -575,7 +575,7 @@ fn sampler(u: &mut Unstructured) -> Result<Value> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use trailmark::problem::{Problem, Status};
+    use trailmark::solve::{ProblemSpec, Status};
 
     /// Most generated documents parse, and a fair share of them are solved: the generator
     /// reaches the planners rather than only the input checks. Prints the tally
@@ -595,7 +595,7 @@ mod tests {
                 })
                 .collect();
             let doc = problem(&mut Unstructured::new(&bytes)).unwrap();
-            let outcome = match serde_json::from_value::<Problem>(doc) {
+            let outcome = match serde_json::from_value::<ProblemSpec>(doc) {
                 Err(e) => format!("not a problem: {}", e.to_string().chars().take(60).collect::<String>()),
                 Ok(p) if !crate::budget::problem_is_quick(&p) => "skipped".to_string(),
                 Ok(p) => match trailmark::solve::solve(&p, crate::NO_DIR) {

@@ -11,7 +11,7 @@ use std::cmp::Reverse;
 use std::collections::{BinaryHeap, VecDeque};
 use std::f64::consts::SQRT_2;
 
-use trailmark::problem::{GridWorld, PlannerSpec, Problem, SolveResult, Status, Waypoint};
+use trailmark::solve::{AnytimeSpec, GridSpec, PlannerSpec, ProblemSpec, SolveResult, Status, Waypoint};
 use trailmark_core::grid::{Cell, Connectivity};
 
 use crate::close;
@@ -44,7 +44,7 @@ fn passable_char(c: char) -> Option<bool> {
 
 impl RefGrid {
     /// The grid of an inline-rows world, or why it is not a valid one.
-    pub fn from_world(world: &GridWorld) -> Result<RefGrid, String> {
+    pub fn from_world(world: &GridSpec) -> Result<RefGrid, String> {
         if world.map.is_some() {
             return Err("a map file".into());
         }
@@ -212,7 +212,7 @@ pub fn cell_of(value: &[f64], grid: &RefGrid) -> Option<Cell> {
 }
 
 /// Checks the result of a grid problem that `solve` accepted.
-pub fn check_result(problem: &Problem, world: &GridWorld, result: &SolveResult) {
+pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResult) {
     let grid = RefGrid::from_world(world)
         .unwrap_or_else(|why| panic!("solve accepted a grid world the reference rejects: {why}"));
     let start = cell_of(&problem.start, &grid)
@@ -234,7 +234,7 @@ pub fn check_result(problem: &Problem, world: &GridWorld, result: &SolveResult) 
         }
         Status::Stopped => {
             assert!(
-                matches!(planner, PlannerSpec::AraStar { .. } | PlannerSpec::AdStar { .. }),
+                matches!(planner, PlannerSpec::AraStar(_) | PlannerSpec::AdStar(_)),
                 "{} stopped on a grid",
                 planner.name()
             );
@@ -283,8 +283,8 @@ pub fn check_result(problem: &Problem, world: &GridWorld, result: &SolveResult) 
                 "weighted_astar (weight {weight}) cost {cost}, least cost {optimum}"
             );
         }
-        PlannerSpec::AraStar { time_limit_s, max_expansions, .. }
-        | PlannerSpec::AdStar { time_limit_s, max_expansions, .. } => {
+        PlannerSpec::AraStar(AnytimeSpec { time_limit_s, max_expansions, .. })
+        | PlannerSpec::AdStar(AnytimeSpec { time_limit_s, max_expansions, .. }) => {
             if let Some(bound) = result.stats.bound {
                 assert!(bound >= 1.0, "bound {bound} below 1");
                 assert!(

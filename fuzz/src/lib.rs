@@ -19,7 +19,7 @@ pub mod terrain;
 
 use std::path::Path;
 
-use trailmark::problem::{Problem, World};
+use trailmark::solve::{ProblemSpec, WorldSpec};
 
 /// The folder relative map paths are resolved against: one that does not exist, so that no
 /// map file is ever read (absolute paths are skipped by [`budget::problem_is_quick`]).
@@ -31,7 +31,7 @@ pub fn close(a: f64, b: f64, rel: f64) -> bool {
 }
 
 /// Solves `problem` when it is quick enough, and checks every path it returns.
-pub fn solve_and_check(problem: &Problem) {
+pub fn solve_and_check(problem: &ProblemSpec) {
     if !budget::problem_is_quick(problem) {
         return;
     }
@@ -39,15 +39,15 @@ pub fn solve_and_check(problem: &Problem) {
         return;
     };
     match &problem.world {
-        World::Grid(world) => grid::check_result(problem, world, &result),
-        World::Polygons(world) => polygon::check_result(problem, world, &result),
-        World::Boxes(world) => boxes::check_result(problem, world, &result),
+        WorldSpec::Grid(world) => grid::check_result(problem, world, &result),
+        WorldSpec::Polygons(world) => polygon::check_result(problem, world, &result),
+        WorldSpec::Boxes(world) => boxes::check_result(problem, world, &result),
     }
 }
 
 /// Parses `bytes` as a problem document and, when it is one, runs [`solve_and_check`].
 pub fn problem_bytes(bytes: &[u8]) {
-    if let Ok(problem) = serde_json::from_slice::<Problem>(bytes) {
+    if let Ok(problem) = serde_json::from_slice::<ProblemSpec>(bytes) {
         solve_and_check(&problem);
     }
 }

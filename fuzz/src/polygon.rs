@@ -5,7 +5,7 @@
 //! Straight motions for the visibility, trapezoid and PRM roadmaps and the `r2` sampling
 //! planners; shortest Dubins curves for the `dubins_prm` roadmap and the `dubins` space.
 
-use trailmark::problem::{GraphKind, PlannerSpec, Problem, SolveResult, SpaceKind, Status, Waypoint};
+use trailmark::solve::{GraphKind, PlannerSpec, ProblemSpec, SolveResult, SpaceKind, Status, Waypoint};
 use trailmark_core::dubins::DubinsPath;
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::world::PolygonWorld;
@@ -31,7 +31,7 @@ pub fn scale(world: &PolygonWorld) -> f64 {
 }
 
 /// Whether the result is over poses (Dubins curves) rather than points.
-fn is_dubins(problem: &Problem) -> bool {
+fn is_dubins(problem: &ProblemSpec) -> bool {
     match problem.planner.sampling() {
         Some(_) => problem.space == Some(SpaceKind::Dubins),
         None => problem.graph == Some(GraphKind::DubinsPrm),
@@ -39,7 +39,7 @@ fn is_dubins(problem: &Problem) -> bool {
 }
 
 /// Checks the result of a polygon-world problem that `solve` accepted.
-pub fn check_result(problem: &Problem, world: &PolygonWorld, result: &SolveResult) {
+pub fn check_result(problem: &ProblemSpec, world: &PolygonWorld, result: &SolveResult) {
     let planner = problem.planner.name();
     let sampling = problem.planner.sampling().is_some();
     let sampled_roadmap = !sampling && matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm));
@@ -55,7 +55,7 @@ pub fn check_result(problem: &Problem, world: &PolygonWorld, result: &SolveResul
         Status::Stopped => {
             // A limit stopped it (sampling and anytime planners), or a sampled roadmap does not
             // join the ends, which proves nothing.
-            let anytime = matches!(problem.planner, PlannerSpec::AraStar { .. } | PlannerSpec::AdStar { .. });
+            let anytime = matches!(problem.planner, PlannerSpec::AraStar(_) | PlannerSpec::AdStar(_));
             assert!(sampling || anytime || sampled_roadmap, "{planner} stopped on an exact roadmap");
             assert!(result.path.is_empty() && result.cost.is_none(), "stopped with a path or cost");
             return;

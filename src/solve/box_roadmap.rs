@@ -4,9 +4,6 @@
 
 use std::time::Instant;
 
-use trailmark_core::problem::{
-    BoxesWorld, GraphKind, GraphStats, Problem, SamplerKind, SolveResult, Status, Waypoint,
-};
 use trailmark_sample::paths::PathFault;
 use trailmark_sample::prm::Connection;
 use trailmark_sample::{
@@ -15,38 +12,46 @@ use trailmark_sample::{
 
 use trailmark_graph::prm::{MAX_NODES, PrmError};
 
-use super::sampling::{box_ends, box_world, by_dimension};
-use super::{DEFAULT_SAMPLES, SolveError, heuristic_of, same_length, search, states_of};
 use trailmark_core::grid::GridHeuristic;
+
+use super::error::{DocumentError, SolveError};
+use super::polygons::DEFAULT_SAMPLES;
+use super::problem::{BoxesSpec, GraphKind, ProblemSpec, SamplerKind};
+use super::result::{GraphStats, SolveResult, Status, Waypoint, same_length, states_of};
+use super::sampling::{box_ends, box_world, by_dimension};
 
 /// The draws a roadmap may make per sample asked for, as the polygon roadmap's default.
 const ATTEMPTS_PER_SAMPLE: u64 = 1_000;
 
 /// Solves a box-world problem on a PRM roadmap.
-pub(super) fn solve_box_roadmap(problem: &Problem, world: &BoxesWorld) -> Result<SolveResult, SolveError> {
+pub(super) fn solve_box_roadmap(problem: &ProblemSpec, world: &BoxesSpec) -> Result<SolveResult, SolveError> {
     let kind = problem.graph.unwrap_or(GraphKind::Prm);
     if kind != GraphKind::Prm {
-        return Err(SolveError::InvalidBoxes(format!("takes \"graph\": \"prm\", not \"{}\"", kind.name())));
+        return Err(DocumentError::InvalidBoxes(format!(
+            "takes \"graph\": \"prm\", not \"{}\"",
+            kind.name()
+        ))
+        .into());
     }
     if problem.turning_radius.is_some() {
-        return Err(SolveError::NotForGraph { field: "turning_radius", graph: kind.name() });
+        return Err(DocumentError::NotForGraph { field: "turning_radius", graph: kind.name() }.into());
     }
     if problem.space.is_some() {
-        return Err(SolveError::NotForPlanner { field: "space", planner: problem.planner.name() });
+        return Err(DocumentError::NotForPlanner { field: "space", planner: problem.planner.name() }.into());
     }
-    let (asked, _) = heuristic_of(&problem.planner);
+    let (asked, _) = problem.planner.heuristic();
     if let Some(heuristic) = asked.filter(|&h| h != GridHeuristic::Euclidean) {
-        return Err(SolveError::NotEuclidean { heuristic });
+        return Err(DocumentError::NotEuclidean { heuristic }.into());
     }
     by_dimension!(world, roadmap(problem, world))
 }
 
 /// [`solve_box_roadmap`] in `N` dimensions.
-fn roadmap<const N: usize>(problem: &Problem, world: &BoxesWorld) -> Result<SolveResult, SolveError> {
+fn roadmap<const N: usize>(problem: &ProblemSpec, world: &BoxesSpec) -> Result<SolveResult, SolveError> {
     let world = box_world::<N>(world)?;
     let (start, goal) = box_ends::<N>(problem)?;
     let connection = match (problem.k, problem.radius) {
-        (Some(_), Some(_)) => return Err(SolveError::KAndRadius),
+        (Some(_), Some(_)) => return Err(DocumentError::KAndRadius.into()),
         (Some(k), None) => Connection::Nearest { k },
         (None, Some(radius)) => Connection::Radius { radius },
         (None, None) => Connection::PrmStar,
@@ -63,7 +68,7 @@ fn roadmap<const N: usize>(problem: &Problem, world: &BoxesWorld) -> Result<Solv
 
 /// Grows `prm`, joins the ends, searches and re-checks the path.
 fn query<const N: usize, Q: StateSampler<Rn<N>>>(
-    problem: &Problem,
+    problem: &ProblemSpec,
     world: &BoxWorld<N>,
     mut prm: Prm<Rn<N>, KdNearest<Rn<N>, N>, Q>,
     (start, goal): (<Rn<N> as StateSpace>::State, <Rn<N> as StateSpace>::State),
@@ -89,7 +94,7 @@ fn query<const N: usize, Q: StateSampler<Rn<N>>>(
     let joined = clock.elapsed() - built;
     let heuristic = |a: u32, b: u32| space.distance(prm.state(a), prm.state(b));
     let waypoint = |n: u32| Waypoint::Point(space.coordinates(prm.state(n)));
-    let mut result = search(&prm, s, g, heuristic, &problem.planner, waypoint)?;
+    let mut result = problem.planner.search(&prm, (s, g), heuristic, waypoint)?;
     // A sampled roadmap without a path proves nothing: more samples may find one.
     if result.status == Status::NoPath {
         result.status = Status::Stopped;

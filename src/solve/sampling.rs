@@ -5,21 +5,22 @@ use std::time::{Duration, Instant};
 
 use trailmark_core::geometry::Point;
 use trailmark_core::geometry::SVector;
-use trailmark_core::problem::{
-    BoxesWorld, ImprovementRecord, PlannerSpec, Problem, ResultStats, SamplerSpec, SamplingSpec,
-    SamplingStats, SmoothedRecord, SolveResult, SpaceKind, Status, Waypoint,
-};
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::PolygonWorld;
 use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
 use trailmark_sample::{
-    BoxWorld, Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Planner,
-    Problem as PlanningProblem, R2, Rn, Rrt, RrtConnect, RrtOptions, RrtStar, Solution, StateSampler,
-    StateSpace, Termination, shortcut,
+    BoxWorld, Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Problem as PlanningProblem, R2,
+    Rn, RrtOptions, Solution, StateSampler, StateSpace, Termination, shortcut,
 };
 
-use super::{Coordinates, SolveError, dubins_curve, roadmap_fields};
+use super::error::{DocumentError, SolveError};
+use super::planner::{SamplerSpec, SamplingSpec};
+use super::polygons::dubins_curve;
+use super::problem::{BoxesSpec, ProblemSpec, SpaceKind};
+use super::result::{
+    Coordinates, ImprovementRecord, ResultStats, SamplingStats, SmoothedRecord, SolveResult, Status, Waypoint,
+};
 
 /// The iterations of a sampling planner given neither `max_iterations` nor `time_limit_s`.
 pub const DEFAULT_ITERATIONS: u64 = 10_000;
@@ -29,29 +30,29 @@ pub const SHORTCUT_ATTEMPTS: usize = 100;
 
 /// Solves a sampling-planner problem over `world`.
 pub(super) fn solve_sampling(
-    problem: &Problem,
+    problem: &ProblemSpec,
     world: &PolygonWorld,
     spec: &SamplingSpec,
     picture: Option<&mut String>,
 ) -> Result<SolveResult, SolveError> {
     let planner = problem.planner.name();
     // The roadmap's fields, except the turning radius, which a Dubins space takes too.
-    if let Some(&field) = roadmap_fields(problem).iter().find(|&&f| f != "turning_radius") {
-        return Err(SolveError::NotForPlanner { field, planner });
+    if let Some(&field) = problem.roadmap_fields().iter().find(|&&f| f != "turning_radius") {
+        return Err(DocumentError::NotForPlanner { field, planner }.into());
     }
     let space_kind = problem.space.unwrap_or(SpaceKind::R2);
     let checker = world.checker();
     let seed = problem.seed.unwrap_or(0);
-    let run = Run { problem, spec, checker: &checker, seed };
+    let run = SamplingRun { problem, spec, checker: &checker, seed };
     match space_kind {
-        SpaceKind::Rn => Err(SolveError::RnNeedsBoxes),
+        SpaceKind::Rn => Err(DocumentError::RnNeedsBoxes.into()),
         SpaceKind::R2 => {
             if problem.turning_radius.is_some() {
-                return Err(SolveError::NotForSpace { field: "turning_radius", space: "r2" });
+                return Err(DocumentError::NotForSpace { field: "turning_radius", space: "r2" }.into());
             }
             let space = R2::new(world.bounds());
             let state = |which, value: &[f64]| {
-                space.state_from_coordinates(value).ok_or_else(|| SolveError::NotAState {
+                space.state_from_coordinates(value).ok_or_else(|| DocumentError::NotAState {
                     which,
                     value: value.to_vec(),
                     space: "r2",
@@ -85,12 +86,12 @@ pub(super) fn solve_sampling(
         }
         SpaceKind::Dubins => {
             if spec.smooth.is_some() {
-                return Err(SolveError::NotForSpace { field: "smooth", space: "dubins" });
+                return Err(DocumentError::NotForSpace { field: "smooth", space: "dubins" }.into());
             }
-            let radius = problem.turning_radius.ok_or(SolveError::NoTurningRadius)?;
+            let radius = problem.turning_radius.ok_or(DocumentError::NoTurningRadius)?;
             let space = Dubins::new(world.bounds(), radius)?;
             let state = |which, value: &[f64]| {
-                space.state_from_coordinates(value).ok_or_else(|| SolveError::NotAState {
+                space.state_from_coordinates(value).ok_or_else(|| DocumentError::NotAState {
                     which,
                     value: value.to_vec(),
                     space: "dubins",
@@ -113,20 +114,24 @@ pub const MAX_BOX_DIMENSION: usize = 8;
 
 /// Solves a sampling-planner problem over a box world, in `"space": "rn"`.
 pub(super) fn solve_boxes(
-    problem: &Problem,
-    world: &BoxesWorld,
+    problem: &ProblemSpec,
+    world: &BoxesSpec,
     spec: &SamplingSpec,
 ) -> Result<SolveResult, SolveError> {
     let planner = problem.planner.name();
-    if let Some(&field) = roadmap_fields(problem).first() {
-        return Err(SolveError::NotForPlanner { field, planner });
+    if let Some(&field) = problem.roadmap_fields().first() {
+        return Err(DocumentError::NotForPlanner { field, planner }.into());
     }
     let space = problem.space.unwrap_or(SpaceKind::Rn);
     if space != SpaceKind::Rn {
-        return Err(SolveError::InvalidBoxes(format!("takes \"space\": \"rn\", not \"{}\"", space.name())));
+        return Err(DocumentError::InvalidBoxes(format!(
+            "takes \"space\": \"rn\", not \"{}\"",
+            space.name()
+        ))
+        .into());
     }
     if spec.smooth.is_some() {
-        return Err(SolveError::NotForSpace { field: "smooth", space: "rn" });
+        return Err(DocumentError::NotForSpace { field: "smooth", space: "rn" }.into());
     }
     by_dimension!(world, boxes(problem, world, spec))
 }
@@ -140,10 +145,11 @@ macro_rules! by_dimension {
     (@ $world:expr, $f:ident $args:tt, $($n:literal)*) => {
         match $world.bounds.len() {
             $($n => $f::<$n> $args,)*
-            d => Err(SolveError::InvalidBoxes(format!(
+            d => Err(DocumentError::InvalidBoxes(format!(
                 "has {d} axes; from 1 to {} are supported",
-                $crate::solve::sampling::MAX_BOX_DIMENSION
-            ))),
+                $crate::solve::MAX_BOX_DIMENSION
+            ))
+            .into()),
         }
     };
 }
@@ -151,23 +157,24 @@ pub(super) use by_dimension;
 
 /// [`solve_boxes`] in `N` dimensions.
 fn boxes<const N: usize>(
-    problem: &Problem,
-    world: &BoxesWorld,
+    problem: &ProblemSpec,
+    world: &BoxesSpec,
     spec: &SamplingSpec,
 ) -> Result<SolveResult, SolveError> {
     let world = box_world::<N>(world)?;
     let (start, goal) = box_ends::<N>(problem)?;
     let space = world.space();
-    let run = Run { problem, spec, checker: &world, seed: problem.seed.unwrap_or(0) };
+    let run = SamplingRun { problem, spec, checker: &world, seed: problem.seed.unwrap_or(0) };
     let (result, _) = run.plan(&space, KdNearest::<Rn<N>, N>::new(&space)?, start, goal)?;
     Ok(result)
 }
 
 /// The box world of a document, in `N` dimensions.
-pub(super) fn box_world<const N: usize>(world: &BoxesWorld) -> Result<BoxWorld<N>, SolveError> {
+pub(super) fn box_world<const N: usize>(world: &BoxesSpec) -> Result<BoxWorld<N>, SolveError> {
     let corner = |v: &[f64], what: &str| -> Result<[f64; N], SolveError> {
-        <[f64; N]>::try_from(v)
-            .map_err(|_| SolveError::InvalidBoxes(format!("{what} has {} coordinates, not {N}", v.len())))
+        <[f64; N]>::try_from(v).map_err(|_| {
+            DocumentError::InvalidBoxes(format!("{what} has {} coordinates, not {N}", v.len())).into()
+        })
     };
     let low: Vec<f64> = world.bounds.iter().map(|b| b[0]).collect();
     let high: Vec<f64> = world.bounds.iter().map(|b| b[1]).collect();
@@ -182,27 +189,27 @@ pub(super) fn box_world<const N: usize>(world: &BoxesWorld) -> Result<BoxWorld<N
 
 /// The start and goal of a box-world problem, in `N` dimensions.
 pub(super) fn box_ends<const N: usize>(
-    problem: &Problem,
+    problem: &ProblemSpec,
 ) -> Result<(SVector<f64, N>, SVector<f64, N>), SolveError> {
     let state = |which, value: &[f64]| {
         <[f64; N]>::try_from(value)
             .ok()
             .filter(|c| c.iter().all(|x| x.is_finite()))
             .map(SVector::from)
-            .ok_or_else(|| SolveError::NotAState { which, value: value.to_vec(), space: "rn" })
+            .ok_or_else(|| DocumentError::NotAState { which, value: value.to_vec(), space: "rn" })
     };
     Ok((state("start", &problem.start)?, state("goal", &problem.goal)?))
 }
 
 /// A sampling planner's run: the problem, its settings, the world's validity and the seed.
-struct Run<'a, V> {
-    problem: &'a Problem,
+struct SamplingRun<'a, V> {
+    problem: &'a ProblemSpec,
     spec: &'a SamplingSpec,
     checker: &'a V,
     seed: u64,
 }
 
-impl<V> Run<'_, V> {
+impl<V> SamplingRun<'_, V> {
     /// Plans from `start` to `goal` in `space`, simplifies when asked; the result and the path.
     fn plan<S, N>(
         &self,
@@ -231,16 +238,18 @@ impl<V> Run<'_, V> {
         let problem = PlanningProblem::new(space, self.checker, start, goal);
         let limits = (&options, &termination);
         let plan = match spec.sampler.unwrap_or_default() {
-            SamplerSpec::Uniform {} => self.search(&problem, nearest, trailmark_sample::Uniform, limits)?,
+            SamplerSpec::Uniform {} => {
+                self.run_planner(&problem, nearest, trailmark_sample::Uniform, limits)?
+            }
             SamplerSpec::Bridge { std_dev, share, attempts } => {
                 let bridge = Bridge::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
                 let bridge = bridge.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
-                self.search(&problem, nearest, bridge, limits)?
+                self.run_planner(&problem, nearest, bridge, limits)?
             }
             SamplerSpec::Gaussian { std_dev, share, attempts } => {
                 let gaussian = Gaussian::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
                 let gaussian = gaussian.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
-                self.search(&problem, nearest, gaussian, limits)?
+                self.run_planner(&problem, nearest, gaussian, limits)?
             }
         };
         let planned = plan.solution.any_path().map(<[S::State]>::to_vec).unwrap_or_default();
@@ -299,8 +308,8 @@ impl<V> Run<'_, V> {
         Ok((result, path))
     }
 
-    /// The problem's planner on `problem`, drawing from `sampler`.
-    fn search<S, N, Q>(
+    /// The document's planner on `problem`, drawing from `sampler`.
+    fn run_planner<S, N, Q>(
         &self,
         problem: &PlanningProblem<'_, S, V>,
         nearest: N,
@@ -313,16 +322,9 @@ impl<V> Run<'_, V> {
         Q: StateSampler<S>,
         V: trailmark_sample::Validity<S>,
     {
-        let (options, seed) = (*options, self.seed);
-        let mut planner: Box<dyn Planner<S, V> + '_> = match self.problem.planner {
-            PlannerSpec::Rrt(_) => {
-                Box::new(Rrt::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
-            }
-            PlannerSpec::RrtConnect(_) => {
-                Box::new(RrtConnect::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
-            }
-            _ => Box::new(RrtStar::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed)),
-        };
+        let planner = self.problem.planner.sampling_planner(nearest, sampler, *options, self.seed);
+        let mut planner =
+            planner.ok_or(DocumentError::NotASamplingPlanner { planner: self.problem.planner.name() })?;
         Ok(planner.solve(problem, termination)?)
     }
 }

@@ -39,7 +39,7 @@ macro_rules! errln {
 /// Prints `{"status": "error", "error": message}` on standard output and gives exit code 2:
 /// the contract of every subcommand for input it cannot use.
 pub fn error_report(message: impl std::fmt::Display) -> std::process::ExitCode {
-    let report = trailmark::problem::ErrorReport::new(message);
+    let report = trailmark::solve::ErrorReport::new(message);
     line(format_args!("{}", serde_json::to_string(&report).unwrap_or_default()));
     std::process::ExitCode::from(2)
 }

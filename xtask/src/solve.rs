@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use trailmark::core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
-use trailmark::problem::Problem;
+use trailmark::solve::ProblemSpec;
 
 /// Prints the result of the problem in `path` (or standard input for `-`); on a bad problem,
 /// prints `{"status": "error", "error": ...}` and exits with 2.
@@ -45,7 +45,7 @@ fn solve(path: &Path) -> Result<String, String> {
 }
 
 /// The problem in `path` and the folder its relative paths are relative to.
-fn read(path: &Path) -> Result<(Problem, PathBuf), String> {
+fn read(path: &Path) -> Result<(ProblemSpec, PathBuf), String> {
     let (text, base) = if path == Path::new("-") {
         let mut text = String::new();
         // At most one byte past the cap, so that an endless input is refused, not read.
@@ -61,7 +61,7 @@ fn read(path: &Path) -> Result<(Problem, PathBuf), String> {
         let text = read_to_string_capped(path, MAX_DOCUMENT_BYTES).map_err(|e| e.to_string())?;
         (text, path.parent().map(Path::to_path_buf).unwrap_or_default())
     };
-    let problem: Problem =
+    let problem: ProblemSpec =
         serde_json::from_str(&text).map_err(|e| format!("{}: invalid problem: {e}", path.display()))?;
     Ok((problem, base))
 }

@@ -1,6 +1,6 @@
 //! The vocabulary shared by every trailmark crate: geometry, costs, graph traits, grids,
-//! polygon worlds and their free space, Dubins curves, MovingAI benchmark files, problem/result
-//! documents and SVG pictures.
+//! polygon worlds and their free space, Dubins curves, MovingAI benchmark files and SVG
+//! pictures.
 //!
 //! Algorithms (`trailmark-search`) and graph builders (`trailmark-graph`) both depend on this
 //! crate and never on each other; a graph of your own that implements the traits of [`graph`]
@@ -34,7 +34,6 @@ pub mod graph;
 pub mod grid;
 pub mod movingai;
 pub mod path;
-pub mod problem;
 pub mod read;
 pub mod smooth;
 pub mod svg;

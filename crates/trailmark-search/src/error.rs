@@ -85,3 +85,26 @@ pub enum SearchError<N: Debug> {
     #[error("the graph has {0} node indices; a search supports at most {max}", max = crate::search::MAX_NODES)]
     TooManyNodes(usize),
 }
+
+impl<N: Debug> SearchError<N> {
+    /// The same error with each node it names written as `f(node)`: for a caller that reports
+    /// nodes in its own terms (a roadmap's node ids as points, say).
+    pub fn map_node<M: Debug>(self, mut f: impl FnMut(N) -> M) -> SearchError<M> {
+        match self {
+            SearchError::StartNotInGraph(n) => SearchError::StartNotInGraph(f(n)),
+            SearchError::GoalNotInGraph(n) => SearchError::GoalNotInGraph(f(n)),
+            SearchError::InvalidEdgeCost { from, to, cost } => {
+                SearchError::InvalidEdgeCost { from: f(from), to: f(to), cost }
+            }
+            SearchError::ZeroCostEdge { from, to } => SearchError::ZeroCostEdge { from: f(from), to: f(to) },
+            SearchError::InvalidHeuristic { node, value } => {
+                SearchError::InvalidHeuristic { node: f(node), value }
+            }
+            SearchError::InvalidWeight(w) => SearchError::InvalidWeight(w),
+            SearchError::UnknownNode(n) => SearchError::UnknownNode(f(n)),
+            SearchError::InvalidEpsilon { initial, step } => SearchError::InvalidEpsilon { initial, step },
+            SearchError::CostOverflow { node } => SearchError::CostOverflow { node: f(node) },
+            SearchError::TooManyNodes(n) => SearchError::TooManyNodes(n),
+        }
+    }
+}

@@ -1,0 +1,104 @@
+//! Grid worlds: a MovingAI map or inline rows, with costs, searched cell to cell.
+
+use std::path::Path;
+
+use trailmark_core::grid::{Cell, Grid, GridError, GridHeuristic, is_cell_cost};
+use trailmark_core::movingai;
+use trailmark_core::svg::GridSvg;
+use trailmark_graph::{CornerCutting, GridGraph};
+
+use super::error::{DocumentError, SolveError};
+use super::problem::{GridSpec, ProblemSpec};
+use super::result::{SolveResult, Waypoint};
+
+/// The grid of a grid world, with relative map paths resolved against `base_dir`.
+pub fn load_grid(world: &GridSpec, base_dir: impl AsRef<Path>) -> Result<Grid, SolveError> {
+    let mut grid = match (&world.map, &world.rows) {
+        (Some(map), None) => movingai::read_map(base_dir.as_ref().join(map))?,
+        (None, Some(rows)) => Grid::from_rows(rows)?,
+        _ => return Err(DocumentError::GridSource.into()),
+    };
+    if let Some(costs) = &world.costs {
+        let (w, h) = (grid.width(), grid.height());
+        let shape = |row, found| DocumentError::CostsShape { width: w, height: h, row, found };
+        if costs.len() != h as usize {
+            return Err(shape(costs.len(), costs.len()).into());
+        }
+        for (y, row) in (0..h).zip(costs) {
+            if row.len() != w as usize {
+                return Err(shape(y as usize, row.len()).into());
+            }
+            for (x, &c) in (0..w).zip(row) {
+                let cell = Cell::new(x, y);
+                if grid.is_passable(cell) {
+                    grid.set_cost(cell, c)?;
+                } else if !(c.is_finite() && is_cell_cost(c)) {
+                    // Blocked cells stay blocked, but their cost must still be a valid number.
+                    return Err(GridError::InvalidCost { cell, cost: c }.into());
+                }
+            }
+        }
+    }
+    Ok(grid)
+}
+
+/// The grid graph of a grid world.
+pub fn grid_graph(world: &GridSpec, grid: &Grid) -> GridGraph {
+    let rule = if world.corner_cutting { CornerCutting::Allowed } else { CornerCutting::Forbidden };
+    GridGraph::new(grid, world.connectivity).with_corner_cutting(rule)
+}
+
+fn cell_of(which: &'static str, value: &[f64], grid: &Grid) -> Result<Cell, DocumentError> {
+    let whole = |v: f64| v.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&v);
+    let [x, y] = value else { return Err(DocumentError::NotACell { which, value: value.to_vec() }) };
+    if !whole(*x) || !whole(*y) {
+        return Err(DocumentError::NotACell { which, value: value.to_vec() });
+    }
+    #[allow(clippy::cast_possible_truncation)] // whole numbers within u32, checked above
+    let cell = Cell::new(*x as u32, *y as u32);
+    if !grid.contains(cell) {
+        return Err(DocumentError::Outside { which, cell, width: grid.width(), height: grid.height() });
+    }
+    if !grid.is_passable(cell) {
+        return Err(DocumentError::Blocked { which, cell });
+    }
+    Ok(cell)
+}
+
+/// Solves a grid-world problem.
+pub(super) fn solve_grid(
+    problem: &ProblemSpec,
+    world: &GridSpec,
+    base_dir: &Path,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    if let Some(name) = problem.roadmap_fields().first() {
+        return Err(DocumentError::NotForGrids { field: name }.into());
+    }
+    let grid = load_grid(world, base_dir)?;
+    let start = cell_of("start", &problem.start, &grid)?;
+    let goal = cell_of("goal", &problem.goal, &grid)?;
+    let graph = grid_graph(world, &grid);
+    let natural = GridHeuristic::for_connectivity(world.connectivity);
+    let (asked, optimal) = problem.planner.heuristic();
+    let kind = asked.unwrap_or(natural);
+    if optimal && !kind.is_admissible(world.connectivity) {
+        return Err(DocumentError::Inadmissible { heuristic: kind }.into());
+    }
+    let h = graph.heuristic_between(kind);
+    let result = problem.planner.search(&graph, (start, goal), h, Waypoint::Cell)?;
+    if let Some(picture) = picture {
+        let cells: Vec<Cell> = result
+            .path
+            .iter()
+            .filter_map(|w| match w {
+                Waypoint::Cell(c) => Some(*c),
+                Waypoint::Point(_) => None,
+            })
+            .collect();
+        let scale = (800.0 / f64::from(grid.width().max(grid.height()))).clamp(1.0, 24.0);
+        let svg = GridSvg::new(&grid).cell_size(scale).path(&cells).start(start).goal(goal);
+        *picture = svg.title(format!("{} from {start} to {goal}", problem.planner.name())).to_svg();
+    }
+    Ok(result)
+}

@@ -1,0 +1,108 @@
+//! Solving a problem document: read a [`ProblemSpec`], build the world's graph, run the named
+//! planner, report a [`SolveResult`].
+//!
+//! This is the engine of `cargo xtask solve`, usable from Rust as well. The document's schema
+//! is here too ([`ProblemSpec`], [`PlannerSpec`], [`WorldSpec`] and the result types), and so
+//! is the registry of the planners it runs ([`PlannerSpec`]).
+//!
+//! ```
+//! use trailmark::solve::{ProblemSpec, Status, solve};
+//!
+//! let problem: ProblemSpec = serde_json::from_str(r#"{
+//!     "world": {"grid": {"rows": ["....", ".@@.", "...."]}},
+//!     "start": [0, 0], "goal": [3, 2],
+//!     "planner": {"name": "astar"}
+//! }"#)?;
+//! let result = solve(&problem, ".")?;
+//! assert_eq!(result.status, Status::Solved);
+//! assert_eq!(result.cost, Some(5.0));
+//! assert_eq!(result.path.len(), 6);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+// Integer casts of user-derived values are checked conversions here, not silent truncation.
+#![deny(clippy::cast_possible_truncation)]
+
+mod box_roadmap;
+mod error;
+mod grid;
+mod planner;
+mod polygons;
+mod problem;
+mod result;
+mod sampling;
+
+pub use error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
+pub use grid::{grid_graph, load_grid};
+pub use planner::{AnytimeSpec, PlannerSpec, SamplerSpec, SamplingSpec};
+pub use polygons::DEFAULT_SAMPLES;
+pub use problem::{BoxesSpec, GraphKind, GridSpec, ProblemSpec, SamplerKind, SpaceKind, WorldSpec};
+pub use result::{
+    ErrorReport, GraphStats, ImprovementRecord, IterationRecord, ResultStats, SamplingStats, SmoothedRecord,
+    SolveResult, Status, Waypoint, anytime_result_of, result_of,
+};
+pub use sampling::{DEFAULT_ITERATIONS, MAX_BOX_DIMENSION, SHORTCUT_ATTEMPTS};
+
+use std::path::Path;
+
+/// Solves `problem`; relative file paths in it are resolved against `base_dir`.
+pub fn solve(problem: &ProblemSpec, base_dir: impl AsRef<Path>) -> Result<SolveResult, SolveError> {
+    solve_inner(problem, base_dir.as_ref(), None)
+}
+
+/// Solves `problem` as [`solve`] does and draws it: an SVG of the world (the obstacles and, for
+/// polygon worlds, their boundary grown by the robot radius), the roadmap that was searched,
+/// and the path.
+///
+/// ```
+/// use trailmark::solve::{ProblemSpec, solve_and_draw};
+///
+/// let problem: ProblemSpec = serde_json::from_str(r#"{
+///     "world": {"polygons": {"bounds": [0, 0, 10, 10], "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]]}},
+///     "graph": "visibility", "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}
+/// }"#)?;
+/// let (result, svg) = solve_and_draw(&problem, ".")?;
+/// assert_eq!(result.cost, Some(2.0 * 58f64.sqrt() + 2.0)); // over the wall's top corners
+/// assert!(svg.starts_with("<svg") && svg.contains("<polyline"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn solve_and_draw(
+    problem: &ProblemSpec,
+    base_dir: impl AsRef<Path>,
+) -> Result<(SolveResult, String), SolveError> {
+    let mut picture = String::new();
+    let result = solve_inner(problem, base_dir.as_ref(), Some(&mut picture))?;
+    Ok((result, picture))
+}
+
+fn solve_inner(
+    problem: &ProblemSpec,
+    base_dir: &Path,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    let planner = &problem.planner;
+    if let Some(t) = planner.time_limit_s()
+        && !(0.0..=MAX_TIME_LIMIT_S).contains(&t)
+    {
+        return Err(DocumentError::TimeLimit(t).into());
+    }
+    if let Some(n) = planner.sampling().and_then(|spec| spec.max_iterations)
+        && n > MAX_ITERATIONS
+    {
+        return Err(DocumentError::TooManyIterations(n).into());
+    }
+    if problem.space.is_some() && planner.sampling().is_none() {
+        return Err(DocumentError::NotForPlanner { field: "space", planner: planner.name() }.into());
+    }
+    let undrawable =
+        || DocumentError::InvalidBoxes("cannot be drawn: pictures are of grid and polygon worlds".into());
+    match (&problem.world, planner.sampling()) {
+        (WorldSpec::Grid(_), Some(_)) => Err(DocumentError::NeedsPolygons { planner: planner.name() }.into()),
+        (WorldSpec::Grid(world), None) => grid::solve_grid(problem, world, base_dir, picture),
+        (WorldSpec::Polygons(world), Some(spec)) => sampling::solve_sampling(problem, world, spec, picture),
+        (WorldSpec::Polygons(world), None) => polygons::solve_polygons(problem, world, picture),
+        (WorldSpec::Boxes(_), _) if picture.is_some() => Err(undrawable().into()),
+        (WorldSpec::Boxes(world), Some(spec)) => sampling::solve_boxes(problem, world, spec),
+        (WorldSpec::Boxes(world), None) => box_roadmap::solve_box_roadmap(problem, world),
+    }
+}

@@ -1,0 +1,351 @@
+//! The planners of a problem document and how [`solve`](super::solve) runs each one: the
+//! registry. Adding a planner to `solve` touches this file only (and the planner's own crate).
+
+use std::time::Duration;
+
+use serde::{Deserialize, Serialize};
+use trailmark_core::Cost;
+use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
+use trailmark_core::grid::GridHeuristic;
+use trailmark_core::smooth::Smoothing;
+use trailmark_sample::{
+    NearestNeighbors, Planner, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
+};
+use trailmark_search::{
+    AdStar, Budget, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult, ara_star,
+};
+
+use super::error::{DocumentError, SolveError};
+use super::result::{SolveResult, Waypoint, anytime_result_of, result_of};
+
+/// A planner and its parameters. In JSON, an object whose `"name"` selects the planner.
+///
+/// This enum and its `impl` below are the registry of the planners [`solve`](super::solve)
+/// runs: a new planner is a variant here, and the compiler then asks for its arm in each
+/// `match` of this file (its name, the heuristic it needs, and how it runs).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "name", deny_unknown_fields)]
+pub enum PlannerSpec {
+    /// Breadth-first search: fewest moves, whatever their costs.
+    #[serde(rename = "bfs")]
+    Bfs {},
+    /// Depth-first search: some path, quickly found, not short.
+    #[serde(rename = "dfs")]
+    Dfs {},
+    /// Dijkstra's algorithm: least cost.
+    #[serde(rename = "dijkstra")]
+    Dijkstra {},
+    /// A*: least cost, guided by an admissible heuristic.
+    #[serde(rename = "astar")]
+    AStar {
+        /// The heuristic (default: octile for 8-connected grids, Manhattan for 4-connected).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
+    /// Weighted A*: A* with the heuristic inflated by `weight >= 1`; cost at most `weight` times
+    /// the least cost.
+    #[serde(rename = "weighted_astar")]
+    WeightedAStar {
+        /// The inflation factor, at least 1.
+        weight: f64,
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
+    /// Lifelong Planning A*: the incremental forward search (on a static world, one search).
+    #[serde(rename = "lpa_star")]
+    LpaStar {
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
+    /// D* Lite: the incremental backward search (on a static world, one search).
+    #[serde(rename = "dstar_lite")]
+    DStarLite {
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
+    /// ARA*: anytime repairing A*, from `epsilon` down to 1 by `epsilon_step`, unless a limit
+    /// stops it first.
+    #[serde(rename = "ara_star")]
+    AraStar(AnytimeSpec),
+    /// AD*: anytime D*, as ARA* but searching backward from the goal.
+    #[serde(rename = "ad_star")]
+    AdStar(AnytimeSpec),
+    /// RRT over a polygon world: one tree from the start, biased toward the goal.
+    #[serde(rename = "rrt")]
+    Rrt(SamplingSpec),
+    /// RRT-Connect over a polygon world: a tree from each end, grown toward each other.
+    #[serde(rename = "rrt_connect")]
+    RrtConnect(SamplingSpec),
+    /// RRT* over a polygon world: rewiring toward the least cost until its limit.
+    #[serde(rename = "rrt_star")]
+    RrtStar(SamplingSpec),
+}
+
+impl PlannerSpec {
+    /// The settings of a sampling planner, `None` for a graph search.
+    pub fn sampling(&self) -> Option<&SamplingSpec> {
+        match self {
+            PlannerSpec::Rrt(spec) | PlannerSpec::RrtConnect(spec) | PlannerSpec::RrtStar(spec) => Some(spec),
+            PlannerSpec::Bfs {}
+            | PlannerSpec::Dfs {}
+            | PlannerSpec::Dijkstra {}
+            | PlannerSpec::AStar { .. }
+            | PlannerSpec::WeightedAStar { .. }
+            | PlannerSpec::LpaStar { .. }
+            | PlannerSpec::DStarLite { .. }
+            | PlannerSpec::AraStar(_)
+            | PlannerSpec::AdStar(_) => None,
+        }
+    }
+
+    /// The name used in problem documents (`"astar"`, `"dstar_lite"`, ...).
+    pub fn name(&self) -> &'static str {
+        match self {
+            PlannerSpec::Bfs {} => "bfs",
+            PlannerSpec::Dfs {} => "dfs",
+            PlannerSpec::Dijkstra {} => "dijkstra",
+            PlannerSpec::AStar { .. } => "astar",
+            PlannerSpec::WeightedAStar { .. } => "weighted_astar",
+            PlannerSpec::LpaStar { .. } => "lpa_star",
+            PlannerSpec::DStarLite { .. } => "dstar_lite",
+            PlannerSpec::AraStar(_) => "ara_star",
+            PlannerSpec::AdStar(_) => "ad_star",
+            PlannerSpec::Rrt(_) => "rrt",
+            PlannerSpec::RrtConnect(_) => "rrt_connect",
+            PlannerSpec::RrtStar(_) => "rrt_star",
+        }
+    }
+
+    /// The heuristic the planner asks for, and whether it promises least cost (so that the
+    /// heuristic must be admissible).
+    pub(super) fn heuristic(&self) -> (Option<GridHeuristic>, bool) {
+        match self {
+            PlannerSpec::Bfs {} | PlannerSpec::Dfs {} | PlannerSpec::Dijkstra {} => (None, true),
+            PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => (None, false),
+            PlannerSpec::WeightedAStar { heuristic, .. } => (*heuristic, false),
+            PlannerSpec::AStar { heuristic }
+            | PlannerSpec::LpaStar { heuristic }
+            | PlannerSpec::DStarLite { heuristic }
+            | PlannerSpec::AraStar(AnytimeSpec { heuristic, .. })
+            | PlannerSpec::AdStar(AnytimeSpec { heuristic, .. }) => (*heuristic, true),
+        }
+    }
+
+    /// The planner's time limit in seconds, if it takes one and the document gives it.
+    pub(super) fn time_limit_s(&self) -> Option<f64> {
+        match self {
+            PlannerSpec::AraStar(spec) | PlannerSpec::AdStar(spec) => spec.time_limit_s,
+            planner => planner.sampling().and_then(|spec| spec.time_limit_s),
+        }
+    }
+
+    /// Runs this graph search from `start` to `goal` on `graph` with the heuristic `h(a, b)`,
+    /// writing each path node (and each node an error names) as `waypoint(node)`. Sampling
+    /// planners draw their own states: they are run by [`PlannerSpec::sampling_planner`].
+    pub(super) fn search<G, H>(
+        &self,
+        graph: &G,
+        (start, goal): (G::Node, G::Node),
+        h: H,
+        waypoint: impl Fn(G::Node) -> Waypoint,
+    ) -> Result<SolveResult, SolveError>
+    where
+        G: Successors + Predecessors + IndexedGraph,
+        H: Fn(G::Node, G::Node) -> Cost + Copy,
+    {
+        let to_goal = |n| h(n, goal);
+        let mut search = Search::new();
+        let searched = |error: SearchError<G::Node>| SolveError::Search(error.map_node(&waypoint));
+        let found = match self {
+            PlannerSpec::Bfs {} => search.bfs(graph, start, goal),
+            PlannerSpec::Dfs {} => search.dfs(graph, start, goal),
+            PlannerSpec::Dijkstra {} => search.dijkstra(graph, start, goal),
+            PlannerSpec::AStar { .. } => search.astar(graph, start, goal, to_goal),
+            PlannerSpec::WeightedAStar { weight, .. } => {
+                search.weighted_astar(graph, start, goal, to_goal, *weight)
+            }
+            PlannerSpec::LpaStar { .. } => LpaStar::new(graph, start, goal, h).and_then(|mut planner| {
+                let stats = planner.compute_shortest_path(graph)?;
+                Ok(SearchResult { path: planner.path(graph), stats })
+            }),
+            PlannerSpec::DStarLite { .. } => DStarLite::new(graph, start, goal, h).and_then(|mut planner| {
+                let stats = planner.compute_shortest_path(graph)?;
+                Ok(SearchResult { path: planner.path(graph), stats })
+            }),
+            PlannerSpec::AraStar(spec) => {
+                let found = ara_star(graph, start, goal, to_goal, spec.schedule(), spec.budget());
+                return Ok(anytime_result_of(&found.map_err(searched)?, waypoint));
+            }
+            PlannerSpec::AdStar(spec) => {
+                let found = AdStar::new(graph, start, goal, h, spec.schedule())
+                    .and_then(|mut planner| planner.improve(graph, spec.budget()));
+                return Ok(anytime_result_of(&found.map_err(searched)?, waypoint));
+            }
+            PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => {
+                return Err(DocumentError::NotAGraphSearch { planner: self.name() }.into());
+            }
+        };
+        Ok(result_of(&found.map_err(searched)?, waypoint))
+    }
+
+    /// This sampling planner over the space `S` with the validity `V`, with its nearest
+    /// neighbours, sampler, options and seed; `None` for a graph search.
+    pub(super) fn sampling_planner<'a, S, V, N, Q>(
+        &self,
+        nearest: N,
+        sampler: Q,
+        options: RrtOptions,
+        seed: u64,
+    ) -> Option<Box<dyn Planner<S, V> + 'a>>
+    where
+        S: StateSpace + 'a,
+        V: Validity<S> + 'a,
+        N: NearestNeighbors<S> + Clone + 'a,
+        Q: StateSampler<S> + 'a,
+    {
+        Some(match self {
+            PlannerSpec::Rrt(_) => {
+                Box::new(Rrt::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
+            }
+            PlannerSpec::RrtConnect(_) => {
+                Box::new(RrtConnect::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
+            }
+            PlannerSpec::RrtStar(_) => {
+                Box::new(RrtStar::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
+            }
+            // The graph searches, for which `sampling()` is `None`.
+            _ => return None,
+        })
+    }
+}
+
+/// The settings of an anytime search (ARA*, AD*). Each has a default.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AnytimeSpec {
+    /// The initial inflation (default 3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub epsilon: Option<f64>,
+    /// The decrease per iteration (default 0.5).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub epsilon_step: Option<f64>,
+    /// The heuristic (default as for A*).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heuristic: Option<GridHeuristic>,
+    /// Stop after this many seconds (default: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time_limit_s: Option<f64>,
+    /// Stop after this many expansions (default: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_expansions: Option<u64>,
+}
+
+impl AnytimeSpec {
+    /// The inflation schedule, with the library's defaults.
+    fn schedule(&self) -> EpsilonSchedule {
+        let default = EpsilonSchedule::default();
+        EpsilonSchedule::new(
+            self.epsilon.unwrap_or(default.initial),
+            self.epsilon_step.unwrap_or(default.step),
+        )
+    }
+
+    /// The limits of the search.
+    fn budget(&self) -> Budget {
+        // Checked by solve: a limit too large for a Duration has been refused already.
+        let time = self.time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
+        Budget { time, expansions: self.max_expansions }
+    }
+}
+
+/// The settings of a sampling planner (RRT, RRT-Connect, RRT*). Each has a default.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SamplingSpec {
+    /// The longest motion added at once (default 0.2 x the space's extent).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub range: Option<f64>,
+    /// RRT and RRT*: the probability of steering toward the goal (default 0.05).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goal_bias: Option<f64>,
+    /// Stop after this many iterations (default 10,000 unless `time_limit_s` is given).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_iterations: Option<u64>,
+    /// Stop after this many seconds (default: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time_limit_s: Option<f64>,
+    /// Shortcut the path afterwards (default false).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub simplify: Option<bool>,
+    /// `r2` only: smooth the (simplified) path with `hermite`, `bezier` or `bspline` curves,
+    /// reported beside it (default: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub smooth: Option<Smoothing>,
+    /// Where samples are drawn (default: uniformly).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sampler: Option<SamplerSpec>,
+}
+
+/// Where a sampling planner draws the states it steers toward. In JSON, an object whose
+/// `"name"` selects the sampler; the two that look for obstacles take `"std_dev"` (required:
+/// the distance between the two states tested, about the width of the passages sought),
+/// `"share"` (default 0.5) and `"attempts"` (default 100).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "name", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SamplerSpec {
+    /// Uniformly over the space. (A struct variant, so that unknown fields beside its name
+    /// are refused as for the others.)
+    Uniform {},
+    /// The bridge test: free midpoints of two nearby states in collision (narrow passages).
+    Bridge {
+        /// The partner's standard deviation.
+        std_dev: f64,
+        /// The probability of a bridge sample rather than a uniform one.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        share: Option<f64>,
+        /// Tries before a uniform sample.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        attempts: Option<u32>,
+    },
+    /// Free states beside states in collision (near obstacles' surfaces).
+    Gaussian {
+        /// The partner's standard deviation.
+        std_dev: f64,
+        /// The probability of such a sample rather than a uniform one.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        share: Option<f64>,
+        /// Tries before a uniform sample.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        attempts: Option<u32>,
+    },
+}
+
+impl Default for SamplerSpec {
+    fn default() -> Self {
+        SamplerSpec::Uniform {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every sampler refuses a field it does not take, the uniform one included.
+    #[test]
+    fn samplers_refuse_unknown_fields() {
+        let spec =
+            |sampler: &str| serde_json::from_str::<SamplingSpec>(&format!(r#"{{"sampler": {sampler}}}"#));
+        assert_eq!(spec(r#"{"name": "uniform"}"#).unwrap().sampler, Some(SamplerSpec::Uniform {}));
+        for sampler in [
+            r#"{"name": "uniform", "std_dev": 2}"#,
+            r#"{"name": "uniform", "surprise": true}"#,
+            r#"{"name": "bridge", "std_dev": 2, "surprise": true}"#,
+            r#"{"name": "gaussian", "std_dev": 2, "surprise": true}"#,
+        ] {
+            assert!(spec(sampler).is_err(), "{sampler}");
+        }
+    }
+}

@@ -1,0 +1,263 @@
+//! Polygon worlds searched on a roadmap: the visibility graph, the trapezoidal cells, a
+//! probabilistic roadmap of points or of Dubins poses. Every path found is re-checked exactly.
+
+use std::time::{Duration, Instant};
+
+use trailmark_core::dubins::DubinsPath;
+use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::grid::GridHeuristic;
+use trailmark_core::svg::WorldSvg;
+use trailmark_core::world::{CollisionChecker, PolygonWorld};
+use trailmark_graph::prm::{Connection, PlanarSpace, Prm, PrmOptions, Sampler};
+use trailmark_graph::trapezoid::TrapezoidError;
+use trailmark_graph::visibility::{Edges, VisibilityError};
+use trailmark_graph::{Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
+use trailmark_sample::{Dubins, StateSpace};
+
+use super::error::{DocumentError, SolveError};
+use super::problem::{GraphKind, ProblemSpec, SamplerKind};
+use super::result::{Coordinates, GraphStats, SolveResult, Status, Waypoint, same_length, states_of};
+
+/// Builds the roadmap a polygon-world problem names, joins its start and goal, and searches it;
+/// draws the world, the roadmap and the path into `picture` when one is given.
+pub(super) fn solve_polygons(
+    problem: &ProblemSpec,
+    world: &PolygonWorld,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    let kind = problem.graph.unwrap_or(GraphKind::Visibility);
+    let sampled = matches!(kind, GraphKind::Prm | GraphKind::DubinsPrm);
+    for field in problem.roadmap_fields() {
+        let applies = match field {
+            "graph" => true,
+            "turning_radius" => kind == GraphKind::DubinsPrm,
+            _ => sampled,
+        };
+        if !applies {
+            return Err(DocumentError::NotForGraph { field, graph: kind.name() }.into());
+        }
+    }
+    let (asked, _) = problem.planner.heuristic();
+    if let Some(heuristic) = asked.filter(|&h| h != GridHeuristic::Euclidean) {
+        return Err(DocumentError::NotEuclidean { heuristic }.into());
+    }
+    if kind == GraphKind::DubinsPrm {
+        return solve_dubins(problem, world, picture);
+    }
+    let point = |which, value: &[f64]| match *value {
+        [x, y] if x.is_finite() && y.is_finite() => Ok(Point::new(x, y)),
+        _ => Err(DocumentError::NotAPoint { which, value: value.to_vec(), graph: kind.name() }),
+    };
+    let (start, goal) = (point("start", &problem.start)?, point("goal", &problem.goal)?);
+    let checker = world.checker();
+    // The free space of the exact roadmaps is conservative by its resolution: a free end
+    // refused there is below that resolution, not blocked.
+    let refused = |which, at: Point, blocked: SolveError| {
+        if checker.point_is_free(at) {
+            let (x, y, resolution) = (at.x, at.y, world.resolution());
+            SolveError::BelowResolution { which, x, y, graph: kind.name(), resolution }
+        } else {
+            blocked
+        }
+    };
+    let clock = Instant::now();
+    let (result, svg) = match kind {
+        GraphKind::Visibility => {
+            let graph = VisibilityGraph::with_edges(world.free_space(), Edges::Tangent);
+            let built = clock.elapsed();
+            let query = graph.query(start, goal).map_err(|e| match e {
+                VisibilityError::StartBlocked { .. } => refused("start", start, e.into()),
+                VisibilityError::GoalBlocked { .. } => refused("goal", goal, e.into()),
+            })?;
+            let result = search_roadmap(problem, &query, built, clock.elapsed().saturating_sub(built))?;
+            let svg = WorldSvg::new(world).free_space(graph.space()).edges(graph.edge_ends());
+            (result, svg.title("Visibility graph (tangent edges) and the shortest path"))
+        }
+        GraphKind::Trapezoid => {
+            let space = world.free_space();
+            let graph = Trapezoids::new(&space);
+            let built = clock.elapsed();
+            let query = graph.query(start, goal).map_err(|e| match e {
+                TrapezoidError::StartBlocked { .. } => refused("start", start, e.into()),
+                TrapezoidError::GoalBlocked { .. } => refused("goal", goal, e.into()),
+            })?;
+            let result = search_roadmap(problem, &query, built, clock.elapsed().saturating_sub(built))?;
+            let cells = (0..graph.cell_count()).map(|c| graph.cell(c).corners().to_vec());
+            let svg = WorldSvg::new(world).free_space(&space).cells(cells).edges(graph.edge_ends());
+            (result, svg.title("Trapezoidal cells, their centroids and portal midpoints, and a path"))
+        }
+        _ => {
+            let prm = grow(problem, Prm::new(world.clone(), prm_options(problem)?)?)?;
+            let built = clock.elapsed();
+            let result = search_roadmap(
+                problem,
+                &prm.query(start, goal)?,
+                built,
+                clock.elapsed().saturating_sub(built),
+            )?;
+            let nodes = (0u32..).take(prm.node_count()).map(|u| prm.position(u));
+            let space = world.free_space();
+            let svg = WorldSvg::new(world).free_space(&space).edges(prm.edge_ends()).nodes(nodes);
+            let title = format!("PRM: {} samples, {} edges, and a path", prm.node_count(), prm.edge_count());
+            (result, svg.title(title))
+        }
+    };
+    let path: Vec<Point> = result.path.iter().filter_map(waypoint_point).collect();
+    if let Some(cost) = result.cost {
+        let rejected = |segment, reason| SolveError::PathRejected { graph: kind.name(), segment, reason };
+        if let Some(segment) = checker.first_blocked_segment(&path) {
+            return Err(rejected(segment, "the robot collides"));
+        }
+        let length: f64 = path.windows(2).map(|p| (p[1] - p[0]).norm()).sum();
+        if !same_length(cost, length) {
+            return Err(rejected(0, "the cost is not the path's length"));
+        }
+    }
+    if let Some(picture) = picture {
+        *picture = svg.path(&path).start(start).goal(goal).to_svg();
+    }
+    Ok(result)
+}
+
+/// [`solve_polygons`] on a Dubins roadmap: poses, directed Dubins edges.
+fn solve_dubins(
+    problem: &ProblemSpec,
+    world: &PolygonWorld,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    let radius = problem.turning_radius.ok_or(DocumentError::NoTurningRadius)?;
+    let space = Dubins::new(world.bounds(), radius)?;
+    let pose = |which, value: &[f64]| {
+        space
+            .state_from_coordinates(value)
+            .ok_or_else(|| DocumentError::NotAPose { which, value: value.to_vec() })
+    };
+    let (start, goal) = (pose("start", &problem.start)?, pose("goal", &problem.goal)?);
+    let clock = Instant::now();
+    let prm = grow(problem, Prm::with_space(world.clone(), space, prm_options(problem)?)?)?;
+    let built = clock.elapsed();
+    let result =
+        search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed().saturating_sub(built))?;
+    let poses: Vec<Pose> = states_of(&space, &result);
+    if let Some(cost) = result.cost {
+        check_dubins(&world.checker(), &poses, radius, cost)?;
+    }
+    if let Some(picture) = picture {
+        let curve = dubins_curve(&poses, radius);
+        let title =
+            format!("Dubins roadmap: {} poses, turning radius {radius}, and a path", prm.node_count());
+        *picture = WorldSvg::new(world)
+            .free_space(&world.free_space())
+            .poses((0u32..).take(prm.node_count()).map(|u| prm.position(u)))
+            .path(&curve)
+            .start(Point::from(start.translation.vector))
+            .goal(Point::from(goal.translation.vector))
+            .title(title)
+            .to_svg();
+    }
+    Ok(result)
+}
+
+/// The exact re-check of a Dubins roadmap's path: each shortest Dubins curve between
+/// consecutive poses collision-free, and their lengths adding up to `cost`.
+fn check_dubins(
+    checker: &CollisionChecker,
+    poses: &[Pose],
+    radius: f64,
+    cost: f64,
+) -> Result<(), SolveError> {
+    let rejected =
+        |segment, reason| SolveError::PathRejected { graph: GraphKind::DubinsPrm.name(), segment, reason };
+    if let [pose] = poses
+        && !checker.point_is_free(Point::from(pose.translation.vector))
+    {
+        return Err(rejected(0, "the robot collides"));
+    }
+    let mut length = 0.0;
+    for (segment, pair) in poses.windows(2).enumerate() {
+        let piece = DubinsPath::shortest(&pair[0], &pair[1], radius)
+            .map_err(|_| rejected(segment, "no Dubins curve joins the poses"))?;
+        if !checker.dubins_is_free(&piece) {
+            return Err(rejected(segment, "the robot collides"));
+        }
+        length += piece.length();
+    }
+    if !same_length(cost, length) {
+        return Err(rejected(0, "the cost is not the path's length"));
+    }
+    Ok(())
+}
+
+/// The positions along the shortest Dubins curves joining `poses` (a positive, finite turning
+/// `radius`), every `radius / 8`.
+pub(super) fn dubins_curve(poses: &[Pose], radius: f64) -> Vec<Point> {
+    let mut curve = Vec::new();
+    for pair in poses.windows(2) {
+        let Ok(piece) = DubinsPath::shortest(&pair[0], &pair[1], radius) else { continue };
+        // Every radius / 8, but no more than 10,000 points a piece for a picture.
+        let samples = piece.sample((radius / 8.0).max(piece.length() / 1e4)).unwrap_or_default();
+        curve.extend(samples.iter().map(|p| Point::from(p.translation.vector)));
+    }
+    curve
+}
+
+/// The point of a waypoint (the position of a pose).
+fn waypoint_point(waypoint: &Waypoint) -> Option<Point> {
+    match waypoint {
+        Waypoint::Point(c) if c.len() >= 2 => Some(Point::new(c[0], c[1])),
+        _ => None,
+    }
+}
+
+/// The PRM options of a problem.
+fn prm_options(problem: &ProblemSpec) -> Result<PrmOptions, SolveError> {
+    let sampler = match problem.sampler.unwrap_or(SamplerKind::Uniform) {
+        SamplerKind::Uniform => Sampler::Uniform { seed: problem.seed.unwrap_or(0) },
+        SamplerKind::Halton => Sampler::Halton,
+    };
+    let connection = match (problem.k, problem.radius) {
+        (Some(_), Some(_)) => return Err(DocumentError::KAndRadius.into()),
+        (Some(k), None) => Connection::Nearest { k },
+        (None, Some(radius)) => Connection::Radius { radius },
+        (None, None) => Connection::PrmStar,
+    };
+    Ok(PrmOptions { sampler, connection, ..PrmOptions::default() })
+}
+
+/// `prm` grown by the problem's number of samples.
+fn grow<S: PlanarSpace>(problem: &ProblemSpec, mut prm: Prm<S>) -> Result<Prm<S>, SolveError> {
+    prm.grow(problem.samples.unwrap_or(DEFAULT_SAMPLES))?;
+    Ok(prm)
+}
+
+/// The number of samples of a sampled roadmap when the problem gives none.
+pub const DEFAULT_SAMPLES: usize = 1000;
+
+/// Searches a roadmap query and reports the roadmap's size and timings with the result.
+fn search_roadmap<R>(
+    problem: &ProblemSpec,
+    query: &RoadmapQuery<'_, R>,
+    built: Duration,
+    joined: Duration,
+) -> Result<SolveResult, SolveError>
+where
+    R: Roadmap,
+    R::Position: Coordinates,
+{
+    let waypoint = |node| Waypoint::Point(query.position(node).coordinates());
+    let mut result =
+        problem.planner.search(query, (query.start(), query.goal()), query.heuristic_between(), waypoint)?;
+    // A sampled roadmap without a path proves nothing: more samples may find one.
+    let sampled = matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm));
+    if sampled && result.status == Status::NoPath {
+        result.status = Status::Stopped;
+    }
+    let roadmap = query.roadmap();
+    result.stats.graph = Some(GraphStats {
+        nodes: roadmap.node_count(),
+        edges: roadmap.count_edges(),
+        build_time_s: built.as_secs_f64(),
+        query_time_s: joined.as_secs_f64(),
+    });
+    Ok(result)
+}

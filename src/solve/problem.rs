@@ -1,0 +1,268 @@
+//! The problem document: a world, a start, a goal, a planner and its parameters, as serde
+//! types. Later planners extend these types with new variants and optional fields; existing
+//! documents keep their meaning. Everything is checked when it is solved, not when it is read.
+//!
+//! ```
+//! use trailmark::solve::{PlannerSpec, ProblemSpec, WorldSpec};
+//!
+//! let json = r#"{
+//!     "world": {"grid": {"rows": ["....", ".@@.", "...."], "connectivity": 8}},
+//!     "start": [0, 0], "goal": [3, 2],
+//!     "planner": {"name": "weighted_astar", "weight": 1.5}
+//! }"#;
+//! let problem: ProblemSpec = serde_json::from_str(json)?;
+//! assert_eq!(problem.planner, PlannerSpec::WeightedAStar { weight: 1.5, heuristic: None });
+//! let WorldSpec::Grid(grid) = &problem.world else { unreachable!() };
+//! assert_eq!(grid.rows.as_ref().map(Vec::len), Some(3));
+//! # Ok::<(), serde_json::Error>(())
+//! ```
+//!
+//! A polygon world is searched on a roadmap, named by `"graph"` with its parameters beside it:
+//!
+//! ```
+//! use trailmark::solve::{GraphKind, ProblemSpec, WorldSpec};
+//!
+//! let json = r#"{
+//!     "world": {"polygons": {"bounds": [0, 0, 10, 10],
+//!                            "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]],
+//!                            "robot_radius": 0.25}},
+//!     "graph": "prm", "samples": 500, "k": 12,
+//!     "start": [1, 1], "goal": [9, 1],
+//!     "planner": {"name": "astar"}
+//! }"#;
+//! let problem: ProblemSpec = serde_json::from_str(json)?;
+//! assert_eq!(problem.graph, Some(GraphKind::Prm));
+//! assert_eq!((problem.samples, problem.k), (Some(500), Some(12)));
+//! let WorldSpec::Polygons(world) = &problem.world else { unreachable!() };
+//! assert_eq!(world.obstacles().len(), 1);
+//! # Ok::<(), serde_json::Error>(())
+//! ```
+
+use std::path::PathBuf;
+
+use serde::{Deserialize, Serialize};
+use trailmark_core::grid::Connectivity;
+use trailmark_core::world::PolygonWorld;
+
+use super::planner::PlannerSpec;
+
+/// A planning problem: a world, a start, a goal, a planner and a seed; for a polygon world,
+/// also the roadmap to search and its parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProblemSpec {
+    /// The world to plan in.
+    pub world: WorldSpec,
+    /// The start: a cell `[x, y]` of a grid, a point `[x, y]` of a polygon world, or a pose
+    /// `[x, y, θ]` (θ in radians) for a Dubins roadmap.
+    pub start: Vec<f64>,
+    /// The goal, as the start.
+    pub goal: Vec<f64>,
+    /// The planner and its parameters.
+    pub planner: PlannerSpec,
+    /// The seed of every random choice (planners and graphs that draw none ignore it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// Polygon worlds: the roadmap to build (default: the visibility graph).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub graph: Option<GraphKind>,
+    /// Sampled roadmaps: the number of samples (default 1000).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub samples: Option<usize>,
+    /// Sampled roadmaps: join each sample to its `k` nearest neighbours (default, without `k`
+    /// or `radius`: PRM*'s k = ⌈e(1 + 1/d) ln n⌉).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub k: Option<usize>,
+    /// Sampled roadmaps: join each sample to every neighbour within this distance instead.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
+    /// Dubins roadmaps: the turning radius (required).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub turning_radius: Option<f64>,
+    /// Sampled roadmaps: how samples are drawn (default uniform, from `seed`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sampler: Option<SamplerKind>,
+    /// Sampling planners: the state space (default `r2`; `dubins` needs `turning_radius`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub space: Option<SpaceKind>,
+}
+
+impl ProblemSpec {
+    /// A problem with no seed and no roadmap parameters.
+    pub fn new(world: WorldSpec, start: Vec<f64>, goal: Vec<f64>, planner: PlannerSpec) -> Self {
+        ProblemSpec {
+            world,
+            start,
+            goal,
+            planner,
+            seed: None,
+            graph: None,
+            samples: None,
+            k: None,
+            radius: None,
+            turning_radius: None,
+            sampler: None,
+            space: None,
+        }
+    }
+
+    /// The roadmap fields this problem sets, by name (each applies to some graphs only).
+    pub(super) fn roadmap_fields(&self) -> Vec<&'static str> {
+        [
+            ("graph", self.graph.is_some()),
+            ("samples", self.samples.is_some()),
+            ("k", self.k.is_some()),
+            ("radius", self.radius.is_some()),
+            ("turning_radius", self.turning_radius.is_some()),
+            ("sampler", self.sampler.is_some()),
+        ]
+        .into_iter()
+        .filter_map(|(name, set)| set.then_some(name))
+        .collect()
+    }
+}
+
+/// The roadmap a polygon world is searched on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum GraphKind {
+    /// The visibility graph of the grown obstacles: shortest paths for a disc robot.
+    Visibility,
+    /// The trapezoidal (vertical) cell decomposition: cell centroids and portal midpoints.
+    Trapezoid,
+    /// A probabilistic roadmap of straight segments.
+    Prm,
+    /// A probabilistic roadmap of poses joined by Dubins curves (a car that turns no tighter
+    /// than `turning_radius`).
+    DubinsPrm,
+}
+
+impl GraphKind {
+    /// The name used in problem documents.
+    pub fn name(self) -> &'static str {
+        match self {
+            GraphKind::Visibility => "visibility",
+            GraphKind::Trapezoid => "trapezoid",
+            GraphKind::Prm => "prm",
+            GraphKind::DubinsPrm => "dubins_prm",
+        }
+    }
+}
+
+/// How a sampled roadmap draws its samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SamplerKind {
+    /// Uniform random samples from the problem's seed (default 0).
+    Uniform,
+    /// The deterministic Halton sequence (bases 2, 3 and 5).
+    Halton,
+}
+
+/// The state space of a sampling planner: over a polygon world, `r2` or `dubins`; over a box
+/// world, `rn`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SpaceKind {
+    /// Points `[x, y]` joined by straight motions.
+    R2,
+    /// Poses `[x, y, θ]` of a car joined by shortest Dubins curves of the problem's
+    /// `turning_radius`.
+    Dubins,
+    /// Points of a box world's dimension, joined by straight motions.
+    Rn,
+}
+
+impl SpaceKind {
+    /// The name used in problem documents.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpaceKind::R2 => "r2",
+            SpaceKind::Dubins => "dubins",
+            SpaceKind::Rn => "rn",
+        }
+    }
+}
+
+/// The world of a problem. In JSON, an object with one key naming the kind of world.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum WorldSpec {
+    /// A grid: `{"grid": {...}}`.
+    Grid(GridSpec),
+    /// Polygonal obstacles for a disc robot: `{"polygons": {"bounds": [xmin, ymin, xmax, ymax],
+    /// "obstacles": [[[x, y], ...], ...], "robot_radius": r}}`, checked as it is read.
+    Polygons(PolygonWorld),
+    /// Axis-aligned boxes in any dimension, for the sampling planners in `"space": "rn"`:
+    /// `{"boxes": {"bounds": [[lo, hi], ...], "obstacles": [[[lo, ...], [hi, ...]], ...]}}`.
+    Boxes(BoxesSpec),
+}
+
+/// A world of axis-aligned boxes: the region, one `[lo, hi]` per axis, and the obstacles, each
+/// its low and high corners. The dimensions and sides are checked when it is solved.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoxesSpec {
+    /// `[lo, hi]` per axis.
+    pub bounds: Vec<[f64; 2]>,
+    /// `[[lo, ...], [hi, ...]]` per box.
+    #[serde(default)]
+    pub obstacles: Vec<[Vec<f64>; 2]>,
+}
+
+/// A grid world: a MovingAI map file or inline rows, with its connectivity and optional costs.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GridSpec {
+    /// A MovingAI `.map` file (relative paths are relative to the problem file). Exactly one of
+    /// `map` and `rows` is given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub map: Option<PathBuf>,
+    /// The rows of the grid in MovingAI characters (`.` passable, `@` blocked, ...).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rows: Option<Vec<String>>,
+    /// Optional per-cell costs, one row of numbers per grid row, each positive; a blocked cell
+    /// stays blocked whatever its cost.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub costs: Option<Vec<Vec<f64>>>,
+    /// 4 or 8 (default 8).
+    #[serde(default)]
+    pub connectivity: Connectivity,
+    /// Whether a diagonal move may pass a blocked orthogonal neighbour (default false, the
+    /// MovingAI rule).
+    #[serde(default)]
+    pub corner_cutting: bool,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unknown_planner_and_fields_are_errors() {
+        let base = |planner: &str| {
+            format!(
+                r#"{{"world": {{"grid": {{"rows": [".."]}}}}, "start": [0,0], "goal": [1,0], "planner": {planner}}}"#
+            )
+        };
+        assert!(serde_json::from_str::<ProblemSpec>(&base(r#"{"name": "astar"}"#)).is_ok());
+        let err =
+            serde_json::from_str::<ProblemSpec>(&base(r#"{"name": "teleport"}"#)).unwrap_err().to_string();
+        assert!(err.contains("unknown variant `teleport`"), "{err}");
+        let err = serde_json::from_str::<ProblemSpec>(&base(r#"{"name": "weighted_astar", "wieght": 2}"#))
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("wieght") || err.contains("weight"), "{err}");
+        let err = serde_json::from_str::<ProblemSpec>(&base(r#"{"name": "dijkstra", "weight": 2}"#));
+        assert!(err.is_err(), "a parameter the planner does not take is an error");
+        let err = serde_json::from_str::<ProblemSpec>(r#"{"world": {"grid": {}}, "start": [0,0]}"#);
+        assert!(err.unwrap_err().to_string().contains("missing field"));
+    }
+
+    #[test]
+    fn connectivity_is_4_or_8() {
+        let w: GridSpec = serde_json::from_str(r#"{"rows": ["."], "connectivity": 4}"#).unwrap();
+        assert_eq!(w.connectivity, Connectivity::Four);
+        assert!(serde_json::from_str::<GridSpec>(r#"{"connectivity": 6}"#).is_err());
+    }
+}

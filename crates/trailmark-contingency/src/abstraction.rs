@@ -25,17 +25,15 @@ use std::collections::{BinaryHeap, HashMap};
 use std::rc::Rc;
 
 use trailmark_core::cost::Cost;
-use trailmark_core::grid::{Cell, Grid, GridHeuristic};
-use trailmark_graph::GridGraph;
+use trailmark_core::grid::{Cell, GridHeuristic};
 use trailmark_search::Search;
 
+use crate::regions::{NO_REGION, label_regions};
 use crate::terrain::Terrain;
 use crate::view::View;
 
 /// A node of the abstraction: an index into [`Abstraction::nodes`].
 pub type NodeId = u32;
-
-const NO_REGION: u32 = u32::MAX;
 
 /// A node: the start, the goal, or a cell beside a choke point.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -460,38 +458,6 @@ fn crossing_view(terrain: &Terrain, choke: usize) -> View<'_, impl Fn(Cell) -> b
         Some(k) => k == choke,
         None => terrain.chokes_beside(c) & bit != 0,
     })
-}
-
-/// Labels the regions of a grid: the connected sets of passable cells outside the choke points
-/// (`is_choke`). Returns the region of each cell, row-major (`u32::MAX` for impassable cells and
-/// choke points), and the number of regions.
-pub(crate) fn label_regions(
-    grid: &Grid,
-    graph: &GridGraph,
-    is_choke: impl Fn(Cell) -> bool,
-) -> (Vec<u32>, usize) {
-    let width = grid.width() as usize;
-    let index = |c: Cell| c.y as usize * width + c.x as usize;
-    let mut region_of = vec![NO_REGION; grid.len()];
-    let mut regions = 0u32;
-    let mut stack = Vec::new();
-    for cell in grid.cells() {
-        if !grid.is_passable(cell) || is_choke(cell) || region_of[index(cell)] != NO_REGION {
-            continue;
-        }
-        region_of[index(cell)] = regions;
-        stack.push(cell);
-        while let Some(c) = stack.pop() {
-            for (n, _) in graph.neighbours(c) {
-                if !is_choke(n) && region_of[index(n)] == NO_REGION {
-                    region_of[index(n)] = regions;
-                    stack.push(n);
-                }
-            }
-        }
-        regions += 1;
-    }
-    (region_of, regions as usize)
 }
 
 /// A heap entry ordered by least cost first, then by node id (for determinism).

@@ -36,7 +36,7 @@ use thiserror::Error;
 use trailmark_core::grid::{Cell, Connectivity, Grid};
 use trailmark_graph::GridGraph;
 
-use crate::abstraction::label_regions;
+use crate::regions::label_regions;
 use crate::terrain::{ChokePoint, MAX_CHOKE_POINTS};
 
 /// What counts as a choke point.

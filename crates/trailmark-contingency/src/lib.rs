@@ -56,12 +56,19 @@ pub mod generate;
 pub mod plan;
 pub mod planner;
 pub mod reference;
+mod regions;
+mod simple_paths;
 pub mod simulate;
+mod spec;
 pub mod svg;
 pub mod terrain;
 mod view;
 
 pub use abstraction::Abstraction;
 pub use plan::{Action, Drive, Knowledge, Outcome, PlanNode};
-pub use planner::{PlanError, PlanStats, Planned, PlannerOptions, plan};
-pub use terrain::{ChokePoint, Terrain, TerrainError, TerrainSpec, grid_from_rows};
+pub use planner::{ContingencyError, ContingencyStats, Planned, PlannerOptions, plan};
+#[doc(hidden)]
+#[allow(deprecated)]
+pub use planner::{PlanError, PlanStats};
+pub use spec::TerrainSpec;
+pub use terrain::{ChokePoint, Terrain, TerrainError, grid_from_rows};

@@ -25,6 +25,7 @@
 //! whose expected cost is computed exactly, outcome by outcome).
 
 use std::collections::{BinaryHeap, HashMap};
+
 use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
@@ -37,6 +38,8 @@ use crate::abstraction::{Abstraction, AbstractionStats, Hop, NodeId, Routes};
 use crate::plan::{Action, Drive, Knowledge, Outcome, PlanNode, outcomes};
 use crate::terrain::Terrain;
 
+mod reach;
+
 /// How the planner searches.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -45,7 +48,7 @@ pub struct PlannerOptions {
     /// Beyond it the branch replans naively. `usize::MAX` prepares for every combination.
     pub max_blockages: usize,
     /// The most states the search may create before giving up with
-    /// [`PlanError::TooManyStates`].
+    /// [`ContingencyError::TooManyStates`].
     pub max_states: usize,
 }
 
@@ -57,7 +60,7 @@ impl Default for PlannerOptions {
 
 /// Why no plan was returned.
 #[derive(Debug, Clone, PartialEq, Error)]
-pub enum PlanError {
+pub enum ContingencyError {
     /// The search created more states than [`PlannerOptions::max_states`].
     #[error("the search created more than {limit} states; lower max_blockages or raise max_states")]
     TooManyStates {
@@ -66,9 +69,17 @@ pub enum PlanError {
     },
 }
 
+/// Old name of [`ContingencyError`], kept for one release.
+#[deprecated(since = "0.2.0", note = "use trailmark_contingency::ContingencyError")]
+pub type PlanError = ContingencyError;
+
+/// Old name of [`ContingencyStats`], kept for one release.
+#[deprecated(since = "0.2.0", note = "use trailmark_contingency::ContingencyStats")]
+pub type PlanStats = ContingencyStats;
+
 /// What the planner did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-pub struct PlanStats {
+pub struct ContingencyStats {
     /// States created.
     pub states: usize,
     /// States expanded (their actions generated).
@@ -95,7 +106,7 @@ pub struct Planned {
     /// The plan, from the start.
     pub plan: PlanNode,
     /// What the planner did.
-    pub stats: PlanStats,
+    pub stats: ContingencyStats,
 }
 
 /// Plans with contingencies for `terrain`, minimising the expected cost.
@@ -123,7 +134,7 @@ pub struct Planned {
 /// assert_eq!(planned.stuck_probability, 0.0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn plan(terrain: &Terrain, options: &PlannerOptions) -> Result<Planned, PlanError> {
+pub fn plan(terrain: &Terrain, options: &PlannerOptions) -> Result<Planned, ContingencyError> {
     let started = Instant::now();
     let mut search = AoStar::new(terrain, *options);
     search.run()?;
@@ -191,7 +202,7 @@ struct AoStar<'t> {
     bounds: HashMap<u64, Routes>,
     reach: HashMap<(u32, Knowledge), (f64, u64)>,
     replan: HashMap<(NodeId, Knowledge), Cost>,
-    stats: PlanStats,
+    stats: ContingencyStats,
 }
 
 impl<'t> AoStar<'t> {
@@ -216,7 +227,7 @@ impl<'t> AoStar<'t> {
             bounds: HashMap::new(),
             reach: HashMap::new(),
             replan: HashMap::new(),
-            stats: PlanStats { states: 1, ..PlanStats::default() },
+            stats: ContingencyStats { states: 1, ..ContingencyStats::default() },
         }
     }
 
@@ -231,7 +242,7 @@ impl<'t> AoStar<'t> {
         parent: usize,
         node: NodeId,
         k: Knowledge,
-    ) -> Result<Vec<(f64, u64, usize)>, PlanError> {
+    ) -> Result<Vec<(f64, u64, usize)>, ContingencyError> {
         let seen = self.abs.nodes()[node as usize].beside & k.unknown(self.all());
         let mut children = Vec::new();
         for (blocked, p) in outcomes(seen, self.terrain) {
@@ -243,12 +254,12 @@ impl<'t> AoStar<'t> {
     }
 
     /// The state `(node, k)`, created and valued if new.
-    fn state(&mut self, node: NodeId, k: Knowledge) -> Result<usize, PlanError> {
+    fn state(&mut self, node: NodeId, k: Knowledge) -> Result<usize, ContingencyError> {
         if let Some(&s) = self.index.get(&(node, k)) {
             return Ok(s);
         }
         if self.states.len() >= self.options.max_states {
-            return Err(PlanError::TooManyStates { limit: self.options.max_states });
+            return Err(ContingencyError::TooManyStates { limit: self.options.max_states });
         }
         let (kind, f) = if node == self.abs.goal() {
             (Kind::Goal, 0.0)
@@ -288,117 +299,6 @@ impl<'t> AoStar<'t> {
             self.bounds.insert(crossable, routes);
         }
         self.bounds[&crossable].cost[node as usize]
-    }
-
-    /// The probability that the goal can be reached from `node` given `k`, and the unseen choke
-    /// points that matter to it (see [`AoStar::relevant`]). The probability is exact when at most
-    /// [`EXACT_REACH`] choke points matter, otherwise the probability that every unseen choke
-    /// point on the bounding route is open (a lower bound).
-    fn reach_probability(&mut self, node: NodeId, k: Knowledge) -> (f64, u64) {
-        let region = self.abs.nodes()[node as usize].region;
-        if let Some(&found) = self.reach.get(&(region, k)) {
-            return found;
-        }
-        let goal_region = self.abs.nodes()[self.abs.goal() as usize].region;
-        let regions = self.abs.region_count();
-        let mut base = UnionFind::new(regions);
-        for c in ids(k.open()) {
-            base.join_all(self.abs.regions_of_choke(c));
-        }
-        let relevant = self.relevant(&mut base, k.unknown(self.all()), [region, goal_region]);
-        let p = if base.find(region) == base.find(goal_region) {
-            1.0
-        } else if relevant.len() <= EXACT_REACH {
-            self.reach_exact(&mut base, &relevant, [region, goal_region], 1.0)
-        } else {
-            self.bound(node, k);
-            let routes = &self.bounds[&(self.all() & !k.blocked)];
-            let mut q = 1.0;
-            let mut at = node;
-            let unknown = k.unknown(self.all());
-            while let Some((next, hop)) = routes.previous[at as usize] {
-                if let Hop::Crossing(c) = hop
-                    && unknown & (1 << c) != 0
-                {
-                    q *= 1.0 - self.terrain.choke_points()[c as usize].probability;
-                }
-                at = next;
-            }
-            q
-        };
-        let relevant = relevant.iter().fold(0u64, |mask, &c| mask | 1 << c);
-        self.reach.insert((region, k), (p, relevant));
-        (p, relevant)
-    }
-
-    /// The probability, times `q`, that the regions `ends` end up joined when each of `chokes`
-    /// is open with its probability, given the regions already joined in `uf`: depth first over
-    /// the choke points, open before blocked, adding a branch's whole weight as soon as the ends
-    /// are joined and dropping it as soon as they cannot be.
-    fn reach_exact(&self, uf: &mut UnionFind, chokes: &[usize], ends: [u32; 2], q: f64) -> f64 {
-        if uf.find(ends[0]) == uf.find(ends[1]) {
-            return q;
-        }
-        let Some((&c, rest)) = chokes.split_first() else {
-            return 0.0;
-        };
-        let mut all_open = uf.clone();
-        for &c in chokes {
-            all_open.join_all(self.abs.regions_of_choke(c));
-        }
-        if all_open.find(ends[0]) != all_open.find(ends[1]) {
-            return 0.0;
-        }
-        let p = self.terrain.choke_points()[c].probability;
-        let mut total = 0.0;
-        if p < 1.0 {
-            let mut open = uf.clone();
-            open.join_all(self.abs.regions_of_choke(c));
-            total += self.reach_exact(&mut open, rest, ends, q * (1.0 - p));
-        }
-        if p > 0.0 {
-            total += self.reach_exact(uf, rest, ends, q * p);
-        }
-        total
-    }
-
-    /// The unseen choke points `unknown` that can decide whether the two regions `ends` are
-    /// joined, given the regions already joined in `base` (by choke points known to be open).
-    ///
-    /// Take the graph whose vertices are the groups of joined regions and the unseen choke
-    /// points, each choke point linked to the groups it touches. Whether the ends get joined
-    /// depends exactly on the choke points that lie on some simple path between them: those in
-    /// the blocks (biconnected components) on the path between the ends in the block-cut tree.
-    /// The others lead only into dead ends or loops off that path.
-    fn relevant(&self, base: &mut UnionFind, unknown: u64, ends: [u32; 2]) -> Vec<usize> {
-        let mut vertex: HashMap<u32, usize> = HashMap::new();
-        let mut adjacency: Vec<Vec<usize>> = Vec::new();
-        let mut group = |g: u32, adjacency: &mut Vec<Vec<usize>>| {
-            *vertex.entry(g).or_insert_with(|| {
-                adjacency.push(Vec::new());
-                adjacency.len() - 1
-            })
-        };
-        let ends = ends.map(|r| group(base.find(r), &mut adjacency));
-        let mut chokes = Vec::new();
-        for c in ids(unknown) {
-            let mut groups: Vec<u32> = self.abs.regions_of_choke(c).iter().map(|&r| base.find(r)).collect();
-            groups.sort_unstable();
-            groups.dedup();
-            if groups.len() < 2 {
-                continue;
-            }
-            adjacency.push(Vec::new());
-            let v = adjacency.len() - 1;
-            chokes.push((v, c));
-            for g in groups {
-                let u = group(g, &mut adjacency);
-                adjacency[u].push(v);
-                adjacency[v].push(u);
-            }
-        }
-        let on_path = on_simple_paths(&adjacency, ends[0], ends[1]);
-        chokes.into_iter().filter(|&(v, _)| on_path[v]).map(|(_, c)| c).collect()
     }
 
     /// A lower bound on the cost of reaching a node beside one of the choke points `relevant`
@@ -457,7 +357,7 @@ impl<'t> AoStar<'t> {
     }
 
     /// Generates the choices of a tip.
-    fn expand(&mut self, s: usize) -> Result<(), PlanError> {
+    fn expand(&mut self, s: usize) -> Result<(), ContingencyError> {
         self.stats.expansions += 1;
         let mut choices = Vec::new();
         if s == ROOT {
@@ -587,7 +487,7 @@ impl<'t> AoStar<'t> {
         tips
     }
 
-    fn run(&mut self) -> Result<(), PlanError> {
+    fn run(&mut self) -> Result<(), ContingencyError> {
         while !self.states[ROOT].solved {
             self.stats.iterations += 1;
             let tips = self.tips();
@@ -715,9 +615,6 @@ impl<'t> AoStar<'t> {
     }
 }
 
-/// How many unseen choke points the reach probability enumerates exactly.
-const EXACT_REACH: usize = 12;
-
 /// The ids of the bits of a mask.
 fn ids(mut mask: u64) -> Vec<usize> {
     let mut out = Vec::new();
@@ -726,185 +623,4 @@ fn ids(mut mask: u64) -> Vec<usize> {
         mask &= mask - 1;
     }
     out
-}
-
-/// Union-find over regions, for reachability.
-#[derive(Clone)]
-struct UnionFind(Vec<u32>);
-
-impl UnionFind {
-    fn new(n: usize) -> Self {
-        UnionFind((0..n as u32).collect())
-    }
-
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.0[x as usize] != x {
-            let up = self.0[self.0[x as usize] as usize];
-            self.0[x as usize] = up;
-            x = up;
-        }
-        x
-    }
-
-    fn join_all(&mut self, regions: &[u32]) {
-        if let Some((&first, rest)) = regions.split_first() {
-            let root = self.find(first);
-            for &r in rest {
-                let other = self.find(r);
-                self.0[other as usize] = root;
-            }
-        }
-    }
-}
-
-/// Which vertices of an undirected graph (adjacency lists, no parallel edges) lie on some simple
-/// path from `s` to `t`: the vertices of the blocks (biconnected components, found by Tarjan's
-/// algorithm) on the path from `s` to `t` in the block-cut tree. None when `t` cannot be reached.
-fn on_simple_paths(adjacency: &[Vec<usize>], s: usize, t: usize) -> Vec<bool> {
-    let n = adjacency.len();
-    let mut on_path = vec![false; n];
-    if s == t {
-        on_path[s] = true;
-        return on_path;
-    }
-    let mut tarjan = Tarjan {
-        adjacency,
-        order: vec![0; n],
-        low: vec![0; n],
-        time: 0,
-        edges: Vec::new(),
-        blocks: Vec::new(),
-    };
-    tarjan.visit(s, usize::MAX);
-    if tarjan.order[t] == 0 {
-        return on_path;
-    }
-    // The block-cut tree as vertex-block incidences: a breadth-first search from `s` to `t`
-    // over them follows the tree's only path.
-    let blocks = tarjan.blocks;
-    let mut blocks_of = vec![Vec::new(); n];
-    for (b, block) in blocks.iter().enumerate() {
-        for &v in block {
-            blocks_of[v].push(b);
-        }
-    }
-    let mut came_from_block = vec![usize::MAX; n];
-    let mut came_from_vertex = vec![usize::MAX; blocks.len()];
-    let mut queue = std::collections::VecDeque::from([s]);
-    came_from_block[s] = blocks.len();
-    while let Some(v) = queue.pop_front() {
-        if v == t {
-            break;
-        }
-        for &b in &blocks_of[v] {
-            if came_from_vertex[b] != usize::MAX {
-                continue;
-            }
-            came_from_vertex[b] = v;
-            for &w in &blocks[b] {
-                if came_from_block[w] == usize::MAX {
-                    came_from_block[w] = b;
-                    queue.push_back(w);
-                }
-            }
-        }
-    }
-    let mut v = t;
-    while v != s {
-        let b = came_from_block[v];
-        for &w in &blocks[b] {
-            on_path[w] = true;
-        }
-        v = came_from_vertex[b];
-    }
-    on_path
-}
-
-/// Tarjan's biconnected components, by depth-first search with a stack of edges.
-struct Tarjan<'a> {
-    adjacency: &'a [Vec<usize>],
-    /// Discovery order, from 1 (0: not visited).
-    order: Vec<usize>,
-    low: Vec<usize>,
-    time: usize,
-    edges: Vec<(usize, usize)>,
-    /// The vertices of each block.
-    blocks: Vec<Vec<usize>>,
-}
-
-impl Tarjan<'_> {
-    fn visit(&mut self, u: usize, parent: usize) {
-        self.time += 1;
-        self.order[u] = self.time;
-        self.low[u] = self.time;
-        for &v in &self.adjacency[u] {
-            if self.order[v] == 0 {
-                self.edges.push((u, v));
-                self.visit(v, u);
-                self.low[u] = self.low[u].min(self.low[v]);
-                if self.low[v] >= self.order[u] {
-                    let mut block = Vec::new();
-                    while let Some((a, b)) = self.edges.pop() {
-                        block.extend([a, b]);
-                        if (a, b) == (u, v) {
-                            break;
-                        }
-                    }
-                    block.sort_unstable();
-                    block.dedup();
-                    self.blocks.push(block);
-                }
-            } else if v != parent && self.order[v] < self.order[u] {
-                self.edges.push((u, v));
-                self.low[u] = self.low[u].min(self.order[v]);
-            }
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::on_simple_paths;
-    use proptest::prelude::*;
-
-    /// Marks every vertex of every simple path from `at` to `t` by trying them all.
-    fn brute_force(adjacency: &[Vec<usize>], at: usize, t: usize, path: &mut Vec<usize>, found: &mut [bool]) {
-        path.push(at);
-        if at == t {
-            for &v in path.iter() {
-                found[v] = true;
-            }
-        } else {
-            for &v in &adjacency[at] {
-                if !path.contains(&v) {
-                    brute_force(adjacency, v, t, path, found);
-                }
-            }
-        }
-        path.pop();
-    }
-
-    proptest! {
-        #![proptest_config(ProptestConfig::with_cases(500))]
-
-        /// The block-cut tree finds exactly the vertices on simple paths that trying every
-        /// path finds.
-        #[test]
-        fn simple_paths_match_brute_force(
-            n in 2usize..9,
-            edges in proptest::collection::vec((0usize..9, 0usize..9), 0..16),
-        ) {
-            let mut adjacency = vec![Vec::new(); n];
-            for (a, b) in edges {
-                let (a, b) = (a % n, b % n);
-                if a != b && !adjacency[a].contains(&b) {
-                    adjacency[a].push(b);
-                    adjacency[b].push(a);
-                }
-            }
-            let mut expected = vec![false; n];
-            brute_force(&adjacency, 0, n - 1, &mut Vec::new(), &mut expected);
-            prop_assert_eq!(on_simple_paths(&adjacency, 0, n - 1), expected);
-        }
-    }
 }

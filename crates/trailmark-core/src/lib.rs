@@ -37,9 +37,11 @@ pub mod path;
 pub mod read;
 pub mod smooth;
 pub mod svg;
+pub mod union_find;
 pub mod world;
 
 pub use cost::Cost;
 pub use graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
 pub use grid::{Cell, Connectivity, Grid, GridError, GridHeuristic};
 pub use path::Path;
+pub use union_find::UnionFind;

@@ -46,6 +46,7 @@ use std::marker::PhantomData;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
+use trailmark_core::UnionFind;
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_search::Search;
@@ -126,8 +127,7 @@ pub struct Prm<S: StateSpace, N, Q = Uniform> {
     out: Vec<Vec<(u32, Cost)>>,
     into: Vec<Vec<(u32, Cost)>>,
     edge_count: usize,
-    parent: Vec<u32>,
-    components: usize,
+    components: UnionFind,
     checks: u64,
     _space: PhantomData<fn() -> S>,
 }
@@ -147,8 +147,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone> Prm<S, N> {
             out: Vec::new(),
             into: Vec::new(),
             edge_count: 0,
-            parent: Vec::new(),
-            components: 0,
+            components: UnionFind::default(),
             checks: 0,
             _space: PhantomData,
         }
@@ -174,8 +173,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
             out: Vec::new(),
             into: Vec::new(),
             edge_count: 0,
-            parent: Vec::new(),
-            components: 0,
+            components: UnionFind::default(),
             checks: 0,
             _space: PhantomData,
         };
@@ -210,7 +208,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
 
     /// The connected components (ignoring direction).
     pub fn component_count(&self) -> usize {
-        self.components
+        self.components.set_count()
     }
 
     /// The state of milestone `id`.
@@ -298,8 +296,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         self.out.clear();
         self.into.clear();
         self.edge_count = 0;
-        self.parent.clear();
-        self.components = 0;
+        self.components = UnionFind::default();
         self.checks = 0;
     }
 
@@ -350,8 +347,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         if !S::SYMMETRIC {
             self.into.push(Vec::new());
         }
-        self.parent.push(id);
-        self.components += 1;
+        self.components.push();
         for (v, d) in into {
             if watch.interrupted().is_some() {
                 return id;
@@ -382,27 +378,14 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
             self.into[to as usize].push((from, cost));
         }
         self.edge_count += 1;
-        let (a, b) = (self.root(from), self.root(to));
-        if a != b {
-            self.parent[a.max(b) as usize] = a.min(b);
-            self.components -= 1;
-        }
-    }
-
-    fn root(&mut self, mut x: u32) -> u32 {
-        while self.parent[x as usize] != x {
-            let grand = self.parent[self.parent[x as usize] as usize];
-            self.parent[x as usize] = grand;
-            x = grand;
-        }
-        x
+        self.components.union(from, to);
     }
 
     /// Whether a start and a goal milestone share a component.
     fn connects(&mut self, starts: &[u32], goals: &[u32]) -> bool {
-        let roots: Vec<u32> = starts.iter().map(|&s| self.root(s)).collect();
+        let roots: Vec<u32> = starts.iter().map(|&s| self.components.find(s)).collect();
         goals.iter().any(|&g| {
-            let r = self.root(g);
+            let r = self.components.find(g);
             roots.contains(&r)
         })
     }
@@ -430,7 +413,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         let mut search = Search::new();
         for &g in goals {
             for &s in starts {
-                if self.root(s) != self.root(g) {
+                if self.components.find(s) != self.components.find(g) {
                     continue;
                 }
                 let goal = self.nearest.state(g).clone();
@@ -517,12 +500,12 @@ where
             }
             // Search when a start and a goal share a component, and for PRM* again each time
             // the roadmap has grown by a tenth.
-            let joined = self.components != searched_components && self.connects(&starts, &goals);
+            let joined = self.components.set_count() != searched_components && self.connects(&starts, &goals);
             let grown = self.node_count() as f64 >= searched_at as f64 * (1.0 + SEARCH_GROWTH);
             let due = if best.is_none() { joined && (S::SYMMETRIC || grown) } else { grown };
             if due && !goals.is_empty() && run.watch.interrupted().is_none() {
                 searched_at = self.node_count();
-                searched_components = self.components;
+                searched_components = self.components.set_count();
                 self.improve(space, (&starts, &goals), &mut best, &mut run);
             }
             if best.is_some() && !self.optimizing {

@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 
-use disjoint_sets::UnionFind;
+use trailmark_core::UnionFind;
 
 use crate::abstraction::{Hop, NodeId};
 use crate::plan::Knowledge;
@@ -15,7 +15,7 @@ use super::{AoStar, ids};
 const EXACT_REACH: usize = 12;
 
 /// Joins every region of `regions` into one set.
-fn join_all(uf: &mut UnionFind<u32>, regions: &[u32]) {
+fn join_all(uf: &mut UnionFind, regions: &[u32]) {
     if let Some((&first, rest)) = regions.split_first() {
         for &r in rest {
             uf.union(first, r);
@@ -39,7 +39,7 @@ impl AoStar<'_> {
         for c in ids(k.open()) {
             join_all(&mut base, self.abs.regions_of_choke(c));
         }
-        let relevant = self.relevant(&base, k.unknown(self.all()), [region, goal_region]);
+        let relevant = self.relevant(&mut base, k.unknown(self.all()), [region, goal_region]);
         let p = if base.find(region) == base.find(goal_region) {
             1.0
         } else if relevant.len() <= EXACT_REACH {
@@ -69,7 +69,7 @@ impl AoStar<'_> {
     /// is open with its probability, given the regions already joined in `uf`: depth first over
     /// the choke points, open before blocked, adding a branch's whole weight as soon as the ends
     /// are joined and dropping it as soon as they cannot be.
-    fn reach_exact(&self, uf: &mut UnionFind<u32>, chokes: &[usize], ends: [u32; 2], q: f64) -> f64 {
+    fn reach_exact(&self, uf: &mut UnionFind, chokes: &[usize], ends: [u32; 2], q: f64) -> f64 {
         if uf.find(ends[0]) == uf.find(ends[1]) {
             return q;
         }
@@ -104,7 +104,7 @@ impl AoStar<'_> {
     /// depends exactly on the choke points that lie on some simple path between them: those in
     /// the blocks (biconnected components) on the path between the ends in the block-cut tree.
     /// The others lead only into dead ends or loops off that path.
-    fn relevant(&self, base: &UnionFind<u32>, unknown: u64, ends: [u32; 2]) -> Vec<usize> {
+    fn relevant(&self, base: &mut UnionFind, unknown: u64, ends: [u32; 2]) -> Vec<usize> {
         let mut vertex: HashMap<u32, usize> = HashMap::new();
         let mut adjacency: Vec<Vec<usize>> = Vec::new();
         let mut group = |g: u32, adjacency: &mut Vec<Vec<usize>>| {

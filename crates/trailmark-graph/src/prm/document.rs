@@ -1,0 +1,102 @@
+//! Saving and loading a polygon roadmap.
+
+use serde::{Deserialize, Serialize};
+use trailmark_core::world::PolygonWorld;
+use trailmark_sample::nearest::NearestNeighbors;
+use trailmark_sample::sampler::Halton;
+
+use super::{Drawer, PlanarSpace, Prm, PrmError, PrmOptions};
+
+/// A saved roadmap: the world, the space, the settings, the nodes, every edge tried and where
+/// the sample stream stands.
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PrmDocument<S> {
+    world: PolygonWorld,
+    space: S,
+    options: PrmOptions,
+    /// `[x, y]` or `[x, y, heading]`.
+    nodes: Vec<Vec<f64>>,
+    /// `[from, to, free (1) or blocked (0)]`.
+    edges: Vec<[u32; 3]>,
+    /// How far the ChaCha8 stream has gone (in 32-bit words), and the Halton index.
+    stream: StreamDocument,
+}
+
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct StreamDocument {
+    /// The word position, as a decimal string (it may exceed 2^64).
+    word_position: String,
+    halton_index: u64,
+    attempts: u64,
+}
+
+impl<S: PlanarSpace + Serialize> Serialize for Prm<S> {
+    /// Saves as `{"world", "space", "options", "nodes", "edges", "stream"}`.
+    fn serialize<Ser: serde::Serializer>(&self, serializer: Ser) -> Result<Ser::Ok, Ser::Error> {
+        PrmDocument {
+            world: self.checker.world().clone(),
+            space: self.space.clone(),
+            options: self.options,
+            nodes: (0..self.node_count() as u32)
+                .map(|u| self.space.coordinates(self.nearest.state(u)))
+                .collect(),
+            edges: self
+                .candidates
+                .iter()
+                .map(|c| [c.ends[0], c.ends[1], u32::from(c.cost.is_finite())])
+                .collect(),
+            stream: StreamDocument {
+                word_position: self.stream.rng.get_word_pos().to_string(),
+                halton_index: match &self.stream.drawer {
+                    Drawer::Halton(halton) => halton.drawn(),
+                    _ => 0,
+                },
+                attempts: self.stream.attempts,
+            },
+        }
+        .serialize(serializer)
+    }
+}
+
+impl<'de, S: PlanarSpace + Deserialize<'de>> Deserialize<'de> for Prm<S> {
+    /// Loads a saved roadmap, re-checking every node and every edge's free or blocked state in
+    /// the saved world; a mismatch is an error, not a silent repair.
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let document = PrmDocument::<S>::deserialize(deserializer)?;
+        Prm::from_document(document).map_err(serde::de::Error::custom)
+    }
+}
+
+impl<S: PlanarSpace> Prm<S> {
+    fn from_document(d: PrmDocument<S>) -> Result<Self, PrmError> {
+        let mut prm = Prm::with_space(d.world, d.space, d.options)?;
+        for (index, coordinates) in d.nodes.iter().enumerate() {
+            let state =
+                prm.space.state_from_coordinates(coordinates).ok_or(PrmError::InvalidNode { index })?;
+            if !prm.is_free(&state) || prm.find(&state).is_some() {
+                return Err(PrmError::InvalidNode { index });
+            }
+            prm.push_node(state);
+        }
+        let n = prm.node_count() as u32;
+        for (index, &[from, to, free]) in d.edges.iter().enumerate() {
+            if from >= n || to >= n || from == to || free > 1 {
+                return Err(PrmError::InvalidEdge { index });
+            }
+            prm.try_edge(from, to);
+            if prm.candidates[index].cost.is_finite() != (free == 1) {
+                return Err(PrmError::InvalidEdge { index });
+            }
+        }
+        let word_position: u128 = d.stream.word_position.parse().map_err(|_| PrmError::InvalidStream)?;
+        prm.stream.rng.set_word_pos(word_position);
+        if let Drawer::Halton(halton) = &mut prm.stream.drawer {
+            *halton = Halton::after(d.stream.halton_index);
+        }
+        prm.stream.attempts = d.stream.attempts;
+        prm.local_paths_checked = 0;
+        Ok(prm)
+    }
+}

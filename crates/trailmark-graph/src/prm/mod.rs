@@ -1,0 +1,507 @@
+//! Probabilistic roadmaps: samples in free space joined by collision-free local paths.
+//!
+//! A [`Prm`] draws configurations in the free space of a [`PolygonWorld`] (seeded uniform
+//! samples, or a deterministic Halton sequence), and joins each new node to its neighbours
+//! among the nodes already there (the k nearest, those within a radius, or PRM*'s
+//! k = ⌈e(1 + 1/d) ln n⌉) wherever the local path between them is collision-free. Every local
+//! path is checked exactly against the obstacles by the world's [`CollisionChecker`] (segment
+//! and arc distances, not sampling); nearest neighbours come from a k-d tree (kiddo).
+//!
+//! The states, motions and distances are a state space of `trailmark-sample` ([`PlanarSpace`]):
+//! [`R2`] segments for a disc robot (an undirected
+//! roadmap over points), or [`Dubins`](trailmark_sample::Dubins) curves for a car-like robot (a directed roadmap
+//! over poses, since a Dubins path from `a` to `b` is not the reverse of one from `b` to `a`).
+//!
+//! A roadmap grows incrementally ([`Prm::grow`], [`Prm::insert`]), tracks its connected
+//! components, saves and loads with serde (re-checking everything it loads), reports which
+//! edges changed when an obstacle is added or removed ([`Prm::add_obstacle`],
+//! [`Prm::remove_obstacle`]) so D* Lite can repair its path, and answers queries without
+//! changing ([`Prm::query`]).
+//!
+//! ```
+//! use trailmark_core::geometry::Point;
+//! use trailmark_core::world::{Bounds, PolygonWorld};
+//! use trailmark_graph::prm::{Connection, Prm, PrmOptions, Sampler};
+//!
+//! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
+//! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
+//! let world = PolygonWorld::new(bounds, vec![wall], 0.25)?;
+//!
+//! let options = PrmOptions { sampler: Sampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
+//! let mut prm = Prm::new(world, options)?;
+//! prm.grow(300)?;
+//! assert_eq!(prm.node_count(), 300);
+//!
+//! let query = prm.query(Point::new(1.0, 1.0), Point::new(9.0, 1.0))?;
+//! let route = trailmark_search::astar(&query, query.start(), query.goal(), query.heuristic())?;
+//! let cost = route.cost().expect("the gap above the wall joins the two sides");
+//! assert!(cost >= 14.5); // up past the wall's top (y = 8 + 0.25) and down again, at least
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use std::fmt::Debug;
+
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use trailmark_core::UnionFind;
+use trailmark_core::cost::Cost;
+use trailmark_core::geometry::Point;
+use trailmark_core::graph::EdgeChange;
+use trailmark_core::world::{CollisionChecker, PolygonWorld};
+use trailmark_sample::nearest::{Direction, KdNearest, NearestNeighbors};
+use trailmark_sample::sampler::{Draw, StateSampler, Uniform};
+use trailmark_sample::space::R2;
+
+pub use trailmark_sample::prm::Connection;
+
+use crate::roadmap::RoadmapQuery;
+
+mod document;
+mod graph;
+mod options;
+mod space;
+
+use options::Drawer;
+pub use options::{MAX_NODES, PrmError, PrmOptions, Sampler};
+use space::Exact;
+pub use space::PlanarSpace;
+
+/// An edge the roadmap tried: free (in the graph) or blocked (kept so an obstacle removal can
+/// restore it).
+#[derive(Clone, Copy, Debug)]
+struct Candidate {
+    /// Tail and head (for an undirected roadmap, the two ends).
+    ends: [u32; 2],
+    /// The local path's cost while free; infinite while blocked.
+    cost: Cost,
+}
+
+/// The state of the sample stream, so a grown, saved and reloaded roadmap continues it.
+#[derive(Clone, Debug)]
+struct Stream {
+    rng: ChaCha8Rng,
+    drawer: Drawer,
+    attempts: u64,
+}
+
+/// A probabilistic roadmap over a polygon world, in any [`PlanarSpace`]: [`R2`] (straight
+/// segments for a disc robot, an undirected roadmap over points) by default, or
+/// [`Dubins`](trailmark_sample::Dubins) (a directed roadmap over poses, since a Dubins path
+/// from `a` to `b` is not the reverse of one from `b` to `a`). Node `i` is at
+/// [`Prm::position`]; edges cost their motion's distance in the space.
+///
+/// It implements the graph traits itself (with permanent nodes from [`Prm::insert`]) and
+/// [`Roadmap`], so [`Prm::query`] joins a start and a goal without changing it.
+#[derive(Clone, Debug)]
+pub struct Prm<S: PlanarSpace = R2> {
+    checker: CollisionChecker,
+    space: S,
+    options: PrmOptions,
+    nearest: KdNearest<S, 2>,
+    candidates: Vec<Candidate>,
+    /// Candidate ids leaving each node (both ends' lists when undirected).
+    out: Vec<Vec<u32>>,
+    /// Candidate ids entering each node (directed roadmaps only).
+    into: Vec<Vec<u32>>,
+    edge_count: usize,
+    /// The connected components over free edges (ignoring direction).
+    components: UnionFind,
+    stream: Stream,
+    local_paths_checked: u64,
+}
+
+/// A probabilistic roadmap of Dubins paths between poses.
+pub type DubinsPrm = Prm<trailmark_sample::Dubins>;
+
+/// A [`Prm`] with a start and a goal joined to it.
+pub type PrmQuery<'g, S = R2> = RoadmapQuery<'g, Prm<S>>;
+
+impl Prm<R2> {
+    /// An empty roadmap of straight segments over `world` (the space [`R2`] of its bounds).
+    pub fn new(world: PolygonWorld, options: PrmOptions) -> Result<Self, PrmError> {
+        let space = R2::new(world.bounds());
+        Self::with_space(world, space, options)
+    }
+}
+
+impl<S: PlanarSpace> Prm<S> {
+    /// An empty roadmap over `world` whose states and motions are `space`'s.
+    pub fn with_space(world: PolygonWorld, space: S, options: PrmOptions) -> Result<Self, PrmError> {
+        match options.connection {
+            Connection::Nearest { k: 0 } => return Err(PrmError::InvalidK),
+            Connection::Radius { radius } if !(radius.is_finite() && radius > 0.0) => {
+                return Err(PrmError::InvalidRadius(radius));
+            }
+            _ => {}
+        }
+        if options.attempts_per_sample == 0 {
+            return Err(PrmError::InvalidAttempts);
+        }
+        let nearest = KdNearest::new(&space)?;
+        let drawer = Drawer::new(options.sampler)?;
+        Ok(Prm {
+            checker: world.checker(),
+            space,
+            options,
+            nearest,
+            candidates: Vec::new(),
+            out: Vec::new(),
+            into: Vec::new(),
+            edge_count: 0,
+            components: UnionFind::default(),
+            stream: Stream { rng: ChaCha8Rng::seed_from_u64(options.sampler.seed()), drawer, attempts: 0 },
+            local_paths_checked: 0,
+        })
+    }
+
+    /// Draws `samples` more free configurations and joins each to the roadmap; returns the
+    /// indices of the new nodes' range start. Fails with [`PrmError::SamplingExhausted`] after
+    /// `attempts_per_sample × samples` draws, or as soon as fewer than one draw in
+    /// `attempts_per_sample` has been free over `attempts_per_sample × (added + 10)` draws,
+    /// keeping the samples found; with [`PrmError::TooManyNodes`] before any draw if the
+    /// roadmap would pass [`MAX_NODES`].
+    pub fn grow(&mut self, samples: usize) -> Result<std::ops::Range<u32>, PrmError> {
+        if self.node_count().saturating_add(samples) > MAX_NODES {
+            return Err(PrmError::TooManyNodes);
+        }
+        let first = self.node_count() as u32;
+        let attempts = u64::from(self.options.attempts_per_sample);
+        let budget = attempts.saturating_mul(samples as u64);
+        let mut draws = 0u64;
+        let mut added = 0;
+        while added < samples {
+            // Besides the whole budget, give up as soon as fewer than one draw in
+            // `attempts_per_sample` has been free (after the first ten samples' worth): a world
+            // with no free space fails in thousands of draws, not millions.
+            if draws == budget || draws >= attempts.saturating_mul(added as u64 + 10) {
+                return Err(PrmError::SamplingExhausted { requested: samples, added, attempts: draws });
+            }
+            draws += 1;
+            if let Some(state) = self.draw()
+                && self.is_free(&state)
+                && self.add_node(state)?.1
+            {
+                added += 1;
+            }
+        }
+        Ok(first..self.node_count() as u32)
+    }
+
+    /// Adds `state` as a node (joined like a sample) and returns its index; if a node is
+    /// already there, returns that node's index.
+    pub fn insert(&mut self, state: S::State) -> Result<u32, PrmError> {
+        if !self.is_free(&state) {
+            return Err(PrmError::Blocked(self.space.coordinates(&state)));
+        }
+        Ok(self.add_node(state)?.0)
+    }
+
+    /// The graph with `start` and `goal` joined to their neighbours (by the roadmap's
+    /// connection rule, measured by the space's distance) and to each other when the goal is
+    /// among the start's neighbours. The roadmap is not changed.
+    pub fn query(&self, start: S::State, goal: S::State) -> Result<PrmQuery<'_, S>, PrmError> {
+        if !self.is_free(&start) {
+            return Err(PrmError::StartBlocked(self.space.coordinates(&start)));
+        }
+        if !self.is_free(&goal) {
+            return Err(PrmError::GoalBlocked(self.space.coordinates(&goal)));
+        }
+        let n = self.node_count();
+        let (mut from_start, mut to_goal) = (vec![Cost::INFINITY; n], vec![Cost::INFINITY; n]);
+        for (u, _) in self.neighbours_of(&start, Direction::FromQuery, n + 1) {
+            if let Some(c) = self.connect(&self.checker, &start, self.nearest.state(u)) {
+                from_start[u as usize] = c;
+            }
+        }
+        for (u, _) in self.neighbours_of(&goal, Direction::ToQuery, n + 1) {
+            if let Some(c) = self.connect(&self.checker, self.nearest.state(u), &goal) {
+                to_goal[u as usize] = c;
+            }
+        }
+        let direct = if start == goal {
+            Some(0.0)
+        } else if self.within_reach(&start, &goal, n + 2) {
+            self.connect(&self.checker, &start, &goal)
+        } else {
+            None
+        };
+        Ok(RoadmapQuery::new(self, (start, goal), from_start, to_goal, direct))
+    }
+
+    /// Adds an obstacle (checked like the world's) and blocks the edges it collides with.
+    /// Returns the changed edges with their old costs, in both directions for an undirected
+    /// roadmap, for [`DStarLite::update_edges`](https://docs.rs/trailmark-search) after the
+    /// change. Nodes inside the obstacle stay, with all their edges blocked.
+    pub fn add_obstacle(&mut self, vertices: Vec<Point>) -> Result<Vec<EdgeChange<u32>>, PrmError> {
+        let world = self.checker.world().with_obstacle(vertices)?;
+        let added = world.obstacles().last().expect("just added").clone();
+        let alone = world.only(added).checker();
+        self.checker = world.checker();
+        let mut changes = Vec::new();
+        for id in 0..self.candidates.len() {
+            let Candidate { ends: [a, b], cost } = self.candidates[id];
+            if cost.is_finite() && self.local_path(&alone, a, b).is_none() {
+                self.candidates[id].cost = Cost::INFINITY;
+                self.edge_count -= 1;
+                self.report(&mut changes, a, b, cost);
+            }
+        }
+        self.rebuild_components();
+        Ok(changes)
+    }
+
+    /// Removes obstacle `index` (later obstacles move down by one) and restores the edges it
+    /// alone blocked. Returns the changed edges (old cost infinite), as
+    /// [`add_obstacle`](Self::add_obstacle) does.
+    pub fn remove_obstacle(&mut self, index: usize) -> Result<Vec<EdgeChange<u32>>, PrmError> {
+        let count = self.checker.world().obstacles().len();
+        let (world, removed) =
+            self.checker.world().without_obstacle(index).ok_or(PrmError::NoSuchObstacle { index, count })?;
+        let alone = world.only(removed).checker();
+        self.checker = world.checker();
+        let mut changes = Vec::new();
+        for id in 0..self.candidates.len() {
+            let Candidate { ends: [a, b], cost } = self.candidates[id];
+            if cost.is_infinite()
+                && self.local_path(&alone, a, b).is_none()
+                && let Some(c) = self.local_path(&self.checker, a, b)
+            {
+                self.candidates[id].cost = c;
+                self.edge_count += 1;
+                self.report(&mut changes, a, b, Cost::INFINITY);
+            }
+        }
+        self.rebuild_components();
+        Ok(changes)
+    }
+
+    /// The world the roadmap is built in (with its current obstacles).
+    pub fn world(&self) -> &PolygonWorld {
+        self.checker.world()
+    }
+
+    /// The exact collision checker of the world.
+    pub fn checker(&self) -> &CollisionChecker {
+        &self.checker
+    }
+
+    /// The state space: its states, motions and distances.
+    pub fn space(&self) -> &S {
+        &self.space
+    }
+
+    /// The settings.
+    pub fn options(&self) -> PrmOptions {
+        self.options
+    }
+
+    /// The number of nodes.
+    pub fn node_count(&self) -> usize {
+        self.nearest.len()
+    }
+
+    /// The number of free edges (each undirected edge once).
+    pub fn edge_count(&self) -> usize {
+        self.edge_count
+    }
+
+    /// The number of edges tried, free or blocked.
+    pub fn candidate_count(&self) -> usize {
+        self.candidates.len()
+    }
+
+    /// The configuration of `node`.
+    ///
+    /// # Panics
+    ///
+    /// If `node` is not below [`node_count`](Self::node_count): node ids are indices, as a
+    /// slice's. [`get_position`](Self::get_position) is the checked form.
+    pub fn position(&self, node: u32) -> S::State {
+        *self.nearest.state(node)
+    }
+
+    /// The configuration of `node`, `None` if the roadmap has no such node.
+    pub fn get_position(&self, node: u32) -> Option<S::State> {
+        ((node as usize) < self.node_count()).then(|| self.position(node))
+    }
+
+    /// The free edges, as `(from, to, cost)`, each undirected edge once.
+    pub fn edges(&self) -> impl Iterator<Item = (u32, u32, Cost)> + '_ {
+        self.candidates.iter().filter(|c| c.cost.is_finite()).map(|c| (c.ends[0], c.ends[1], c.cost))
+    }
+
+    /// Draws made by the sampler so far (accepted or not).
+    pub fn attempts(&self) -> u64 {
+        self.stream.attempts
+    }
+
+    /// Local paths collision-checked so far (building and querying a copy do not share this).
+    pub fn local_paths_checked(&self) -> u64 {
+        self.local_paths_checked
+    }
+
+    /// The number of connected components (ignoring edge direction).
+    pub fn component_count(&self) -> usize {
+        self.components.set_count()
+    }
+
+    /// A representative of `node`'s connected component (ignoring edge direction): two nodes
+    /// are connected exactly when their representatives are equal.
+    ///
+    /// # Panics
+    ///
+    /// If `node` is not below [`node_count`](Self::node_count).
+    /// [`get_component`](Self::get_component) is the checked form.
+    pub fn component(&self, node: u32) -> u32 {
+        self.components.root(node)
+    }
+
+    /// The representative of `node`'s connected component, `None` if the roadmap has no such
+    /// node.
+    pub fn get_component(&self, node: u32) -> Option<u32> {
+        ((node as usize) < self.node_count()).then(|| self.component(node))
+    }
+
+    /// One draw of the sampler (`None` when it found nothing).
+    fn draw(&mut self) -> Option<S::State> {
+        self.stream.attempts += 1;
+        let validity = Exact(&self.checker);
+        let mut checks = 0;
+        let mut draw = Draw::new(&mut self.stream.rng, &mut checks);
+        let space = &self.space;
+        match &self.stream.drawer {
+            Drawer::Uniform => Uniform.sample(space, &validity, &mut draw),
+            Drawer::Halton(halton) => halton.sample(space, &validity, &mut draw),
+            Drawer::Gaussian(gaussian) => gaussian.sample(space, &validity, &mut draw),
+            Drawer::Bridge(bridge) => bridge.sample(space, &validity, &mut draw),
+        }
+    }
+
+    /// Whether `state` is within the space's bounds and free.
+    fn is_free(&self, state: &S::State) -> bool {
+        self.space.satisfies_bounds(state) && self.space.state_is_free(&self.checker, state)
+    }
+
+    /// The cost of the motion from `from` to `to` in the world of `checker`, `None` if it
+    /// collides.
+    fn connect(&self, checker: &CollisionChecker, from: &S::State, to: &S::State) -> Option<Cost> {
+        self.space.motion_is_free(checker, from, to).then(|| self.space.distance(from, to))
+    }
+
+    /// The node at exactly `state`, if any.
+    fn find(&self, state: &S::State) -> Option<u32> {
+        let (id, d) = self.nearest.nearest(&self.space, state, Direction::ToQuery)?;
+        (d == 0.0 && self.nearest.state(id) == state).then_some(id)
+    }
+
+    /// The nodes a configuration `state` joins in a roadmap of `n` nodes, nearest first, with
+    /// their distances measured the way `direction` says.
+    fn neighbours_of(&self, state: &S::State, direction: Direction, n: usize) -> Vec<(u32, f64)> {
+        match self.options.connection.neighbour_count(n, self.space.dimension()) {
+            Some(k) => self.nearest.k_nearest(&self.space, state, k, direction),
+            None => {
+                let Connection::Radius { radius } = self.options.connection else { unreachable!() };
+                self.nearest.within(&self.space, state, radius, direction)
+            }
+        }
+    }
+
+    /// Whether `goal` is among the neighbours of `start` (the motions out of it) by the
+    /// connection rule, in a roadmap of `n` nodes that holds `goal`.
+    fn within_reach(&self, start: &S::State, goal: &S::State, n: usize) -> bool {
+        let d = self.space.distance(start, goal);
+        match self.options.connection {
+            Connection::Radius { radius } => d <= radius,
+            connection => {
+                let k =
+                    connection.neighbour_count(n, self.space.dimension()).expect("a nearest-neighbour rule");
+                let nearest = self.neighbours_of(start, Direction::FromQuery, n);
+                // PRM*'s k is 0 in a roadmap of one node: nothing is in reach.
+                nearest.len() < k
+                    || k.checked_sub(1).and_then(|last| nearest.get(last)).is_some_and(|&(_, kth)| d <= kth)
+            }
+        }
+    }
+
+    /// Adds `state` as a node joined to its neighbours: its index and `true`, or the index of
+    /// the node already at `state` and `false`.
+    fn add_node(&mut self, state: S::State) -> Result<(u32, bool), PrmError> {
+        let n = self.node_count() + 1;
+        let into = self.neighbours_of(&state, Direction::ToQuery, n);
+        // A node at `state` is at distance 0, so it leads the neighbours (every rule keeps the
+        // nearest once the roadmap has a node); the search for neighbours finds it too.
+        let mut at_zero = into.iter().take_while(|&&(_, d)| d == 0.0);
+        if let Some(&(v, _)) = at_zero.find(|&&(v, _)| *self.nearest.state(v) == state) {
+            return Ok((v, false));
+        }
+        if self.node_count() >= MAX_NODES {
+            return Err(PrmError::TooManyNodes);
+        }
+        let out = if S::SYMMETRIC { Vec::new() } else { self.neighbours_of(&state, Direction::FromQuery, n) };
+        let u = self.push_node(state);
+        for (v, _) in into {
+            self.try_edge(v, u);
+        }
+        for (v, _) in out {
+            self.try_edge(u, v);
+        }
+        Ok((u, true))
+    }
+
+    /// Stores `state` as a new node without edges (its own component) and returns its index.
+    fn push_node(&mut self, state: S::State) -> u32 {
+        let u = self.nearest.insert(&self.space, state);
+        self.out.push(Vec::new());
+        if !S::SYMMETRIC {
+            self.into.push(Vec::new());
+        }
+        self.components.push();
+        u
+    }
+
+    /// Checks the local path `from -> to` and records it as a candidate.
+    fn try_edge(&mut self, from: u32, to: u32) {
+        let cost = self.local_path(&self.checker, from, to).unwrap_or(Cost::INFINITY);
+        self.local_paths_checked += 1;
+        let id = self.candidates.len() as u32;
+        self.candidates.push(Candidate { ends: [from, to], cost });
+        self.out[from as usize].push(id);
+        if S::SYMMETRIC {
+            self.out[to as usize].push(id);
+        } else {
+            self.into[to as usize].push(id);
+        }
+        if cost.is_finite() {
+            self.edge_count += 1;
+            self.components.union(from, to);
+        }
+    }
+
+    fn local_path(&self, checker: &CollisionChecker, from: u32, to: u32) -> Option<Cost> {
+        self.connect(checker, self.nearest.state(from), self.nearest.state(to))
+    }
+
+    fn report(&self, changes: &mut Vec<EdgeChange<u32>>, a: u32, b: u32, old_cost: Cost) {
+        changes.push(EdgeChange { from: a, to: b, old_cost });
+        if S::SYMMETRIC {
+            changes.push(EdgeChange { from: b, to: a, old_cost });
+        }
+    }
+
+    fn rebuild_components(&mut self) {
+        self.components = UnionFind::new(self.node_count());
+        for &Candidate { ends: [a, b], cost } in &self.candidates {
+            if cost.is_finite() {
+                self.components.union(a, b);
+            }
+        }
+    }
+
+    fn other_end(&self, id: u32, node: u32) -> (u32, Cost) {
+        let c = &self.candidates[id as usize];
+        (c.ends[0] ^ c.ends[1] ^ node, c.cost)
+    }
+}
+
+#[cfg(test)]
+mod tests;

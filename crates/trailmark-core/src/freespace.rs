@@ -43,132 +43,31 @@ use thiserror::Error;
 
 use crate::geometry::Point;
 use crate::grid::{Cell, Grid};
+use crate::predicates;
 
-/// The exact orientation of `c` relative to the directed line `a -> b`: positive when `c` is on
-/// the left, negative on the right, zero when the three points are collinear. The magnitude is
-/// twice the signed triangle area, approximately; the **sign** is exact.
-#[inline]
+/// Old path of [`predicates::orient`](crate::predicates::orient), kept for one release.
+#[deprecated(since = "0.2.0", note = "use trailmark_core::predicates::orient")]
 pub fn orient(a: Point, b: Point, c: Point) -> f64 {
-    // The floating-point determinant and its error bound (the one `robust` uses, after Ozaki et
-    // al.), inline; the adaptive exact computation only when the bound cannot certify the sign.
-    const THETA: f64 = 3.330_669_062_177_372_2e-16;
-    let left = (a.x - c.x) * (b.y - c.y);
-    let right = (a.y - c.y) * (b.x - c.x);
-    let det = left - right;
-    if det.abs() >= THETA * (left + right).abs() && det != 0.0 {
-        return det;
-    }
-    orient_exact(a, b, c)
+    crate::predicates::orient(a, b, c)
 }
 
-#[cold]
-#[inline(never)]
-fn orient_exact(a: Point, b: Point, c: Point) -> f64 {
-    robust::orient2d(
-        robust::Coord { x: a.x, y: a.y },
-        robust::Coord { x: b.x, y: b.y },
-        robust::Coord { x: c.x, y: c.y },
-    )
-}
-
-/// Whether the direction from `apex` toward `q` lies in the closed wedge swept
-/// counter-clockwise from the direction toward `from` to the direction toward `to`.
-///
-/// A wedge whose two directions coincide is taken as the full turn. Exact.
-#[inline]
+/// Old path of [`predicates::in_wedge`](crate::predicates::in_wedge), kept for one release.
+#[deprecated(since = "0.2.0", note = "use trailmark_core::predicates::in_wedge")]
 pub fn in_wedge(apex: Point, from: Point, to: Point, q: Point) -> bool {
-    wedge_holds(
-        orient(apex, from, to),
-        || same_direction(apex, from, to),
-        orient(apex, from, q),
-        orient(apex, to, q),
-    )
+    crate::predicates::in_wedge(apex, from, to, q)
 }
 
-/// The decision of [`in_wedge`] from its orientation signs, for callers that compute them in
-/// another way (rays pointing away from a point, say): `turn` is the orientation of the wedge's
-/// second direction relative to its first, `aligned` whether the two coincide (asked only when
-/// `turn` is zero), `from_q` and `to_q` the orientations of the tested direction relative to
-/// each.
-#[inline]
+/// Old path of [`predicates::wedge_holds`](crate::predicates::wedge_holds), kept for one release.
+#[deprecated(since = "0.2.0", note = "use trailmark_core::predicates::wedge_holds")]
 pub fn wedge_holds(turn: f64, aligned: impl FnOnce() -> bool, from_q: f64, to_q: f64) -> bool {
-    if turn > 0.0 {
-        // Less than a half turn: q between the two directions.
-        from_q >= 0.0 && to_q <= 0.0
-    } else if turn < 0.0 {
-        // More than a half turn: q not strictly inside the complement.
-        !(to_q > 0.0 && from_q < 0.0)
-    } else if aligned() {
-        true
-    } else {
-        // Exactly a half turn: the closed half-plane left of `from`.
-        from_q >= 0.0
-    }
+    crate::predicates::wedge_holds(turn, aligned, from_q, to_q)
 }
 
-/// Whether `a` and `b` lie in the same direction from `apex` (given that the three are collinear).
-#[inline]
-fn same_direction(apex: Point, a: Point, b: Point) -> bool {
-    (a.x - apex.x) * (b.x - apex.x) + (a.y - apex.y) * (b.y - apex.y) > 0.0
-}
-
-/// Whether `p` lies on the closed segment `a`-`b`. Exact.
-#[inline]
-pub(crate) fn on_segment(a: Point, b: Point, p: Point) -> bool {
-    orient(a, b, p) == 0.0
-        && p.x >= a.x.min(b.x)
-        && p.x <= a.x.max(b.x)
-        && p.y >= a.y.min(b.y)
-        && p.y <= a.y.max(b.y)
-}
-
-/// The winding number around `p` of the closed rings whose edges are `edges` (only those that
-/// cross the ray from `p` toward +x count, so the caller may pass just those), or `None` when
-/// `p` lies on an edge. Exact.
-pub(crate) fn winding_number(p: Point, edges: impl IntoIterator<Item = (Point, Point)>) -> Option<i64> {
-    let mut winding = 0i64;
-    for (a, b) in edges {
-        // An edge wholly above or below `p` neither holds it nor crosses its ray.
-        if (a.y > p.y && b.y > p.y) || (a.y < p.y && b.y < p.y) {
-            continue;
-        }
-        let side = orient(a, b, p);
-        if side == 0.0 && on_segment(a, b, p) {
-            return None;
-        }
-        if a.y <= p.y {
-            if b.y > p.y && side > 0.0 {
-                winding += 1;
-            }
-        } else if b.y <= p.y && side < 0.0 {
-            winding -= 1;
-        }
-    }
-    Some(winding)
-}
-
-/// `ring` without vertices equal to the one before them, nor a closing repeat of the first.
-pub(crate) fn dedup_ring(ring: impl IntoIterator<Item = Point>) -> Vec<Point> {
-    let mut kept: Vec<Point> = Vec::new();
-    for p in ring {
-        if kept.last() != Some(&p) {
-            kept.push(p);
-        }
-    }
-    while kept.len() > 1 && kept.first() == kept.last() {
-        kept.pop();
-    }
-    kept
-}
-
-/// Whether collinear point `p` lies strictly between `a` and `b`.
-#[inline]
-fn strictly_between(a: Point, b: Point, p: Point) -> bool {
-    if a.x != b.x {
-        (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x)
-    } else {
-        (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y)
-    }
+/// Old path of [`predicates::angular_order`](crate::predicates::angular_order), kept for one
+/// release.
+#[deprecated(since = "0.2.0", note = "use trailmark_core::predicates::angular_order")]
+pub fn angular_order(at: Point, p: Point, q: Point) -> std::cmp::Ordering {
+    crate::predicates::angular_order(at, p, q)
 }
 
 /// One free wedge at a boundary vertex: a ring arrives from `prev` and leaves toward `next`, with
@@ -191,13 +90,13 @@ impl Corner {
     /// kind of vertex a shortest path can bend around.
     #[inline]
     pub fn is_convex_obstacle(&self, at: Point) -> bool {
-        orient(self.prev, at, self.next) < 0.0
+        predicates::orient(self.prev, at, self.next) < 0.0
     }
 
     /// Whether the direction from `at` toward `q` is free at this corner (on the boundary counts).
     #[inline]
     pub fn admits(&self, at: Point, q: Point) -> bool {
-        in_wedge(at, self.next, self.prev, q)
+        predicates::in_wedge(at, self.next, self.prev, q)
     }
 }
 
@@ -367,7 +266,7 @@ impl FreeSpace {
     pub fn edges_through(&self, p: Point) -> impl Iterator<Item = usize> + '_ {
         self.edges_near(p, p).filter(move |&e| {
             let (a, b) = self.edge_points(e);
-            on_segment(a, b, p)
+            predicates::on_segment(a, b, p)
         })
     }
 
@@ -387,7 +286,7 @@ impl FreeSpace {
         }
         // Winding number of the rings around p, from the edges near the ray to +x.
         let near = self.edges_near(p, Point::new(max.x.max(p.x), p.y)).map(|e| self.edge_points(e));
-        match winding_number(p, near) {
+        match predicates::winding_number(p, near) {
             None => Location::Boundary,
             Some(w) if w > 0 => Location::Free,
             Some(_) => Location::Blocked,
@@ -411,12 +310,12 @@ impl FreeSpace {
             None => self
                 .edges_near(p, p)
                 .map(|e| self.edge_points(e))
-                .filter(|&(a, b)| orient(a, b, p) == 0.0 && strictly_between(a, b, p))
+                .filter(|&(a, b)| predicates::orient(a, b, p) == 0.0 && predicates::strictly_between(a, b, p))
                 .collect(),
         };
         move |q| match vertex {
             Some(i) => self.corners(i).iter().any(|c| c.admits(p, q)),
-            None => through.iter().all(|&(a, b)| orient(a, b, q) >= 0.0),
+            None => through.iter().all(|&(a, b)| predicates::orient(a, b, q) >= 0.0),
         }
     }
 
@@ -450,14 +349,15 @@ impl FreeSpace {
         for e in self.edges_near(min, max) {
             let [i, j] = self.edges[e];
             let (p, q) = (self.positions[i as usize], self.positions[j as usize]);
-            let (sp, sq) = (orient(a, b, p), orient(a, b, q));
-            let (sa, sb) = (orient(p, q, a), orient(p, q, b));
+            let (sp, sq) = (predicates::orient(a, b, p), predicates::orient(a, b, q));
+            let (sa, sb) = (predicates::orient(p, q, a), predicates::orient(p, q, b));
             if sp * sq < 0.0 && sa * sb < 0.0 {
                 return false;
             }
             for (k, s) in [(i, sp), (j, sq)] {
                 let v = self.positions[k as usize];
-                if s == 0.0 && strictly_between(a, b, v) && !self.passes_through(k as usize, a, b) {
+                if s == 0.0 && predicates::strictly_between(a, b, v) && !self.passes_through(k as usize, a, b)
+                {
                     return false;
                 }
             }
@@ -473,7 +373,7 @@ fn pair_free_wedges(at: Point, corners: &mut [Corner]) {
     // (direction point, leaving?) sorted counter-clockwise from +x.
     let mut directions: Vec<(Point, bool)> =
         corners.iter().flat_map(|c| [(c.next, true), (c.prev, false)]).collect();
-    directions.sort_by(|&(p, _), &(q, _)| angular_order(at, p, q));
+    directions.sort_by(|&(p, _), &(q, _)| predicates::angular_order(at, p, q));
     let n = directions.len();
     let mut paired = Vec::with_capacity(corners.len());
     for (k, &(next, leaving)) in directions.iter().enumerate() {
@@ -489,20 +389,12 @@ fn pair_free_wedges(at: Point, corners: &mut [Corner]) {
     }
 }
 
-/// The order of the directions from `at` toward `p` and `q`, counter-clockwise from +x. Exact.
-pub fn angular_order(at: Point, p: Point, q: Point) -> std::cmp::Ordering {
-    let half = |r: Point| if r.y > at.y || (r.y == at.y && r.x > at.x) { 0 } else { 1 };
-    half(p)
-        .cmp(&half(q))
-        .then_with(|| 0.0.partial_cmp(&orient(at, p, q)).unwrap_or(std::cmp::Ordering::Equal))
-}
-
 /// Ring `r` with repeated consecutive vertices (and a closing repeat) dropped, checked.
 fn clean_ring(r: usize, ring: &[Point]) -> Result<Vec<Point>, FreeSpaceError> {
     if let Some(v) = ring.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
         return Err(FreeSpaceError::NonFinite { ring: r, vertex: v });
     }
-    let kept = dedup_ring(ring.iter().copied());
+    let kept = predicates::dedup_ring(ring.iter().copied());
     if kept.len() < 3 {
         return Err(FreeSpaceError::TooFewVertices { ring: r });
     }
@@ -583,7 +475,7 @@ fn grid_rings(grid: &Grid) -> Vec<Vec<Point>> {
 fn merge_collinear(ring: Vec<Point>) -> Vec<Point> {
     let n = ring.len();
     (0..n)
-        .filter(|&i| orient(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) != 0.0)
+        .filter(|&i| predicates::orient(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) != 0.0)
         .map(|i| ring[i])
         .collect()
 }
@@ -600,15 +492,15 @@ mod tests {
     fn wedges_of_every_size() {
         let o = p(0.0, 0.0);
         // Quarter turn from +x to +y.
-        assert!(in_wedge(o, p(1.0, 0.0), p(0.0, 1.0), p(1.0, 1.0)));
-        assert!(in_wedge(o, p(1.0, 0.0), p(0.0, 1.0), p(2.0, 0.0)));
-        assert!(!in_wedge(o, p(1.0, 0.0), p(0.0, 1.0), p(-1.0, -1.0)));
+        assert!(predicates::in_wedge(o, p(1.0, 0.0), p(0.0, 1.0), p(1.0, 1.0)));
+        assert!(predicates::in_wedge(o, p(1.0, 0.0), p(0.0, 1.0), p(2.0, 0.0)));
+        assert!(!predicates::in_wedge(o, p(1.0, 0.0), p(0.0, 1.0), p(-1.0, -1.0)));
         // Three quarters from +y to +x.
-        assert!(in_wedge(o, p(0.0, 1.0), p(1.0, 0.0), p(-1.0, -1.0)));
-        assert!(!in_wedge(o, p(0.0, 1.0), p(1.0, 0.0), p(1.0, 1.0)));
+        assert!(predicates::in_wedge(o, p(0.0, 1.0), p(1.0, 0.0), p(-1.0, -1.0)));
+        assert!(!predicates::in_wedge(o, p(0.0, 1.0), p(1.0, 0.0), p(1.0, 1.0)));
         // Half turn from +x to -x: the upper half-plane.
-        assert!(in_wedge(o, p(1.0, 0.0), p(-1.0, 0.0), p(0.0, 1.0)));
-        assert!(!in_wedge(o, p(1.0, 0.0), p(-1.0, 0.0), p(0.0, -1.0)));
+        assert!(predicates::in_wedge(o, p(1.0, 0.0), p(-1.0, 0.0), p(0.0, 1.0)));
+        assert!(!predicates::in_wedge(o, p(1.0, 0.0), p(-1.0, 0.0), p(0.0, -1.0)));
     }
 
     #[test]
@@ -618,7 +510,7 @@ mod tests {
         assert_eq!(rings.len(), 1);
         assert_eq!(rings[0].len(), 4);
         let r = &rings[0];
-        assert!(orient(r[0], r[1], r[2]) > 0.0);
+        assert!(predicates::orient(r[0], r[1], r[2]) > 0.0);
     }
 
     #[test]

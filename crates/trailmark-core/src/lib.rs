@@ -34,6 +34,7 @@ pub mod graph;
 pub mod grid;
 pub mod movingai;
 pub mod path;
+pub mod predicates;
 pub mod read;
 pub mod smooth;
 pub mod svg;

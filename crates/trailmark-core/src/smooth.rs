@@ -49,8 +49,8 @@
 use serde::{Deserialize, Serialize};
 
 use crate::curve::{BSpline, Bezier, CubicHermite, CurveError, MAX_SAMPLES};
-use crate::freespace::orient;
 use crate::geometry::{Point, Vector};
+use crate::predicates::orient;
 use crate::world::CollisionChecker;
 
 /// How to smooth a path.

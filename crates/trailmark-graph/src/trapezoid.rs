@@ -47,8 +47,9 @@ use parry2d_f64::math::Vector as PVector;
 use parry2d_f64::partitioning::{Bvh, BvhBuildStrategy};
 use thiserror::Error;
 use trailmark_core::cost::Cost;
-use trailmark_core::freespace::{FreeSpace, orient};
+use trailmark_core::freespace::FreeSpace;
 use trailmark_core::geometry::{Point, Vector};
+use trailmark_core::predicates::orient;
 
 use crate::roadmap::{Roadmap, RoadmapQuery};
 

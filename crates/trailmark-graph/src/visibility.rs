@@ -33,8 +33,9 @@ use std::cmp::Ordering;
 
 use thiserror::Error;
 use trailmark_core::cost::Cost;
-use trailmark_core::freespace::{Corner, FreeSpace, Location, orient, wedge_holds};
+use trailmark_core::freespace::{Corner, FreeSpace, Location};
 use trailmark_core::geometry::Point;
+use trailmark_core::predicates::{orient, wedge_holds};
 
 use crate::roadmap::{Roadmap, RoadmapQuery};
 

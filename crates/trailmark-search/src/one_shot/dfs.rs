@@ -4,7 +4,9 @@ use trailmark_core::graph::{IndexedGraph, Successors};
 
 use crate::error::SearchError;
 use crate::index::{Dense, NodeIndex};
-use crate::search::{EdgeCheck, Search, SearchResult, ensure};
+use crate::one_shot::SearchResult;
+use crate::one_shot::edges::EdgeCheck;
+use crate::one_shot::workspace::{Search, ensure};
 use crate::stats::SearchStats;
 
 /// Depth-first search from `start` to `goal`: a path if one exists, usually far from the

@@ -8,7 +8,10 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
-use crate::lifelong::{Direction, EdgeChange, Expansion, Key, Planner};
+use crate::incremental::engine::Direction;
+use crate::incremental::mode::Exact;
+use crate::incremental::planner::LifelongPlanner;
+use crate::incremental::{EdgeChange, Expansion, Key};
 use crate::stats::SearchStats;
 
 /// D* Lite (Koenig and Likhachev, 2002), the optimized version: a search from the goal back to
@@ -52,7 +55,7 @@ use crate::stats::SearchStats;
 /// ```
 #[derive(Debug, Clone)]
 pub struct DStarLite<N: Debug, H> {
-    planner: Planner<N, H>,
+    planner: LifelongPlanner<N, H>,
 }
 
 impl<N, H> DStarLite<N, H>
@@ -69,7 +72,9 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        Ok(DStarLite { planner: Planner::new(Direction::Backward, graph, start, goal, heuristic, None)? })
+        Ok(DStarLite {
+            planner: LifelongPlanner::new(Direction::Backward, graph, start, goal, heuristic, Exact)?,
+        })
     }
 
     /// Starts a new query from `start` to `goal`, keeping the planner's memory: a planner

@@ -9,9 +9,12 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
-use crate::ara_star::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
+use crate::anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
 use crate::error::SearchError;
-use crate::lifelong::{Direction, EdgeChange, Planner};
+use crate::incremental::EdgeChange;
+use crate::incremental::engine::Direction;
+use crate::incremental::mode::Anytime;
+use crate::incremental::planner::LifelongPlanner;
 use crate::stats::SearchStats;
 
 /// Changes (nodes or edges told) from which AD* treats a batch as significant and searches
@@ -53,7 +56,7 @@ pub const DEFAULT_RAISE_THRESHOLD: usize = 100;
 /// ```
 #[derive(Debug, Clone)]
 pub struct AdStar<N: Debug, H> {
-    planner: Planner<N, H>,
+    planner: LifelongPlanner<N, H, Anytime>,
     schedule: EpsilonSchedule,
     /// The inflation of the current (or last) iteration.
     epsilon: f64,
@@ -95,8 +98,14 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         schedule.check()?;
-        let planner =
-            Planner::new(Direction::Backward, graph, start, goal, heuristic, Some(schedule.initial))?;
+        let planner = LifelongPlanner::new(
+            Direction::Backward,
+            graph,
+            start,
+            goal,
+            heuristic,
+            Anytime::new(schedule.initial),
+        )?;
         Ok(AdStar {
             planner,
             schedule,

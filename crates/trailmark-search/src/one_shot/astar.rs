@@ -1,7 +1,7 @@
 //! Best-first search: A*, weighted A* and Dijkstra's algorithm.
 //!
 //! All three expand nodes in order of `f = g + w h` from one open list, an
-//! [`IndexedHeap`](crate::queue::IndexedHeap) with decrease-key; ties on `f` go to the larger `g`.
+//! [`IndexedHeap`](crate::IndexedHeap) with decrease-key; ties on `f` go to the larger `g`.
 //! The goal test happens when a node is expanded, so the path returned is optimal for A* with an
 //! admissible heuristic and for Dijkstra, and within a factor `w` of optimal for weighted A* with
 //! a consistent heuristic. "Optimal" here is up to a relative 2^-32 (about 2.3e-10): priorities
@@ -13,19 +13,12 @@ use trailmark_core::graph::{IndexedGraph, Successors};
 
 use crate::error::SearchError;
 use crate::index::{Dense, NodeIndex};
-use crate::search::{EdgeCheck, FKey, Search, SearchResult, ensure};
-
-/// The largest heuristic weight [`weighted_astar`] accepts, 1e6 (also the largest initial
-/// inflation of the anytime planners, [`MAX_EPSILON`](crate::MAX_EPSILON)).
-///
-/// At a weight of 1e6 the heuristic already outweighs path cost a million to one: the search
-/// orders nodes as greedy best-first search does (by `h` alone) except between nodes whose `h`
-/// differ by less than a millionth of their `g` difference, and the proven bound, a million
-/// times the least cost, says nothing any more. A larger weight changes nothing a user could
-/// want, and brings `w h` toward the largest `f64` (beyond it, `w h` would be `+inf`, which
-/// means a dead end): refusing it keeps a typo such as 1e308 from silently making every node
-/// look unreachable.
-pub const MAX_WEIGHT: f64 = 1e6;
+use crate::limits::MAX_WEIGHT;
+use crate::one_shot::SearchResult;
+use crate::one_shot::edges::EdgeCheck;
+use crate::one_shot::key::FKey;
+use crate::one_shot::workspace::{Search, ensure};
+use crate::stats::SearchStats;
 
 /// A* from `start` to `goal`: a least-cost path when `heuristic` is admissible (never more than
 /// the least cost to the goal). A node whose heuristic is `+inf` is treated as a dead end.
@@ -221,7 +214,7 @@ impl<I> Search<I> {
         let query = self.begin(graph, start, goal.unwrap_or(start))?;
         let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
         let goal_slot = if goal.is_some() { t } else { usize::MAX };
-        let mut stats = crate::stats::SearchStats::default();
+        let mut stats = SearchStats::default();
         let mut bad_h = None;
         // The first node whose cost from the start overflowed (a finite `g` plus a finite edge
         // cost gave +inf): it is left unreached, which is exact when a path is found (the path

@@ -8,7 +8,10 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
-use crate::lifelong::{Direction, EdgeChange, Expansion, Key, Planner};
+use crate::incremental::engine::Direction;
+use crate::incremental::mode::Exact;
+use crate::incremental::planner::LifelongPlanner;
+use crate::incremental::{EdgeChange, Expansion, Key};
 use crate::stats::SearchStats;
 
 /// Lifelong Planning A* (Koenig, Likhachev and Furcy, 2004): A* that, after edge costs change,
@@ -46,7 +49,7 @@ use crate::stats::SearchStats;
 /// ```
 #[derive(Debug, Clone)]
 pub struct LpaStar<N: Debug, H> {
-    planner: Planner<N, H>,
+    planner: LifelongPlanner<N, H>,
 }
 
 impl<N, H> LpaStar<N, H>
@@ -63,7 +66,9 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        Ok(LpaStar { planner: Planner::new(Direction::Forward, graph, start, goal, heuristic, None)? })
+        Ok(LpaStar {
+            planner: LifelongPlanner::new(Direction::Forward, graph, start, goal, heuristic, Exact)?,
+        })
     }
 
     /// Starts a new query from `start` to `goal`, keeping the planner's memory: a planner

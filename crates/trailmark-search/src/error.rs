@@ -3,6 +3,7 @@
 use std::fmt::Debug;
 
 use thiserror::Error;
+use trailmark_core::graph::Graph;
 
 use crate::limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_NODES, MAX_WEIGHT};
 
@@ -86,4 +87,18 @@ pub enum SearchError<N: Debug> {
     /// The graph has more nodes than a search can number.
     #[error("the graph has {0} node indices; a search supports at most {max}", max = MAX_NODES)]
     TooManyNodes(usize),
+}
+
+/// Errors unless both endpoints of a query are nodes of the graph.
+pub(crate) fn check_endpoints<G>(graph: &G, start: G::Node, goal: G::Node) -> Result<(), SearchError<G::Node>>
+where
+    G: Graph + ?Sized,
+{
+    if !graph.contains(start) {
+        return Err(SearchError::StartNotInGraph(start));
+    }
+    if !graph.contains(goal) {
+        return Err(SearchError::GoalNotInGraph(goal));
+    }
+    Ok(())
 }

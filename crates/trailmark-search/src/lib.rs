@@ -65,6 +65,7 @@
 
 mod anytime;
 pub mod error;
+mod heuristic;
 mod incremental;
 pub mod index;
 mod limits;
@@ -91,8 +92,7 @@ pub use index::{Dense, Hashed, NodeIndex};
 pub use limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_WEIGHT};
 pub use one_shot::SearchResult;
 pub use one_shot::astar::{astar, dijkstra, weighted_astar};
-pub use one_shot::bfs::bfs;
-pub use one_shot::dfs::dfs;
+pub use one_shot::uninformed::{bfs, dfs};
 pub use one_shot::workspace::Search;
 pub use queue::IndexedHeap;
 pub use stats::SearchStats;

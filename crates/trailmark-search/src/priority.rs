@@ -9,19 +9,9 @@ pub(crate) const IGNORED_BITS: u32 = 20;
 /// The bit pattern of a non-negative priority (an `f` value, or the primary part of a lifelong
 /// key) rounded to 32 of its 52 mantissa bits, a relative precision of 2^-32 (about 2.3e-10).
 ///
-/// Priorities add edge costs and heuristic values in orders that differ from node to node, so
-/// values equal in exact arithmetic differ in their last bits (on an open grid, by about 1e-13
-/// after a few hundred moves). Compared bit for bit, such near-ties are ordered by rounding
-/// noise, and the tie-breaking rule (larger `g` first), which is what lets A* walk straight
-/// across the many cells of equal `f` of an open area, never applies: on an empty 512 x 512
-/// grid, A* between far corners then expands a whole parallelogram of cells (128,145 in one
-/// measured query) instead of the path's cells. Rounding every priority to 2^-32 makes such
-/// near-ties exact ties again. The price is that priorities closer than that are ordered as
-/// equal: a search can return a path whose cost exceeds the least by at most a relative 2^-32,
-/// far below what costs summed in floating point resolve anyway.
-///
-/// Rounding is monotone, so the order of priorities that differ by more is unchanged; `+inf`
-/// stays `+inf`.
+/// Sums equal in exact arithmetic but rounded differently become exact ties again, so the
+/// tie-breaking rule applies to them (docs/search.md, "Why the keys are packed"); a path found
+/// costs at most a relative 2^-32 more than the least. Rounding is monotone and keeps `+inf`.
 #[inline]
 pub(crate) fn priority_bits(value: Cost) -> u64 {
     // `+ 0.0` turns a negative zero into a positive one, whose bits order correctly.

@@ -129,7 +129,7 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.planner.reset(graph, start, goal)?;
-        self.planner.search.set_epsilon(self.schedule.initial);
+        self.planner.engine.set_epsilon(self.schedule.initial);
         self.epsilon = self.schedule.initial;
         self.in_progress = false;
         self.completed = 0;
@@ -360,11 +360,11 @@ where
 
     /// Counters summed over every call since the planner was made.
     pub fn totals(&self) -> SearchStats {
-        self.planner.search.totals
+        self.planner.engine.totals
     }
 
     /// Bytes held by the planner's state and queue.
     pub fn memory_bytes(&self) -> usize {
-        self.planner.search.memory_bytes()
+        self.planner.engine.memory_bytes()
     }
 }

@@ -9,6 +9,7 @@ use trailmark_core::path::Path;
 
 use crate::anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
 use crate::error::SearchError;
+use crate::heuristic::{HeuristicCheck, checked_heuristic};
 use crate::index::{Dense, NodeIndex};
 use crate::one_shot::edges::EdgeCheck;
 use crate::one_shot::key::FKey;
@@ -86,10 +87,6 @@ impl<I> Search<I> {
         // Nodes stamped at or above `first` were reached by this query; `closed_stamp()` marks
         // those expanded in the current iteration.
         let first = query.open;
-        let mut h = |node| {
-            let v = heuristic(node);
-            if v >= 0.0 { Ok(v) } else { Err(SearchError::InvalidHeuristic { node, value: v }) }
-        };
         let mut epsilon = schedule.initial;
         let mut stats = SearchStats::default();
         let mut iterations = Vec::new();
@@ -100,7 +97,7 @@ impl<I> Search<I> {
         // error otherwise. A priority `g + ε h` that overflows is just `+inf`: such nodes come
         // after all others, and are expanded while the goal is unreached.
         let mut overflow = None;
-        let h_start = h(start)?;
+        let h_start = checked_heuristic(start, heuristic(start))?;
         if h_start.is_finite() {
             self.heap.push(s, FKey::new(epsilon * h_start, 0.0));
             stats.pushes += 1;
@@ -127,7 +124,7 @@ impl<I> Search<I> {
                 self.nodes.stamp[u] = closed;
                 stats.expansions += 1;
                 let gu = self.nodes.g[u];
-                let mut bad_h = None;
+                let mut heuristics = HeuristicCheck::new();
                 let (nodes, heap, index) = (&mut self.nodes, &mut self.heap, &mut self.index);
                 index.for_each_successor(graph, u, |v, next, cost| {
                     if !edges.accept(next, cost) {
@@ -143,13 +140,7 @@ impl<I> Search<I> {
                         overflow.get_or_insert(next);
                         return;
                     }
-                    let hv = match h(next) {
-                        Ok(hv) => hv,
-                        Err(e) => {
-                            bad_h.get_or_insert(e);
-                            return;
-                        }
-                    };
+                    let Some(hv) = heuristics.accept(next, heuristic(next)) else { return };
                     nodes.g[v] = gv;
                     nodes.parent[v] = u as u32;
                     if st == closed {
@@ -164,9 +155,7 @@ impl<I> Search<I> {
                     }
                 });
                 edges.check(|| self.index.node(graph, u))?;
-                if let Some(e) = bad_h {
-                    return Err(e);
-                }
+                heuristics.check()?;
             }
             if let Some(why) = out_of_budget {
                 break why;
@@ -189,7 +178,8 @@ impl<I> Search<I> {
                 Some(g_goal) => {
                     let mut lowest = f64::INFINITY;
                     for slot in self.heap.iter().map(|(v, _)| v).chain(incons.iter().map(|&v| v as usize)) {
-                        lowest = lowest.min(self.nodes.g[slot] + h(self.index.node(graph, slot))?);
+                        let node = self.index.node(graph, slot);
+                        lowest = lowest.min(self.nodes.g[slot] + checked_heuristic(node, heuristic(node))?);
                     }
                     if lowest >= g_goal { 1.0 } else { epsilon.min(g_goal / lowest) }
                 }
@@ -226,7 +216,8 @@ impl<I> Search<I> {
             items.extend(incons.drain(..).map(|v| v as usize));
             self.heap.clear();
             for v in items {
-                let hv = h(self.index.node(graph, v))?;
+                let node = self.index.node(graph, v);
+                let hv = checked_heuristic(node, heuristic(node))?;
                 let gv = self.nodes.g[v];
                 self.nodes.stamp[v] = open;
                 if hv.is_finite() {

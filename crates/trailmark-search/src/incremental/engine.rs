@@ -8,7 +8,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 
 use crate::error::SearchError;
 use crate::incremental::mode::{Anytime, Mode};
-use crate::incremental::packed_key::{QKey, below};
+use crate::incremental::packed_key::{PackedKey, below};
 use crate::incremental::values::Values;
 use crate::incremental::{Consistency, Expansion, Key};
 use crate::limits::MAX_NODES;
@@ -29,7 +29,7 @@ pub(crate) struct RepairEngine<N: Debug, M> {
     pub dir: Direction,
     /// `g` and `rhs` of every slot.
     v: Values,
-    queue: IndexedHeap<QKey>,
+    queue: IndexedHeap<PackedKey>,
     /// The underconsistent nodes of `queue`, by the primary part of their key: the loop's end
     /// waits for those near the target's key (see [`RepairEngine::compute`]).
     under: IndexedHeap<u64>,
@@ -69,12 +69,6 @@ pub(crate) fn cost_error<N: Debug>(from: N, to: N, cost: Cost) -> SearchError<N>
     } else {
         SearchError::InvalidEdgeCost { from, to, cost }
     }
-}
-
-/// Whether `value` is a valid heuristic value: non-negative, possibly infinite (dead end).
-#[inline]
-pub(crate) fn valid_estimate(value: Cost) -> bool {
-    value >= 0.0
 }
 
 impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
@@ -154,7 +148,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
     {
         let slots: Vec<usize> = self.queue.iter().map(|(s, _)| s).collect();
         for s in slots {
-            let key = self.qkey(graph, s, h);
+            let key = self.packed_key(graph, s, h);
             self.enqueue(s, key);
         }
         self.keys_current = true;
@@ -195,7 +189,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
 
     /// The queued nodes and their keys, least first.
     pub fn queue(&self) -> Vec<(usize, Key)> {
-        let mut items: Vec<(usize, QKey)> = self.queue.iter().collect();
+        let mut items: Vec<(usize, PackedKey)> = self.queue.iter().collect();
         items.sort_by_key(|&(s, k)| (k, s));
         items.into_iter().map(|(s, k)| (s, k.key())).collect()
     }
@@ -220,23 +214,23 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
 
     /// The queue's key of `slot`.
     #[inline]
-    fn qkey<G>(&mut self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost) -> QKey
+    fn packed_key<G>(&mut self, graph: &G, slot: usize, h: &mut impl FnMut(N) -> Cost) -> PackedKey
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        self.qkey_at(slot, graph.node_at(slot), h)
+        self.packed_key_at(slot, graph.node_at(slot), h)
     }
 
     /// The queue's key of `slot`, which is `node`.
     #[inline]
-    fn qkey_at(&mut self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> QKey {
+    fn packed_key_at(&mut self, slot: usize, node: N, h: &mut impl FnMut(N) -> Cost) -> PackedKey {
         let key = self.key_at(slot, node, h);
-        QKey::new(key, self.v.g(slot) > self.v.rhs(slot))
+        PackedKey::new(key, self.v.g(slot) > self.v.rhs(slot))
     }
 
     /// Queues `slot` with `key`, or changes its key (and keeps `under` in step).
     #[inline]
-    fn enqueue(&mut self, slot: usize, key: QKey) {
+    fn enqueue(&mut self, slot: usize, key: PackedKey) {
         let old = self.queue.push(slot, key);
         match old {
             None => self.stats.pushes += 1,
@@ -244,7 +238,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
         }
         if key.under() {
             self.under.push(slot, key.primary_bits());
-        } else if old.is_some_and(QKey::under) {
+        } else if old.is_some_and(PackedKey::under) {
             self.under.remove(slot);
         }
     }
@@ -252,7 +246,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
     /// Takes `slot` out of the queue if it is there.
     #[inline]
     fn dequeue(&mut self, slot: usize) {
-        if self.queue.remove(slot).is_some_and(QKey::under) {
+        if self.queue.remove(slot).is_some_and(PackedKey::under) {
             self.under.remove(slot);
         }
     }
@@ -302,7 +296,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
             self.dequeue(slot);
             self.mode.hold_back(slot);
         } else if g != rhs {
-            let key = self.qkey_at(slot, node, h);
+            let key = self.packed_key_at(slot, node, h);
             self.enqueue(slot, key);
         } else {
             self.dequeue(slot);
@@ -479,12 +473,12 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
         // The target's key, recomputed only when its values change (the heuristic does not
         // change during the loop).
         let mut target_values = (self.v.g(target), self.v.rhs(target));
-        let mut target_key = self.qkey(graph, target, h);
+        let mut target_key = self.packed_key(graph, target, h);
         while let Some((top, k_top)) = self.queue.peek() {
             let values = (self.v.g(target), self.v.rhs(target));
             if values != target_values {
                 target_values = values;
-                target_key = self.qkey(graph, target, h);
+                target_key = self.packed_key(graph, target, h);
             }
             let (u, k_old) = if k_top.primary_bits() < target_key.primary_bits() || values.0 != values.1 {
                 (top, k_top)
@@ -501,14 +495,14 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
                 }
             };
             if !self.keys_current {
-                let k_new = self.qkey(graph, u, h);
+                let k_new = self.packed_key(graph, u, h);
                 if k_old < k_new {
                     // The key was computed with an older `k_m` or start: requeue, expand later.
                     self.enqueue(u, k_new);
                     continue;
                 }
             } else {
-                debug_assert!(k_old == self.qkey(graph, u, h), "a stale key while keys are current");
+                debug_assert!(k_old == self.packed_key(graph, u, h), "a stale key while keys are current");
             }
             if interrupt(self.stats.expansions) {
                 return false;
@@ -566,7 +560,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
     }
 
     /// Folds the current call's counters into the totals and returns them with `elapsed`.
-    pub fn close_call(&mut self, elapsed: std::time::Duration) -> SearchStats {
+    pub fn take_call_stats(&mut self, elapsed: std::time::Duration) -> SearchStats {
         let mut stats = std::mem::take(&mut self.stats);
         stats.elapsed = elapsed;
         self.totals.expansions += stats.expansions;
@@ -601,7 +595,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug> RepairEngine<N, Anytime> {
         self.under.clear();
         for s in slots {
             if self.v.g(s) != self.v.rhs(s) {
-                let key = self.qkey(graph, s, h);
+                let key = self.packed_key(graph, s, h);
                 self.enqueue(s, key);
             }
         }

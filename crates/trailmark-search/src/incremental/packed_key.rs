@@ -5,35 +5,25 @@ use trailmark_core::cost::Cost;
 use crate::incremental::Key;
 use crate::priority::priority_bits;
 
-/// A [`Key`] as one integer, in the order the queue takes nodes: by the primary part, then,
-/// among ties, the underconsistent nodes (smaller `g` first, as in the papers) before the
-/// overconsistent ones (larger `rhs` first).
+/// A [`Key`] as one integer, in the order the queue takes nodes: by the primary part (rounded
+/// as [`priority_bits`] says), then, among ties, the underconsistent nodes (smaller `g` first, as
+/// in the papers) before the overconsistent ones (larger `rhs` first, nearer the target).
 ///
-/// Among overconsistent nodes of equal primary key, the one with the larger `rhs` is the one
-/// nearer the target (its heuristic is smaller), so taking it first dives toward the target the
-/// way A* does when it breaks ties toward larger `g`. On an open map with the octile
-/// heuristic, every cell of the parallelogram between the endpoints ties; the papers' order
-/// (smaller first) fills it, this one walks across it. The order among overconsistent ties
-/// does not matter for correctness: a node whose `rhs` is not yet its least cost always has a
-/// queued node with a strictly smaller primary key. Underconsistent nodes are another matter:
-/// their stale values can hold up a tied node's `rhs`, so they keep the papers' order and come
-/// first (see `RepairEngine::compute` for how the loop ends).
-///
-/// Bits: the primary part's (rounded as [`priority_bits`] says) above the secondary word, whose top bit says overconsistent; the
-/// secondary part's bits below it, as they are (underconsistent) or complemented (overconsistent).
-/// Both parts are non-negative (or +inf), whose bit patterns order like the numbers.
+/// Taking the overconsistent tie nearer the target first walks across an open area, as A*'s
+/// larger-`g` rule does, instead of filling it; it is safe because such ties cannot hold up a
+/// value (docs/search.md, "Why the keys are packed", gives the argument and the bit layout).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub(super) struct QKey(u128);
+pub(super) struct PackedKey(u128);
 
 /// The top bit of the secondary word: an overconsistent node.
 const OVER: u64 = 1 << 63;
 
-impl QKey {
+impl PackedKey {
     #[inline]
     pub(super) fn new(key: Key, overconsistent: bool) -> Self {
         let secondary = (key.secondary + 0.0).to_bits();
         let low = if overconsistent { OVER | ((OVER - 1) - secondary) } else { secondary };
-        QKey((u128::from(priority_bits(key.primary)) << 64) | u128::from(low))
+        PackedKey((u128::from(priority_bits(key.primary)) << 64) | u128::from(low))
     }
 
     /// The bits of the (rounded) primary part, which order like its value.

@@ -7,8 +7,9 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
-use crate::error::SearchError;
-use crate::incremental::engine::{Direction, RepairEngine, cost_error, valid_cost, valid_estimate};
+use crate::error::{SearchError, check_endpoints};
+use crate::heuristic::HeuristicCheck;
+use crate::incremental::engine::{Direction, RepairEngine, cost_error, valid_cost};
 use crate::incremental::mode::{Anytime, Exact, Mode};
 use crate::incremental::{EdgeChange, Expansion, Key};
 use crate::stats::SearchStats;
@@ -37,7 +38,7 @@ where
 /// this backward in the [`Anytime`] mode.
 #[derive(Debug, Clone)]
 pub(crate) struct LifelongPlanner<N: Debug, H, M = Exact> {
-    pub search: RepairEngine<N, M>,
+    pub engine: RepairEngine<N, M>,
     heuristic: H,
     pub start: N,
     start_slot: usize,
@@ -47,7 +48,7 @@ pub(crate) struct LifelongPlanner<N: Debug, H, M = Exact> {
     last: N,
     pub k_m: Cost,
     /// The first invalid heuristic value met since the last report.
-    bad_h: Option<(N, Cost)>,
+    heuristics: HeuristicCheck<N>,
     /// The first node whose heuristic part `h(start, s) + k_m` overflowed since the planner was
     /// made or reset (see [`RepairEngine::overflow`]).
     h_overflow: Option<N>,
@@ -73,10 +74,10 @@ where
     {
         check_endpoints(graph, start, goal)?;
         let source = if dir == Direction::Backward { goal } else { start };
-        let search = RepairEngine::new(dir, graph, source, mode)?;
+        let engine = RepairEngine::new(dir, graph, source, mode)?;
         let (start_slot, goal_slot) = (graph.index_of(start), graph.index_of(goal));
         let mut planner = LifelongPlanner {
-            search,
+            engine,
             heuristic,
             start,
             start_slot,
@@ -84,15 +85,15 @@ where
             goal_slot,
             last: start,
             k_m: 0.0,
-            bad_h: None,
+            heuristics: HeuristicCheck::new(),
             h_overflow: None,
         };
-        let source = planner.search.source;
+        let source = planner.engine.source;
         {
-            let (search, mut h) = planner.keyed(graph);
-            search.update_vertex(graph, source, &mut h);
+            let (engine, mut h) = planner.engine_with_heuristic(graph);
+            engine.update_vertex(graph, source, &mut h);
         }
-        planner.search.close_call(std::time::Duration::ZERO);
+        planner.engine.take_call_stats(std::time::Duration::ZERO);
         Ok(planner)
     }
 
@@ -102,52 +103,45 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         check_endpoints(graph, start, goal)?;
-        let source = if self.search.dir == Direction::Backward { goal } else { start };
-        self.search.reset(graph, source)?;
+        let source = if self.engine.dir == Direction::Backward { goal } else { start };
+        self.engine.reset(graph, source)?;
         (self.start, self.goal, self.last) = (start, goal, start);
         (self.start_slot, self.goal_slot) = (graph.index_of(start), graph.index_of(goal));
         self.k_m = 0.0;
-        self.bad_h = None;
+        self.heuristics = HeuristicCheck::new();
         self.h_overflow = None;
-        let source = self.search.source;
+        let source = self.engine.source;
         {
-            let (search, mut h) = self.keyed(graph);
-            search.update_vertex(graph, source, &mut h);
+            let (engine, mut h) = self.engine_with_heuristic(graph);
+            engine.update_vertex(graph, source, &mut h);
         }
-        self.search.close_call(std::time::Duration::ZERO);
+        self.engine.take_call_stats(std::time::Duration::ZERO);
         Ok(())
     }
 
     /// The node whose value the search computes: the goal (forward) or the start (backward).
     fn target(&self) -> usize {
-        match self.search.dir {
+        match self.engine.dir {
             Direction::Forward => self.goal_slot,
             Direction::Backward => self.start_slot,
         }
     }
 
-    /// The search, with the heuristic part of keys: `h(s, goal)` forward, `h(start, s) + k_m`
+    /// The engine, with the heuristic part of its keys: `h(s, goal)` forward, `h(start, s) + k_m`
     /// backward (bringing `k_m` up to date first if the robot moved). Invalid heuristic values
     /// count as 0 and are remembered.
     ///
     /// Should `k_m` overflow (or a hostile heuristic make it infinite), it starts again from 0
     /// and every queued key is recomputed from the current start, which is what `k_m` exists to
     /// avoid, and exact.
-    fn keyed<G>(&mut self, graph: &G) -> (&mut RepairEngine<N, M>, impl FnMut(N) -> Cost + '_)
+    fn engine_with_heuristic<G>(&mut self, graph: &G) -> (&mut RepairEngine<N, M>, impl FnMut(N) -> Cost + '_)
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        let LifelongPlanner { search, heuristic, start, goal, last, k_m, bad_h, h_overflow, .. } = self;
-        let backward = search.dir == Direction::Backward;
-        let mut estimate = move |a: N, b: N| {
-            let v = heuristic(a, b);
-            if valid_estimate(v) {
-                v
-            } else {
-                bad_h.get_or_insert((if backward { b } else { a }, v));
-                0.0
-            }
-        };
+        let LifelongPlanner { engine, heuristic, start, goal, last, k_m, heuristics, h_overflow, .. } = self;
+        let backward = engine.dir == Direction::Backward;
+        let mut estimate =
+            move |a: N, b: N| heuristics.accept(if backward { b } else { a }, heuristic(a, b)).unwrap_or(0.0);
         let mut rekey = false;
         if backward && M::KEY_MODIFIER && *last != *start {
             let moved = *k_m + estimate(*last, *start);
@@ -173,9 +167,9 @@ where
             }
         };
         if rekey {
-            search.rekey(graph, &mut h);
+            engine.rekey(graph, &mut h);
         }
-        (search, h)
+        (engine, h)
     }
 
     pub fn compute<G>(
@@ -201,15 +195,15 @@ where
     {
         let clock = std::time::Instant::now();
         check_endpoints(graph, self.start, self.goal)?;
-        self.search.fit(graph)?;
+        self.engine.fit(graph)?;
         let target = self.target();
         let complete = {
-            let (search, mut h) = self.keyed(graph);
-            search.compute(graph, target, &mut h, &mut trace, interrupt)
+            let (engine, mut h) = self.engine_with_heuristic(graph);
+            engine.compute(graph, target, &mut h, &mut trace, interrupt)
         };
-        let stats = self.search.close_call(clock.elapsed());
+        let stats = self.engine.take_call_stats(clock.elapsed());
         self.report()?;
-        if let Some(node) = self.search.overflow().or(self.h_overflow) {
+        if let Some(node) = self.engine.overflow().or(self.h_overflow) {
             return Err(SearchError::CostOverflow { node });
         }
         Ok((complete, stats))
@@ -217,14 +211,11 @@ where
 
     /// The first fault since the last report, as an error.
     fn report(&mut self) -> Result<(), SearchError<N>> {
-        if let Some(e) = self.search.take_fault() {
-            self.bad_h = None;
+        if let Some(e) = self.engine.take_fault() {
+            self.heuristics = HeuristicCheck::new();
             return Err(e);
         }
-        match self.bad_h.take() {
-            Some((node, value)) => Err(SearchError::InvalidHeuristic { node, value }),
-            None => Ok(()),
-        }
+        self.heuristics.take()
     }
 
     pub fn move_start<G>(&mut self, graph: &G, to: N) -> Result<(), SearchError<N>>
@@ -234,10 +225,10 @@ where
         if !graph.contains(to) {
             return Err(SearchError::StartNotInGraph(to));
         }
-        self.start_slot = self.search.slot_of(graph, to)?;
+        self.start_slot = self.engine.slot_of(graph, to)?;
         if to != self.start {
             // Backward, the heuristic part of every key is measured from the start.
-            self.search.keys_changed();
+            self.engine.keys_changed();
         }
         self.start = to;
         Ok(())
@@ -247,11 +238,11 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.search.fit(graph)?;
+        self.engine.fit(graph)?;
         let slots = changes
             .iter()
             .map(|c| {
-                let slots = (self.search.slot_of(graph, c.from)?, self.search.slot_of(graph, c.to)?);
+                let slots = (self.engine.slot_of(graph, c.from)?, self.engine.slot_of(graph, c.to)?);
                 let new = edge_cost(graph, c.from, c.to);
                 // The old cost is checked (one that cannot be a cost says the caller is confused)
                 // but not used: the repair reads the graph (see `RepairEngine::edge_changed`).
@@ -263,15 +254,15 @@ where
                 Ok((slots, new))
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let backward = self.search.dir == Direction::Backward;
+        let backward = self.engine.dir == Direction::Backward;
         {
-            let (search, mut h) = self.keyed(graph);
+            let (engine, mut h) = self.engine_with_heuristic(graph);
             for ((from, to), new) in slots {
                 let (dependent, support) = if backward { (from, to) } else { (to, from) };
-                search.edge_changed(graph, dependent, support, new, &mut h);
+                engine.edge_changed(graph, dependent, support, new, &mut h);
             }
         }
-        self.search.close_call(std::time::Duration::ZERO);
+        self.engine.take_call_stats(std::time::Duration::ZERO);
         self.report()
     }
 
@@ -283,22 +274,22 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.search.fit(graph)?;
+        self.engine.fit(graph)?;
         let slots =
-            nodes.into_iter().map(|n| self.search.slot_of(graph, n)).collect::<Result<Vec<_>, _>>()?;
+            nodes.into_iter().map(|n| self.engine.slot_of(graph, n)).collect::<Result<Vec<_>, _>>()?;
         let told = slots.len();
         {
-            let (search, mut h) = self.keyed(graph);
+            let (engine, mut h) = self.engine_with_heuristic(graph);
             for slot in slots {
-                search.refresh(graph, slot, &mut h);
+                engine.refresh(graph, slot, &mut h);
             }
         }
-        self.search.close_call(std::time::Duration::ZERO);
+        self.engine.take_call_stats(std::time::Duration::ZERO);
         self.report().map(|()| told)
     }
 
     pub fn cost(&self) -> Option<Cost> {
-        let g = self.search.g(self.target());
+        let g = self.engine.g(self.target());
         g.is_finite().then_some(g)
     }
 
@@ -306,7 +297,7 @@ where
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.search.path(graph, self.target(), self.cost()?)
+        self.engine.path(graph, self.target(), self.cost()?)
     }
 
     /// The second node of the path (backward: the robot's next move).
@@ -316,46 +307,32 @@ where
     {
         self.cost()?;
         let target = self.target();
-        if target == self.search.source {
+        if target == self.engine.source {
             return None;
         }
-        self.search.best_support(graph, target).map(|s| graph.node_at(s))
+        self.engine.best_support(graph, target).map(|s| graph.node_at(s))
     }
 
     pub fn g<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        Ok(self.search.g(self.search.slot_of(graph, node)?))
+        Ok(self.engine.g(self.engine.slot_of(graph, node)?))
     }
 
     pub fn rhs<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        Ok(self.search.rhs(self.search.slot_of(graph, node)?))
+        Ok(self.engine.rhs(self.engine.slot_of(graph, node)?))
     }
 
     pub fn queue<G>(&self, graph: &G) -> Vec<(N, Key)>
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        self.search.queue().into_iter().map(|(s, k)| (graph.node_at(s), k)).collect()
+        self.engine.queue().into_iter().map(|(s, k)| (graph.node_at(s), k)).collect()
     }
-}
-
-/// Errors unless both endpoints are nodes of the graph.
-pub(crate) fn check_endpoints<G>(graph: &G, start: G::Node, goal: G::Node) -> Result<(), SearchError<G::Node>>
-where
-    G: IndexedGraph + ?Sized,
-{
-    if !graph.contains(start) {
-        return Err(SearchError::StartNotInGraph(start));
-    }
-    if !graph.contains(goal) {
-        return Err(SearchError::GoalNotInGraph(goal));
-    }
-    Ok(())
 }
 
 /// AD*'s iterations.
@@ -383,8 +360,122 @@ where
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        self.search.set_epsilon(epsilon);
-        let (search, mut h) = self.keyed(graph);
-        search.next_iteration(graph, &mut h);
+        self.engine.set_epsilon(epsilon);
+        let (engine, mut h) = self.engine_with_heuristic(graph);
+        engine.next_iteration(graph, &mut h);
     }
 }
+
+/// The methods [`LpaStar`](crate::LpaStar) and [`DStarLite`](crate::DStarLite) share word for
+/// word, written once: each delegates to the type's `planner` field, a [`LifelongPlanner`] in
+/// direction `$direction`. Used inside the type's `impl<N, H>` block.
+macro_rules! shared_lifelong_methods {
+    ($direction:expr) => {
+        /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent lower bound on
+        /// the cost from `a` to `b`. Nothing is searched until
+        /// [`compute_shortest_path`](Self::compute_shortest_path).
+        ///
+        /// Errors when the start or the goal is not a node of the graph.
+        pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, $crate::SearchError<N>>
+        where
+            G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        {
+            let mode = $crate::incremental::mode::Exact;
+            let planner = $crate::incremental::planner::LifelongPlanner::new(
+                $direction, graph, start, goal, heuristic, mode,
+            )?;
+            Ok(Self { planner })
+        }
+
+        /// Starts a new query from `start` to `goal`, keeping the planner's memory: a planner
+        /// reused for many queries pays, at each reset, for the nodes the previous query touched
+        /// rather than for the whole graph. Errors as [`new`](Self::new) does.
+        pub fn reset<G>(&mut self, graph: &G, start: N, goal: N) -> Result<(), $crate::SearchError<N>>
+        where
+            G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        {
+            self.planner.reset(graph, start, goal)
+        }
+
+        /// Expands nodes until the cost between the start and the goal is known: the first
+        /// search, or the repair after what changed since (edge costs and, for D* Lite, the
+        /// start). Returns this call's statistics (expansions, queue insertions, key updates,
+        /// time).
+        ///
+        /// Errors when the start or the goal is no longer a node (it was blocked), or when an
+        /// edge cost or a heuristic value met was negative or NaN; the search then treated that
+        /// edge as absent (that value as 0), and it stays usable: fix the graph, tell the
+        /// planner, call again. Errors with [`SearchError::CostOverflow`](crate::SearchError::CostOverflow)
+        /// once a cost or key overflowed (finite costs summing past the largest `f64`), at this
+        /// and every later call until [`reset`](Self::reset): such a value is stored as `+inf`,
+        /// so "no path" could be false.
+        pub fn compute_shortest_path<G>(
+            &mut self,
+            graph: &G,
+        ) -> Result<$crate::SearchStats, $crate::SearchError<N>>
+        where
+            G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        {
+            self.planner.compute(graph, |_| {})
+        }
+
+        /// [`compute_shortest_path`](Self::compute_shortest_path), calling `trace` with each node
+        /// expanded and its key, in order.
+        pub fn compute_shortest_path_traced<G>(
+            &mut self,
+            graph: &G,
+            trace: impl FnMut($crate::Expansion<N>),
+        ) -> Result<$crate::SearchStats, $crate::SearchError<N>>
+        where
+            G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        {
+            self.planner.compute(graph, trace)
+        }
+
+        /// Tells the planner that these edges changed cost (the graph already has the new
+        /// costs). All are checked before any is applied: a node that names nothing, or an old
+        /// cost that is negative, zero or NaN, is an error and the planner is left as it was.
+        ///
+        /// The repair does not rely on [`EdgeChange::old_cost`](crate::EdgeChange::old_cost): it
+        /// reads each edge's cost from the graph, and when the edge could have been the best way
+        /// out of its node before, recomputes that node's value from all of its edges. A wrong
+        /// (but valid) old cost therefore costs at most a little work, never a wrong path cost.
+        pub fn update_edges<G>(
+            &mut self,
+            graph: &G,
+            changes: &[$crate::EdgeChange<N>],
+        ) -> Result<(), $crate::SearchError<N>>
+        where
+            G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        {
+            self.planner.update_edges(graph, changes)
+        }
+
+        /// The cost of a shortest path from the start to the goal as of the last
+        /// [`compute_shortest_path`](Self::compute_shortest_path); `None` when the goal is
+        /// unreachable or nothing was computed yet.
+        pub fn cost(&self) -> Option<Cost> {
+            self.planner.cost()
+        }
+
+        /// The queued (inconsistent) nodes with their keys, least key first.
+        pub fn queue<G>(&self, graph: &G) -> Vec<(N, $crate::Key)>
+        where
+            G: IndexedGraph<Node = N> + ?Sized,
+        {
+            self.planner.queue(graph)
+        }
+
+        /// Counters summed over every call since the planner was made.
+        pub fn totals(&self) -> $crate::SearchStats {
+            self.planner.engine.totals
+        }
+
+        /// Bytes held by the planner's state and queue.
+        pub fn memory_bytes(&self) -> usize {
+            self.planner.engine.memory_bytes()
+        }
+    };
+}
+
+pub(crate) use shared_lifelong_methods;

@@ -12,6 +12,7 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Successors};
 
 use crate::error::SearchError;
+use crate::heuristic::HeuristicCheck;
 use crate::index::{Dense, NodeIndex};
 use crate::limits::MAX_WEIGHT;
 use crate::one_shot::SearchResult;
@@ -215,13 +216,13 @@ impl<I> Search<I> {
         let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
         let goal_slot = if goal.is_some() { t } else { usize::MAX };
         let mut stats = SearchStats::default();
-        let mut bad_h = None;
+        let mut heuristics = HeuristicCheck::new();
         // The first node whose cost from the start overflowed (a finite `g` plus a finite edge
         // cost gave +inf): it is left unreached, which is exact when a path is found (the path
         // costs less than any overflowing one) and an error otherwise. A priority `g + w h` that
         // overflows is simply `+inf`: such nodes come last, after every finite priority.
         let mut overflow = None;
-        match estimate(&mut heuristic, start, &mut bad_h) {
+        match heuristics.accept(start, heuristic(start)) {
             Some(h) if h.is_finite() => {
                 self.heap.push(s, FKey::new(weight * h, 0.0));
                 stats.pushes += 1;
@@ -273,7 +274,7 @@ impl<I> Search<I> {
                     overflow.get_or_insert(next);
                     return;
                 }
-                let Some(h) = estimate(&mut heuristic, next, &mut bad_h) else { return };
+                let Some(h) = heuristics.accept(next, heuristic(next)) else { return };
                 nodes.reach(v, gv, u, open);
                 if h == f64::INFINITY {
                     // A dead end (an overflowing `w h`, with `h` finite, is not one).
@@ -304,37 +305,14 @@ impl<I> Search<I> {
                 }
             });
             edges.check(|| self.index.node(graph, u))?;
-            if let Some((node, value)) = bad_h {
-                return Err(SearchError::InvalidHeuristic { node, value });
-            }
+            heuristics.check()?;
         }
-        if let Some((node, value)) = bad_h {
-            return Err(SearchError::InvalidHeuristic { node, value });
-        }
+        heuristics.check()?;
         // Without a path (or, for `dijkstra_all`, with nodes left unreached), an overflow means
         // a reachable node would be reported unreachable.
         if let (None, Some(node)) = (found, overflow) {
             return Err(SearchError::CostOverflow { node });
         }
         Ok(self.finish(graph, &query, found, stats))
-    }
-}
-
-/// The heuristic of `node`, or `None` (remembering the first culprit) when the heuristic
-/// returned a negative or NaN value.
-#[inline]
-fn estimate<N, H: FnMut(N) -> Cost>(heuristic: &mut H, node: N, bad: &mut Option<(N, Cost)>) -> Option<Cost>
-where
-    N: Copy,
-{
-    let h = heuristic(node);
-    // Non-negative numbers and +inf (see `EdgeCheck::accept`); `-0.0` counts as 0.
-    if h.to_bits() <= f64::INFINITY.to_bits() || h == 0.0 {
-        Some(h)
-    } else {
-        if bad.is_none() {
-            *bad = Some((node, h));
-        }
-        None
     }
 }

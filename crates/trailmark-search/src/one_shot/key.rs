@@ -8,13 +8,9 @@ use crate::priority::{IGNORED_BITS, priority_bits};
 /// [`priority_bits`]), ties broken toward larger `g` (deeper nodes first, which on grids reaches
 /// the goal after fewer expansions).
 ///
-/// Stored as one 64-bit integer: the bit pattern of the rounded `f`, whose low
-/// [`IGNORED_BITS`] bits are zero, with those bits holding `g` inverted, at a precision of 2^-19
-/// of `f`. For
-/// non-negative floats the bit pattern orders like the number, so keys compare as integers,
-/// without floating-point branches in the heap's inner loop, and a heap entry (key and node)
-/// takes 16 bytes, so the four children of a heap node span 64 bytes. Among keys of equal
-/// `f`, `g` values closer than `f / 2^19` tie; such ties are broken arbitrarily.
+/// One 64-bit integer: the bits of the rounded `f`, whose low [`IGNORED_BITS`] bits hold `g`
+/// inverted at a precision of 2^-19 of `f`, so keys compare as integers and a heap entry takes
+/// 16 bytes (docs/search.md, "Why the keys are packed"). Closer `g` values tie arbitrarily.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) struct FKey(u64);
 

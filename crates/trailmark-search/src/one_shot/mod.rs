@@ -12,10 +12,9 @@ use trailmark_core::path::Path;
 use crate::stats::SearchStats;
 
 pub(crate) mod astar;
-pub(crate) mod bfs;
-pub(crate) mod dfs;
 pub(crate) mod edges;
 pub(crate) mod key;
+pub(crate) mod uninformed;
 pub(crate) mod workspace;
 
 /// The outcome of a search: a path (or `None` when the goal is unreachable) and statistics.

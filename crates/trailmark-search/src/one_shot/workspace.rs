@@ -14,7 +14,7 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::Graph;
 use trailmark_core::path::Path;
 
-use crate::error::SearchError;
+use crate::error::{SearchError, check_endpoints};
 use crate::index::{Dense, Hashed, NodeIndex};
 use crate::limits::MAX_NODES;
 use crate::one_shot::SearchResult;
@@ -22,12 +22,12 @@ use crate::one_shot::key::FKey;
 use crate::queue::IndexedHeap;
 use crate::stats::SearchStats;
 
-/// A generation stamp. Two bytes: the stamps of a 512 x 512 map fit in a core's L2 cache, and
-/// the stamp test rejects most successors; every 32,766 queries the stamps are reset.
+/// A generation stamp. Two bytes, because the stamp test rejects most successors and small
+/// stamps share few cache lines; every 32,766 queries the stamps are reset.
 pub(crate) type Stamp = u16;
 
 /// A query in progress: its start and goal slots, the current generation's stamps, its clock.
-pub(crate) struct Query {
+pub(crate) struct RunningQuery {
     pub start: usize,
     pub goal: usize,
     /// The stamp of a node reached by this query and not expanded.
@@ -37,7 +37,7 @@ pub(crate) struct Query {
     clock: std::time::Instant,
 }
 
-impl Query {
+impl RunningQuery {
     /// Time since the query began.
     pub fn elapsed(&self) -> std::time::Duration {
         self.clock.elapsed()
@@ -45,8 +45,8 @@ impl Query {
 }
 
 /// Per-slot search state, as parallel arrays: the stamp test that rejects most successors
-/// reads 4 bytes a node, so the stamps of a node's neighbourhood share few cache lines
-/// (measured 20% faster than one 16-byte record per node on 512 x 512 mazes).
+/// reads only the stamps, so those of a node's neighbourhood share few cache lines (faster than
+/// one record per node; docs/search.md, "Inside").
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Nodes {
     /// Cost from the start, valid when `stamp >= open_stamp()`.
@@ -180,18 +180,13 @@ impl<I> Search<I> {
         graph: &G,
         start: G::Node,
         goal: G::Node,
-    ) -> Result<Query, SearchError<G::Node>>
+    ) -> Result<RunningQuery, SearchError<G::Node>>
     where
         G: Graph + ?Sized,
         I: NodeIndex<G>,
     {
         let clock = std::time::Instant::now();
-        if !graph.contains(start) {
-            return Err(SearchError::StartNotInGraph(start));
-        }
-        if !graph.contains(goal) {
-            return Err(SearchError::GoalNotInGraph(goal));
-        }
+        check_endpoints(graph, start, goal)?;
         let bound = self.index.begin(graph);
         if bound > MAX_NODES {
             return Err(SearchError::TooManyNodes(bound));
@@ -213,7 +208,7 @@ impl<I> Search<I> {
         self.start = Some(s as u32);
         let (open, closed) = (self.open_stamp(), self.closed_stamp());
         self.nodes.reach(s, 0.0, s, open);
-        Ok(Query { start: s, goal: t, open, closed, clock })
+        Ok(RunningQuery { start: s, goal: t, open, closed, clock })
     }
 
     /// Makes room for a query that will use `generations` generations (one per iteration of an
@@ -234,7 +229,7 @@ impl<I> Search<I> {
     pub(crate) fn finish<G>(
         &self,
         graph: &G,
-        query: &Query,
+        query: &RunningQuery,
         found: Option<usize>,
         mut stats: SearchStats,
     ) -> SearchResult<G::Node>

@@ -87,6 +87,8 @@ pub use anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
 pub use error::SearchError;
 pub use incremental::dstar_lite::DStarLite;
 pub use incremental::lpa_star::LpaStar;
+pub use incremental::repeated_astar::RepeatedAStar;
+pub use incremental::replanner::Replanner;
 pub use incremental::{Consistency, EdgeChange, Expansion, Key};
 pub use index::{Dense, Hashed, NodeIndex};
 pub use limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_WEIGHT};

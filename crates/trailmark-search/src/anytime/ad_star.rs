@@ -15,6 +15,7 @@ use crate::incremental::EdgeChange;
 use crate::incremental::engine::Direction;
 use crate::incremental::mode::Anytime;
 use crate::incremental::planner::LifelongPlanner;
+use crate::incremental::replanner::Replanner;
 use crate::stats::SearchStats;
 
 /// Changes (nodes or edges told) from which AD* treats a batch as significant and searches
@@ -77,6 +78,8 @@ pub struct AdStar<N: Debug, H> {
     last_path: Option<Path<N>>,
     /// The inflation of the last completed iteration.
     last_epsilon: f64,
+    /// The budget of each plan made through [`Replanner::plan`].
+    plan_budget: Budget,
 }
 
 impl<N, H> AdStar<N, H>
@@ -118,6 +121,7 @@ where
             raise: false,
             last_path: None,
             last_epsilon: schedule.initial,
+            plan_budget: Budget::unlimited(),
         })
     }
 
@@ -145,6 +149,13 @@ where
     /// `usize::MAX` never restarts on its own.
     pub fn with_raise_threshold(mut self, changes: usize) -> Self {
         self.raise_threshold = changes;
+        self
+    }
+
+    /// The same planner with a budget for each plan made through [`Replanner::plan`] (by
+    /// default none: each plan improves to ε = 1).
+    pub fn with_plan_budget(mut self, budget: Budget) -> Self {
+        self.plan_budget = budget;
         self
     }
 
@@ -223,9 +234,7 @@ where
                 budget.spent(clock, spent + e).is_some()
             };
             let (complete, pass) = self.planner.compute_interruptible(graph, &mut interrupt)?;
-            stats.expansions += pass.expansions;
-            stats.pushes += pass.pushes;
-            stats.decreases += pass.decreases;
+            stats += pass;
             if !complete {
                 break budget.spent(clock.elapsed(), stats.expansions).unwrap_or(Stop::TimeLimit);
             }
@@ -366,5 +375,64 @@ where
     /// Bytes held by the planner's state and queue.
     pub fn memory_bytes(&self) -> usize {
         self.planner.engine.memory_bytes()
+    }
+}
+
+/// AD* as a replanner: each plan improves within the budget it was configured with
+/// ([`AdStar::with_plan_budget`]); when the budget runs out before this plan has a path, the
+/// iteration in progress is completed anyway, since a plan without a path is no plan.
+/// [`inflation`](Replanner::inflation) is the ε of the path's iteration.
+impl<G, H> Replanner<G> for AdStar<G::Node, H>
+where
+    G: Successors + Predecessors + IndexedGraph + ?Sized,
+    H: FnMut(G::Node, G::Node) -> Cost,
+{
+    fn update_edges(
+        &mut self,
+        graph: &G,
+        changes: &[EdgeChange<G::Node>],
+    ) -> Result<(), SearchError<G::Node>> {
+        AdStar::update_edges(self, graph, changes)
+    }
+
+    fn update_nodes(&mut self, graph: &G, nodes: &[G::Node]) -> Result<(), SearchError<G::Node>> {
+        AdStar::update_nodes(self, graph, nodes.iter().copied())
+    }
+
+    fn move_start(&mut self, graph: &G, to: G::Node) -> Result<(), SearchError<G::Node>> {
+        AdStar::move_start(self, graph, to)
+    }
+
+    fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
+        let found = self.improve(graph, self.plan_budget)?;
+        let mut stats = found.stats;
+        if found.path.is_none() && found.stop != Stop::Unreachable {
+            stats += self.improve_once(graph)?.stats;
+        }
+        Ok(stats)
+    }
+
+    fn path(&self, graph: &G) -> Option<Path<G::Node>> {
+        AdStar::path(self, graph)
+    }
+
+    fn cost(&self) -> Option<Cost> {
+        AdStar::cost(self)
+    }
+
+    fn next_step(&self, graph: &G) -> Option<G::Node> {
+        AdStar::next_step(self, graph)
+    }
+
+    fn totals(&self) -> SearchStats {
+        AdStar::totals(self)
+    }
+
+    fn memory_bytes(&self) -> usize {
+        AdStar::memory_bytes(self)
+    }
+
+    fn inflation(&self) -> f64 {
+        self.path_epsilon()
     }
 }

@@ -10,6 +10,7 @@ use trailmark_core::path::Path;
 use crate::error::SearchError;
 use crate::incremental::engine::Direction;
 use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
+use crate::incremental::replanner::replanner_by_inherent_methods;
 
 /// D* Lite (Koenig and Likhachev, 2002), the optimized version: a search from the goal back to
 /// the robot that repairs only what a change of edge costs or a move of the robot invalidates.
@@ -135,3 +136,5 @@ where
         self.planner.rhs(graph, node)
     }
 }
+
+replanner_by_inherent_methods!(DStarLite);

@@ -563,10 +563,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
     pub fn take_call_stats(&mut self, elapsed: std::time::Duration) -> SearchStats {
         let mut stats = std::mem::take(&mut self.stats);
         stats.elapsed = elapsed;
-        self.totals.expansions += stats.expansions;
-        self.totals.pushes += stats.pushes;
-        self.totals.decreases += stats.decreases;
-        self.totals.elapsed += elapsed;
+        self.totals += stats;
         stats
     }
 }

@@ -10,6 +10,7 @@ use trailmark_core::path::Path;
 use crate::error::SearchError;
 use crate::incremental::engine::Direction;
 use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
+use crate::incremental::replanner::replanner_by_inherent_methods;
 
 /// Lifelong Planning A* (Koenig, Likhachev and Furcy, 2004): A* that, after edge costs change,
 /// repairs its previous search instead of starting over, expanding only the nodes whose cost
@@ -17,8 +18,9 @@ use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
 ///
 /// Keys are `[min(g, rhs) + h(s, goal); min(g, rhs)]`, with `g` and `rhs` costs *from the
 /// start*. The heuristic `h(a, b)` must be a consistent lower bound on the cost from `a` to `b`
-/// (on grids, `GridGraph::heuristic_between`). The start and goal are fixed: a robot that moves
-/// makes a new planner (or uses [`DStarLite`](crate::DStarLite), which searches from the goal).
+/// (on grids, `GridGraph::heuristic_between`). The values are costs from the start, so moving
+/// the start ([`move_start`](Self::move_start)) starts over; a robot that moves is better served
+/// by [`DStarLite`](crate::DStarLite), which searches from the goal.
 ///
 /// As with D* Lite, the planner holds no reference to the graph: change the graph, tell the
 /// planner ([`LpaStar::update_edges`] or [`LpaStar::update_nodes`]), compute again.
@@ -81,6 +83,30 @@ where
         self.planner.path(graph)
     }
 
+    /// Moves the start to `to`. A forward search cannot keep its values when its start moves
+    /// (they are costs from the start), so this starts a new query from `to` to the goal, as
+    /// [`reset`](Self::reset) does, keeping the planner's memory; the same start changes
+    /// nothing. Errors when `to` is not a node of the graph.
+    pub fn move_start<G>(&mut self, graph: &G, to: N) -> Result<(), SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        if to == self.planner.start {
+            return Ok(());
+        }
+        let goal = self.planner.goal;
+        self.planner.reset(graph, to, goal)
+    }
+
+    /// The node after the start on the [`path`](Self::path); `None` at the goal or when it is
+    /// unreachable.
+    pub fn next_step<G>(&self, graph: &G) -> Option<N>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        self.path(graph)?.nodes.get(1).copied()
+    }
+
     /// The start.
     pub fn start(&self) -> N {
         self.planner.start
@@ -107,3 +133,5 @@ where
         self.planner.rhs(graph, node)
     }
 }
+
+replanner_by_inherent_methods!(LpaStar);

@@ -27,6 +27,8 @@ pub(crate) mod lpa_star;
 pub(crate) mod mode;
 pub(crate) mod packed_key;
 pub(crate) mod planner;
+pub(crate) mod repeated_astar;
+pub(crate) mod replanner;
 pub(crate) mod values;
 pub(crate) mod walk;
 

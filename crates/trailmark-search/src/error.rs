@@ -3,6 +3,9 @@
 use std::fmt::Debug;
 
 use thiserror::Error;
+use trailmark_core::graph::Graph;
+
+use crate::limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_NODES, MAX_WEIGHT};
 
 /// Why a search could not run. An unreachable goal is not an error: the search then returns a
 /// result without a path.
@@ -43,20 +46,20 @@ pub enum SearchError<N: Debug> {
         value: f64,
     },
     /// A weighted search was given a weight that is not a number from 1 to
-    /// [`MAX_WEIGHT`](crate::MAX_WEIGHT).
-    #[error("weight {0:?} is invalid: the heuristic weight must be a number from 1 to {max}", max = crate::MAX_WEIGHT)]
+    /// [`MAX_WEIGHT`].
+    #[error("weight {0:?} is invalid: the heuristic weight must be a number from 1 to {max}", max = MAX_WEIGHT)]
     InvalidWeight(f64),
     /// A change notification named a node the graph does not have and cannot have (a cell
     /// outside the grid); nothing of the notification was applied.
     #[error("{0:?} names no node of the graph")]
     UnknownNode(N),
     /// An epsilon schedule that is not `1 <= initial <= MAX_EPSILON` and a finite `step > 0`
-    /// that reaches 1 in at most [`MAX_ITERATIONS`](crate::MAX_ITERATIONS) steps, each of which
+    /// that reaches 1 in at most [`MAX_ITERATIONS`] steps, each of which
     /// lowers the inflation (a step lost to rounding, as 1 is beside 1e20, never arrives).
     #[error(
         "epsilon schedule invalid: initial {initial:?}, step {step:?}; need 1 <= initial <= {max}, and a finite step > 0 that lowers it to 1 in at most {iterations} iterations",
-        max = crate::MAX_EPSILON,
-        iterations = crate::MAX_ITERATIONS
+        max = MAX_EPSILON,
+        iterations = MAX_ITERATIONS
     )]
     InvalidEpsilon {
         /// The initial inflation.
@@ -82,7 +85,7 @@ pub enum SearchError<N: Debug> {
         node: N,
     },
     /// The graph has more nodes than a search can number.
-    #[error("the graph has {0} node indices; a search supports at most {max}", max = crate::search::MAX_NODES)]
+    #[error("the graph has {0} node indices; a search supports at most {max}", max = MAX_NODES)]
     TooManyNodes(usize),
 }
 
@@ -107,4 +110,18 @@ impl<N: Debug> SearchError<N> {
             SearchError::TooManyNodes(n) => SearchError::TooManyNodes(n),
         }
     }
+}
+
+/// Errors unless both endpoints of a query are nodes of the graph.
+pub(crate) fn check_endpoints<G>(graph: &G, start: G::Node, goal: G::Node) -> Result<(), SearchError<G::Node>>
+where
+    G: Graph + ?Sized,
+{
+    if !graph.contains(start) {
+        return Err(SearchError::StartNotInGraph(start));
+    }
+    if !graph.contains(goal) {
+        return Err(SearchError::GoalNotInGraph(goal));
+    }
+    Ok(())
 }

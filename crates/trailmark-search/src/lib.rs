@@ -63,32 +63,38 @@
 
 #![deny(missing_docs)]
 
-mod ad_star;
-mod ara_star;
-mod astar;
-mod bfs;
-mod dfs;
-mod dstar_lite;
+mod anytime;
 pub mod error;
+mod heuristic;
+mod incremental;
 pub mod index;
-mod lifelong;
-mod lpa_star;
+mod limits;
+mod one_shot;
+mod priority;
 pub mod queue;
-pub mod search;
 pub mod stats;
 
-pub use ad_star::{AdStar, DEFAULT_RAISE_THRESHOLD};
-pub use ara_star::{
-    AnytimeResult, Budget, EpsilonSchedule, Iteration, MAX_EPSILON, MAX_ITERATIONS, Stop, ara_star,
-};
-pub use astar::{MAX_WEIGHT, astar, dijkstra, weighted_astar};
-pub use bfs::bfs;
-pub use dfs::dfs;
-pub use dstar_lite::DStarLite;
+/// The search workspace and its result, at their old path.
+pub mod search {
+    pub use crate::limits::MAX_NODES;
+    pub use crate::one_shot::SearchResult;
+    pub use crate::one_shot::workspace::Search;
+}
+
+pub use anytime::ad_star::{AdStar, DEFAULT_RAISE_THRESHOLD};
+pub use anytime::ara_star::ara_star;
+pub use anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
 pub use error::SearchError;
+pub use incremental::dstar_lite::DStarLite;
+pub use incremental::lpa_star::LpaStar;
+pub use incremental::repeated_astar::RepeatedAStar;
+pub use incremental::replanner::Replanner;
+pub use incremental::{Consistency, EdgeChange, Expansion, Key};
 pub use index::{Dense, Hashed, NodeIndex};
-pub use lifelong::{Consistency, EdgeChange, Expansion, Key};
-pub use lpa_star::LpaStar;
+pub use limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_WEIGHT};
+pub use one_shot::SearchResult;
+pub use one_shot::astar::{astar, dijkstra, weighted_astar};
+pub use one_shot::uninformed::{bfs, dfs};
+pub use one_shot::workspace::Search;
 pub use queue::IndexedHeap;
-pub use search::{Search, SearchResult};
 pub use stats::SearchStats;

@@ -1,5 +1,6 @@
 //! What a search did: counters and time.
 
+use std::ops::AddAssign;
 use std::time::Duration;
 
 use serde::{Deserialize, Serialize};
@@ -19,4 +20,15 @@ pub struct SearchStats {
     pub reopenings: u64,
     /// Wall-clock time of the search.
     pub elapsed: Duration,
+}
+
+/// Adds the counters and times of another search (totals over several calls).
+impl AddAssign for SearchStats {
+    fn add_assign(&mut self, other: SearchStats) {
+        self.expansions += other.expansions;
+        self.pushes += other.pushes;
+        self.decreases += other.decreases;
+        self.reopenings += other.reopenings;
+        self.elapsed += other.elapsed;
+    }
 }

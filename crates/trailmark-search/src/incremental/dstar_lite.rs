@@ -8,8 +8,9 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
-use crate::lifelong::{Direction, EdgeChange, Expansion, Key, Planner};
-use crate::stats::SearchStats;
+use crate::incremental::engine::Direction;
+use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
+use crate::incremental::replanner::replanner_by_inherent_methods;
 
 /// D* Lite (Koenig and Likhachev, 2002), the optimized version: a search from the goal back to
 /// the robot that repairs only what a change of edge costs or a move of the robot invalidates.
@@ -52,7 +53,7 @@ use crate::stats::SearchStats;
 /// ```
 #[derive(Debug, Clone)]
 pub struct DStarLite<N: Debug, H> {
-    planner: Planner<N, H>,
+    planner: LifelongPlanner<N, H>,
 }
 
 impl<N, H> DStarLite<N, H>
@@ -60,57 +61,7 @@ where
     N: Copy + Eq + Hash + Debug,
     H: FnMut(N, N) -> Cost,
 {
-    /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent lower bound on the
-    /// cost from `a` to `b`. Nothing is searched until
-    /// [`compute_shortest_path`](Self::compute_shortest_path).
-    ///
-    /// Errors when the start or the goal is not a node of the graph.
-    pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-    {
-        Ok(DStarLite { planner: Planner::new(Direction::Backward, graph, start, goal, heuristic, None)? })
-    }
-
-    /// Starts a new query from `start` to `goal`, keeping the planner's memory: a planner
-    /// reused for many queries pays, at each reset, for the nodes the previous query touched
-    /// rather than for the whole graph. Errors as [`new`](Self::new) does.
-    pub fn reset<G>(&mut self, graph: &G, start: N, goal: N) -> Result<(), SearchError<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.reset(graph, start, goal)
-    }
-
-    /// Expands nodes until the cost from the start is known: the first search, or the repair
-    /// after changes and moves. Returns this call's statistics (expansions, queue insertions,
-    /// key updates, time).
-    ///
-    /// Errors when the start or the goal is no longer a node (it was blocked), or when an edge
-    /// cost or a heuristic value met was negative or NaN; the search then treated that edge as
-    /// absent (that value as 0), and it stays usable: fix the graph, tell the planner, call again.
-    /// Errors with [`SearchError::CostOverflow`] once a cost or key overflowed (finite costs
-    /// summing past the largest `f64`), at this and every later call until [`reset`](Self::reset):
-    /// such a value is stored as `+inf`, so "no path" could be false.
-    pub fn compute_shortest_path<G>(&mut self, graph: &G) -> Result<SearchStats, SearchError<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.compute(graph, |_| {})
-    }
-
-    /// [`compute_shortest_path`](Self::compute_shortest_path), calling `trace` with each node
-    /// expanded and its key, in order.
-    pub fn compute_shortest_path_traced<G>(
-        &mut self,
-        graph: &G,
-        trace: impl FnMut(Expansion<N>),
-    ) -> Result<SearchStats, SearchError<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.compute(graph, trace)
-    }
+    shared_lifelong_methods!(Direction::Backward);
 
     /// Moves the robot to `to` (usually [`next_step`](Self::next_step)). Cheap: the keys are
     /// adjusted when the graph next changes. Errors when `to` is not a node of the graph.
@@ -119,21 +70,6 @@ where
         G: IndexedGraph<Node = N> + ?Sized,
     {
         self.planner.move_start(graph, to)
-    }
-
-    /// Tells the planner that these edges changed cost (the graph already has the new costs).
-    /// All are checked before any is applied: a node that names nothing, or an old cost that is
-    /// negative, zero or NaN, is an error and the planner is left as it was.
-    ///
-    /// The repair does not rely on [`EdgeChange::old_cost`]: it reads each edge's cost from the
-    /// graph, and when the edge could have been the best way out of its node before, recomputes
-    /// that node's value from all of its edges. A wrong (but valid) old cost therefore costs at
-    /// most a little work, never a wrong path cost.
-    pub fn update_edges<G>(&mut self, graph: &G, changes: &[EdgeChange<N>]) -> Result<(), SearchError<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.update_edges(graph, changes)
     }
 
     /// Tells the planner that edges leaving these nodes changed, in whatever way: each node's
@@ -150,13 +86,6 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.planner.update_nodes(graph, nodes).map(|_| ())
-    }
-
-    /// The cost of a shortest path from the start to the goal as of the last
-    /// [`compute_shortest_path`](Self::compute_shortest_path); `None` when the goal is
-    /// unreachable or nothing was computed yet.
-    pub fn cost(&self) -> Option<Cost> {
-        self.planner.cost()
     }
 
     /// A shortest path from the start to the goal, following the best successor from each node.
@@ -206,22 +135,6 @@ where
     {
         self.planner.rhs(graph, node)
     }
-
-    /// The queued (inconsistent) nodes with their keys, least key first.
-    pub fn queue<G>(&self, graph: &G) -> Vec<(N, Key)>
-    where
-        G: IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.queue(graph)
-    }
-
-    /// Counters summed over every call since the planner was made.
-    pub fn totals(&self) -> SearchStats {
-        self.planner.search.totals
-    }
-
-    /// Bytes held by the planner's state and queue.
-    pub fn memory_bytes(&self) -> usize {
-        self.planner.search.memory_bytes()
-    }
 }
+
+replanner_by_inherent_methods!(DStarLite);

@@ -9,9 +9,13 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
-use crate::ara_star::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
+use crate::anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
 use crate::error::SearchError;
-use crate::lifelong::{Direction, EdgeChange, Planner};
+use crate::incremental::EdgeChange;
+use crate::incremental::engine::Direction;
+use crate::incremental::mode::Anytime;
+use crate::incremental::planner::LifelongPlanner;
+use crate::incremental::replanner::Replanner;
 use crate::stats::SearchStats;
 
 /// Changes (nodes or edges told) from which AD* treats a batch as significant and searches
@@ -53,7 +57,7 @@ pub const DEFAULT_RAISE_THRESHOLD: usize = 100;
 /// ```
 #[derive(Debug, Clone)]
 pub struct AdStar<N: Debug, H> {
-    planner: Planner<N, H>,
+    planner: LifelongPlanner<N, H, Anytime>,
     schedule: EpsilonSchedule,
     /// The inflation of the current (or last) iteration.
     epsilon: f64,
@@ -74,6 +78,8 @@ pub struct AdStar<N: Debug, H> {
     last_path: Option<Path<N>>,
     /// The inflation of the last completed iteration.
     last_epsilon: f64,
+    /// The budget of each plan made through [`Replanner::plan`].
+    plan_budget: Budget,
 }
 
 impl<N, H> AdStar<N, H>
@@ -95,8 +101,14 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         schedule.check()?;
-        let planner =
-            Planner::new(Direction::Backward, graph, start, goal, heuristic, Some(schedule.initial))?;
+        let planner = LifelongPlanner::new(
+            Direction::Backward,
+            graph,
+            start,
+            goal,
+            heuristic,
+            Anytime::new(schedule.initial),
+        )?;
         Ok(AdStar {
             planner,
             schedule,
@@ -109,6 +121,7 @@ where
             raise: false,
             last_path: None,
             last_epsilon: schedule.initial,
+            plan_budget: Budget::unlimited(),
         })
     }
 
@@ -120,7 +133,7 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.planner.reset(graph, start, goal)?;
-        self.planner.search.set_epsilon(self.schedule.initial);
+        self.planner.engine.set_epsilon(self.schedule.initial);
         self.epsilon = self.schedule.initial;
         self.in_progress = false;
         self.completed = 0;
@@ -136,6 +149,13 @@ where
     /// `usize::MAX` never restarts on its own.
     pub fn with_raise_threshold(mut self, changes: usize) -> Self {
         self.raise_threshold = changes;
+        self
+    }
+
+    /// The same planner with a budget for each plan made through [`Replanner::plan`] (by
+    /// default none: each plan improves to ε = 1).
+    pub fn with_plan_budget(mut self, budget: Budget) -> Self {
+        self.plan_budget = budget;
         self
     }
 
@@ -214,9 +234,7 @@ where
                 budget.spent(clock, spent + e).is_some()
             };
             let (complete, pass) = self.planner.compute_interruptible(graph, &mut interrupt)?;
-            stats.expansions += pass.expansions;
-            stats.pushes += pass.pushes;
-            stats.decreases += pass.decreases;
+            stats += pass;
             if !complete {
                 break budget.spent(clock.elapsed(), stats.expansions).unwrap_or(Stop::TimeLimit);
             }
@@ -351,11 +369,70 @@ where
 
     /// Counters summed over every call since the planner was made.
     pub fn totals(&self) -> SearchStats {
-        self.planner.search.totals
+        self.planner.engine.totals
     }
 
     /// Bytes held by the planner's state and queue.
     pub fn memory_bytes(&self) -> usize {
-        self.planner.search.memory_bytes()
+        self.planner.engine.memory_bytes()
+    }
+}
+
+/// AD* as a replanner: each plan improves within the budget it was configured with
+/// ([`AdStar::with_plan_budget`]); when the budget runs out before this plan has a path, the
+/// iteration in progress is completed anyway, since a plan without a path is no plan.
+/// [`inflation`](Replanner::inflation) is the ε of the path's iteration.
+impl<G, H> Replanner<G> for AdStar<G::Node, H>
+where
+    G: Successors + Predecessors + IndexedGraph + ?Sized,
+    H: FnMut(G::Node, G::Node) -> Cost,
+{
+    fn update_edges(
+        &mut self,
+        graph: &G,
+        changes: &[EdgeChange<G::Node>],
+    ) -> Result<(), SearchError<G::Node>> {
+        AdStar::update_edges(self, graph, changes)
+    }
+
+    fn update_nodes(&mut self, graph: &G, nodes: &[G::Node]) -> Result<(), SearchError<G::Node>> {
+        AdStar::update_nodes(self, graph, nodes.iter().copied())
+    }
+
+    fn move_start(&mut self, graph: &G, to: G::Node) -> Result<(), SearchError<G::Node>> {
+        AdStar::move_start(self, graph, to)
+    }
+
+    fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
+        let found = self.improve(graph, self.plan_budget)?;
+        let mut stats = found.stats;
+        if found.path.is_none() && found.stop != Stop::Unreachable {
+            stats += self.improve_once(graph)?.stats;
+        }
+        Ok(stats)
+    }
+
+    fn path(&self, graph: &G) -> Option<Path<G::Node>> {
+        AdStar::path(self, graph)
+    }
+
+    fn cost(&self) -> Option<Cost> {
+        AdStar::cost(self)
+    }
+
+    fn next_step(&self, graph: &G) -> Option<G::Node> {
+        AdStar::next_step(self, graph)
+    }
+
+    fn totals(&self) -> SearchStats {
+        AdStar::totals(self)
+    }
+
+    fn memory_bytes(&self) -> usize {
+        AdStar::memory_bytes(self)
+    }
+
+    fn inflation(&self) -> f64 {
+        self.path_epsilon()
     }
 }

@@ -1,7 +1,7 @@
 //! Best-first search: A*, weighted A* and Dijkstra's algorithm.
 //!
 //! All three expand nodes in order of `f = g + w h` from one open list, an
-//! [`IndexedHeap`](crate::queue::IndexedHeap) with decrease-key; ties on `f` go to the larger `g`.
+//! [`IndexedHeap`](crate::IndexedHeap) with decrease-key; ties on `f` go to the larger `g`.
 //! The goal test happens when a node is expanded, so the path returned is optimal for A* with an
 //! admissible heuristic and for Dijkstra, and within a factor `w` of optimal for weighted A* with
 //! a consistent heuristic. "Optimal" here is up to a relative 2^-32 (about 2.3e-10): priorities
@@ -12,20 +12,14 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Successors};
 
 use crate::error::SearchError;
+use crate::heuristic::HeuristicCheck;
 use crate::index::{Dense, NodeIndex};
-use crate::search::{EdgeCheck, FKey, Search, SearchResult, ensure};
-
-/// The largest heuristic weight [`weighted_astar`] accepts, 1e6 (also the largest initial
-/// inflation of the anytime planners, [`MAX_EPSILON`](crate::MAX_EPSILON)).
-///
-/// At a weight of 1e6 the heuristic already outweighs path cost a million to one: the search
-/// orders nodes as greedy best-first search does (by `h` alone) except between nodes whose `h`
-/// differ by less than a millionth of their `g` difference, and the proven bound, a million
-/// times the least cost, says nothing any more. A larger weight changes nothing a user could
-/// want, and brings `w h` toward the largest `f64` (beyond it, `w h` would be `+inf`, which
-/// means a dead end): refusing it keeps a typo such as 1e308 from silently making every node
-/// look unreachable.
-pub const MAX_WEIGHT: f64 = 1e6;
+use crate::limits::MAX_WEIGHT;
+use crate::one_shot::SearchResult;
+use crate::one_shot::edges::EdgeCheck;
+use crate::one_shot::key::FKey;
+use crate::one_shot::workspace::{Search, ensure};
+use crate::stats::SearchStats;
 
 /// A* from `start` to `goal`: a least-cost path when `heuristic` is admissible (never more than
 /// the least cost to the goal). A node whose heuristic is `+inf` is treated as a dead end.
@@ -221,14 +215,14 @@ impl<I> Search<I> {
         let query = self.begin(graph, start, goal.unwrap_or(start))?;
         let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
         let goal_slot = if goal.is_some() { t } else { usize::MAX };
-        let mut stats = crate::stats::SearchStats::default();
-        let mut bad_h = None;
+        let mut stats = SearchStats::default();
+        let mut heuristics = HeuristicCheck::new();
         // The first node whose cost from the start overflowed (a finite `g` plus a finite edge
         // cost gave +inf): it is left unreached, which is exact when a path is found (the path
         // costs less than any overflowing one) and an error otherwise. A priority `g + w h` that
         // overflows is simply `+inf`: such nodes come last, after every finite priority.
         let mut overflow = None;
-        match estimate(&mut heuristic, start, &mut bad_h) {
+        match heuristics.accept(start, heuristic(start)) {
             Some(h) if h.is_finite() => {
                 self.heap.push(s, FKey::new(weight * h, 0.0));
                 stats.pushes += 1;
@@ -280,7 +274,7 @@ impl<I> Search<I> {
                     overflow.get_or_insert(next);
                     return;
                 }
-                let Some(h) = estimate(&mut heuristic, next, &mut bad_h) else { return };
+                let Some(h) = heuristics.accept(next, heuristic(next)) else { return };
                 nodes.reach(v, gv, u, open);
                 if h == f64::INFINITY {
                     // A dead end (an overflowing `w h`, with `h` finite, is not one).
@@ -311,37 +305,14 @@ impl<I> Search<I> {
                 }
             });
             edges.check(|| self.index.node(graph, u))?;
-            if let Some((node, value)) = bad_h {
-                return Err(SearchError::InvalidHeuristic { node, value });
-            }
+            heuristics.check()?;
         }
-        if let Some((node, value)) = bad_h {
-            return Err(SearchError::InvalidHeuristic { node, value });
-        }
+        heuristics.check()?;
         // Without a path (or, for `dijkstra_all`, with nodes left unreached), an overflow means
         // a reachable node would be reported unreachable.
         if let (None, Some(node)) = (found, overflow) {
             return Err(SearchError::CostOverflow { node });
         }
         Ok(self.finish(graph, &query, found, stats))
-    }
-}
-
-/// The heuristic of `node`, or `None` (remembering the first culprit) when the heuristic
-/// returned a negative or NaN value.
-#[inline]
-fn estimate<N, H: FnMut(N) -> Cost>(heuristic: &mut H, node: N, bad: &mut Option<(N, Cost)>) -> Option<Cost>
-where
-    N: Copy,
-{
-    let h = heuristic(node);
-    // Non-negative numbers and +inf (see `EdgeCheck::accept`); `-0.0` counts as 0.
-    if h.to_bits() <= f64::INFINITY.to_bits() || h == 0.0 {
-        Some(h)
-    } else {
-        if bad.is_none() {
-            *bad = Some((node, h));
-        }
-        None
     }
 }

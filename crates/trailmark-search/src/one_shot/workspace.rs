@@ -9,102 +9,25 @@
 //! position table: 18 bytes, plus 16 per node currently in the open list.
 
 use std::collections::VecDeque;
-use std::fmt::Debug;
 
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::Graph;
 use trailmark_core::path::Path;
 
-use crate::error::SearchError;
+use crate::error::{SearchError, check_endpoints};
 use crate::index::{Dense, Hashed, NodeIndex};
+use crate::limits::MAX_NODES;
+use crate::one_shot::SearchResult;
+use crate::one_shot::key::FKey;
 use crate::queue::IndexedHeap;
 use crate::stats::SearchStats;
 
-/// The most node slots a search supports.
-pub const MAX_NODES: usize = u32::MAX as usize - 2;
-
-/// The outcome of a search: a path (or `None` when the goal is unreachable) and statistics.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SearchResult<N> {
-    /// The path found, start first; `None` when no path exists.
-    pub path: Option<Path<N>>,
-    /// What the search did.
-    pub stats: SearchStats,
-}
-
-impl<N> SearchResult<N> {
-    /// The cost of the path, if one was found.
-    pub fn cost(&self) -> Option<Cost> {
-        self.path.as_ref().map(|p| p.cost)
-    }
-}
-
-/// Low mantissa bits that priority comparisons ignore (see [`priority_bits`]).
-const IGNORED_BITS: u32 = 20;
-
-/// The bit pattern of a non-negative priority (an `f` value, or the primary part of a lifelong
-/// key) rounded to 32 of its 52 mantissa bits, a relative precision of 2^-32 (about 2.3e-10).
-///
-/// Priorities add edge costs and heuristic values in orders that differ from node to node, so
-/// values equal in exact arithmetic differ in their last bits (on an open grid, by about 1e-13
-/// after a few hundred moves). Compared bit for bit, such near-ties are ordered by rounding
-/// noise, and the tie-breaking rule (larger `g` first), which is what lets A* walk straight
-/// across the many cells of equal `f` of an open area, never applies: on an empty 512 x 512
-/// grid, A* between far corners then expands a whole parallelogram of cells (128,145 in one
-/// measured query) instead of the path's cells. Rounding every priority to 2^-32 makes such
-/// near-ties exact ties again. The price is that priorities closer than that are ordered as
-/// equal: a search can return a path whose cost exceeds the least by at most a relative 2^-32,
-/// far below what costs summed in floating point resolve anyway.
-///
-/// Rounding is monotone, so the order of priorities that differ by more is unchanged; `+inf`
-/// stays `+inf`.
-#[inline]
-pub(crate) fn priority_bits(value: Cost) -> u64 {
-    // `+ 0.0` turns a negative zero into a positive one, whose bits order correctly.
-    let bits = (value + 0.0).to_bits();
-    (bits + (1 << (IGNORED_BITS - 1))) & !((1 << IGNORED_BITS) - 1)
-}
-
-/// The key of a node in a best-first open list: `f = g + w h` (at the precision of
-/// [`priority_bits`]), ties broken toward larger `g` (deeper nodes first, which on grids reaches
-/// the goal after fewer expansions).
-///
-/// Stored as one 64-bit integer: the bit pattern of the rounded `f`, whose low
-/// [`IGNORED_BITS`] bits are zero, with those bits holding `g` inverted, at a precision of 2^-19
-/// of `f`. For
-/// non-negative floats the bit pattern orders like the number, so keys compare as integers,
-/// without floating-point branches in the heap's inner loop, and a heap entry (key and node)
-/// takes 16 bytes, so the four children of a heap node span 64 bytes. Among keys of equal
-/// `f`, `g` values closer than `f / 2^19` tie; such ties are broken arbitrarily.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub(crate) struct FKey(u64);
-
-impl FKey {
-    /// The key of a node with `f` and `g`, both non-negative and finite, `g <= f`.
-    #[inline]
-    pub fn new(f: Cost, g: Cost) -> Self {
-        debug_assert!(f >= 0.0 && g >= 0.0);
-        const DEPTH_BITS: u32 = IGNORED_BITS - 1;
-        const SCALE: u64 = (1 << IGNORED_BITS) - 1;
-        let rounded = priority_bits(f);
-        // `g` in units of 2^-19 of the power of two below `f`: as `g <= f`, under 2^20. The
-        // power of two comes from `f`'s exponent bits rather than a division, which is slow;
-        // the exponent is clamped so that the scale stays a normal float (tiny `f` only).
-        let exponent = (rounded >> 52).max(u64::from(DEPTH_BITS) + 1);
-        let scale = f64::from_bits((2 * 1023 + u64::from(DEPTH_BITS) - exponent) << 52);
-        // Adding 2^52 puts the integer part of a number below 2^52 in the low mantissa bits
-        // (rounded to nearest): cheaper than a float-to-integer conversion.
-        let depth = ((g * scale + 4503599627370496.0).to_bits() & ((1 << 52) - 1)).min(SCALE);
-        FKey(rounded | (SCALE - depth))
-    }
-}
-
-/// A generation stamp. Two bytes: the stamps of a 512 x 512 map fit in a core's L2 cache, and
-/// the stamp test rejects most successors; every 32,766 queries the stamps are reset.
+/// A generation stamp. Two bytes, because the stamp test rejects most successors and small
+/// stamps share few cache lines; every 32,766 queries the stamps are reset.
 pub(crate) type Stamp = u16;
 
 /// A query in progress: its start and goal slots, the current generation's stamps, its clock.
-pub(crate) struct Query {
+pub(crate) struct RunningQuery {
     pub start: usize,
     pub goal: usize,
     /// The stamp of a node reached by this query and not expanded.
@@ -114,7 +37,7 @@ pub(crate) struct Query {
     clock: std::time::Instant,
 }
 
-impl Query {
+impl RunningQuery {
     /// Time since the query began.
     pub fn elapsed(&self) -> std::time::Duration {
         self.clock.elapsed()
@@ -122,8 +45,8 @@ impl Query {
 }
 
 /// Per-slot search state, as parallel arrays: the stamp test that rejects most successors
-/// reads 4 bytes a node, so the stamps of a node's neighbourhood share few cache lines
-/// (measured 20% faster than one 16-byte record per node on 512 x 512 mazes).
+/// reads only the stamps, so those of a node's neighbourhood share few cache lines (faster than
+/// one record per node; docs/search.md, "Inside").
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Nodes {
     /// Cost from the start, valid when `stamp >= open_stamp()`.
@@ -257,18 +180,13 @@ impl<I> Search<I> {
         graph: &G,
         start: G::Node,
         goal: G::Node,
-    ) -> Result<Query, SearchError<G::Node>>
+    ) -> Result<RunningQuery, SearchError<G::Node>>
     where
         G: Graph + ?Sized,
         I: NodeIndex<G>,
     {
         let clock = std::time::Instant::now();
-        if !graph.contains(start) {
-            return Err(SearchError::StartNotInGraph(start));
-        }
-        if !graph.contains(goal) {
-            return Err(SearchError::GoalNotInGraph(goal));
-        }
+        check_endpoints(graph, start, goal)?;
         let bound = self.index.begin(graph);
         if bound > MAX_NODES {
             return Err(SearchError::TooManyNodes(bound));
@@ -290,7 +208,7 @@ impl<I> Search<I> {
         self.start = Some(s as u32);
         let (open, closed) = (self.open_stamp(), self.closed_stamp());
         self.nodes.reach(s, 0.0, s, open);
-        Ok(Query { start: s, goal: t, open, closed, clock })
+        Ok(RunningQuery { start: s, goal: t, open, closed, clock })
     }
 
     /// Makes room for a query that will use `generations` generations (one per iteration of an
@@ -311,7 +229,7 @@ impl<I> Search<I> {
     pub(crate) fn finish<G>(
         &self,
         graph: &G,
-        query: &Query,
+        query: &RunningQuery,
         found: Option<usize>,
         mut stats: SearchStats,
     ) -> SearchResult<G::Node>
@@ -455,51 +373,6 @@ impl<I> Search<I> {
     }
 }
 
-/// Keeps the first invalid edge cost met inside a successor callback.
-pub(crate) struct EdgeCheck<N> {
-    bad: Option<(N, Cost)>,
-}
-
-impl<N: Copy + Debug> EdgeCheck<N> {
-    pub fn new() -> Self {
-        EdgeCheck { bad: None }
-    }
-
-    /// Whether the edge to `to` should be followed: false for `NO_EDGE`, and for invalid costs
-    /// (which are remembered).
-    #[inline]
-    pub fn accept(&mut self, to: N, cost: Cost) -> bool {
-        // One integer comparison: the bit patterns below that of +inf are exactly the
-        // non-negative finite numbers (negative numbers and NaN have larger patterns).
-        if cost.to_bits() < f64::INFINITY.to_bits() {
-            return true;
-        }
-        self.unusual(to, cost)
-    }
-
-    /// The rest of [`EdgeCheck::accept`], out of the hot path: `-0.0` is accepted, `NO_EDGE`
-    /// skipped, anything else remembered as invalid.
-    #[cold]
-    #[inline(never)]
-    fn unusual(&mut self, to: N, cost: Cost) -> bool {
-        if cost == 0.0 {
-            return true;
-        }
-        if cost != f64::INFINITY && self.bad.is_none() {
-            self.bad = Some((to, cost));
-        }
-        false
-    }
-
-    /// An error naming the first invalid edge met, whose tail is `from()`.
-    pub fn check(&self, from: impl FnOnce() -> N) -> Result<(), SearchError<N>> {
-        match self.bad {
-            None => Ok(()),
-            Some((to, cost)) => Err(SearchError::InvalidEdgeCost { from: from(), to, cost }),
-        }
-    }
-}
-
 /// Makes `nodes` long enough for `slot` (slots handed out by a [`Hashed`] index grow).
 #[inline]
 pub(crate) fn ensure(nodes: &mut Nodes, slot: usize) {
@@ -512,41 +385,4 @@ pub(crate) fn ensure(nodes: &mut Nodes, slot: usize) {
 fn grow(nodes: &mut Nodes, len: usize) {
     let len = len.max(nodes.len() * 2).max(64);
     nodes.resize(len);
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use proptest::prelude::*;
-
-    proptest! {
-        /// Keys order by `f` first (beyond the rounding of priorities), then by larger `g`
-        /// (beyond the precision of the depth field).
-        #[test]
-        fn keys_order_by_f_then_larger_g(
-            f1 in 0.0..1e6f64, f2 in 0.0..1e6f64, a in 0.0..=1.0f64, b in 0.0..=1.0f64,
-        ) {
-            let (g1, g2) = (a * f1, b * f2);
-            let (k1, k2) = (FKey::new(f1, g1), FKey::new(f2, g2));
-            if f1 < f2 * (1.0 - 1e-9) {
-                prop_assert!(k1 < k2, "{f1} before {f2}");
-            }
-            // The same f, different depths.
-            let (d1, d2) = (FKey::new(f1, g1), FKey::new(f1, b * f1));
-            if g1 > b * f1 + f1 * 1e-5 {
-                prop_assert!(d1 < d2, "g {g1} before {} at f {f1}", b * f1);
-            }
-        }
-    }
-
-    #[test]
-    fn extreme_keys_stay_ordered() {
-        assert!(FKey::new(0.0, 0.0) < FKey::new(f64::MIN_POSITIVE, 0.0));
-        assert!(FKey::new(1e-300, 1e-300) < FKey::new(1e-300, 0.0));
-        assert!(FKey::new(1e300, 1e300) < FKey::new(1e300, 1e299));
-        assert!(FKey::new(1e300, 0.0) < FKey::new(f64::MAX, f64::MAX));
-        // Values equal but for rounding noise tie on f, so the larger g wins.
-        let f = 0.1 + 0.2;
-        assert!(FKey::new(f, 0.2) < FKey::new(0.3, 0.1));
-    }
 }

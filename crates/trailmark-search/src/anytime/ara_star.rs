@@ -3,182 +3,18 @@
 use std::ops::ControlFlow;
 use std::time::Duration;
 
-use serde::{Deserialize, Serialize};
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Successors};
 use trailmark_core::path::Path;
 
-use crate::astar::MAX_WEIGHT;
+use crate::anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
 use crate::error::SearchError;
+use crate::heuristic::{HeuristicCheck, checked_heuristic};
 use crate::index::{Dense, NodeIndex};
-use crate::search::{EdgeCheck, FKey, Search, ensure};
+use crate::one_shot::edges::EdgeCheck;
+use crate::one_shot::key::FKey;
+use crate::one_shot::workspace::{Search, ensure};
 use crate::stats::SearchStats;
-
-/// The most iterations an inflation schedule may ask for.
-pub const MAX_ITERATIONS: usize = 10_000;
-
-/// The largest initial inflation an anytime planner accepts: [`MAX_WEIGHT`](crate::MAX_WEIGHT),
-/// 1e6, for the same reasons (an inflation is a heuristic weight). An inflation that large makes
-/// the first iteration a greedy search; a larger one only brings `ε h` toward overflow.
-pub const MAX_EPSILON: f64 = MAX_WEIGHT;
-
-/// How an anytime planner lowers its heuristic inflation: from `initial` down to 1 by `step`
-/// per iteration (the last step lands on 1 exactly). [`EpsilonSchedule::check`] says which
-/// schedules a planner accepts.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct EpsilonSchedule {
-    /// The first inflation, from 1 to [`MAX_EPSILON`] (3 by default).
-    pub initial: f64,
-    /// The decrease per iteration, `> 0` (0.5 by default).
-    pub step: f64,
-}
-
-impl Default for EpsilonSchedule {
-    fn default() -> Self {
-        EpsilonSchedule { initial: 3.0, step: 0.5 }
-    }
-}
-
-impl EpsilonSchedule {
-    /// A schedule from `initial` down by `step`.
-    pub fn new(initial: f64, step: f64) -> Self {
-        EpsilonSchedule { initial, step }
-    }
-
-    /// Errors ([`SearchError::InvalidEpsilon`]) unless `1 <= initial <= MAX_EPSILON`, `step > 0`
-    /// is finite, and the schedule reaches 1 in at most [`MAX_ITERATIONS`] iterations, each of
-    /// which lowers the inflation by `step`: a step lost to rounding (`1e20 - 1 == 1e20` in
-    /// `f64`) would never arrive.
-    pub fn check<N: std::fmt::Debug>(&self) -> Result<(), SearchError<N>> {
-        let valid = (1.0..=MAX_EPSILON).contains(&self.initial) && self.step.is_finite() && self.step > 0.0;
-        if !valid || self.iterations() > MAX_ITERATIONS {
-            return Err(SearchError::InvalidEpsilon { initial: self.initial, step: self.step });
-        }
-        Ok(())
-    }
-
-    /// The number of iterations from `initial` to 1, counted by stepping through the schedule
-    /// as a planner does. A schedule longer than [`MAX_ITERATIONS`], or one that does not reach 1
-    /// because `initial - step` rounds back to `initial` somewhere on the way, counts as
-    /// `MAX_ITERATIONS + 1`; a NaN `initial` counts 1 (it is not above 1).
-    pub fn iterations(&self) -> usize {
-        let mut epsilon = self.initial;
-        let mut count = 1;
-        while epsilon > 1.0 {
-            count += 1;
-            let lower = epsilon - self.step;
-            if count > MAX_ITERATIONS || lower.is_nan() || lower >= epsilon {
-                return MAX_ITERATIONS + 1;
-            }
-            epsilon = self.next(epsilon);
-        }
-        count
-    }
-
-    /// The inflation after `epsilon`: lower by `step`, never below 1. Above 1 it is always
-    /// strictly lower than `epsilon`, by a unit in the last place at least should `step` be lost
-    /// to rounding (a schedule [`check`](Self::check) refuses), so stepping always ends.
-    pub fn next(&self, epsilon: f64) -> f64 {
-        (epsilon - self.step).min(epsilon.next_down()).max(1.0)
-    }
-}
-
-/// When an anytime search stops before reaching ε = 1: wall time, expansions, or both.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Budget {
-    /// Wall-clock time for the whole search.
-    pub time: Option<Duration>,
-    /// Expansions for the whole search.
-    pub expansions: Option<u64>,
-}
-
-impl Budget {
-    /// No limit: run until ε = 1.
-    pub fn unlimited() -> Self {
-        Budget::default()
-    }
-
-    /// Whether the budget is spent, `elapsed` and `expansions` into the search.
-    pub fn spent(&self, elapsed: Duration, expansions: u64) -> Option<Stop> {
-        if self.time.is_some_and(|t| elapsed >= t) {
-            return Some(Stop::TimeLimit);
-        }
-        if self.expansions.is_some_and(|e| expansions >= e) {
-            return Some(Stop::ExpansionLimit);
-        }
-        None
-    }
-}
-
-/// Why an anytime search stopped.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Stop {
-    /// The last iteration ran at ε = 1: the path is optimal (for an admissible, consistent
-    /// heuristic).
-    Optimal,
-    /// The goal cannot be reached: the search proved it (this is the only stop that does).
-    Unreachable,
-    /// The time budget ran out. Without a path, nothing is known about the goal.
-    TimeLimit,
-    /// The expansion budget ran out. Without a path, nothing is known about the goal.
-    ExpansionLimit,
-    /// The caller's callback asked to stop (or, for [`AdStar::improve_once`](crate::AdStar::improve_once),
-    /// the one iteration asked for is done).
-    Caller,
-}
-
-/// One completed iteration of an anytime search.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Iteration {
-    /// The inflation this iteration searched with.
-    pub epsilon: f64,
-    /// The cost of the path after this iteration (`None` while the goal is unreached).
-    pub cost: Option<Cost>,
-    /// The proven suboptimality bound: the cost is at most `bound x` the optimum.
-    /// `min(epsilon, g(goal) / min over open and inconsistent nodes of g + h)`.
-    pub bound: f64,
-    /// Expansions in this iteration.
-    pub expansions: u64,
-    /// Time since the search began, at the end of this iteration.
-    pub elapsed: Duration,
-}
-
-/// What an anytime search returns: the best path found, every iteration, why it stopped.
-///
-/// A result without a path says the goal is unreachable only when it stopped with
-/// [`Stop::Unreachable`]; stopped by a budget or the caller, it proves nothing (see
-/// [`AnytimeResult::proved_unreachable`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct AnytimeResult<N> {
-    /// The best path found (from the last completed iteration), `None` if none was found.
-    pub path: Option<Path<N>>,
-    /// The iterations completed, in order.
-    pub iterations: Vec<Iteration>,
-    /// Why the search stopped.
-    pub stop: Stop,
-    /// Counters over the whole search.
-    pub stats: SearchStats,
-}
-
-impl<N> AnytimeResult<N> {
-    /// The cost of the best path found.
-    pub fn cost(&self) -> Option<Cost> {
-        self.path.as_ref().map(|p| p.cost)
-    }
-
-    /// Whether the search proved that the goal is unreachable: no path, and stopped with
-    /// [`Stop::Unreachable`], not by a limit before it could tell.
-    pub fn proved_unreachable(&self) -> bool {
-        self.path.is_none() && self.stop == Stop::Unreachable
-    }
-
-    /// The suboptimality bound proven for that path (`None` without a path).
-    pub fn bound(&self) -> Option<f64> {
-        self.path.as_ref()?;
-        self.iterations.last().map(|i| i.bound)
-    }
-}
 
 /// ARA* (Likhachev, Gordon and Thrun, 2003) from `start` to `goal`: weighted A* with inflation
 /// `epsilon` gives a first path quickly, then the inflation is lowered and the search repaired,
@@ -251,10 +87,6 @@ impl<I> Search<I> {
         // Nodes stamped at or above `first` were reached by this query; `closed_stamp()` marks
         // those expanded in the current iteration.
         let first = query.open;
-        let mut h = |node| {
-            let v = heuristic(node);
-            if v >= 0.0 { Ok(v) } else { Err(SearchError::InvalidHeuristic { node, value: v }) }
-        };
         let mut epsilon = schedule.initial;
         let mut stats = SearchStats::default();
         let mut iterations = Vec::new();
@@ -265,7 +97,7 @@ impl<I> Search<I> {
         // error otherwise. A priority `g + ε h` that overflows is just `+inf`: such nodes come
         // after all others, and are expanded while the goal is unreached.
         let mut overflow = None;
-        let h_start = h(start)?;
+        let h_start = checked_heuristic(start, heuristic(start))?;
         if h_start.is_finite() {
             self.heap.push(s, FKey::new(epsilon * h_start, 0.0));
             stats.pushes += 1;
@@ -292,7 +124,7 @@ impl<I> Search<I> {
                 self.nodes.stamp[u] = closed;
                 stats.expansions += 1;
                 let gu = self.nodes.g[u];
-                let mut bad_h = None;
+                let mut heuristics = HeuristicCheck::new();
                 let (nodes, heap, index) = (&mut self.nodes, &mut self.heap, &mut self.index);
                 index.for_each_successor(graph, u, |v, next, cost| {
                     if !edges.accept(next, cost) {
@@ -308,13 +140,7 @@ impl<I> Search<I> {
                         overflow.get_or_insert(next);
                         return;
                     }
-                    let hv = match h(next) {
-                        Ok(hv) => hv,
-                        Err(e) => {
-                            bad_h.get_or_insert(e);
-                            return;
-                        }
-                    };
+                    let Some(hv) = heuristics.accept(next, heuristic(next)) else { return };
                     nodes.g[v] = gv;
                     nodes.parent[v] = u as u32;
                     if st == closed {
@@ -329,9 +155,7 @@ impl<I> Search<I> {
                     }
                 });
                 edges.check(|| self.index.node(graph, u))?;
-                if let Some(e) = bad_h {
-                    return Err(e);
-                }
+                heuristics.check()?;
             }
             if let Some(why) = out_of_budget {
                 break why;
@@ -354,7 +178,8 @@ impl<I> Search<I> {
                 Some(g_goal) => {
                     let mut lowest = f64::INFINITY;
                     for slot in self.heap.iter().map(|(v, _)| v).chain(incons.iter().map(|&v| v as usize)) {
-                        lowest = lowest.min(self.nodes.g[slot] + h(self.index.node(graph, slot))?);
+                        let node = self.index.node(graph, slot);
+                        lowest = lowest.min(self.nodes.g[slot] + checked_heuristic(node, heuristic(node))?);
                     }
                     if lowest >= g_goal { 1.0 } else { epsilon.min(g_goal / lowest) }
                 }
@@ -391,7 +216,8 @@ impl<I> Search<I> {
             items.extend(incons.drain(..).map(|v| v as usize));
             self.heap.clear();
             for v in items {
-                let hv = h(self.index.node(graph, v))?;
+                let node = self.index.node(graph, v);
+                let hv = checked_heuristic(node, heuristic(node))?;
                 let gv = self.nodes.g[v];
                 self.nodes.stamp[v] = open;
                 if hv.is_finite() {

@@ -86,28 +86,3 @@ pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace, UnitCube};
 pub use termination::{Condition, Progress, Termination};
 pub use validity::{Sampled, Validity};
-
-/// The sampling planners of this crate.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum PlannerKind {
-    /// Rapidly-exploring random tree (LaValle 1998).
-    Rrt,
-    /// Two trees grown toward each other (Kuffner and LaValle 2000).
-    RrtConnect,
-    /// Asymptotically optimal RRT with rewiring (Karaman and Frazzoli 2011).
-    RrtStar,
-}
-
-impl PlannerKind {
-    /// Every planner, in the order above.
-    pub const ALL: [PlannerKind; 3] = [PlannerKind::Rrt, PlannerKind::RrtConnect, PlannerKind::RrtStar];
-
-    /// The planner's name in problem documents.
-    pub fn name(self) -> &'static str {
-        match self {
-            PlannerKind::Rrt => "rrt",
-            PlannerKind::RrtConnect => "rrt_connect",
-            PlannerKind::RrtStar => "rrt_star",
-        }
-    }
-}

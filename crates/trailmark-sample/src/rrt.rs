@@ -27,11 +27,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use rand::RngExt;
 
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{Plan, PlanError, Stop};
-use crate::problem::{Problem, admit};
+use crate::problem::Problem;
 use crate::run::{Run, tree_planner};
 use crate::sampler::StateSampler;
 use crate::space::StateSpace;
@@ -41,20 +40,6 @@ use crate::validity::Validity;
 tree_planner! {
     /// RRT: one tree from the start states; see the [module](self) documentation.
     Rrt, "RRT", optimizes: false
-}
-
-/// A state of the goal to steer toward, with probability `bias`: sampled, in bounds and valid.
-pub(crate) fn goal_target<S: StateSpace, V: Validity<S>>(
-    problem: &Problem<'_, S, V>,
-    run: &mut Run<'_>,
-    bias: f64,
-) -> Option<S::State> {
-    if bias == 0.0 || run.rng.random::<f64>() >= bias {
-        return None;
-    }
-    let state = problem.goal.sample(problem.space, &mut run.rng)?;
-    run.stats.collision_checks += 1;
-    admit(problem.space, problem.validity, &state).ok().map(|_| state)
 }
 
 impl<N, Q> Rrt<N, Q> {
@@ -91,7 +76,7 @@ impl<N, Q> Rrt<N, Q> {
             if let Some(stop) = run.watch.next_iteration() {
                 break stop;
             }
-            let target = match goal_target(problem, &mut run, self.options.goal_bias) {
+            let target = match run.goal_target(problem, self.options.goal_bias) {
                 Some(target) => target,
                 None => match run.sample(space, validity, &self.sampler) {
                     Ok(Some(target)) => target,

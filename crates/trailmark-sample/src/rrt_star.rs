@@ -34,11 +34,10 @@
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{Plan, PlanError};
 use crate::problem::Problem;
-use crate::rrt::goal_target;
 use crate::run::{Run, tree_planner};
 use crate::sampler::StateSampler;
 use crate::space::StateSpace;
-use crate::tree::ROOT;
+use crate::tree::{ROOT, Tree};
 use crate::validity::Validity;
 
 /// RRT*'s neighbour count for `n` states in `dimension` dimensions: ⌈k_rrt ln n⌉ with
@@ -69,16 +68,14 @@ impl<N, Q> RrtStar<N, Q> {
         Q: StateSampler<S>,
     {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
-        let mut nearest = self.nearest.clone();
-        let mut parents = Vec::new();
+        let mut tree = Tree::new(self.nearest.clone(), Direction::ToQuery);
         let mut costs = Vec::new();
         let mut children: Vec<Vec<u32>> = Vec::new();
         // States that satisfy the goal; the nearest state to the goal for an approximate answer.
         let mut at_goal: Vec<u32> = Vec::new();
         let mut closest = (0u32, f64::INFINITY);
         for start in &problem.starts {
-            let id = nearest.insert(space, start.clone());
-            parents.push(ROOT);
+            let id = tree.add_root(space, start.clone());
             costs.push(0.0);
             children.push(Vec::new());
             let d = goal.distance(space, start);
@@ -100,7 +97,7 @@ impl<N, Q> RrtStar<N, Q> {
             if let Some(stop) = run.watch.next_iteration() {
                 break stop;
             }
-            let (target, from_goal) = match goal_target(problem, &mut run, self.options.goal_bias) {
+            let (target, from_goal) = match run.goal_target(problem, self.options.goal_bias) {
                 Some(target) => (target, true),
                 None => match run.sample(space, validity, &self.sampler) {
                     Ok(Some(target)) => (target, false),
@@ -109,16 +106,13 @@ impl<N, Q> RrtStar<N, Q> {
                 },
             };
             let (near, d) =
-                nearest.nearest(space, &target, Direction::ToQuery).expect("a tree with its roots");
-            let from = nearest.state(near).clone();
-            let new = if d <= run.range { target } else { space.interpolate(&from, &target, run.range / d) };
-            if new == from || !space.satisfies_bounds(&new) {
-                continue;
-            }
+                tree.nearest.nearest(space, &target, Direction::ToQuery).expect("a tree with its roots");
+            let Some((new, _)) = tree.step_toward(space, near, d, &target, run.range) else { continue };
             // A goal state already in the tree is not added again.
-            if from_goal && at_goal.iter().any(|&g| *nearest.state(g) == new) {
+            if from_goal && at_goal.iter().any(|&g| *tree.state(g) == new) {
                 continue;
             }
+            let from = tree.state(near).clone();
             // As in Karaman and Frazzoli's RRT*, the new state joins only when the motion from the
             // nearest state is valid: a blocked sample costs one check, not a neighbour search.
             run.stats.collision_checks += 1;
@@ -126,8 +120,8 @@ impl<N, Q> RrtStar<N, Q> {
                 continue;
             }
             // The cheapest valid parent among the k nearest (the nearest included, known valid).
-            let k = neighbour_count(nearest.len() + 1, dimension);
-            let mut into = nearest.k_nearest(space, &new, k, Direction::ToQuery);
+            let k = neighbour_count(tree.len() + 1, dimension);
+            let mut into = tree.nearest.k_nearest(space, &new, k, Direction::ToQuery);
             if !into.iter().any(|&(id, _)| id == near) {
                 into.push((near, space.distance(&from, &new)));
             }
@@ -147,7 +141,7 @@ impl<N, Q> RrtStar<N, Q> {
                         break 'run stop;
                     }
                     run.stats.collision_checks += 1;
-                    validity.motion_is_valid(space, nearest.state(id), &new)
+                    validity.motion_is_valid(space, tree.state(id), &new)
                 };
                 if valid {
                     parent = Some((id, costs[id as usize] + dist));
@@ -156,8 +150,7 @@ impl<N, Q> RrtStar<N, Q> {
                 }
             }
             let Some((parent, cost)) = parent else { continue };
-            let id = nearest.insert(space, new.clone());
-            parents.push(parent);
+            let id = tree.insert(space, new.clone(), parent);
             costs.push(cost);
             children.push(Vec::new());
             children[parent as usize].push(id);
@@ -174,11 +167,11 @@ impl<N, Q> RrtStar<N, Q> {
             let neighbours = if S::SYMMETRIC {
                 into.drain(refused..).collect()
             } else {
-                nearest.k_nearest(space, &new, k + 1, Direction::FromQuery)
+                tree.nearest.k_nearest(space, &new, k + 1, Direction::FromQuery)
             };
             let mut interrupted = None;
             for (nb, dist) in neighbours {
-                if nb == id || nb == parent || parents[nb as usize] == ROOT {
+                if nb == id || nb == parent || tree.parent(nb) == ROOT {
                     continue;
                 }
                 let through = cost + dist;
@@ -191,13 +184,13 @@ impl<N, Q> RrtStar<N, Q> {
                     break;
                 }
                 run.stats.collision_checks += 1;
-                if !validity.motion_is_valid(space, &new, nearest.state(nb)) {
+                if !validity.motion_is_valid(space, &new, tree.state(nb)) {
                     continue;
                 }
-                let old = parents[nb as usize];
+                let old = tree.parent(nb);
                 children[old as usize].retain(|&c| c != nb);
                 children[id as usize].push(nb);
-                parents[nb as usize] = id;
+                tree.set_parent(nb, id);
                 let delta = through - costs[nb as usize];
                 let mut stack = vec![nb];
                 while let Some(u) = stack.pop() {
@@ -212,18 +205,13 @@ impl<N, Q> RrtStar<N, Q> {
                 break stop;
             }
         };
-        run.stats.tree_sizes = [nearest.len(), 0];
+        run.stats.tree_sizes = [tree.len(), 0];
         let (end, goal_distance) = match best(&at_goal, &costs) {
             Some((g, _)) => (g, None),
             None => (closest.0, Some(closest.1)),
         };
-        let mut path = Vec::new();
-        let mut u = end;
-        while u != ROOT {
-            path.push(nearest.state(u).clone());
-            u = parents[u as usize];
-        }
-        path.reverse();
+        let path = tree.branch(end);
+        let (nearest, parents) = tree.into_parts();
         self.spent.nearest.push(nearest);
         self.spent.ids.push(parents);
         self.spent.costs = costs;

@@ -1,11 +1,11 @@
 //! What every run of a tree planner starts with and ends with: the checked problem and
 //! settings, the clock, the statistics, the seeded generator; and the plan it returns.
 
-use rand::SeedableRng;
+use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use crate::plan::{Improvement, Plan, PlanError, PlanStats, Solution, Stop};
-use crate::problem::Problem;
+use crate::problem::{Problem, admit};
 use crate::sampler::{Draw, StateSampler};
 use crate::space::StateSpace;
 use crate::termination::{Termination, Watch};
@@ -83,6 +83,21 @@ impl<'t> Run<'t> {
             Some(state) => Ok(Some(state)),
             None => self.watch.interrupted().map_or(Ok(None), Err),
         }
+    }
+
+    /// A state of the goal to steer toward, with probability `bias`: sampled, in bounds and
+    /// valid (RRT's and RRT*'s goal bias).
+    pub(crate) fn goal_target<S: StateSpace, V: Validity<S>>(
+        &mut self,
+        problem: &Problem<'_, S, V>,
+        bias: f64,
+    ) -> Option<S::State> {
+        if bias == 0.0 || self.rng.random::<f64>() >= bias {
+            return None;
+        }
+        let state = problem.goal.sample(problem.space, &mut self.rng)?;
+        self.stats.collision_checks += 1;
+        admit(problem.space, problem.validity, &state).ok().map(|_| state)
     }
 
     /// Records a solution of cost `cost` if it is the best so far.

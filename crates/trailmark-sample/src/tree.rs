@@ -1,5 +1,5 @@
-//! A tree of valid motions, grown toward targets at most a range at a time: what RRT and
-//! RRT-Connect grow.
+//! A tree of valid motions, grown toward targets at most a range at a time: what RRT,
+//! RRT-Connect and RRT* grow.
 
 use crate::nearest::{Direction, NearestNeighbors, measure};
 use crate::space::StateSpace;
@@ -42,8 +42,7 @@ impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
 
     /// Adds `state` as a root; its id.
     pub(crate) fn add_root(&mut self, space: &S, state: S::State) -> u32 {
-        self.parents.push(ROOT);
-        self.nearest.insert(space, state)
+        self.insert(space, state, ROOT)
     }
 
     pub(crate) fn len(&self) -> usize {
@@ -81,33 +80,62 @@ impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
         range: f64,
         checks: &mut u64,
     ) -> Extension {
-        let from = self.state(near).clone();
+        let Some((new, reached)) = self.step_toward(space, near, d, target, range) else {
+            return Extension::Trapped;
+        };
+        let from = self.state(near);
+        *checks += 1;
+        let valid = match self.direction {
+            Direction::ToQuery => validity.motion_is_valid(space, from, &new),
+            Direction::FromQuery => validity.motion_is_valid(space, &new, from),
+        };
+        if !valid {
+            return Extension::Trapped;
+        }
+        let id = self.insert(space, new, near);
+        if reached { Extension::Reached(id) } else { Extension::Advanced(id) }
+    }
+
+    /// The state at most `range` from state `near` toward `target` (`d` from it in the tree's
+    /// direction), and whether that is the target itself: the steering every tree planner
+    /// shares. `None` when the step goes nowhere, or leaves the bounds (every state of a tree is
+    /// in bounds: a target outside them, or a step rounded across them, is refused).
+    pub(crate) fn step_toward(
+        &self,
+        space: &S,
+        near: u32,
+        d: f64,
+        target: &S::State,
+        range: f64,
+    ) -> Option<(S::State, bool)> {
+        let from = self.state(near);
         let (new, reached) = if d <= range {
             (target.clone(), true)
         } else {
             match self.direction {
                 // Forward: range along the motion from the tree toward the target.
-                Direction::ToQuery => (space.interpolate(&from, target, range / d), false),
+                Direction::ToQuery => (space.interpolate(from, target, range / d), false),
                 // Backward: range before the tree along the motion from the target into it.
-                Direction::FromQuery => (space.interpolate(target, &from, 1.0 - range / d), false),
+                Direction::FromQuery => (space.interpolate(target, from, 1.0 - range / d), false),
             }
         };
-        // Every state of the tree is in bounds: a target outside them, or a step rounded
-        // across them, is refused rather than kept.
-        if new == from || !space.satisfies_bounds(&new) {
-            return Extension::Trapped;
-        }
-        *checks += 1;
-        let valid = match self.direction {
-            Direction::ToQuery => validity.motion_is_valid(space, &from, &new),
-            Direction::FromQuery => validity.motion_is_valid(space, &new, &from),
-        };
-        if !valid {
-            return Extension::Trapped;
-        }
-        let id = self.nearest.insert(space, new);
-        self.parents.push(near);
-        if reached { Extension::Reached(id) } else { Extension::Advanced(id) }
+        (new != *from && space.satisfies_bounds(&new)).then_some((new, reached))
+    }
+
+    /// Adds `state` with `parent` (a state of the tree, or [`ROOT`]); its id.
+    pub(crate) fn insert(&mut self, space: &S, state: S::State, parent: u32) -> u32 {
+        self.parents.push(parent);
+        self.nearest.insert(space, state)
+    }
+
+    /// The parent of state `id` ([`ROOT`] for a root).
+    pub(crate) fn parent(&self, id: u32) -> u32 {
+        self.parents[id as usize]
+    }
+
+    /// Makes `parent` the parent of state `id` (RRT*'s rewiring).
+    pub(crate) fn set_parent(&mut self, id: u32, parent: u32) {
+        self.parents[id as usize] = parent;
     }
 
     /// The distance from state `id` to `target` in the tree's direction (the query's motions

@@ -1,13 +1,16 @@
 //! Graph builders: turn a world into a graph that every `trailmark-search` algorithm can search.
 //!
-//! Grid graphs ([`grid::GridGraph`]): 4- or 8-connected, with per-cell costs and a choice of
-//! corner-cutting rule. Roadmaps of polygon worlds: visibility graphs
-//! ([`visibility::VisibilityGraph`]) by Lee's rotational sweep with exact predicates, trapezoidal
-//! cell decompositions ([`trapezoid::Trapezoids`]), probabilistic roadmaps over the state spaces
-//! of `trailmark-sample` (segments in `R2`, Dubins curves, ...) ([`prm::Prm`]), all queried
-//! through [`roadmap::RoadmapQuery`]; and roadmaps of worlds whose obstacles change, with stable
-//! node ids and the changed edges for D* Lite ([`dynamic::DynamicRoadmap`]). The graphs
-//! implement the traits of [`trailmark_core::graph`]; no builder here runs a search.
+//! Grid graphs ([`GridGraph`]): 4- or 8-connected, with per-cell costs and a choice of
+//! corner-cutting rule. Roadmaps of polygon worlds: visibility graphs ([`VisibilityGraph`]) by
+//! Lee's rotational sweep with exact predicates, trapezoidal cell decompositions
+//! ([`Trapezoids`]), probabilistic roadmaps over the state spaces of `trailmark-sample`
+//! (segments in `R2`, Dubins curves, ...) ([`Prm`]), all queried through [`RoadmapQuery`]; and
+//! roadmaps of worlds whose obstacles change, with stable node ids and the changed edges for
+//! D* Lite ([`DynamicRoadmap`]). The graphs implement the traits of [`trailmark_core::graph`];
+//! no builder here runs a search.
+//!
+//! Every item is documented at the crate root; the module paths (`trailmark_graph::prm::Prm`)
+//! still work, hidden, for one release.
 //!
 //! ```
 //! use trailmark_core::{Cell, Connectivity, Grid, IndexedGraph, Successors};
@@ -28,16 +31,23 @@
 
 #![deny(missing_docs)]
 
+// One documented path per item: the root. The modules stay public, hidden, for one release.
+#[doc(hidden)]
 pub mod dynamic;
+#[doc(hidden)]
 pub mod grid;
+#[doc(hidden)]
 pub mod prm;
+#[doc(hidden)]
 pub mod roadmap;
+#[doc(hidden)]
 pub mod trapezoid;
+#[doc(hidden)]
 pub mod visibility;
 
-pub use dynamic::{DynamicError, DynamicRoadmap};
+pub use dynamic::{DynamicError, DynamicRoadmap, NodeKey, Rebuild};
 pub use grid::{CornerCutting, GridGraph, Neighbours};
-pub use prm::{Connection, DubinsPrm, PlanarSpace, Prm, PrmError, PrmOptions, PrmQuery, Sampler};
+pub use prm::{Connection, DubinsPrm, MAX_NODES, PlanarSpace, Prm, PrmError, PrmOptions, PrmQuery, Sampler};
 pub use roadmap::{Roadmap, RoadmapQuery};
-pub use trapezoid::{TrapezoidError, TrapezoidQuery, Trapezoids};
-pub use visibility::{VisibilityGraph, VisibilityQuery};
+pub use trapezoid::{Portal, Side, Trapezoid, TrapezoidError, TrapezoidQuery, Trapezoids};
+pub use visibility::{Edges, VisibilityError, VisibilityGraph, VisibilityQuery};

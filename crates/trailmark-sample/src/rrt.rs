@@ -27,7 +27,6 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{Plan, PlanError, Stop};
 use crate::problem::Problem;

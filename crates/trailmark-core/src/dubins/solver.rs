@@ -298,8 +298,8 @@ impl DubinsPath {
     /// The shortest path from `start` to `goal` for a vehicle whose turning radius is
     /// `turning_radius` (world units).
     ///
-    /// Errors outside the [supported range](self#supported-range): a radius that is not
-    /// positive or beyond [`MAX_MAGNITUDE`], a pose that is not finite or beyond it, poses more
+    /// Errors outside the [supported range](crate::dubins#supported-range): a radius that is not
+    /// positive or beyond [`MAX_MAGNITUDE`](super::MAX_MAGNITUDE), a pose that is not finite or beyond it, poses more
     /// than [`MAX_NORMALISED_DISTANCE`] radii apart.
     pub fn shortest(start: &Pose, goal: &Pose, turning_radius: f64) -> Result<DubinsPath, DubinsError> {
         let n = Normalised::new(start, goal, turning_radius)?;

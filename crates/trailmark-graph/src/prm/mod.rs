@@ -91,7 +91,7 @@ struct Stream {
 /// [`Prm::position`]; edges cost their motion's distance in the space.
 ///
 /// It implements the graph traits itself (with permanent nodes from [`Prm::insert`]) and
-/// [`Roadmap`], so [`Prm::query`] joins a start and a goal without changing it.
+/// [`Roadmap`](crate::Roadmap), so [`Prm::query`] joins a start and a goal without changing it.
 #[derive(Clone, Debug)]
 pub struct Prm<S: PlanarSpace = R2> {
     checker: CollisionChecker,

@@ -11,7 +11,7 @@ use trailmark_sample::space::SpaceError;
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Sampler {
-    /// Independent uniform samples ([`Uniform`]) from a ChaCha8 generator with this seed: the
+    /// Independent uniform samples ([`Uniform`](trailmark_sample::Uniform)) from a ChaCha8 generator with this seed: the
     /// same seed gives the same roadmap on every machine.
     Uniform {
         /// The generator's seed.
@@ -66,7 +66,7 @@ impl Sampler {
     }
 }
 
-/// The settings of a [`Prm`].
+/// The settings of a [`Prm`](crate::Prm).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct PrmOptions {
@@ -74,7 +74,7 @@ pub struct PrmOptions {
     pub sampler: Sampler,
     /// Which nodes a new node is joined to.
     pub connection: Connection,
-    /// How many draws [`Prm::grow`] may make per sample asked for before it gives up (draws in
+    /// How many draws [`Prm::grow`](crate::Prm::grow) may make per sample asked for before it gives up (draws in
     /// obstacles are rejected).
     pub attempts_per_sample: u32,
 }
@@ -114,7 +114,7 @@ pub enum PrmError {
     /// A sampler setting out of its range.
     #[error(transparent)]
     Sampler(#[from] SamplerError),
-    /// [`Prm::grow`] ran out of draws: the free space is empty or very small. The samples
+    /// [`Prm::grow`](crate::Prm::grow) ran out of draws: the free space is empty or very small. The samples
     /// found were added.
     #[error("found only {added} of {requested} free samples in {attempts} draws")]
     SamplingExhausted {
@@ -125,7 +125,7 @@ pub enum PrmError {
         /// Draws made.
         attempts: u64,
     },
-    /// A configuration given to [`Prm::insert`] collides or leaves the bounds.
+    /// A configuration given to [`Prm::insert`](crate::Prm::insert) collides or leaves the bounds.
     #[error("the configuration {0:?} collides or is outside the bounds")]
     Blocked(Vec<f64>),
     /// A query's start collides or is outside the bounds.
@@ -140,7 +140,7 @@ pub enum PrmError {
     /// The world rejected an obstacle change.
     #[error(transparent)]
     World(#[from] WorldError),
-    /// [`Prm::remove_obstacle`] named an obstacle that does not exist.
+    /// [`Prm::remove_obstacle`](crate::Prm::remove_obstacle) named an obstacle that does not exist.
     #[error("there is no obstacle {index} (the world has {count})")]
     NoSuchObstacle {
         /// The index given.

@@ -7,7 +7,7 @@ use trailmark_sample::space::UnitCube;
 use trailmark_sample::validity::Validity;
 
 /// A state space a roadmap over a polygon world is built in: one whose states the world's exact
-/// [`CollisionChecker`] checks ([`R2`] for a disc robot, [`Se2`](trailmark_sample::Se2),
+/// [`CollisionChecker`] checks ([`R2`](trailmark_sample::R2) for a disc robot, [`Se2`](trailmark_sample::Se2),
 /// [`Dubins`](trailmark_sample::Dubins) for a car), that maps the unit cube (for the Halton
 /// sequence) and whose states are small values. Every such space of `trailmark-sample` is one.
 pub trait PlanarSpace: UnitCube<State: Copy> + Clone + Debug {

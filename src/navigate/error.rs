@@ -1,0 +1,31 @@
+//! Why a simulation could not start.
+
+use thiserror::Error;
+
+use trailmark_core::grid::Cell;
+use trailmark_search::SearchError;
+
+/// Why a simulation could not start.
+#[derive(Debug, Error, PartialEq)]
+pub enum NavigateError {
+    /// The prior map's size differs from the true map's.
+    #[error("the prior map is {prior:?} cells but the true map is {truth:?}")]
+    PriorSize {
+        /// Width and height of the prior map.
+        prior: (u32, u32),
+        /// Width and height of the true map.
+        truth: (u32, u32),
+    },
+    /// The start is outside the map or blocked in the true map.
+    #[error("the start {0} is outside the map or blocked")]
+    Start(Cell),
+    /// The goal is outside the map or blocked in the true map.
+    #[error("the goal {0} is outside the map or blocked")]
+    Goal(Cell),
+    /// The sensor radius is 0: the robot could not see where it steps.
+    #[error("the sensor radius must be at least 1")]
+    SensorRadius,
+    /// A planner refused its input (an invalid epsilon schedule, for instance).
+    #[error("planner: {0}")]
+    Planner(#[from] SearchError<Cell>),
+}

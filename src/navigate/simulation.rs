@@ -1,0 +1,265 @@
+//! The simulation loop: sense, tell the planner, plan, move, until the robot arrives, proves
+//! its target unreachable or runs out of steps.
+
+use std::collections::VecDeque;
+use std::time::{Duration, Instant};
+
+use trailmark_core::cost::Cost;
+use trailmark_core::grid::{Cell, Grid};
+use trailmark_search::{Replanner, SearchError};
+
+use crate::navigate::config::{Navigation, PlannerChoice, Target};
+use crate::navigate::error::NavigateError;
+use crate::navigate::graph::{NavGraph, VIRTUAL_GOAL, estimate};
+use crate::navigate::report::{NavigationReport, Outcome};
+use crate::navigate::world::World;
+
+/// What one plan produced: the next cell (`None`: no path), the plan's cost, expansions, and
+/// the inflation it was made with (1 unless AD* stopped early).
+struct Plan {
+    next: Option<Cell>,
+    cost: Option<Cost>,
+    expansions: u64,
+    epsilon: f64,
+}
+
+/// Plans from `robot` to `target` on `graph` with `planner`, made at the first plan from
+/// `choice`, and told before every later one that the robot moved and that the out-edges of
+/// `changed` changed since the last plan.
+fn plan_step(
+    planner: &mut Option<Box<dyn Replanner<NavGraph>>>,
+    choice: PlannerChoice,
+    graph: &NavGraph,
+    robot: Cell,
+    target: Cell,
+    changed: &[Cell],
+    h: impl Fn(Cell, Cell) -> Cost + Copy + 'static,
+) -> Result<Plan, SearchError<Cell>> {
+    let planner = match planner {
+        Some(planner) => {
+            planner.move_start(graph, robot)?;
+            planner.update_nodes(graph, changed)?;
+            planner
+        }
+        None => planner.insert(choice.replanner(graph, robot, target, h)?),
+    };
+    let stats = planner.plan(graph)?;
+    Ok(Plan {
+        next: planner.next_step(graph),
+        cost: planner.cost(),
+        expansions: stats.expansions,
+        epsilon: planner.inflation(),
+    })
+}
+
+/// Runs the robot from `start` toward `target` through `truth`, starting from the map `prior`.
+///
+/// Errors (before anything runs) when the maps differ in size, the start or goal is outside the
+/// map or blocked in the true map, the sensor radius is 0, or the planner's settings are
+/// invalid.
+pub fn navigate(
+    truth: &Grid,
+    prior: &Grid,
+    start: Cell,
+    target: Target,
+    config: &Navigation,
+) -> Result<NavigationReport, NavigateError> {
+    run(truth, prior, start, target, config, config.planner, None, |_, _, _| {})
+}
+
+/// Several planners on one run: `config.planner` drives the robot, then each of `others` is run
+/// along the driver's trajectory, planning at every step from the same cell with the same
+/// knowledge, so their planning work is compared on exactly the same sequence of problems (each
+/// run on its own, so no planner's timing suffers from another's use of the caches). Returns the
+/// driver's report first, then one per other planner (sharing the driver's trajectory, outcome
+/// and discoveries).
+pub fn navigate_together(
+    truth: &Grid,
+    prior: &Grid,
+    start: Cell,
+    target: Target,
+    config: &Navigation,
+    others: &[PlannerChoice],
+) -> Result<Vec<NavigationReport>, NavigateError> {
+    let driver = run(truth, prior, start, target, config, config.planner, None, |_, _, _| {})?;
+    let mut reports = Vec::with_capacity(others.len() + 1);
+    for &planner in others {
+        let script = Some(&driver.trajectory[..]);
+        let mut report = run(truth, prior, start, target, config, planner, script, |_, _, _| {})?;
+        report.outcome = driver.outcome;
+        reports.push(report);
+    }
+    reports.insert(0, driver);
+    Ok(reports)
+}
+
+/// Runs `planner` from `start`. Without a `script` the robot follows the planner; with one it
+/// moves along the script whatever the planner says (the planner still plans at every step), and
+/// the run ends where the script does. `inspect(robot's graph, robot, plan)` sees every plan.
+#[allow(clippy::too_many_arguments)]
+fn run(
+    truth: &Grid,
+    prior: &Grid,
+    start: Cell,
+    target: Target,
+    config: &Navigation,
+    planner: PlannerChoice,
+    script: Option<&[Cell]>,
+    mut inspect: impl FnMut(&NavGraph, Cell, &Plan),
+) -> Result<NavigationReport, NavigateError> {
+    if (prior.width(), prior.height()) != (truth.width(), truth.height()) {
+        return Err(NavigateError::PriorSize {
+            prior: (prior.width(), prior.height()),
+            truth: (truth.width(), truth.height()),
+        });
+    }
+    if !truth.is_passable(start) {
+        return Err(NavigateError::Start(start));
+    }
+    if let Target::Cell(goal) = target
+        && !truth.is_passable(goal)
+    {
+        return Err(NavigateError::Goal(goal));
+    }
+    if config.sensor_radius == 0 {
+        return Err(NavigateError::SensorRadius);
+    }
+    let scale = truth.min_cost().unwrap_or(1.0).min(prior.min_cost().unwrap_or(1.0)).min(1.0);
+    planner.check()?;
+    let mut replanner = None;
+    let explore = target == Target::Explore;
+    let mut world = World::new(truth, prior, start, explore);
+    let goal_node = match target {
+        Target::Cell(goal) => goal,
+        Target::Explore => VIRTUAL_GOAL,
+    };
+    let max_steps = config.max_steps.unwrap_or(truth.len().saturating_mul(20));
+    let mut report = NavigationReport {
+        planner: planner.name().to_string(),
+        outcome: Outcome::StepLimit,
+        steps: 0,
+        distance: 0.0,
+        plans: 0,
+        expansions: 0,
+        planning_time: Duration::ZERO,
+        max_plan_time: Duration::ZERO,
+        discoveries: 0,
+        trajectory: vec![start],
+        plan_costs: Vec::new(),
+        plan_bounds: Vec::new(),
+        plan_expansions: Vec::new(),
+        sensed: Vec::new(),
+    };
+    let mut robot = start;
+    let mut trail: VecDeque<Cell> = VecDeque::new();
+    let mut changed = world.sense(robot, config.sensor_radius);
+    loop {
+        if target == Target::Cell(robot) {
+            report.outcome = Outcome::Reached;
+            break;
+        }
+        if report.steps >= max_steps {
+            break;
+        }
+        let clock = Instant::now();
+        let plan =
+            plan_step(&mut replanner, planner, &world.known, robot, goal_node, &changed, estimate(scale))?;
+        let spent = clock.elapsed();
+        report.plans += 1;
+        report.expansions += plan.expansions;
+        report.planning_time += spent;
+        report.max_plan_time = report.max_plan_time.max(spent);
+        report.plan_costs.push(plan.cost.unwrap_or(f64::INFINITY));
+        report.plan_bounds.push(plan.epsilon);
+        report.plan_expansions.push(plan.expansions);
+        inspect(&world.known, robot, &plan);
+        let next = match script {
+            Some(script) => script.get(report.steps + 1).copied(),
+            None => plan.next.filter(|&n| n != VIRTUAL_GOAL),
+        };
+        let Some(next) = next else {
+            report.outcome = if explore { Outcome::Explored } else { Outcome::Unreachable };
+            break;
+        };
+        report.distance += world.known.grid.edge_cost(robot, next).unwrap_or(f64::INFINITY);
+        trail.push_back(robot);
+        robot = next;
+        report.steps += 1;
+        report.trajectory.push(robot);
+        changed = world.visit(robot, explore);
+        if let Some(lag) = config.follower_lag {
+            let behind = trail.len().checked_sub(lag.max(1) as usize).map(|i| trail[i]);
+            world.move_follower(behind.filter(|&c| c != robot && Target::Cell(c) != target));
+        }
+        changed.extend(world.sense(robot, config.sensor_radius));
+        changed.sort_unstable_by_key(|c| (c.y, c.x));
+        changed.dedup();
+    }
+    report.discoveries = world.discoveries;
+    report.sensed = std::mem::take(&mut world.sensed);
+    Ok(report)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trailmark_core::generate;
+    use trailmark_search::Search;
+
+    /// Every plan of every planner, on what the robot knew at that step, costs what A* from
+    /// scratch finds there (AD*: at most epsilon times as much), on random maps with and without
+    /// a follower, toward a goal and mapping.
+    #[test]
+    fn every_plan_matches_astar_on_the_robots_map() {
+        let planners = [
+            PlannerChoice::AStar,
+            PlannerChoice::LpaStar,
+            PlannerChoice::DStarLite,
+            PlannerChoice::AdStar { epsilon: 2.5, epsilon_step: 0.5, expansions_per_step: Some(30) },
+            PlannerChoice::AdStar { epsilon: 2.0, epsilon_step: 1.0, expansions_per_step: None },
+            PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(0) },
+        ];
+        let mut plans = 0;
+        for seed in 0..16u64 {
+            let (w, h) = if seed < 8 { (24, 18) } else { (64, 48) };
+            let truth = generate::random(w, h, 0.3, seed).unwrap();
+            let prior = Grid::new(w, h).unwrap();
+            let cells: Vec<Cell> = truth.cells().filter(|&c| truth.is_passable(c)).collect();
+            let (start, goal) = (cells[0], cells[cells.len() - 1]);
+            let target = if seed % 4 == 3 { Target::Explore } else { Target::Cell(goal) };
+            for planner in planners {
+                let config = Navigation {
+                    planner,
+                    sensor_radius: 1 + (seed % 5) as u32,
+                    follower_lag: (seed % 2 == 1).then_some(2),
+                    max_steps: Some(2000),
+                };
+                let mut search = Search::new();
+                let report =
+                    run(&truth, &prior, start, target, &config, planner, None, |graph, robot, plan| {
+                        let to = if target == Target::Explore { VIRTUAL_GOAL } else { goal };
+                        let h = estimate(1.0);
+                        let best = search.astar(graph, robot, to, |c| h(c, to)).unwrap().cost();
+                        match (best, plan.cost) {
+                            (None, None) => {}
+                            (Some(best), Some(cost)) => {
+                                let tol = 1e-9 * best.max(1.0);
+                                assert!(
+                                    cost >= best - tol && cost <= plan.epsilon * best + tol,
+                                    "{planner:?} at {robot}: {cost} vs {best}"
+                                );
+                            }
+                            other => panic!("{planner:?} at {robot}: planner and A* disagree: {other:?}"),
+                        }
+                        plans += 1;
+                    })
+                    .unwrap();
+                assert_ne!(report.outcome, Outcome::StepLimit, "{planner:?} seed {seed}");
+                for pair in report.trajectory.windows(2) {
+                    assert!(pair[0].x.abs_diff(pair[1].x) <= 1 && pair[0].y.abs_diff(pair[1].y) <= 1);
+                }
+            }
+        }
+        assert!(plans > 1000, "{plans} plans checked");
+    }
+}

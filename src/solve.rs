@@ -43,6 +43,7 @@ use trailmark_core::problem::{
     SolveResult, Status, Waypoint, World,
 };
 use trailmark_core::svg::{GridSvg, WorldSvg};
+use trailmark_core::termination::Termination;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_graph::prm::{Connection, PlanarSpace, Prm, PrmError, PrmOptions, Sampler};
 use trailmark_graph::trapezoid::TrapezoidError;
@@ -50,7 +51,7 @@ use trailmark_graph::visibility::{Edges, VisibilityError};
 use trailmark_graph::{CornerCutting, GridGraph, Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
 use trailmark_sample::{Dubins, PlanError, SpaceError, StateSpace};
 use trailmark_search::{
-    AdStar, AnytimeResult, Budget, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult,
+    AdStar, AnytimeResult, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult,
 };
 
 /// Why a problem could not be solved (as opposed to having no path).
@@ -814,16 +815,16 @@ fn schedule(epsilon: Option<f64>, step: Option<f64>) -> EpsilonSchedule {
     EpsilonSchedule::new(epsilon.unwrap_or(default.initial), step.unwrap_or(default.step))
 }
 
-fn budget(time_limit_s: Option<f64>, max_expansions: Option<u64>) -> Budget {
+fn budget(time_limit_s: Option<f64>, max_expansions: Option<u64>) -> Termination {
     // Checked by solve_inner: a limit too large for a Duration has been refused already.
     let time = time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
-    Budget { time, expansions: max_expansions }
+    Termination { time_limit: time, max_expansions, ..Termination::default() }
 }
 
 /// The result document of an anytime search: the path of its last iteration, every iteration;
 /// each path node written as `waypoint(node)`. Without a path the status is
 /// [`Status::NoPath`] only when the search proved the goal unreachable
-/// ([`Stop::Unreachable`](trailmark_search::Stop::Unreachable)); stopped by a limit first, it is
+/// ([`Stop::Unreachable`](trailmark_core::termination::Stop::Unreachable)); stopped by a limit first, it is
 /// [`Status::Stopped`].
 pub fn anytime_result_of<N: Copy>(found: &AnytimeResult<N>, waypoint: impl Fn(N) -> Waypoint) -> SolveResult {
     let mut result = result_of(&SearchResult { path: found.path.clone(), stats: found.stats }, waypoint);

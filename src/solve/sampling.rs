@@ -11,12 +11,13 @@ use trailmark_core::problem::{
 };
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
+use trailmark_core::termination::Termination;
 use trailmark_core::world::PolygonWorld;
 use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
 use trailmark_sample::{
     BoxWorld, Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Planner,
     Problem as PlanningProblem, R2, Rn, Rrt, RrtConnect, RrtOptions, RrtStar, Solution, StateSampler,
-    StateSpace, Termination, shortcut,
+    StateSpace, shortcut,
 };
 
 use super::{Coordinates, SolveError, dubins_curve, roadmap_fields};

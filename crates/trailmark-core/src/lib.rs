@@ -1,6 +1,6 @@
 //! The vocabulary shared by every trailmark crate: geometry, costs, graph traits, grids,
 //! polygon worlds and their free space, Dubins curves, MovingAI benchmark files, problem/result
-//! documents and SVG pictures.
+//! documents, SVG pictures, and when a long-running planner stops ([`termination`]).
 //!
 //! Algorithms (`trailmark-search`) and graph builders (`trailmark-graph`) both depend on this
 //! crate and never on each other; a graph of your own that implements the traits of [`graph`]
@@ -38,9 +38,11 @@ pub mod problem;
 pub mod read;
 pub mod smooth;
 pub mod svg;
+pub mod termination;
 pub mod world;
 
 pub use cost::Cost;
 pub use graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
 pub use grid::{Cell, Connectivity, Grid, GridError, GridHeuristic};
 pub use path::Path;
+pub use termination::{Stop, Termination};

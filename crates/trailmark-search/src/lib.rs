@@ -60,6 +60,16 @@
 //! assert_eq!(found.path.unwrap().nodes, [1, 2, 3, 6, 12, 24, 25, 50, 100]);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+//!
+//! # Anytime searches
+//!
+//! [`ara_star`] and [`AdStar::improve`] stop when a
+//! [`Termination`](trailmark_core::termination::Termination) says so, the vocabulary the sampling
+//! planners of `trailmark-sample` share, and report why as a
+//! [`Stop`](trailmark_core::termination::Stop). They honour its iteration limit (improvement
+//! iterations, one per inflation, completed in the call), expansion limit (checked at every
+//! expansion), time limit and condition (asked every 256 expansions and between iterations) and
+//! target cost (between iterations). Without any limit they run until the path is optimal.
 
 #![deny(missing_docs)]
 
@@ -83,7 +93,13 @@ pub mod search {
 
 pub use anytime::ad_star::{AdStar, DEFAULT_RAISE_THRESHOLD};
 pub use anytime::ara_star::ara_star;
-pub use anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
+#[allow(deprecated)]
+pub use anytime::budget::Budget;
+pub use anytime::{AnytimeResult, EpsilonSchedule, Iteration};
+
+/// Moved: why a search stopped, one vocabulary with the sampling planners.
+#[deprecated(since = "0.2.0", note = "use trailmark_core::termination::Stop")]
+pub type Stop = trailmark_core::termination::Stop;
 pub use error::SearchError;
 pub use incremental::dstar_lite::DStarLite;
 pub use incremental::lpa_star::LpaStar;

@@ -9,8 +9,9 @@
 use std::ops::ControlFlow;
 use std::time::Instant;
 
+use trailmark::core::termination::Termination;
 use trailmark::prelude::*;
-use trailmark::search::{AdStar, Budget, EpsilonSchedule};
+use trailmark::search::{AdStar, EpsilonSchedule};
 
 mod common;
 
@@ -44,9 +45,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let clock = Instant::now();
         for q in queries.iter().filter(|_| !only_ad) {
             let h = graph.heuristic(GridHeuristic::Octile, q.goal);
-            let found = search.ara_star(&graph, q.start, q.goal, h, schedule, Budget::unlimited(), |_| {
-                ControlFlow::Break(())
-            })?;
+            let found =
+                search.ara_star(&graph, q.start, q.goal, h, schedule, Termination::unlimited(), |_| {
+                    ControlFlow::Break(())
+                })?;
             expansions[1] += found.stats.expansions;
         }
         times[1].push(clock.elapsed().as_secs_f64());

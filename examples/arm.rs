@@ -26,10 +26,11 @@ use std::fmt::Write as _;
 use std::time::Instant;
 
 use trailmark::core::geometry::Point;
+use trailmark::core::termination::Termination;
 use trailmark::core::world::{Bounds, PolygonWorld};
 use trailmark::sample::arm::{ArmChecker, PlanarArm, densify};
 use trailmark::sample::{
-    KdNearest, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace, Termination, shortcut,
+    KdNearest, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace, shortcut,
 };
 use trailmark::svg::WorldSvg;
 

@@ -112,9 +112,8 @@ fn bridge_samples() -> Result<(), Box<dyn std::error::Error>> {
     use rand_chacha::ChaCha8Rng;
     use trailmark::core::geometry::Point;
     use trailmark::core::svg::WorldSvg;
-    use trailmark::sample::{
-        Bridge, Draw, KdNearest, Planner, Problem, R2, RrtConnect, StateSampler, Termination,
-    };
+    use trailmark::core::termination::Termination;
+    use trailmark::sample::{Bridge, Draw, KdNearest, Planner, Problem, R2, RrtConnect, StateSampler};
 
     let world = generate::narrow_passages(40.0, 6, 1.5, 0.25, 2)?;
     let checker = world.checker();

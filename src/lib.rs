@@ -77,10 +77,13 @@ pub struct ReadmeDoctests;
 pub mod prelude {
     pub use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
     pub use trailmark_core::grid::{Cell, Connectivity, Grid, GridHeuristic};
+    pub use trailmark_core::termination::{Stop, Termination};
     pub use trailmark_core::{Cost, Path};
     pub use trailmark_graph::{CornerCutting, GridGraph};
+    #[allow(deprecated)]
+    pub use trailmark_search::Budget;
     pub use trailmark_search::{
-        AdStar, Budget, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult,
-        ara_star, astar, bfs, dfs, dijkstra, weighted_astar,
+        AdStar, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult, ara_star,
+        astar, bfs, dfs, dijkstra, weighted_astar,
     };
 }

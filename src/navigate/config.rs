@@ -4,9 +4,8 @@ use serde::{Deserialize, Serialize};
 
 use trailmark_core::cost::Cost;
 use trailmark_core::grid::Cell;
-use trailmark_search::{
-    AdStar, Budget, DStarLite, EpsilonSchedule, LpaStar, RepeatedAStar, Replanner, SearchError,
-};
+use trailmark_core::termination::Termination;
+use trailmark_search::{AdStar, DStarLite, EpsilonSchedule, LpaStar, RepeatedAStar, Replanner, SearchError};
 
 use crate::navigate::graph::NavGraph;
 
@@ -77,8 +76,8 @@ impl PlannerChoice {
             PlannerChoice::DStarLite => Box::new(DStarLite::new(graph, start, target, h)?),
             PlannerChoice::AdStar { epsilon, epsilon_step, expansions_per_step } => {
                 let schedule = EpsilonSchedule::new(epsilon, epsilon_step);
-                let budget = Budget { time: None, expansions: expansions_per_step };
-                Box::new(AdStar::new(graph, start, target, h, schedule)?.with_plan_budget(budget))
+                let per_plan = Termination { max_expansions: expansions_per_step, ..Termination::default() };
+                Box::new(AdStar::new(graph, start, target, h, schedule)?.with_termination_per_plan(per_plan))
             }
         })
     }

@@ -4,10 +4,11 @@
 
 use std::time::Instant;
 
+use trailmark_core::termination::Termination;
 use trailmark_sample::paths::PathFault;
 use trailmark_sample::prm::Connection;
 use trailmark_sample::{
-    BoxWorld, Halton, KdNearest, PlanError, Prm, Rn, StateSampler, StateSpace, Termination, Uniform, paths,
+    BoxWorld, Halton, KdNearest, PlanError, Prm, Rn, StateSampler, StateSpace, Uniform, paths,
 };
 
 use trailmark_graph::prm::{MAX_NODES, PrmError};

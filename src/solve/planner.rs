@@ -8,11 +8,12 @@ use trailmark_core::Cost;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::grid::GridHeuristic;
 use trailmark_core::smooth::Smoothing;
+use trailmark_core::termination::Termination;
 use trailmark_sample::{
     NearestNeighbors, Planner, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
 };
 use trailmark_search::{
-    AdStar, Budget, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult, ara_star,
+    AdStar, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult, ara_star,
 };
 
 use super::error::{DocumentError, SolveError};
@@ -254,10 +255,10 @@ impl AnytimeSpec {
     }
 
     /// The limits of the search.
-    fn budget(&self) -> Budget {
+    fn budget(&self) -> Termination {
         // Checked by solve: a limit too large for a Duration has been refused already.
         let time = self.time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
-        Budget { time, expansions: self.max_expansions }
+        Termination { time_limit: time, max_expansions: self.max_expansions, ..Termination::default() }
     }
 }
 

@@ -7,11 +7,12 @@ use trailmark_core::geometry::Point;
 use trailmark_core::geometry::SVector;
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
+use trailmark_core::termination::Termination;
 use trailmark_core::world::PolygonWorld;
 use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
 use trailmark_sample::{
     BoxWorld, Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Problem as PlanningProblem, R2,
-    Rn, RrtOptions, Solution, StateSampler, StateSpace, Termination, shortcut,
+    Rn, RrtOptions, Solution, StateSampler, StateSpace, shortcut,
 };
 
 use super::error::{DocumentError, SolveError};

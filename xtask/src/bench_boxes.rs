@@ -6,10 +6,11 @@
 use std::time::{Duration, Instant};
 
 use serde::Serialize;
+use trailmark::core::termination::Termination;
 use trailmark::sample::benchmark::benchmark;
 use trailmark::sample::rand::{RngExt, SeedableRng};
 use trailmark::sample::{
-    BoxWorld, ChaCha8Rng, KdNearest, Planner, Prm, Problem, Rn, RrtConnect, RrtStar, StateSpace, Termination,
+    BoxWorld, ChaCha8Rng, KdNearest, Planner, Prm, Problem, Rn, RrtConnect, RrtStar, StateSpace,
 };
 
 /// RRT-Connect's iteration limit per query.

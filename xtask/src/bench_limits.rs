@@ -10,11 +10,11 @@ use std::time::{Duration, Instant};
 
 use serde::Serialize;
 use trailmark::core::geometry::Point;
+use trailmark::core::termination::Termination;
 use trailmark::core::world::CollisionChecker;
 use trailmark::sample::benchmark::benchmark;
 use trailmark::sample::{
-    Bridge, KdNearest, Planner, Prm, Problem, R2, Rn, Rrt, RrtConnect, RrtStar, Sampled, StateSpace,
-    Termination, Validity,
+    Bridge, KdNearest, Planner, Prm, Problem, R2, Rn, Rrt, RrtConnect, RrtStar, Sampled, StateSpace, Validity,
 };
 
 /// A configuration of the six joints.

@@ -14,10 +14,11 @@ use plotters::prelude::*;
 use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 use trailmark::core::generate;
+use trailmark::core::termination::Termination;
 use trailmark::movingai;
 use trailmark::navigate::{Navigation, NavigationReport, Outcome, PlannerChoice, Target, navigate_together};
 use trailmark::prelude::*;
-use trailmark::search::{AdStar, Budget, EpsilonSchedule};
+use trailmark::search::{AdStar, EpsilonSchedule};
 
 use crate::bench::{Map, Suite, median};
 
@@ -282,7 +283,7 @@ pub fn bench_anytime(maps: &[&Map], n: usize, runs: u32) -> Vec<AnytimeRow> {
             let mut first_cost = 0.0;
             first_t.push(timed(&mut || {
                 let found = search
-                    .ara_star(&graph, q.start, q.goal, h, ANYTIME, Budget::unlimited(), |_| {
+                    .ara_star(&graph, q.start, q.goal, h, ANYTIME, Termination::unlimited(), |_| {
                         std::ops::ControlFlow::Break(())
                     })
                     .expect("valid query");
@@ -291,9 +292,10 @@ pub fn bench_anytime(maps: &[&Map], n: usize, runs: u32) -> Vec<AnytimeRow> {
             }));
             ratio += first_cost / q.optimal.max(1e-9);
             full_t.push(timed(&mut || {
-                let found = search.ara_star(&graph, q.start, q.goal, h, ANYTIME, Budget::unlimited(), |_| {
-                    std::ops::ControlFlow::Continue(())
-                });
+                let found =
+                    search.ara_star(&graph, q.start, q.goal, h, ANYTIME, Termination::unlimited(), |_| {
+                        std::ops::ControlFlow::Continue(())
+                    });
                 found.expect("valid query").stats.elapsed.as_secs_f64() * 1e3
             }));
             ad_t.push(timed(&mut || {
@@ -330,12 +332,12 @@ pub fn cost_time_svg(map: &Map) -> Result<(String, String), String> {
     let graph = GridGraph::new(&map.grid, Connectivity::Eight);
     let h = graph.heuristic(GridHeuristic::Octile, q.goal);
     let fine = EpsilonSchedule::new(3.0, 0.1);
-    let ara = trailmark::search::ara_star(&graph, q.start, q.goal, h, fine, Budget::unlimited())
+    let ara = trailmark::search::ara_star(&graph, q.start, q.goal, h, fine, Termination::unlimited())
         .map_err(|e| e.to_string())?;
     let mut planner =
         AdStar::new(&graph, q.start, q.goal, graph.heuristic_between(GridHeuristic::Octile), fine)
             .map_err(|e| e.to_string())?;
-    let ad = planner.improve(&graph, Budget::unlimited()).map_err(|e| e.to_string())?;
+    let ad = planner.improve(&graph, Termination::unlimited()).map_err(|e| e.to_string())?;
     let astar = Search::new().astar(&graph, q.start, q.goal, h).map_err(|e| e.to_string())?;
     let points = |it: &[trailmark::search::Iteration]| -> Vec<(f64, f64)> {
         it.iter().filter_map(|i| Some((i.elapsed.as_secs_f64() * 1e3, i.cost?))).collect()

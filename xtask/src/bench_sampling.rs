@@ -19,12 +19,11 @@ use serde::Serialize;
 use trailmark::core::freespace::Location;
 use trailmark::core::generate;
 use trailmark::core::geometry::Point;
+use trailmark::core::termination::Termination;
 use trailmark::core::world::{CollisionChecker, PolygonWorld};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::prelude::*;
-use trailmark::sample::{
-    Bridge, KdNearest, Plan, Planner, Problem, R2, Rrt, RrtConnect, RrtStar, Termination,
-};
+use trailmark::sample::{Bridge, KdNearest, Plan, Planner, Problem, R2, Rrt, RrtConnect, RrtStar};
 
 use crate::bench::{Suite, median};
 use crate::ompl::Driver;

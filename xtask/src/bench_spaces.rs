@@ -15,10 +15,11 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 use trailmark::core::geometry::{Point, Pose, Vector};
+use trailmark::core::termination::Termination;
 use trailmark::core::world::{Bounds, CollisionChecker, PolygonWorld};
 use trailmark::sample::arm::{ArmChecker, PlanarArm, densify};
 use trailmark::sample::{
-    Dubins, KdNearest, Plan, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace, Termination,
+    Dubins, KdNearest, Plan, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace,
 };
 
 use crate::bench_sampling::{ConnectStats, Tally, World};

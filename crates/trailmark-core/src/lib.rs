@@ -1,6 +1,6 @@
 //! The vocabulary shared by every trailmark crate: geometry, costs, graph traits, grids,
-//! polygon worlds and their free space, Dubins curves, MovingAI benchmark files and SVG
-//! pictures.
+//! polygon worlds and their free space, Dubins curves, MovingAI benchmark files, SVG
+//! pictures, and when a long-running planner stops ([`termination`]).
 //!
 //! Algorithms (`trailmark-search`) and graph builders (`trailmark-graph`) both depend on this
 //! crate and never on each other; a graph of your own that implements the traits of [`graph`]
@@ -38,6 +38,7 @@ pub mod predicates;
 pub mod read;
 pub mod smooth;
 pub mod svg;
+pub mod termination;
 pub mod union_find;
 pub mod world;
 
@@ -45,4 +46,5 @@ pub use cost::Cost;
 pub use graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
 pub use grid::{Cell, Connectivity, Grid, GridError, GridHeuristic};
 pub use path::Path;
+pub use termination::{Stop, Termination};
 pub use union_find::UnionFind;

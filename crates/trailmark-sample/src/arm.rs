@@ -16,7 +16,8 @@
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
 //! use trailmark_sample::arm::{ArmChecker, PlanarArm};
-//! use trailmark_sample::{KdNearest, Planner, Problem, Rn, RrtConnect, Sampled, Termination};
+//! use trailmark_sample::{KdNearest, Planner, Problem, Rn, RrtConnect, Sampled};
+//! use trailmark_core::termination::Termination;
 //!
 //! // A 3-link arm on the floor of a 10 x 6 room with a post to reach over.
 //! let post = vec![Point::new(7.0, 0.0), Point::new(7.5, 0.0), Point::new(7.5, 2.0), Point::new(7.0, 2.0)];

@@ -9,7 +9,8 @@
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
 //! use trailmark_sample::benchmark::{Experiment, benchmark, log};
-//! use trailmark_sample::{KdNearest, Problem, R2, RrtConnect, Termination};
+//! use trailmark_sample::{KdNearest, Problem, R2, RrtConnect};
+//! use trailmark_core::termination::Termination;
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 //! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
@@ -42,8 +43,8 @@ use crate::plan::{Plan, PlanError, Solution};
 use crate::planner::Planner;
 use crate::problem::Problem;
 use crate::space::StateSpace;
-use crate::termination::Termination;
 use crate::validity::Validity;
+use trailmark_core::termination::Termination;
 
 /// One measured run of a planner.
 #[derive(Debug, Clone, Default, PartialEq)]

@@ -7,7 +7,8 @@
 //!
 //! ```
 //! use trailmark_sample::boxes::BoxWorld;
-//! use trailmark_sample::{KdNearest, Planner, Problem, Rn, RrtConnect, Termination, Validity};
+//! use trailmark_sample::{KdNearest, Planner, Problem, Rn, RrtConnect, Validity};
+//! use trailmark_core::termination::Termination;
 //!
 //! // The unit square with a wall from x = 0.4 to 0.6, open above y = 0.8.
 //! let world = BoxWorld::new([0.0; 2], [1.0; 2], vec![([0.4, 0.0], [0.6, 0.8])])?;

@@ -9,8 +9,9 @@
 //! - [`sampler`]: where the planners draw samples: uniformly, or near obstacles and in narrow
 //!   passages (the Gaussian and bridge-test samplers);
 //! - [`problem`] (start states and a goal: a state with a tolerance or the user's region),
-//!   [`termination`] (iterations, time, target cost, the caller's condition), [`plan`] (exact,
-//!   approximate or no solution, why the run stopped, statistics);
+//!   `trailmark_core::termination` (iterations, time, target cost, the caller's condition;
+//!   shared with the anytime searches), [`plan`] (exact, approximate or no solution, why the
+//!   run stopped, statistics);
 //! - [`planner`]: the one interface of every planner, so they swap at run time; [`rrt`](mod@rrt),
 //!   [`rrt_connect`](mod@rrt_connect), [`rrt_star`](mod@rrt_star) and [`prm`] (PRM and PRM*,
 //!   multi-query) implement it;
@@ -60,6 +61,7 @@ mod run;
 pub mod sampler;
 pub mod simplify;
 pub mod space;
+#[doc(hidden)]
 pub mod termination;
 mod tree;
 pub mod validity;
@@ -68,7 +70,9 @@ pub use boxes::BoxWorld;
 /// The states of [`Rn`]: nalgebra's fixed-size column vectors (nalgebra 0.35).
 pub use nalgebra::SVector;
 pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
-pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution, Stop};
+#[allow(deprecated)]
+pub use plan::Stop;
+pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution};
 pub use planner::Planner;
 pub use prm::Prm;
 pub use problem::{Goal, GoalState, Problem};
@@ -84,5 +88,6 @@ pub use run::{MIN_RELATIVE_RANGE, RrtOptions};
 pub use sampler::{Bridge, Draw, Gaussian, Halton, SamplerError, StateSampler, Uniform};
 pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace, UnitCube};
+#[allow(deprecated)]
 pub use termination::{Condition, Progress, Termination};
 pub use validity::{Sampled, Validity};

@@ -72,20 +72,9 @@ pub enum PlanError {
     Other(String),
 }
 
-/// Why a run stopped.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Stop {
-    /// A planner that stops at its first solution found one.
-    Solved,
-    /// The best solution reached the termination's target cost.
-    TargetCost,
-    /// The iteration limit.
-    IterationLimit,
-    /// The time limit.
-    TimeLimit,
-    /// The caller's condition.
-    Caller,
-}
+/// Moved: why a run stopped, one vocabulary with the anytime searches.
+#[deprecated(since = "0.2.0", note = "use trailmark_core::termination::Stop")]
+pub type Stop = trailmark_core::termination::Stop;
 
 /// The answer of a run.
 #[derive(Debug, Clone, PartialEq)]
@@ -160,7 +149,7 @@ pub struct Plan<T> {
     /// The answer.
     pub solution: Solution<T>,
     /// Why the run stopped.
-    pub stop: Stop,
+    pub stop: trailmark_core::termination::Stop,
     /// The cost of the best solution each time it improved (one entry for planners that stop at
     /// their first solution; empty without one).
     pub history: Vec<Improvement>,

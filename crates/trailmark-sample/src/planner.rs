@@ -9,7 +9,8 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_sample::{KdNearest, Planner, Problem, R2, Rrt, RrtConnect, RrtStar, Termination};
+//! use trailmark_sample::{KdNearest, Planner, Problem, R2, Rrt, RrtConnect, RrtStar};
+//! use trailmark_core::termination::Termination;
 //! use trailmark_core::world::CollisionChecker;
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
@@ -34,8 +35,8 @@
 use crate::plan::{Plan, PlanError};
 use crate::problem::Problem;
 use crate::space::StateSpace;
-use crate::termination::Termination;
 use crate::validity::Validity;
+use trailmark_core::termination::Termination;
 
 /// A motion planner over the space `S` with validity `V`.
 pub trait Planner<S: StateSpace, V: Validity<S>> {
@@ -44,6 +45,11 @@ pub trait Planner<S: StateSpace, V: Validity<S>> {
 
     /// Plans for `problem` until a solution (for planners that stop at their first) or until
     /// `termination`. The problem is checked first: starts and goal finite, in bounds and valid.
+    ///
+    /// The planners of this crate honour the termination's iteration limit (samples drawn), time
+    /// limit, condition and, those that improve their solution, target cost. They count no
+    /// expansions, so an expansion limit does not bound them, and they refuse a termination
+    /// without an iteration limit, a time limit or a condition ([`PlanError::NoLimit`]).
     fn solve(
         &mut self,
         problem: &Problem<'_, S, V>,

@@ -23,7 +23,8 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_sample::{KdNearest, Planner, Prm, Problem, R2, Termination};
+//! use trailmark_sample::{KdNearest, Planner, Prm, Problem, R2};
+//! use trailmark_core::termination::Termination;
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 //! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
@@ -52,14 +53,15 @@ use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_search::Search;
 
 use crate::nearest::{Direction, NearestNeighbors};
-use crate::plan::{Plan, PlanError, Rejection, Stop};
+use crate::plan::{Plan, PlanError, Rejection};
 use crate::planner::Planner;
 use crate::problem::{Problem, admit};
 use crate::run::Run;
 use crate::sampler::{Draw, StateSampler, Uniform};
 use crate::space::StateSpace;
-use crate::termination::{Termination, Watch};
 use crate::validity::Validity;
+use trailmark_core::termination::Stop;
+use trailmark_core::termination::{Termination, Watch};
 
 /// Which milestones a new one is joined to. Saved as `{"nearest": {"k": 10}}`,
 /// `{"radius": {"radius": 2.5}}` or `"prm_star"`.

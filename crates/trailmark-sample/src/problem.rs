@@ -9,7 +9,8 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_sample::{Goal, KdNearest, Planner, Problem, R2, Rrt, StateSpace, Termination};
+//! use trailmark_sample::{Goal, KdNearest, Planner, Problem, R2, Rrt, StateSpace};
+//! use trailmark_core::termination::Termination;
 //! use rand_chacha::ChaCha8Rng;
 //!
 //! /// Anywhere right of x = 8: a dock along the east wall.

@@ -2,7 +2,7 @@
 //!
 //! RRT grows a tree of valid motions from the start states by steering toward random samples,
 //! at most `range` at a time, and with probability `goal_bias` toward a state of the goal.
-//! It stops at the first state that satisfies the goal, or at its [`Termination`](crate::termination::Termination); then the
+//! It stops at the first state that satisfies the goal, or at its [`Termination`](trailmark_core::termination::Termination); then the
 //! plan is approximate: the path to the state nearest the goal.
 //!
 //! Runs are reproducible: the same seed gives the same tree, path and statistics.
@@ -10,7 +10,8 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_sample::{GoalState, KdNearest, Planner, Problem, R2, Rrt, Termination};
+//! use trailmark_sample::{GoalState, KdNearest, Planner, Problem, R2, Rrt};
+//! use trailmark_core::termination::Termination;
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 //! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
@@ -28,13 +29,14 @@
 //! ```
 
 use crate::nearest::{Direction, NearestNeighbors};
-use crate::plan::{Plan, PlanError, Stop};
+use crate::plan::{Plan, PlanError};
 use crate::problem::Problem;
 use crate::run::{Run, tree_planner};
 use crate::sampler::StateSampler;
 use crate::space::StateSpace;
 use crate::tree::{Extension, Tree};
 use crate::validity::Validity;
+use trailmark_core::termination::Stop;
 
 tree_planner! {
     /// RRT: one tree from the start states; see the [module](self) documentation.

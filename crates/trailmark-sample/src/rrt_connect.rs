@@ -14,7 +14,8 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_sample::{KdNearest, Planner, Problem, R2, RrtConnect, Termination};
+//! use trailmark_sample::{KdNearest, Planner, Problem, R2, RrtConnect};
+//! use trailmark_core::termination::Termination;
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 //! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
@@ -32,13 +33,14 @@
 //! ```
 
 use crate::nearest::{Direction, NearestNeighbors};
-use crate::plan::{Plan, PlanError, Rejection, Stop};
+use crate::plan::{Plan, PlanError, Rejection};
 use crate::problem::{Problem, admit};
 use crate::run::{Run, tree_planner};
 use crate::sampler::StateSampler;
 use crate::space::StateSpace;
 use crate::tree::{Extension, Tree};
 use crate::validity::Validity;
+use trailmark_core::termination::Stop;
 
 /// The most extensions one connect phase makes toward a new state before the next iteration
 /// begins: the tree keeps what it grew (a range of 1e-7 across a world of 10 had made one

@@ -6,7 +6,7 @@
 //! k = ⌈k_rrt ln n⌉ with k_rrt = 1.1 · 2^(d+1) · e · (1 + 1/d) (OMPL's choice), and then offers
 //! itself as a cheaper parent to those neighbours (*rewiring*); a rewired node's new cost flows
 //! down to all its descendants. The run goes on after the first solution until its
-//! [`Termination`](crate::termination::Termination) (iterations, time, or a target cost), recording every improvement of the
+//! [`Termination`](trailmark_core::termination::Termination) (iterations, time, or a target cost), recording every improvement of the
 //! best path. Distances are taken in the motion's direction both ways, so asymmetric spaces
 //! (Dubins) work. The parent search and the rewiring ask the termination's time limit and
 //! condition before each motion check: a run stops within one check of its limit.
@@ -14,7 +14,8 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_sample::{KdNearest, Planner, Problem, R2, RrtStar, Termination};
+//! use trailmark_sample::{KdNearest, Planner, Problem, R2, RrtStar};
+//! use trailmark_core::termination::Termination;
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 //! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];

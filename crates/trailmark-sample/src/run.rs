@@ -4,12 +4,13 @@
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-use crate::plan::{Improvement, Plan, PlanError, PlanStats, Solution, Stop};
+use crate::plan::{Improvement, Plan, PlanError, PlanStats, Solution};
 use crate::problem::{Problem, admit};
 use crate::sampler::{Draw, StateSampler};
 use crate::space::StateSpace;
-use crate::termination::{Termination, Watch};
 use crate::validity::Validity;
+use trailmark_core::termination::Stop;
+use trailmark_core::termination::{Termination, Watch};
 
 /// The settings of the tree planners (RRT, RRT-Connect, RRT*).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -282,7 +283,7 @@ macro_rules! tree_planner {
             fn solve(
                 &mut self,
                 problem: &$crate::problem::Problem<'_, S, V>,
-                termination: &$crate::termination::Termination,
+                termination: &::trailmark_core::termination::Termination,
             ) -> Result<$crate::plan::Plan<S::State>, $crate::plan::PlanError> {
                 // The last run's trees are freed before this run's clock starts.
                 self.spent.release();

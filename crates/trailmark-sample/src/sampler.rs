@@ -24,7 +24,8 @@
 //! ```
 //! use trailmark_core::generate;
 //! use trailmark_core::geometry::Point;
-//! use trailmark_sample::{Bridge, KdNearest, Planner, Problem, R2, RrtConnect, Termination};
+//! use trailmark_sample::{Bridge, KdNearest, Planner, Problem, R2, RrtConnect};
+//! use trailmark_core::termination::Termination;
 //!
 //! // Six walls, each with a door 1.5 wide, for a robot of radius 0.25.
 //! let world = generate::narrow_passages(40.0, 6, 1.5, 0.25, 2)?;
@@ -46,8 +47,8 @@ use rand_chacha::ChaCha8Rng;
 use thiserror::Error;
 
 use crate::space::{StateSpace, UnitCube};
-use crate::termination::Watch;
 use crate::validity::Validity;
+use trailmark_core::termination::Watch;
 
 /// A sampler setting out of its range.
 #[derive(Debug, Clone, PartialEq, Error)]

@@ -5,9 +5,9 @@ use nalgebra::SVector;
 use proptest::prelude::*;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use trailmark_core::termination::Termination;
 use trailmark_sample::{
-    BoxWorld, KdNearest, Planner, Prm, Problem, Rn, Rrt, RrtConnect, RrtStar, Solution, SpaceError,
-    Termination, Validity,
+    BoxWorld, KdNearest, Planner, Prm, Problem, Rn, Rrt, RrtConnect, RrtStar, Solution, SpaceError, Validity,
 };
 
 /// Whether `q` is within `margin` of a box's interior.

@@ -12,11 +12,12 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use trailmark_core::generate;
 use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::termination::Termination;
 use trailmark_core::world::{Bounds, PolygonWorld};
 use trailmark_sample::arm::{ArmChecker, PlanarArm, densify};
 use trailmark_sample::{
     Dubins, KdNearest, NearestNeighbors, PlanError, Planner, Prm, Problem, R2, Rejection, Rn, Rrt,
-    RrtConnect, RrtStar, Sampled, Se2, Solution, StateSpace, Termination, Validity,
+    RrtConnect, RrtStar, Sampled, Se2, Solution, StateSpace, Validity,
 };
 
 /// RRT, RRT-Connect, RRT*, PRM and PRM* over clones of `nearest`.

@@ -8,13 +8,13 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use trailmark_core::generate;
 use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::world::PolygonWorld;
 use trailmark_sample::nearest::{BruteForce, KdNearest, NearestNeighbors};
 use trailmark_sample::simplify::shortcut;
 use trailmark_sample::space::{Dubins, R2, StateSpace};
 use trailmark_sample::{
-    Plan, PlanError, Planner, Problem, Rejection, Rrt, RrtConnect, RrtOptions, RrtStar, Solution, Stop,
-    Termination,
+    Plan, PlanError, Planner, Problem, Rejection, Rrt, RrtConnect, RrtOptions, RrtStar, Solution,
 };
 
 /// A generated world of random convex obstacles (40 x 40) and two free points in it.

@@ -4,11 +4,10 @@
 //! goal gives no solution, and bad settings are typed errors.
 
 use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::world::{Bounds, PolygonWorld};
 use trailmark_sample::prm::Connection;
-use trailmark_sample::{
-    Dubins, KdNearest, PlanError, Planner, Prm, Problem, R2, Solution, StateSpace, Stop, Termination,
-};
+use trailmark_sample::{Dubins, KdNearest, PlanError, Planner, Prm, Problem, R2, Solution, StateSpace};
 use trailmark_search::{astar, dijkstra};
 
 fn wall_world() -> PolygonWorld {

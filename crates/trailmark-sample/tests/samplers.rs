@@ -10,12 +10,13 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use trailmark_core::generate;
 use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::termination::Termination;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_sample::nearest::KdNearest;
 use trailmark_sample::sampler::{Bridge, Draw, Gaussian, SamplerError, StateSampler, Uniform};
 use trailmark_sample::space::{Dubins, R2, Se2, StateSpace};
 use trailmark_sample::validity::Validity;
-use trailmark_sample::{Planner, Problem, RrtConnect, Termination};
+use trailmark_sample::{Planner, Problem, RrtConnect};
 
 const SIZE: f64 = 40.0;
 const WALLS: usize = 6;

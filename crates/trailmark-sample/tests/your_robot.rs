@@ -5,11 +5,12 @@
 use std::f64::consts::{PI, TAU};
 use std::time::Duration;
 
+use trailmark_core::termination::Termination;
 use trailmark_sample::benchmark::benchmark;
 use trailmark_sample::rand::RngExt;
 use trailmark_sample::{
     BruteForce, ChaCha8Rng, Goal, Plan, PlanError, Planner, Prm, Problem, Rejection, Rrt, RrtConnect,
-    RrtStar, StateSpace, Termination, Validity,
+    RrtStar, StateSpace, Validity,
 };
 
 /// Two joints that turn freely: each angle in [-π, π], and -π is π.

@@ -1,16 +1,26 @@
-//! Search algorithms over any graph that implements the traits of
-//! [`trailmark_core::graph`]: breadth-first, depth-first, Dijkstra, A* and weighted A*; the
-//! incremental planners [`LpaStar`] and [`DStarLite`], which repair their search after edge
-//! costs change (and, for D* Lite, as the robot moves); the anytime planners [`ara_star`] and
-//! [`AdStar`], which return an inflated solution fast and improve it while time allows; and the
-//! indexed priority queue they all share.
+//! Search algorithms over any graph that implements the traits of [`trailmark_core::graph`],
+//! in three families:
 //!
-//! Each algorithm is a function (`astar(&graph, start, goal, heuristic)`) and a method of a
-//! reusable [`Search`] workspace, which keeps its per-node state in dense vectors across queries.
-//! Every search returns the path (or `None` when the goal is unreachable), its cost and
-//! [`SearchStats`]; a query that cannot be answered (start outside the graph, a negative edge
-//! cost, a weight above [`MAX_WEIGHT`], a path whose cost exceeds the largest `f64`) is a
-//! [`SearchError`], never a panic, a hang or a false "no path".
+//! - **one-shot searches** answer one query from scratch: [`bfs`], [`dfs`], [`dijkstra`],
+//!   [`astar`] and [`weighted_astar`], each a function and a method of the reusable [`Search`]
+//!   workspace, which keeps its per-node state in dense vectors across queries, returning a
+//!   [`SearchResult`];
+//! - **anytime searches** return an inflated solution fast and improve it while their
+//!   [`Termination`](trailmark_core::termination::Termination) allows: [`ara_star`] and
+//!   [`AdStar`], with an [`EpsilonSchedule`], reporting every [`Iteration`] in an
+//!   [`AnytimeResult`];
+//! - **incremental searches** repair their last search after edge costs change
+//!   ([`EdgeChange`]): [`LpaStar`], and [`DStarLite`], which also follows a robot that moves.
+//!   [`Replanner`] is the one interface of the planners kept between plans (LPA*, D* Lite, AD*,
+//!   and [`RepeatedAStar`], A* from scratch at every plan, the baseline), so a program picks one
+//!   at run time (`Box<dyn Replanner<G>>`) or compares them on the same changes.
+//!
+//! Shared by all: [`SearchStats`], [`SearchError`], the node numbering ([`NodeIndex`]: [`Dense`]
+//! or [`Hashed`]) and the indexed priority queue [`IndexedHeap`]. Every search returns the path
+//! (or `None` when the goal is unreachable), its cost and its statistics; a query that cannot be
+//! answered (start outside the graph, a negative edge cost, a weight above [`MAX_WEIGHT`], a path
+//! whose cost exceeds the largest `f64`) is a [`SearchError`], never a panic, a hang or a false
+//! "no path". Every item is at the crate root.
 //!
 //! ```
 //! use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
@@ -60,30 +70,41 @@
 //! assert_eq!(found.path.unwrap().nodes, [1, 2, 3, 6, 12, 24, 25, 50, 100]);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+//!
+//! # Anytime searches
+//!
+//! [`ara_star`] and [`AdStar::improve`] stop when a
+//! [`Termination`](trailmark_core::termination::Termination) says so, the vocabulary the sampling
+//! planners of `trailmark-sample` share, and report why as a
+//! [`Stop`](trailmark_core::termination::Stop). They honour its iteration limit (improvement
+//! iterations, one per inflation, completed in the call), expansion limit (checked at every
+//! expansion), time limit and condition (asked every 256 expansions and between iterations) and
+//! target cost (between iterations). Without any limit they run until the path is optimal.
 
 #![deny(missing_docs)]
 
 mod anytime;
+#[doc(hidden)]
 pub mod error;
 mod heuristic;
 mod incremental;
+#[doc(hidden)]
 pub mod index;
 mod limits;
 mod one_shot;
 mod priority;
+#[doc(hidden)]
 pub mod queue;
+#[doc(hidden)]
+pub mod search;
+#[doc(hidden)]
 pub mod stats;
-
-/// The search workspace and its result, at their old path.
-pub mod search {
-    pub use crate::limits::MAX_NODES;
-    pub use crate::one_shot::SearchResult;
-    pub use crate::one_shot::workspace::Search;
-}
 
 pub use anytime::ad_star::{AdStar, DEFAULT_RAISE_THRESHOLD};
 pub use anytime::ara_star::ara_star;
-pub use anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
+#[allow(deprecated)]
+pub use anytime::budget::Budget;
+pub use anytime::{AnytimeResult, EpsilonSchedule, Iteration};
 pub use error::SearchError;
 pub use incremental::dstar_lite::DStarLite;
 pub use incremental::lpa_star::LpaStar;
@@ -91,10 +112,14 @@ pub use incremental::repeated_astar::RepeatedAStar;
 pub use incremental::replanner::Replanner;
 pub use incremental::{Consistency, EdgeChange, Expansion, Key};
 pub use index::{Dense, Hashed, NodeIndex};
-pub use limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_WEIGHT};
+pub use limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_NODES, MAX_WEIGHT};
 pub use one_shot::SearchResult;
 pub use one_shot::astar::{astar, dijkstra, weighted_astar};
 pub use one_shot::uninformed::{bfs, dfs};
 pub use one_shot::workspace::Search;
 pub use queue::IndexedHeap;
 pub use stats::SearchStats;
+
+/// Moved: why a search stopped, one vocabulary with the sampling planners.
+#[deprecated(since = "0.2.0", note = "use trailmark_core::termination::Stop")]
+pub type Stop = trailmark_core::termination::Stop;

@@ -7,7 +7,7 @@
 //! queue has grown to its working size.
 //!
 //! ```
-//! use trailmark_search::queue::IndexedHeap;
+//! use trailmark_search::IndexedHeap;
 //!
 //! let mut q = IndexedHeap::new();
 //! q.push(7, 5.0);

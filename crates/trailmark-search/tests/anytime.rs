@@ -8,9 +8,10 @@ mod common;
 
 use common::walk_cost;
 use proptest::prelude::*;
+use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
-use trailmark_search::{Budget, EpsilonSchedule, Search, SearchError, Stop, ara_star, astar};
+use trailmark_search::{EpsilonSchedule, Search, SearchError, ara_star, astar};
 
 fn grid_world() -> impl Strategy<Value = (Grid, Connectivity, Cell, Cell)> {
     (2u32..16, 2u32..16, any::<bool>()).prop_flat_map(|(w, h, eight)| {
@@ -40,7 +41,7 @@ proptest! {
         let h = graph.heuristic(GridHeuristic::for_connectivity(connectivity), goal);
         let optimum = astar(&graph, start, goal, h).unwrap().cost();
         let schedule = EpsilonSchedule::new(initial, step);
-        let found = ara_star(&graph, start, goal, h, schedule, Budget::unlimited()).unwrap();
+        let found = ara_star(&graph, start, goal, h, schedule, Termination::unlimited()).unwrap();
         match optimum {
             None => {
                 prop_assert_eq!(found.stop, Stop::Unreachable);
@@ -79,7 +80,7 @@ fn iterations_reuse_effort_on_an_open_map() {
     let (start, goal) = (cells[0], cells[cells.len() - 1]);
     let h = graph.heuristic(GridHeuristic::Octile, goal);
     let schedule = EpsilonSchedule::new(3.0, 0.5);
-    let found = ara_star(&graph, start, goal, h, schedule, Budget::unlimited()).unwrap();
+    let found = ara_star(&graph, start, goal, h, schedule, Termination::unlimited()).unwrap();
     let first = &found.iterations[0];
     let optimal = astar(&graph, start, goal, h).unwrap();
     assert!(
@@ -99,25 +100,31 @@ fn iterations_reuse_effort_on_an_open_map() {
     assert_eq!(found.cost(), optimal.cost());
 }
 
-#[test]
-fn budgets_and_callers_stop_the_search() {
+/// A seeded 80 x 80 map, 30% blocked, and two far passable cells: more than one iteration of
+/// ARA* apart.
+fn random_world() -> (GridGraph, Cell, Cell) {
     let grid = trailmark_core::generate::random(80, 80, 0.3, 11).unwrap();
     let graph = GridGraph::new(&grid, Connectivity::Eight);
     let cells: Vec<Cell> = grid.cells().filter(|&c| grid.is_passable(c)).collect();
-    let (start, goal) = (cells[0], cells[cells.len() - 1]);
+    (graph, cells[0], cells[cells.len() - 1])
+}
+
+#[test]
+fn budgets_and_callers_stop_the_search() {
+    let (graph, start, goal) = random_world();
     let h = graph.heuristic(GridHeuristic::Octile, goal);
     let schedule = EpsilonSchedule::default();
-    let unlimited = ara_star(&graph, start, goal, h, schedule, Budget::unlimited()).unwrap();
+    let unlimited = ara_star(&graph, start, goal, h, schedule, Termination::unlimited()).unwrap();
     assert!(unlimited.iterations.len() >= 2, "this map needs more than one iteration");
 
-    let tight = Budget { time: None, expansions: Some(1) };
+    let tight = Termination::expansions(1);
     let found = ara_star(&graph, start, goal, h, schedule, tight).unwrap();
     assert_eq!(found.stop, Stop::ExpansionLimit);
     assert!(found.path.is_none() && found.iterations.is_empty());
 
     let mut seen = Vec::new();
     let found = Search::new()
-        .ara_star(&graph, start, goal, h, schedule, Budget::unlimited(), |it| {
+        .ara_star(&graph, start, goal, h, schedule, Termination::unlimited(), |it| {
             seen.push(it.epsilon);
             ControlFlow::Break(())
         })
@@ -125,8 +132,47 @@ fn budgets_and_callers_stop_the_search() {
     assert_eq!((found.stop, seen), (Stop::Caller, vec![3.0]));
     assert!(found.cost().is_some() && found.bound() == Some(found.iterations[0].bound));
 
-    let zero_time = Budget { time: Some(std::time::Duration::ZERO), expansions: None };
+    let zero_time = Termination::time(std::time::Duration::ZERO);
     assert_eq!(ara_star(&graph, start, goal, h, schedule, zero_time).unwrap().stop, Stop::TimeLimit);
+}
+
+/// The limits the shared termination adds: improvement iterations, a target cost and a
+/// condition, each stopping the search with its own reason.
+#[test]
+fn iteration_limits_target_costs_and_conditions_stop_the_search() {
+    let (graph, start, goal) = random_world();
+    let h = graph.heuristic(GridHeuristic::Octile, goal);
+    let schedule = EpsilonSchedule::default();
+    let unlimited = ara_star(&graph, start, goal, h, schedule, Termination::unlimited()).unwrap();
+    let first = unlimited.iterations[0];
+
+    let one = ara_star(&graph, start, goal, h, schedule, Termination::iterations(1)).unwrap();
+    assert_eq!((one.stop, one.iterations.len()), (Stop::IterationLimit, 1));
+    assert_eq!(one.cost(), first.cost);
+
+    let target = Termination::unlimited().and_target_cost(first.cost.unwrap());
+    let met = ara_star(&graph, start, goal, h, schedule, &target).unwrap();
+    assert_eq!((met.stop, met.iterations.len()), (Stop::TargetCost, 1));
+
+    let asked = Termination::when(|progress| progress.iterations >= 2);
+    let stopped = ara_star(&graph, start, goal, h, schedule, asked).unwrap();
+    assert_eq!((stopped.stop, stopped.iterations.len()), (Stop::Caller, 2));
+}
+
+/// The old names keep working for one release: a `Budget` limits as the termination with the
+/// same limits does.
+#[test]
+#[allow(deprecated)]
+fn the_deprecated_budget_still_limits() {
+    let (graph, start, goal) = random_world();
+    let h = graph.heuristic(GridHeuristic::Octile, goal);
+    let schedule = EpsilonSchedule::default();
+    let budget = trailmark_search::Budget { time: None, expansions: Some(40) };
+    let old = ara_star(&graph, start, goal, h, schedule, budget).unwrap();
+    let new = ara_star(&graph, start, goal, h, schedule, Termination::expansions(40)).unwrap();
+    assert_eq!(old.stop, trailmark_search::Stop::ExpansionLimit);
+    assert_eq!((old.stop, old.path, old.stats.expansions), (new.stop, new.path, new.stats.expansions));
+    assert_eq!(trailmark_search::Budget::unlimited().spent(std::time::Duration::ZERO, 5), None);
 }
 
 #[test]
@@ -138,7 +184,7 @@ fn invalid_schedules_are_errors() {
         [(0.5, 0.5), (f64::NAN, 0.5), (3.0, 0.0), (3.0, -1.0), (f64::INFINITY, 1.0), (3.0, 1e-9)]
     {
         let schedule = EpsilonSchedule::new(initial, step);
-        let err = ara_star(&graph, s, t, h, schedule, Budget::unlimited()).unwrap_err();
+        let err = ara_star(&graph, s, t, h, schedule, Termination::unlimited()).unwrap_err();
         assert!(matches!(err, SearchError::InvalidEpsilon { .. }), "{initial} {step}: {err:?}");
     }
 }
@@ -155,7 +201,7 @@ fn ad_star_cut_off_mid_iteration_keeps_the_last_path() {
     let h = graph.heuristic_between(GridHeuristic::Octile);
     let schedule = EpsilonSchedule::new(3.0, 0.5);
     let mut probe = AdStar::new(&graph, start, goal, h, schedule).unwrap();
-    let all = probe.improve(&graph, Budget::unlimited()).unwrap();
+    let all = probe.improve(&graph, Termination::unlimited()).unwrap();
     // The first iteration after the first that expands at least two nodes: cut it after one.
     let k = (1..all.iterations.len())
         .find(|&k| all.iterations[k].expansions >= 2)
@@ -163,7 +209,7 @@ fn ad_star_cut_off_mid_iteration_keeps_the_last_path() {
     let before: u64 = all.iterations[..k].iter().map(|it| it.expansions).sum();
     let last_cost = all.iterations[k - 1].cost.expect("reachable");
     let mut planner = AdStar::new(&graph, start, goal, h, schedule).unwrap();
-    let found = planner.improve(&graph, Budget { time: None, expansions: Some(before + 1) }).unwrap();
+    let found = planner.improve(&graph, Termination::expansions(before + 1)).unwrap();
     assert_eq!(found.stop, Stop::ExpansionLimit);
     assert_eq!(found.iterations.len(), k, "iteration {k} was cut off");
     let path = found.path.expect("the last completed iteration's path");

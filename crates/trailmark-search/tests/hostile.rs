@@ -12,11 +12,12 @@ mod common;
 use common::walk_cost;
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::EdgeChange;
+use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
 use trailmark_search::{
-    AdStar, Budget, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, Stop, ara_star, astar, bfs,
-    dfs, dijkstra, weighted_astar,
+    AdStar, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, ara_star, astar, bfs, dfs, dijkstra,
+    weighted_astar,
 };
 
 #[path = "common/digraph.rs"]
@@ -45,7 +46,7 @@ fn every_planner(
         ("weighted_astar", weighted_astar(graph, start, goal, to_goal, 2.0).map(|r| path(r.path))),
         (
             "ara_star",
-            ara_star(graph, start, goal, to_goal, schedule, Budget::unlimited()).map(|r| path(r.path)),
+            ara_star(graph, start, goal, to_goal, schedule, Termination::unlimited()).map(|r| path(r.path)),
         ),
         (
             "lpa_star",
@@ -64,7 +65,7 @@ fn every_planner(
         (
             "ad_star",
             AdStar::new(graph, start, goal, h, schedule)
-                .and_then(|mut p| p.improve(graph, Budget::unlimited()).map(|r| path(r.path))),
+                .and_then(|mut p| p.improve(graph, Termination::unlimited()).map(|r| path(r.path))),
         ),
     ]
 }
@@ -131,13 +132,13 @@ fn huge_weights_and_inflations_are_refused() {
     let between = graph.heuristic_between(GridHeuristic::Octile);
     for (initial, step) in [(1e308, 1e305), (2e6, 1e3)] {
         let schedule = EpsilonSchedule::new(initial, step);
-        let found = ara_star(&graph, start, goal, h, schedule, Budget::unlimited());
+        let found = ara_star(&graph, start, goal, h, schedule, Termination::unlimited());
         assert!(matches!(found, Err(SearchError::InvalidEpsilon { .. })), "ARA* {initial}: {found:?}");
         let planner = AdStar::new(&graph, start, goal, between, schedule);
         assert!(matches!(planner, Err(SearchError::InvalidEpsilon { .. })), "AD* {initial}");
     }
     let top = EpsilonSchedule::new(1e6, 1e3);
-    assert!(ara_star(&graph, start, goal, h, top, Budget::unlimited()).unwrap().path.is_some());
+    assert!(ara_star(&graph, start, goal, h, top, Termination::unlimited()).unwrap().path.is_some());
 }
 
 /// Runs `task` on a thread and waits at most 20 seconds for its answer.
@@ -159,10 +160,10 @@ fn schedules_that_cannot_reach_one_are_refused_promptly() {
             let graph = GridGraph::new(&Grid::new(6, 6).unwrap(), Connectivity::Eight);
             let (start, goal) = (Cell::new(0, 0), Cell::new(5, 3));
             let h = graph.heuristic(GridHeuristic::Octile, goal);
-            let ara = ara_star(&graph, start, goal, h, schedule, Budget::unlimited()).map(|r| r.stop);
+            let ara = ara_star(&graph, start, goal, h, schedule, Termination::unlimited()).map(|r| r.stop);
             let between = graph.heuristic_between(GridHeuristic::Octile);
             let ad = AdStar::new(&graph, start, goal, between, schedule)
-                .and_then(|mut p| p.improve(&graph, Budget::unlimited()))
+                .and_then(|mut p| p.improve(&graph, Termination::unlimited()))
                 .map(|r| r.stop);
             (schedule.check::<Cell>(), ara, ad)
         });
@@ -189,7 +190,7 @@ fn a_wrong_old_cost_does_not_make_a_wrong_path_cost() {
         let mut ad = AdStar::new(&graph, 0, 2, zero, EpsilonSchedule::new(2.0, 1.0)).unwrap();
         dstar.compute_shortest_path(&graph).unwrap();
         lpa.compute_shortest_path(&graph).unwrap();
-        assert_eq!(ad.improve(&graph, Budget::unlimited()).unwrap().cost(), Some(2.0));
+        assert_eq!(ad.improve(&graph, Termination::unlimited()).unwrap().cost(), Some(2.0));
         graph.cost[1][2] = 10.0;
         let change = [EdgeChange { from: 1, to: 2, old_cost: told }];
         dstar.update_edges(&graph, &change).unwrap();
@@ -197,7 +198,7 @@ fn a_wrong_old_cost_does_not_make_a_wrong_path_cost() {
         ad.update_edges(&graph, &change).unwrap();
         dstar.compute_shortest_path(&graph).unwrap();
         lpa.compute_shortest_path(&graph).unwrap();
-        let found = ad.improve(&graph, Budget::unlimited()).unwrap();
+        let found = ad.improve(&graph, Termination::unlimited()).unwrap();
         for (name, cost, path) in [
             ("D* Lite", dstar.cost(), dstar.path(&graph)),
             ("LPA*", lpa.cost(), lpa.path(&graph)),
@@ -324,7 +325,7 @@ fn cells_far_cheaper_than_their_neighbours_keep_paths_and_costs() {
     let mut dstar = DStarLite::new(&graph, start, goal, h).unwrap();
     dstar.compute_shortest_path(&graph).unwrap();
     let mut ad = AdStar::new(&graph, start, goal, h, EpsilonSchedule::new(2.0, 0.5)).unwrap();
-    let ad_path = ad.improve(&graph, Budget::unlimited()).unwrap().path;
+    let ad_path = ad.improve(&graph, Termination::unlimited()).unwrap().path;
     for (name, path) in [("LPA*", lpa.path(&graph)), ("D* Lite", dstar.path(&graph)), ("AD*", ad_path)] {
         let path = path.unwrap_or_else(|| panic!("{name}: no path"));
         assert_eq!(walk_cost(&graph, &path.nodes), Some(path.cost), "{name}: {:?}", path.nodes);

@@ -7,10 +7,11 @@ mod common;
 use common::walk_cost;
 use proptest::prelude::*;
 use trailmark_core::cost::Cost;
+use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
 use trailmark_search::{
-    AdStar, Budget, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, SearchError, Stop, astar, dijkstra,
+    AdStar, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, SearchError, astar, dijkstra,
 };
 
 /// Relative tolerance between costs summed in different orders (forward by A*, backward by D*
@@ -197,9 +198,9 @@ proptest! {
             let expected = reference(&graph, robot, goal);
             // A first call cut short by a budget (resumed below, or abandoned at the next change).
             if first_budget.is_some() && expected.is_ok() {
-                planner.improve(&graph, Budget { time: None, expansions: first_budget }).unwrap();
+                planner.improve(&graph, Termination { max_expansions: first_budget, ..Termination::default() }).unwrap();
             }
-            let got = planner.improve(&graph, Budget::unlimited());
+            let got = planner.improve(&graph, Termination::unlimited());
             match expected {
                 Err(e) => prop_assert_eq!(got.unwrap_err(), e),
                 Ok(None) => {
@@ -376,7 +377,7 @@ proptest! {
         let mut ad = AdStar::new(&graph, start, goal, octile, EpsilonSchedule::new(2.0, 0.5)).unwrap();
         dstar.compute_shortest_path(&graph).unwrap();
         lpa.compute_shortest_path(&graph).unwrap();
-        ad.improve(&graph, Budget { time: None, expansions: Some(5) }).unwrap();
+        ad.improve(&graph, Termination::expansions(5)).unwrap();
         // Change the world a little, so that a reset must forget repaired state too.
         let mut robot = start;
         for batch in batches.iter().take(1) {
@@ -404,7 +405,7 @@ proptest! {
                     }
                     dstar.compute_shortest_path(&graph).unwrap();
                     lpa.compute_shortest_path(&graph).unwrap();
-                    let found = ad.improve(&graph, Budget::unlimited()).unwrap();
+                    let found = ad.improve(&graph, Termination::unlimited()).unwrap();
                     prop_assert!(same_cost(dstar.cost(), cost), "D* Lite {:?}, A* {:?}", dstar.cost(), cost);
                     prop_assert!(same_cost(lpa.cost(), cost), "LPA* {:?}, A* {:?}", lpa.cost(), cost);
                     prop_assert!(same_cost(found.cost(), cost), "AD* {:?}, A* {:?}", found.cost(), cost);

@@ -3,13 +3,14 @@
 
 use std::fmt::Debug;
 use std::hash::Hash;
-use std::time::Instant;
 
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
-use crate::anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
+use trailmark_core::termination::{Stop, Termination, Watch};
+
+use crate::anytime::{AnytimeResult, EpsilonSchedule, Iteration};
 use crate::error::SearchError;
 use crate::incremental::EdgeChange;
 use crate::incremental::engine::Direction;
@@ -33,14 +34,15 @@ pub const DEFAULT_RAISE_THRESHOLD: usize = 100;
 /// ```
 /// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 /// use trailmark_graph::GridGraph;
-/// use trailmark_search::{AdStar, Budget, EpsilonSchedule, Stop};
+/// use trailmark_core::termination::{Stop, Termination};
+/// use trailmark_search::{AdStar, EpsilonSchedule};
 ///
 /// let grid = Grid::from_rows(&["........", ".@@@@@@.", "......@.", ".@@@@.@.", "........"])?;
 /// let mut graph = GridGraph::new(&grid, Connectivity::Eight);
 /// let (start, goal) = (Cell::new(2, 2), Cell::new(7, 4));
 /// let h = graph.heuristic_between(GridHeuristic::Octile);
 /// let mut planner = AdStar::new(&graph, start, goal, h, EpsilonSchedule::new(3.0, 1.0))?;
-/// let found = planner.improve(&graph, Budget::unlimited())?;
+/// let found = planner.improve(&graph, Termination::unlimited())?;
 /// assert_eq!(found.stop, Stop::Optimal);
 /// assert_eq!(found.iterations[0].epsilon, 3.0);
 /// let optimal = found.cost().unwrap();
@@ -50,7 +52,7 @@ pub const DEFAULT_RAISE_THRESHOLD: usize = 100;
 /// graph.set_cost(wall, f64::INFINITY)?;
 /// planner.raise_epsilon();
 /// planner.update_nodes(&graph, graph.cells_affected_by(wall))?;
-/// let repaired = planner.improve(&graph, Budget::unlimited())?;
+/// let repaired = planner.improve(&graph, Termination::unlimited())?;
 /// assert_eq!(repaired.iterations[0].epsilon, 3.0);
 /// assert!(repaired.cost().unwrap() > optimal);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -61,7 +63,7 @@ pub struct AdStar<N: Debug, H> {
     schedule: EpsilonSchedule,
     /// The inflation of the current (or last) iteration.
     epsilon: f64,
-    /// An iteration was interrupted by the budget and continues at the next call.
+    /// An iteration was interrupted by a limit and continues at the next call.
     in_progress: bool,
     /// Iterations completed so far.
     completed: u64,
@@ -78,8 +80,8 @@ pub struct AdStar<N: Debug, H> {
     last_path: Option<Path<N>>,
     /// The inflation of the last completed iteration.
     last_epsilon: f64,
-    /// The budget of each plan made through [`Replanner::plan`].
-    plan_budget: Budget,
+    /// When each plan made through [`Replanner::plan`] stops improving.
+    plan_termination: Termination,
 }
 
 impl<N, H> AdStar<N, H>
@@ -121,7 +123,7 @@ where
             raise: false,
             last_path: None,
             last_epsilon: schedule.initial,
-            plan_budget: Budget::unlimited(),
+            plan_termination: Termination::unlimited(),
         })
     }
 
@@ -152,10 +154,10 @@ where
         self
     }
 
-    /// The same planner with a budget for each plan made through [`Replanner::plan`] (by
-    /// default none: each plan improves to ε = 1).
-    pub fn with_plan_budget(mut self, budget: Budget) -> Self {
-        self.plan_budget = budget;
+    /// The same planner with limits for each plan made through [`Replanner::plan`] (by default
+    /// none: each plan improves to ε = 1).
+    pub fn with_termination_per_plan(mut self, termination: Termination) -> Self {
+        self.plan_termination = termination;
         self
     }
 
@@ -170,47 +172,53 @@ where
     }
 
     /// The inflation of the last completed iteration, whose [`path`](Self::path) costs at most
-    /// this times the optimum; it differs from [`epsilon`](Self::epsilon) while a budget holds
+    /// this times the optimum; it differs from [`epsilon`](Self::epsilon) while a limit holds
     /// a later iteration in progress.
     pub fn path_epsilon(&self) -> f64 {
         self.last_epsilon
     }
 
     /// Runs iterations, lowering ε after each, until ε = 1 (the path is optimal), the goal
-    /// proves unreachable, or `budget` (for this call) is spent. An iteration interrupted by the
-    /// budget continues at the next call. Returns the iterations completed in this call and the
+    /// proves unreachable, or `termination` stops this call (any of its limits, counted from the
+    /// start of the call; see [the anytime searches](crate#anytime-searches)). An iteration
+    /// interrupted by a limit continues at the next call. Returns the iterations completed in this call and the
     /// path of the last one, if nothing changed since (and no iteration is in progress: a result
     /// without a path proves the goal unreachable only with [`Stop::Unreachable`]).
     ///
     /// Errors as [`DStarLite::compute_shortest_path`](crate::DStarLite::compute_shortest_path)
     /// does, [`SearchError::CostOverflow`] included.
-    pub fn improve<G>(&mut self, graph: &G, budget: Budget) -> Result<AnytimeResult<N>, SearchError<N>>
+    pub fn improve<G>(
+        &mut self,
+        graph: &G,
+        termination: impl Into<Termination>,
+    ) -> Result<AnytimeResult<N>, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.iterate(graph, budget, usize::MAX)
+        self.iterate(graph, &termination.into(), usize::MAX)
     }
 
-    /// Completes one iteration, whatever it takes: the one a budget interrupted, or the next
+    /// Completes one iteration, whatever it takes: the one a limit interrupted, or the next
     /// (after a change, the first one at the raised or current epsilon). A robot that must move
-    /// now calls this when [`improve`](Self::improve) ran out of budget before any path.
+    /// now calls this when [`improve`](Self::improve) was stopped before any path.
     pub fn improve_once<G>(&mut self, graph: &G) -> Result<AnytimeResult<N>, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.iterate(graph, Budget::unlimited(), 1)
+        self.iterate(graph, &Termination::unlimited(), 1)
     }
 
     fn iterate<G>(
         &mut self,
         graph: &G,
-        budget: Budget,
+        termination: &Termination,
         most: usize,
     ) -> Result<AnytimeResult<N>, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        let clock = Instant::now();
+        let mut watch = Watch::start(termination);
+        watch.begin_iteration();
         let mut iterations = Vec::new();
         let mut stats = SearchStats::default();
         let stop = loop {
@@ -228,15 +236,24 @@ where
                 self.planner.next_iteration(graph, self.epsilon);
                 self.in_progress = true;
             }
+            // The expansion count is checked every time; the clock and the condition every 256
+            // expansions.
             let spent = stats.expansions;
+            let mut why = None;
             let mut interrupt = |e: u64| {
-                let clock = if e.is_multiple_of(256) { clock.elapsed() } else { std::time::Duration::ZERO };
-                budget.spent(clock, spent + e).is_some()
+                why = if e.is_multiple_of(256) {
+                    watch.set_expansions(spent + e);
+                    watch.interrupted()
+                } else {
+                    termination.expansions_spent(spent + e).then_some(Stop::ExpansionLimit)
+                };
+                why.is_some()
             };
             let (complete, pass) = self.planner.compute_interruptible(graph, &mut interrupt)?;
             stats += pass;
             if !complete {
-                break budget.spent(clock.elapsed(), stats.expansions).unwrap_or(Stop::TimeLimit);
+                watch.set_expansions(stats.expansions);
+                break watch.interrupted().or(why).unwrap_or(Stop::TimeLimit);
             }
             self.in_progress = false;
             self.completed += 1;
@@ -250,7 +267,7 @@ where
                 cost,
                 bound: self.epsilon,
                 expansions: pass.expansions,
-                elapsed: clock.elapsed(),
+                elapsed: watch.elapsed(),
             });
             if cost.is_none() {
                 break Stop::Unreachable;
@@ -258,14 +275,18 @@ where
             if self.epsilon <= 1.0 {
                 break Stop::Optimal;
             }
-            if let Some(why) = budget.spent(clock.elapsed(), stats.expansions) {
+            if let Some(cost) = cost {
+                watch.improved(cost);
+            }
+            watch.set_expansions(stats.expansions);
+            if let Some(why) = watch.next_iteration() {
                 break why;
             }
             if iterations.len() >= most {
                 break Stop::Caller;
             }
         };
-        stats.elapsed = clock.elapsed();
+        stats.elapsed = watch.elapsed();
         Ok(AnytimeResult { path: self.path(graph), iterations, stop, stats })
     }
 
@@ -280,7 +301,7 @@ where
     }
 
     /// The last completed iteration's path from the start to the goal, if nothing changed since
-    /// (also while a budget holds a later iteration in progress).
+    /// (also while a limit holds a later iteration in progress).
     pub fn path<G>(&self, graph: &G) -> Option<Path<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
@@ -378,8 +399,8 @@ where
     }
 }
 
-/// AD* as a replanner: each plan improves within the budget it was configured with
-/// ([`AdStar::with_plan_budget`]); when the budget runs out before this plan has a path, the
+/// AD* as a replanner: each plan improves within the limits it was configured with
+/// ([`AdStar::with_termination_per_plan`]); when they stop it before this plan has a path, the
 /// iteration in progress is completed anyway, since a plan without a path is no plan.
 /// [`inflation`](Replanner::inflation) is the ε of the path's iteration.
 impl<G, H> Replanner<G> for AdStar<G::Node, H>
@@ -404,7 +425,7 @@ where
     }
 
     fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
-        let found = self.improve(graph, self.plan_budget)?;
+        let found = self.improve(graph, self.plan_termination.clone())?;
         let mut stats = found.stats;
         if found.path.is_none() && found.stop != Stop::Unreachable {
             stats += self.improve_once(graph)?.stats;

@@ -1,13 +1,14 @@
 //! ARA*: anytime repairing A*, a quick inflated solution first, then better ones.
 
 use std::ops::ControlFlow;
-use std::time::Duration;
 
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Successors};
 use trailmark_core::path::Path;
 
-use crate::anytime::{AnytimeResult, Budget, EpsilonSchedule, Iteration, Stop};
+use trailmark_core::termination::{Stop, Termination, Watch};
+
+use crate::anytime::{AnytimeResult, EpsilonSchedule, Iteration};
 use crate::error::SearchError;
 use crate::heuristic::{HeuristicCheck, checked_heuristic};
 use crate::index::{Dense, NodeIndex};
@@ -18,9 +19,10 @@ use crate::stats::SearchStats;
 
 /// ARA* (Likhachev, Gordon and Thrun, 2003) from `start` to `goal`: weighted A* with inflation
 /// `epsilon` gives a first path quickly, then the inflation is lowered and the search repaired,
-/// reusing what earlier iterations expanded, until ε = 1 (optimal) or the budget runs out. With
-/// a consistent heuristic every path found costs at most ε times the optimum; each iteration
-/// reports its proven bound.
+/// reusing what earlier iterations expanded, until ε = 1 (optimal) or `termination` stops it
+/// (any of its limits; see [the anytime searches](crate#anytime-searches)). With a consistent
+/// heuristic every path found costs at most ε times the optimum; each iteration reports its
+/// proven bound.
 ///
 /// Errors when the schedule is invalid ([`EpsilonSchedule::check`]), and, as A* does, with
 /// [`SearchError::CostOverflow`] when the goal is unreached but a path whose cost exceeds the
@@ -29,13 +31,14 @@ use crate::stats::SearchStats;
 /// ```
 /// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 /// use trailmark_graph::GridGraph;
-/// use trailmark_search::{Budget, EpsilonSchedule, Stop, astar, ara_star};
+/// use trailmark_core::termination::{Stop, Termination};
+/// use trailmark_search::{EpsilonSchedule, astar, ara_star};
 ///
 /// let grid = Grid::from_rows(&["........", ".@@@@@@.", "......@.", ".@@@@.@.", "........"])?;
 /// let graph = GridGraph::new(&grid, Connectivity::Eight);
 /// let (start, goal) = (Cell::new(2, 2), Cell::new(7, 4));
 /// let h = graph.heuristic(GridHeuristic::Octile, goal);
-/// let found = ara_star(&graph, start, goal, h, EpsilonSchedule::new(3.0, 1.0), Budget::unlimited())?;
+/// let found = ara_star(&graph, start, goal, h, EpsilonSchedule::new(3.0, 1.0), Termination::unlimited())?;
 /// assert_eq!(found.stop, Stop::Optimal);
 /// assert_eq!(found.iterations[0].epsilon, 3.0);
 /// // Each iteration's cost is within its proven bound of the final, optimal cost.
@@ -51,14 +54,14 @@ pub fn ara_star<G, H>(
     goal: G::Node,
     heuristic: H,
     schedule: EpsilonSchedule,
-    budget: Budget,
+    termination: impl Into<Termination>,
 ) -> Result<AnytimeResult<G::Node>, SearchError<G::Node>>
 where
     G: Successors + IndexedGraph + ?Sized,
     H: FnMut(G::Node) -> Cost,
 {
     Search::<Dense>::new()
-        .ara_star(graph, start, goal, heuristic, schedule, budget, |_| ControlFlow::Continue(()))
+        .ara_star(graph, start, goal, heuristic, schedule, termination, |_| ControlFlow::Continue(()))
 }
 
 impl<I> Search<I> {
@@ -72,7 +75,7 @@ impl<I> Search<I> {
         goal: G::Node,
         mut heuristic: H,
         schedule: EpsilonSchedule,
-        budget: Budget,
+        termination: impl Into<Termination>,
         mut on_iteration: impl FnMut(&Iteration) -> ControlFlow<()>,
     ) -> Result<AnytimeResult<G::Node>, SearchError<G::Node>>
     where
@@ -83,6 +86,9 @@ impl<I> Search<I> {
         schedule.check()?;
         self.reserve_generations(schedule.iterations() + 1);
         let query = self.begin(graph, start, goal)?;
+        let termination = termination.into();
+        let mut watch = Watch::start(&termination);
+        watch.begin_iteration();
         let (s, t) = (query.start, query.goal);
         // Nodes stamped at or above `first` were reached by this query; `closed_stamp()` marks
         // those expanded in the current iteration.
@@ -106,18 +112,23 @@ impl<I> Search<I> {
             let before = stats.expansions;
             let (open, closed) = (self.open_stamp(), self.closed_stamp());
             let mut edges = EdgeCheck::new();
-            let mut out_of_budget = None;
+            let mut interrupted = None;
             // ImprovePath: expand while some open node's f is below the goal's (every open node
             // while the goal is unreached, those of infinite f included).
             while let Some((u, key)) = self.heap.peek() {
                 if self.nodes.stamp[t] >= first && FKey::new(self.nodes.g[t], self.nodes.g[t]) <= key {
                     break;
                 }
-                // The expansion count is checked every time, the clock every 256 expansions.
-                let clock =
-                    if stats.expansions.is_multiple_of(256) { query.elapsed() } else { Duration::ZERO };
-                if let Some(why) = budget.spent(clock, stats.expansions) {
-                    out_of_budget = Some(why);
+                // The expansion count is checked every time; the clock and the condition every 256
+                // expansions.
+                let why = if stats.expansions.is_multiple_of(256) {
+                    watch.set_expansions(stats.expansions);
+                    watch.interrupted()
+                } else {
+                    termination.expansions_spent(stats.expansions).then_some(Stop::ExpansionLimit)
+                };
+                if why.is_some() {
+                    interrupted = why;
                     break;
                 }
                 self.heap.pop();
@@ -157,7 +168,7 @@ impl<I> Search<I> {
                 edges.check(|| self.index.node(graph, u))?;
                 heuristics.check()?;
             }
-            if let Some(why) = out_of_budget {
+            if let Some(why) = interrupted {
                 break why;
             }
             // The iteration is complete: publish its path and bound.
@@ -204,7 +215,11 @@ impl<I> Search<I> {
             if on_iteration(&iteration).is_break() {
                 break Stop::Caller;
             }
-            if let Some(why) = budget.spent(query.elapsed(), stats.expansions) {
+            if let Some(cost) = iteration.cost {
+                watch.improved(cost);
+            }
+            watch.set_expansions(stats.expansions);
+            if let Some(why) = watch.next_iteration() {
                 break why;
             }
             // Next iteration: lower ε, move the inconsistent nodes into the open list, re-key

@@ -2,8 +2,12 @@
 //! inflated solution fast and improve it while time allows, lowering the inflation of the
 //! heuristic iteration by iteration.
 //!
-//! What they share lives here: the inflation schedule, when to stop, the record of each
-//! iteration and the result.
+//! What they share lives here: the inflation schedule, the record of each iteration and the
+//! result. When to stop is a [`Termination`](trailmark_core::termination::Termination), the
+//! vocabulary the sampling planners share: the anytime searches honour its iteration limit
+//! (improvement iterations completed), expansion limit, time limit, target cost and condition
+//! (asked every 256 expansions and between iterations); without any limit they run to the
+//! optimum.
 
 use std::time::Duration;
 
@@ -11,12 +15,15 @@ use serde::{Deserialize, Serialize};
 use trailmark_core::cost::Cost;
 use trailmark_core::path::Path;
 
+use trailmark_core::termination::Stop;
+
 use crate::error::SearchError;
 use crate::limits::{MAX_EPSILON, MAX_ITERATIONS};
 use crate::stats::SearchStats;
 
 pub(crate) mod ad_star;
 pub(crate) mod ara_star;
+pub(crate) mod budget;
 
 /// How an anytime planner lowers its heuristic inflation: from `initial` down to 1 by `step`
 /// per iteration (the last step lands on 1 exactly). [`EpsilonSchedule::check`] says which
@@ -77,51 +84,6 @@ impl EpsilonSchedule {
     pub fn next(&self, epsilon: f64) -> f64 {
         (epsilon - self.step).min(epsilon.next_down()).max(1.0)
     }
-}
-
-/// When an anytime search stops before reaching ε = 1: wall time, expansions, or both.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Budget {
-    /// Wall-clock time for the whole search.
-    pub time: Option<Duration>,
-    /// Expansions for the whole search.
-    pub expansions: Option<u64>,
-}
-
-impl Budget {
-    /// No limit: run until ε = 1.
-    pub fn unlimited() -> Self {
-        Budget::default()
-    }
-
-    /// Whether the budget is spent, `elapsed` and `expansions` into the search.
-    pub fn spent(&self, elapsed: Duration, expansions: u64) -> Option<Stop> {
-        if self.time.is_some_and(|t| elapsed >= t) {
-            return Some(Stop::TimeLimit);
-        }
-        if self.expansions.is_some_and(|e| expansions >= e) {
-            return Some(Stop::ExpansionLimit);
-        }
-        None
-    }
-}
-
-/// Why an anytime search stopped.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Stop {
-    /// The last iteration ran at ε = 1: the path is optimal (for an admissible, consistent
-    /// heuristic).
-    Optimal,
-    /// The goal cannot be reached: the search proved it (this is the only stop that does).
-    Unreachable,
-    /// The time budget ran out. Without a path, nothing is known about the goal.
-    TimeLimit,
-    /// The expansion budget ran out. Without a path, nothing is known about the goal.
-    ExpansionLimit,
-    /// The caller's callback asked to stop (or, for [`AdStar::improve_once`](crate::AdStar::improve_once),
-    /// the one iteration asked for is done).
-    Caller,
 }
 
 /// One completed iteration of an anytime search.

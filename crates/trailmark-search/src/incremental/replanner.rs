@@ -179,7 +179,9 @@ mod tests {
 
     use super::*;
     use crate::anytime::ad_star::AdStar;
-    use crate::anytime::{Budget, EpsilonSchedule};
+    use trailmark_core::termination::Termination;
+
+    use crate::anytime::EpsilonSchedule;
     use crate::incremental::dstar_lite::DStarLite;
     use crate::incremental::lpa_star::LpaStar;
     use crate::incremental::repeated_astar::RepeatedAStar;
@@ -218,9 +220,9 @@ mod tests {
             Box::new(AdStar::new(&graph, start, goal, heuristic, EpsilonSchedule::default()).unwrap()),
         ];
         let schedule = EpsilonSchedule::new(2.5, 0.5);
-        let budget = Budget { time: None, expansions: Some(5) };
+        let limits = Termination::expansions(5);
         let mut bounded =
-            AdStar::new(&graph, start, goal, heuristic, schedule).unwrap().with_plan_budget(budget);
+            AdStar::new(&graph, start, goal, heuristic, schedule).unwrap().with_termination_per_plan(limits);
         let mut rng = Lcg(7);
         let mut robot = start;
         let mut checked = 0;

@@ -50,10 +50,15 @@
 
 #![deny(missing_docs)]
 
+// One documented path per item: the root, or for the families that read better under their
+// names (the abstraction's parts, detection, generators, the reference solver, Monte Carlo,
+// pictures) their module. The other modules stay public, hidden, for one release.
 pub mod abstraction;
 pub mod detect;
 pub mod generate;
+#[doc(hidden)]
 pub mod plan;
+#[doc(hidden)]
 pub mod planner;
 pub mod reference;
 mod regions;
@@ -61,14 +66,16 @@ mod simple_paths;
 pub mod simulate;
 mod spec;
 pub mod svg;
+#[doc(hidden)]
 pub mod terrain;
 mod view;
 
+#[doc(hidden)]
 pub use abstraction::Abstraction;
-pub use plan::{Action, Drive, Knowledge, Outcome, PlanNode};
+pub use plan::{Action, Drive, Execution, ExecutionError, Knowledge, Outcome, PlanNode, outcomes, worlds};
 pub use planner::{ContingencyError, ContingencyStats, Planned, PlannerOptions, plan};
 #[doc(hidden)]
 #[allow(deprecated)]
 pub use planner::{PlanError, PlanStats};
 pub use spec::TerrainSpec;
-pub use terrain::{ChokePoint, Terrain, TerrainError, grid_from_rows};
+pub use terrain::{ChokePoint, MAX_CHOKE_POINTS, Terrain, TerrainError, grid_from_rows};

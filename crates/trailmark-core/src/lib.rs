@@ -42,9 +42,17 @@ pub mod termination;
 pub mod union_find;
 pub mod world;
 
+// One documented path per item: the vocabulary's families above (`grid::Cell`,
+// `graph::Successors`). The everyday names stay usable from the root, undocumented there.
+#[doc(hidden)]
 pub use cost::Cost;
+#[doc(hidden)]
 pub use graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
+#[doc(hidden)]
 pub use grid::{Cell, Connectivity, Grid, GridError, GridHeuristic};
+#[doc(hidden)]
 pub use path::Path;
+#[doc(hidden)]
 pub use termination::{Stop, Termination};
+#[doc(hidden)]
 pub use union_find::UnionFind;

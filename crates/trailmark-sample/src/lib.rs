@@ -45,25 +45,41 @@
 
 #![deny(missing_docs)]
 
+// One documented path per item: the root, or for the three families that read better under
+// their names, `arm::`, `benchmark::` and `paths::`. The other modules stay public, hidden,
+// for one release.
 pub mod arm;
 pub mod benchmark;
+#[doc(hidden)]
 pub mod boxes;
+#[doc(hidden)]
 pub mod nearest;
 pub mod paths;
+#[doc(hidden)]
 pub mod plan;
+#[doc(hidden)]
 pub mod planner;
+#[doc(hidden)]
 pub mod prm;
+#[doc(hidden)]
 pub mod problem;
+#[doc(hidden)]
 pub mod rrt;
+#[doc(hidden)]
 pub mod rrt_connect;
+#[doc(hidden)]
 pub mod rrt_star;
 mod run;
+#[doc(hidden)]
 pub mod sampler;
+#[doc(hidden)]
 pub mod simplify;
+#[doc(hidden)]
 pub mod space;
 #[doc(hidden)]
 pub mod termination;
 mod tree;
+#[doc(hidden)]
 pub mod validity;
 
 pub use boxes::BoxWorld;
@@ -74,18 +90,21 @@ pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
 pub use plan::Stop;
 pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution};
 pub use planner::Planner;
-pub use prm::Prm;
-pub use problem::{Goal, GoalState, Problem};
+pub use prm::{Connection, Growth, Prm};
+pub use problem::{Goal, GoalState, Problem, admit};
 /// The `rand` crate (0.10) the generator implements: `rand::RngExt` draws ranges and floats.
 pub use rand;
 /// The random generator the planners and state spaces draw from (`rand_chacha` 0.10), so a
 /// user's own space or sampler needs no version-matched dependency.
 pub use rand_chacha::ChaCha8Rng;
 pub use rrt::Rrt;
-pub use rrt_connect::RrtConnect;
-pub use rrt_star::RrtStar;
+pub use rrt_connect::{MAX_CONNECT_STEPS, MAX_GOAL_ROOTS, RrtConnect};
+pub use rrt_star::{RrtStar, neighbour_count};
 pub use run::{MIN_RELATIVE_RANGE, RrtOptions};
-pub use sampler::{Bridge, Draw, Gaussian, Halton, SamplerError, StateSampler, Uniform};
+pub use sampler::{
+    Bridge, DEFAULT_ATTEMPTS, DEFAULT_SHARE, Draw, Gaussian, Halton, MAX_ATTEMPTS, SamplerError,
+    StateSampler, Uniform,
+};
 pub use simplify::shortcut;
 pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace, UnitCube};
 #[allow(deprecated)]

@@ -1,4 +1,4 @@
-//! The contingency section of `cargo xtask bench`: contingency plans over choke points against
+//! The contingency section: contingency plans over choke points against
 //! following the shortest path and replanning with D* Lite.
 //!
 //! The terrains: seeded river terrains (bridges, fords, forest roads; 64 x 48), and, when the
@@ -17,7 +17,10 @@ use trailmark::contingency::generate::{RiverOptions, river_terrain};
 use trailmark::contingency::simulate::{monte_carlo, naive_expected_cost};
 use trailmark::contingency::{PlannerOptions, Terrain, plan};
 
-use crate::bench::{Suite, median};
+use crate::bench::progress::SectionProgress;
+use crate::bench::stats::median;
+use crate::bench::suite::Suite;
+use crate::terrain_file::read_spec;
 
 /// Monte Carlo worlds per terrain.
 const SAMPLES: usize = 1000;
@@ -73,8 +76,8 @@ fn terrains(suite: Suite, movingai: Option<&Path>) -> Result<Vec<(String, Terrai
     }
     match movingai {
         Some(dir) => {
-            let file = crate::workspace_root().join("docs/contingency-rooms.json");
-            let mut spec = crate::contingency::read_spec(&file)?;
+            let file = crate::workspace::root().join("docs/contingency-rooms.json");
+            let mut spec = read_spec(&file)?;
             let map = dir.join("maps/rooms/64room_000.map");
             spec.movingai = Some(map.to_string_lossy().into_owned());
             let terrain = spec.build(Path::new(".")).map_err(|e| format!("{}: {e}", file.display()))?;
@@ -93,7 +96,7 @@ pub fn bench_contingency(
     movingai: Option<&Path>,
 ) -> Result<Vec<ContingencyRow>, String> {
     let terrains = terrains(suite, movingai)?;
-    let mut progress = crate::progress::Progress::new("contingency", terrains.len());
+    let mut progress = SectionProgress::new("contingency", terrains.len());
     let mut rows = Vec::new();
     for (name, terrain) in &terrains {
         progress.step(name.clone());

@@ -7,6 +7,10 @@
 //! section ([`grid`], [`navigation`], [`anytime`], [`roadmaps`], [`sampling`], [`contingency`]),
 //! none of which uses another. At the top, this module: the options, which sections run, and the
 //! report assembled from each section's part.
+//!
+//! Timed sections run one at a time on the main thread; untimed work (the suite's maps and
+//! reference costs, the contingency section's checks) runs beside them on a thread of its own,
+//! and [`times`] records both for the report's time line.
 
 mod anytime;
 mod contingency;
@@ -20,22 +24,23 @@ mod roadmaps;
 mod sampling;
 mod stats;
 mod suite;
+mod times;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::Instant;
 
 use serde::Serialize;
 
-use anytime::AnytimeRow;
+use anytime::{AnytimePart, AnytimeRow};
 use contingency::ContingencyRow;
-use grid::{GridRow, PeerRatio};
+use grid::{GridPlanner, GridRow, PeerRatio};
 use navigation::{NavRatio, NavRow};
 use ompl::OmplDriver;
 use report::{Figure, GoalRow};
 use roadmaps::RoadmapReport;
 use sampling::SamplingReport;
 use suite::{Suite, SuiteMap};
+use times::RunTimes;
 
 /// Options of `cargo xtask bench`.
 #[derive(clap::Args)]
@@ -56,7 +61,7 @@ pub struct Args {
     #[arg(long)]
     no_movingai: bool,
     /// Run only these planners (comma-separated names from the report: the grid planners, and
-    /// `rrt`, `rrt_connect`, `rrt_connect_bridge`, `rrt_star`, `prm_star` of the sampling section).
+    /// the sampling section's; an unknown name gets the list of them all).
     #[arg(long, value_delimiter = ',')]
     only: Vec<String>,
     /// Print the results as JSON on standard output instead of the table.
@@ -160,9 +165,9 @@ impl BenchReport {
             + self.contingency.iter().filter(|r| r.error).count()
     }
 
-    /// The report, `anytime_plot` (the anytime section's plot and its sentence) after the table
-    /// of maps.
-    fn markdown(&self, anytime_plot: &str) -> String {
+    /// The report: `time_line` after the versions, `anytime_plot` (the anytime section's plot
+    /// and its sentence) after the table of maps.
+    fn markdown(&self, time_line: &str, anytime_plot: &str) -> String {
         let mut out = format!(
             "# trailmark benchmark: suite `{}`, {}\n\nSeed {}, {} round(s) per query (each query's time is its median over rounds), {} core(s). \
              8-connected grids, no corner cutting, octile heuristic; weighted A* with w = {}.\n\n",
@@ -175,6 +180,7 @@ impl BenchReport {
         );
         let versions: Vec<String> = self.versions.iter().map(|(n, v)| format!("{n} {v}")).collect();
         out.push_str(&format!("Versions: {}.\n\n", versions.join(", ")));
+        out.push_str(time_line);
         out.push_str(&report::goals_markdown(&self.goals()));
         out.push_str(&grid::markdown(&self.results, &self.ratios));
         out.push_str(&navigation::markdown(&self.navigation, &self.navigation_ratios));
@@ -232,6 +238,83 @@ fn suite_maps(args: &Args, dir: &Path) -> Result<Vec<SuiteMap>, String> {
     Ok(maps)
 }
 
+/// What the sections measured, before the report is assembled.
+struct Parts {
+    maps: Vec<SuiteMap>,
+    results: Vec<GridRow>,
+    navigation: Vec<NavRow>,
+    anytime: Option<AnytimePart>,
+    roadmaps: Option<RoadmapReport>,
+    sampling: Option<SamplingReport>,
+    contingency: Vec<ContingencyRow>,
+    date: String,
+}
+
+/// Runs the chosen sections one after the other on this thread, and the untimed work that does
+/// not need them (the suite's maps, the contingency section's checks) beside them on threads of
+/// `scope`. Timed sections never run side by side (on 2 cores they would slow each other), and
+/// nothing runs beside the roadmaps section, which times builds on every core.
+fn run_parts<'scope>(
+    scope: &'scope std::thread::Scope<'scope, '_>,
+    args: &'scope Args,
+    planners: &[&GridPlanner],
+    sampling_named: bool,
+    times: &mut RunTimes,
+) -> Result<Parts, String> {
+    let wants = |section| args.sections.contains(&section);
+    // The grid and anytime sections search the maps; the others do not need them.
+    let needs_maps = wants(Section::Grid) || wants(Section::Anytime);
+    let dir = args.movingai.clone().unwrap_or_else(|| crate::workspace::root().join("../shared/movingai"));
+    let movingai_dir = (!args.no_movingai && dir.is_dir()).then(|| dir.clone());
+    let maps = needs_maps
+        .then(|| RunTimes::beside(scope, "maps and reference costs", move || suite_maps(args, &dir)));
+    // The contingency section plans first, so that its checks run beside the sections after it.
+    let mut contingency = None;
+    if wants(Section::Contingency) && args.only.is_empty() {
+        let planned = times.section("contingency", || {
+            contingency::plan_terrains(args.suite, args.runs, movingai_dir.as_deref())
+        })?;
+        let seed = args.seed;
+        contingency =
+            Some(RunTimes::beside(scope, "contingency checks", move || contingency::check(&planned, seed)));
+    }
+    let maps = match maps {
+        Some(job) => times.join(job)??,
+        None => Vec::new(),
+    };
+    let date = report::today();
+    let mut results = Vec::new();
+    if wants(Section::Grid) && !planners.is_empty() {
+        results = times.section("grid", || grid::bench_grid(&maps, planners, args.runs));
+    }
+    let mut navigation = Vec::new();
+    if wants(Section::Navigation) {
+        navigation = times.section("navigation", || {
+            let cases = navigation::nav_cases(args.suite, args.seed, movingai_dir.as_deref())?;
+            navigation::bench_navigation(&cases, args.runs)
+        })?;
+    }
+    let anytime = wants(Section::Anytime)
+        .then(|| times.section("anytime", || anytime::bench(&maps, args.suite, args.runs)));
+    let contingency = match contingency {
+        Some(job) => times.join(job)??,
+        None => Vec::new(),
+    };
+    let mut roadmaps = None;
+    if wants(Section::Roadmaps) {
+        roadmaps =
+            Some(times.section("roadmaps", || roadmaps::bench_roadmaps(args.suite, args.seed, args.runs))?);
+    }
+    let mut sampling = None;
+    if wants(Section::Sampling) && sampling_named {
+        let driver = ompl_driver(args);
+        sampling = Some(times.section("sampling", || {
+            sampling::bench(args.suite, args.seed, driver.as_ref(), &date, &args.only)
+        })?);
+    }
+    Ok(Parts { maps, results, navigation, anytime, roadmaps, sampling, contingency, date })
+}
+
 /// Runs the benchmark and writes its report; exit 1 when a planner broke its cost bound.
 pub fn run(args: &Args) -> ExitCode {
     match run_sections(args) {
@@ -260,44 +343,17 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
     // With `--only`, the sections of planners not named have nothing to run.
     let sampling_named =
         args.only.is_empty() || args.only.iter().any(|o| sampling_names.contains(&o.as_str()));
-    let clock = Instant::now();
-    // The grid and anytime sections search the maps; the others do not need them.
-    let needs_maps = args.sections.iter().any(|s| matches!(s, Section::Grid | Section::Anytime));
-    let dir = args.movingai.clone().unwrap_or_else(|| crate::workspace::root().join("../shared/movingai"));
-    let maps = if needs_maps { suite_maps(args, &dir)? } else { Vec::new() };
-    let movingai_dir = (!args.no_movingai && dir.is_dir()).then_some(dir.as_path());
-    let date = report::today();
-    let mut results = Vec::new();
-    if args.sections.contains(&Section::Grid) && !planners.is_empty() {
-        results = grid::bench_grid(&maps, &planners, args.runs);
-    }
-    let mut navigation = Vec::new();
-    if args.sections.contains(&Section::Navigation) {
-        let cases = navigation::nav_cases(args.suite, args.seed, movingai_dir)?;
-        navigation = navigation::bench_navigation(&cases, args.runs)?;
-    }
-    let mut anytime =
-        args.sections.contains(&Section::Anytime).then(|| anytime::bench(&maps, args.suite, args.runs));
-    let mut roadmaps = None;
-    if args.sections.contains(&Section::Roadmaps) {
-        roadmaps = Some(roadmaps::bench_roadmaps(args.suite, args.seed, args.runs)?);
-    }
-    let mut sampling = None;
-    if args.sections.contains(&Section::Sampling) && sampling_named {
-        let driver = ompl_driver(args);
-        sampling = Some(sampling::bench(args.suite, args.seed, driver.as_ref(), &date, &args.only)?);
-    }
-    let mut contingency = Vec::new();
-    if args.sections.contains(&Section::Contingency) && args.only.is_empty() {
-        contingency = contingency::bench_contingency(args.suite, args.seed, args.runs, movingai_dir)?;
-    }
+    let mut times = RunTimes::start();
+    let parts = std::thread::scope(|scope| run_parts(scope, args, &planners, sampling_named, &mut times))?;
+    let Parts { maps, results, navigation, mut anytime, roadmaps, sampling, contingency, date } = parts;
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let report = BenchReport {
         suite: args.suite,
         versions: report::locked_versions(&["trailmark", "pathfinding"]),
         date,
         seed: args.seed,
         runs: args.runs,
-        cores: std::thread::available_parallelism().map_or(1, |n| n.get()),
+        cores,
         maps: maps.iter().map(MapInfo::of).collect(),
         ratios: grid::ratios(&results),
         results,
@@ -317,7 +373,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         }
     }
     let anytime_plot = anytime.as_ref().map_or(String::new(), |a| a.cost_time_markdown());
-    let text = report.markdown(&anytime_plot);
+    let text = report.markdown(&times.markdown(cores), &anytime_plot);
     figures.extend(anytime.iter().flat_map(|a| a.figures()));
     figures.extend(report.sampling.iter().flat_map(|s| s.figures.iter().cloned()));
     let json = serde_json::to_string_pretty(&report).expect("serializable");
@@ -333,7 +389,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
     if let Err(e) = written {
         return Err(format!("cannot write the report to {}: {e}", folder.display()));
     }
-    errln!("report written to {} ({:.0} s)", folder.display(), clock.elapsed().as_secs_f64());
+    errln!("report written to {} ({:.0} s)", folder.display(), times.elapsed());
     let errors = report.errors();
     if errors > 0 {
         errln!("error: {errors} queries broke their planner's cost bound (see the cost errors column)");

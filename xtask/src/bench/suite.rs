@@ -17,7 +17,7 @@ use crate::region::largest_region;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Suite {
-    /// Generated maps with 100 queries each; MovingAI maps with 20 queries each.
+    /// Generated maps with 50 queries each; MovingAI maps with 10 queries each.
     Quick,
     /// Generated maps with 400 queries each; MovingAI maps with 100 queries each.
     Full,
@@ -35,13 +35,14 @@ impl Suite {
     /// Queries per generated map, queries per MovingAI map.
     pub fn queries(self) -> (usize, usize) {
         match self {
-            Suite::Quick => (100, 20),
+            Suite::Quick => (50, 10),
             Suite::Full => (400, 100),
         }
     }
 }
 
 /// A query between two cells with its reference cost.
+#[derive(Clone, Copy)]
 pub struct GridQuery {
     /// Where it starts.
     pub start: Cell,
@@ -59,8 +60,20 @@ pub struct SuiteMap {
     pub source: &'static str,
     /// The map.
     pub grid: Grid,
-    /// Its queries.
+    /// The queries the grid section times: `n` spread over the map's list.
     pub queries: Vec<GridQuery>,
+    /// The map's whole list of queries, which other samples are drawn from: a MovingAI
+    /// scenario file's (short to long), or the generated queries themselves.
+    list: Vec<GridQuery>,
+}
+
+impl SuiteMap {
+    /// `n` queries spread over the first half of the map's list: the shorter half of a MovingAI
+    /// scenario file, the same queries whatever the suite's sample size.
+    pub fn shorter_half(&self, n: usize) -> Vec<GridQuery> {
+        let half = &self.list[..(self.list.len() / 2).max(1).min(self.list.len())];
+        half.iter().step_by((half.len() / n.max(1)).max(1)).take(n).copied().collect()
+    }
 }
 
 /// Seeded queries between cells of the largest reachable region, with Dijkstra's cost.
@@ -91,7 +104,8 @@ pub fn generated_maps(seed: u64, n: usize) -> Vec<SuiteMap> {
         .map(|(name, grid)| {
             let grid = grid.expect("valid generator arguments");
             let queries = generated_queries(&grid, n, &mut rng);
-            SuiteMap { name: format!("{name}-s{seed}"), source: "generated", grid, queries }
+            let list = queries.clone();
+            SuiteMap { name: format!("{name}-s{seed}"), source: "generated", grid, queries, list }
         })
         .collect()
 }
@@ -117,16 +131,15 @@ pub fn movingai_maps(dir: &Path, n: usize) -> Result<Vec<SuiteMap>, String> {
             let Some(map_file) = file.strip_suffix(".scen") else { continue };
             let map = dir.join("maps").join(set.file_name().unwrap_or_default()).join(map_file);
             let grid = movingai::read_map(&map).map_err(|e| e.to_string())?;
-            let all = movingai::read_scenarios(&scen).map_err(|e| e.to_string())?;
-            let step = (all.len() / n).max(1);
-            let queries = all
+            let list: Vec<GridQuery> = movingai::read_scenarios(&scen)
+                .map_err(|e| e.to_string())?
                 .iter()
-                .step_by(step)
-                .take(n)
                 .map(|s| GridQuery { start: s.start, goal: s.goal, optimal: s.optimal_length })
                 .collect();
+            let step = (list.len() / n).max(1);
+            let queries = list.iter().step_by(step).take(n).copied().collect();
             let name = map_file.trim_end_matches(".map").to_string();
-            maps.push(SuiteMap { name, source: "movingai", grid, queries });
+            maps.push(SuiteMap { name, source: "movingai", grid, queries, list });
         }
     }
     Ok(maps)

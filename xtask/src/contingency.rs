@@ -11,8 +11,9 @@ use serde_json::{Value, json};
 use trailmark::contingency::generate::{RiverOptions, river_terrain};
 use trailmark::contingency::simulate::{monte_carlo, naive_expected_cost};
 use trailmark::contingency::svg::plan_svg;
-use trailmark::contingency::{PlannerOptions, Terrain, TerrainSpec, plan};
-use trailmark::core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
+use trailmark::contingency::{PlannerOptions, Terrain, plan};
+
+use crate::terrain_file::read_spec;
 
 /// The arguments of `cargo xtask contingency`.
 #[derive(Debug, ClapArgs)]
@@ -83,12 +84,6 @@ pub fn run(args: &Args) -> ExitCode {
         }
         Err(e) => crate::output::error_report(e),
     }
-}
-
-/// Reads a terrain file (see `TerrainSpec`) without building the terrain.
-pub fn read_spec(path: &Path) -> Result<TerrainSpec, String> {
-    let text = read_to_string_capped(path, MAX_DOCUMENT_BYTES).map_err(|e| e.to_string())?;
-    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
 }
 
 fn load(args: &Args) -> Result<Terrain, String> {

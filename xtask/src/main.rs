@@ -15,29 +15,24 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Parser, Subcommand};
 use trailmark::graph::visibility::Edges;
+
+use crate::verify::VerifyAlgo;
 
 #[macro_use]
 mod output;
 
 mod bench;
-mod bench_boxes;
-mod bench_contingency;
-mod bench_limits;
-mod bench_prm;
-mod bench_replan;
-mod bench_roadmap;
-mod bench_sampling;
-mod bench_spaces;
 mod contingency;
 mod memory;
 mod navigate;
-mod ompl;
-mod plots;
-mod progress;
+mod reference;
+mod region;
 mod solve;
+mod terrain_file;
 mod verify;
+mod workspace;
 
 #[derive(Parser)]
 #[command(
@@ -107,15 +102,6 @@ enum VerifySet {
     },
 }
 
-/// An optimal algorithm that `verify` checks.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum VerifyAlgo {
-    /// A* with the octile heuristic.
-    Astar,
-    /// Dijkstra's algorithm.
-    Dijkstra,
-}
-
 /// Every allocation is counted, for the benchmark's peak-memory figures.
 #[global_allocator]
 static ALLOCATOR: memory::Counting = memory::Counting;
@@ -136,10 +122,4 @@ fn main() -> ExitCode {
         Command::Navigate(args) => navigate::run(&args),
         Command::Contingency(args) => contingency::run(&args),
     }
-}
-
-/// The workspace root (the parent of this package's folder).
-pub fn workspace_root() -> PathBuf {
-    let here = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    here.parent().map(PathBuf::from).unwrap_or(here)
 }

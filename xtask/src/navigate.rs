@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args as ClapArgs, ValueEnum};
-use rand::{RngExt, SeedableRng};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 use trailmark::core::generate;
@@ -168,21 +168,6 @@ struct Summary {
     runs: Vec<RunSummary>,
 }
 
-/// A start and a goal in the largest region reached from a few seeded cells, the goal the
-/// farthest of a few seeded candidates from the start.
-pub fn endpoints(grid: &Grid, rng: &mut ChaCha8Rng) -> Option<(Cell, Cell)> {
-    let graph = GridGraph::new(grid, Connectivity::Eight);
-    let mut search = Search::new();
-    let region = crate::bench::largest_region(grid, &graph, &mut search, rng)?;
-    let start = region[rng.random_range(0..region.len())];
-    search.dijkstra_all(&graph, start).ok()?;
-    let goal = (0..16).map(|_| region[rng.random_range(0..region.len())]).max_by(|a, b| {
-        let (ca, cb) = (search.cost_to(&graph, *a), search.cost_to(&graph, *b));
-        ca.partial_cmp(&cb).unwrap_or(std::cmp::Ordering::Equal)
-    })?;
-    Some((start, goal))
-}
-
 /// The planner settings for a name.
 pub fn choice(
     name: PlannerName,
@@ -219,7 +204,7 @@ fn simulate(args: &Args) -> Result<String, String> {
         (Some(s), Some(g)) => (s, Some(g)),
         (Some(s), None) if args.explore => (s, None),
         _ => {
-            let (s, g) = endpoints(&truth, &mut rng).ok_or("the map has no passable cell")?;
+            let (s, g) = crate::region::endpoints(&truth, &mut rng).ok_or("the map has no passable cell")?;
             (args.start.unwrap_or(s), if args.explore { None } else { Some(args.goal.unwrap_or(g)) })
         }
     };

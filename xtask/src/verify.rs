@@ -12,23 +12,26 @@ use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::movingai::{self, Scenario};
 use trailmark::prelude::*;
 
-use crate::VerifyAlgo;
+use crate::reference::tolerance;
 
-/// The tolerance on a published length: they are rounded (to 6 significant digits in most sets,
-/// to 2 decimals in bg512).
-pub fn tolerance(optimal: f64) -> f64 {
-    1e-4 * optimal.max(1.0) + 0.006
+/// An optimal algorithm that `verify` checks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum VerifyAlgo {
+    /// A* with the octile heuristic.
+    Astar,
+    /// Dijkstra's algorithm.
+    Dijkstra,
 }
 
 /// One map and its scenario file.
-struct Job {
+struct ScenarioFile {
     name: String,
     map: PathBuf,
     scen: PathBuf,
 }
 
 /// What checking one map gave.
-struct Outcome {
+struct MapCheck {
     name: String,
     passed: u64,
     failed: u64,
@@ -37,7 +40,7 @@ struct Outcome {
 }
 
 /// Lists `DIR/scenarios/<set>/<name>.map.scen` with their maps `DIR/maps/<set>/<name>.map`.
-fn jobs(dir: &Path) -> Result<Vec<Job>, String> {
+fn jobs(dir: &Path) -> Result<Vec<ScenarioFile>, String> {
     let scenarios = dir.join("scenarios");
     let read = |d: &Path| std::fs::read_dir(d).map_err(|e| format!("cannot list {}: {e}", d.display()));
     let mut jobs = Vec::new();
@@ -55,7 +58,7 @@ fn jobs(dir: &Path) -> Result<Vec<Job>, String> {
             };
             let map = dir.join("maps").join(&set_name).join(map_name);
             let name = format!("{set_name}/{}", map_name.trim_end_matches(".map"));
-            jobs.push(Job { name, map, scen });
+            jobs.push(ScenarioFile { name, map, scen });
         }
     }
     jobs.sort_by(|a, b| a.name.cmp(&b.name));
@@ -65,10 +68,10 @@ fn jobs(dir: &Path) -> Result<Vec<Job>, String> {
     Ok(jobs)
 }
 
-fn check(job: &Job, algos: &[VerifyAlgo], every: u64) -> Outcome {
+fn check(job: &ScenarioFile, algos: &[VerifyAlgo], every: u64) -> MapCheck {
     let clock = Instant::now();
     let mut out =
-        Outcome { name: job.name.clone(), passed: 0, failed: 0, messages: Vec::new(), seconds: 0.0 };
+        MapCheck { name: job.name.clone(), passed: 0, failed: 0, messages: Vec::new(), seconds: 0.0 };
     let loaded = movingai::read_map(&job.map)
         .map_err(|e| e.to_string())
         .and_then(|g| movingai::read_scenarios(&job.scen).map(|s| (g, s)).map_err(|e| e.to_string()));
@@ -151,7 +154,7 @@ pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
     let clock = Instant::now();
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(jobs.len());
     let next = std::sync::atomic::AtomicUsize::new(0);
-    let mut outcomes: Vec<Option<Outcome>> = (0..jobs.len()).map(|_| None).collect();
+    let mut outcomes: Vec<Option<MapCheck>> = (0..jobs.len()).map(|_| None).collect();
     let done = std::sync::Mutex::new(&mut outcomes);
     std::thread::scope(|scope| {
         for _ in 0..threads {

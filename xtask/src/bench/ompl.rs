@@ -8,13 +8,14 @@ use std::process::Command;
 
 use serde::{Deserialize, Serialize};
 use trailmark::core::world::PolygonWorld;
+use trailmark::sample::benchmark::RunRecord;
 
 /// How to get what the driver needs, for the message shown when it is missing.
 pub const INSTALL: &str = "install OMPL and nlohmann-json with `sudo apt-get install libompl-dev \
                            nlohmann-json3-dev` (Debian, Ubuntu) and run again";
 
 /// The compiled driver.
-pub struct Driver {
+pub struct OmplDriver {
     program: PathBuf,
     /// The OMPL version pkg-config reports.
     pub version: String,
@@ -22,13 +23,13 @@ pub struct Driver {
 
 /// What the driver is asked to run.
 #[derive(Serialize)]
-pub struct Input<'a> {
+pub struct OmplInput<'a> {
     /// A polygon world (the same document trailmark reads).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub world: Option<&'a PolygonWorld>,
     /// Or a box world.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub boxes: Option<Boxes>,
+    pub boxes: Option<OmplBoxes>,
     /// `rrt`, `rrt_connect`, `rrt_star` or `prm_star`; in a box world also `informed_rrt_star`
     /// and `bit_star`.
     pub planner: &'a str,
@@ -48,7 +49,7 @@ pub struct Input<'a> {
 
 /// A box world for the driver: the region and the boxes' corners.
 #[derive(Serialize)]
-pub struct Boxes {
+pub struct OmplBoxes {
     /// The region's low corner.
     pub low: Vec<f64>,
     /// Its high corner.
@@ -59,7 +60,7 @@ pub struct Boxes {
 
 /// How OMPL's PRMstar grew the roadmap its queries share.
 #[derive(Debug, Clone, Deserialize, Serialize)]
-pub struct Build {
+pub struct OmplRoadmap {
     /// The time of growing it, seconds.
     pub time_s: f64,
     /// Its milestones.
@@ -72,7 +73,7 @@ pub struct Build {
 
 /// One run of an OMPL planner.
 #[derive(Debug, Clone, Deserialize, Serialize)]
-pub struct Run {
+pub struct OmplRun {
     /// The index of the query.
     pub query: usize,
     /// The run of that query.
@@ -95,18 +96,34 @@ pub struct Run {
     pub improvements: Vec<(f64, f64)>,
 }
 
-impl Run {
+impl OmplRun {
     /// Whether OMPL found an exact solution.
     pub fn exact(&self) -> bool {
         self.status == "exact"
     }
+
+    /// The run as a record of the OMPL-format log.
+    pub fn record(&self) -> RunRecord {
+        RunRecord {
+            time_s: self.time_s,
+            solved: self.exact(),
+            approximate: self.status == "approximate",
+            memory_bytes: None,
+            graph_states: self.states,
+            solution_length: self.cost.filter(|_| self.exact()),
+            iterations: self.iterations,
+            collision_checks: self.collision_checks,
+            progress: self.improvements.clone(),
+            ..RunRecord::default()
+        }
+    }
 }
 
 #[derive(Deserialize)]
-struct Output {
-    runs: Vec<Run>,
+struct OmplOutput {
+    runs: Vec<OmplRun>,
     #[serde(default)]
-    build: Option<Build>,
+    build: Option<OmplRoadmap>,
 }
 
 fn run_tool(command: &mut Command, what: &str) -> Result<String, String> {
@@ -129,15 +146,15 @@ fn newer(a: &Path, b: &Path) -> bool {
     }
 }
 
-impl Driver {
+impl OmplDriver {
     /// Builds the driver (when its source or the checker changed); an error that says what to
     /// install when OMPL or nlohmann-json is missing.
-    pub fn build() -> Result<Driver, String> {
+    pub fn build() -> Result<OmplDriver, String> {
         let version =
             pkg_config(&["--modversion", "ompl"]).map_err(|_| format!("OMPL not found: {INSTALL}"))?;
         pkg_config(&["--exists", "nlohmann_json"])
             .map_err(|_| format!("nlohmann-json not found: {INSTALL}"))?;
-        let root = crate::workspace_root();
+        let root = crate::workspace::root();
         let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
         run_tool(
             Command::new(cargo).current_dir(&root).args([
@@ -173,22 +190,22 @@ impl Driver {
                 .args(["-ldl", "-lm"]);
             run_tool(&mut command, "the C++ compiler")?;
         }
-        Ok(Driver { program, version })
+        Ok(OmplDriver { program, version })
     }
 
     /// Runs `input` and returns the runs, query by query.
-    pub fn run(&self, input: &Input<'_>) -> Result<Vec<Run>, String> {
+    pub fn run(&self, input: &OmplInput<'_>) -> Result<Vec<OmplRun>, String> {
         Ok(self.output(input)?.runs)
     }
 
     /// Runs `input` of `prm_star`: the roadmap's build, then the runs, query by query.
-    pub fn run_roadmap(&self, input: &Input<'_>) -> Result<(Build, Vec<Run>), String> {
+    pub fn run_roadmap(&self, input: &OmplInput<'_>) -> Result<(OmplRoadmap, Vec<OmplRun>), String> {
         let out = self.output(input)?;
         let build = out.build.ok_or("the OMPL driver did not report a roadmap")?;
         Ok((build, out.runs))
     }
 
-    fn output(&self, input: &Input<'_>) -> Result<Output, String> {
+    fn output(&self, input: &OmplInput<'_>) -> Result<OmplOutput, String> {
         let file = self.program.with_file_name(format!("input-{}.json", std::process::id()));
         let text = serde_json::to_string(input).map_err(|e| e.to_string())?;
         std::fs::write(&file, text).map_err(|e| format!("cannot write {}: {e}", file.display()))?;

@@ -22,8 +22,11 @@ use trailmark::sample::{
     Dubins, KdNearest, Plan, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace,
 };
 
-use crate::bench_sampling::{ConnectStats, Tally, World};
+use crate::bench::sampling::tally::{ConnectStats, ConnectTally};
+use crate::bench::sampling::world::{PlaneQuery, SamplingWorld};
 
+/// The worlds where RRT-Connect also plans for a Dubins car.
+pub const DUBINS_WORLDS: [&str; 2] = ["convex-30", "bug-trap"];
 /// The Dubins car's turning radius.
 pub const TURNING_RADIUS: f64 = 1.0;
 /// The iteration limit of every run.
@@ -51,7 +54,13 @@ pub struct SpaceRow {
 
 /// Adds one run taking `ms` to `tally`; `checked` re-checks its path and returns its cost,
 /// `None` when the path fails.
-fn add<T>(tally: &mut Tally, plan: &Plan<T>, ms: f64, bound: f64, checked: impl FnOnce(&[T]) -> Option<f64>) {
+fn add<T>(
+    tally: &mut ConnectTally,
+    plan: &Plan<T>,
+    ms: f64,
+    bound: f64,
+    checked: impl FnOnce(&[T]) -> Option<f64>,
+) {
     let counts = (ms, plan.stats.iterations, plan.stats.collision_checks);
     let path = plan.path();
     tally.add(Some(bound), counts, path.is_some(), |_| path.and_then(checked));
@@ -60,17 +69,13 @@ fn add<T>(tally: &mut Tally, plan: &Plan<T>, ms: f64, bound: f64, checked: impl 
 /// RRT-Connect for the Dubins car on `w`'s queries that have a path for the disc robot, each
 /// end given a seeded heading from which the car can drive a full circle (so neither end is a
 /// pose it cannot leave or reach, such as facing a wall at less than its turning radius).
-pub fn bench_dubins(
-    w: &World,
-    queries: &[(Point, Point, Option<f64>)],
-    seed: u64,
-) -> Result<SpaceRow, String> {
+pub fn bench_dubins(w: &SamplingWorld, queries: &[PlaneQuery], seed: u64) -> Result<SpaceRow, String> {
     let err = |e: &dyn std::fmt::Display| format!("{}: Dubins: {e}", w.name);
     let space = Dubins::new(w.world.bounds(), TURNING_RADIUS).map_err(|e| err(&e))?;
     let nearest = KdNearest::<Dubins, 2>::new(&space).map_err(|e| err(&e))?;
     let limit = Termination::iterations(ITERATIONS);
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xd0b1);
-    let mut tally = Tally::default();
+    let mut tally = ConnectTally::default();
     for (i, &(a, b, best)) in queries.iter().enumerate() {
         let Some(best) = best else { continue };
         let mut pose = |p: Point| {
@@ -158,7 +163,7 @@ pub fn bench_arm(n: usize, seed: u64) -> Result<SpaceRow, String> {
             return q;
         }
     };
-    let mut tally = Tally::default();
+    let mut tally = ConnectTally::default();
     for i in 0..n {
         let (a, b) = (free(), free());
         let problem = Problem::new(&space, &validity, a, b);

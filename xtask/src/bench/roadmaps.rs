@@ -1,5 +1,5 @@
-//! The roadmap section of `cargo xtask bench`: the geometric builders on generated polygon
-//! worlds of 10 to 500 random convex hexagons.
+//! The roadmaps section: the geometric builders on generated polygon worlds of 10 to 500 random
+//! convex hexagons.
 //!
 //! For each world: the visibility graph's build time on one thread and on every core (and the
 //! exponent of the fitted power law in the number of boundary vertices: Lee's sweep is
@@ -22,7 +22,9 @@ use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::graph::{RoadmapQuery, Trapezoids};
 use trailmark::prelude::*;
 
-use crate::bench::{Suite, median};
+use crate::bench::progress::SectionProgress;
+use crate::bench::stats::{fitted_exponent, median};
+use crate::bench::suite::Suite;
 
 /// The side of the square worlds.
 const SIZE: f64 = 1000.0;
@@ -102,17 +104,6 @@ fn timed<T>(runs: u32, mut f: impl FnMut() -> T) -> (f64, T) {
     (median(&times), last.expect("at least one run"))
 }
 
-/// The least-squares exponent k of `y ~ x^k`.
-pub fn fitted_exponent(samples: &[(f64, f64)]) -> f64 {
-    let n = samples.len() as f64;
-    let (sx, sy) = samples.iter().fold((0.0, 0.0), |(a, b), &(x, y)| (a + x.ln(), b + y.ln()));
-    let (mx, my) = (sx / n, sy / n);
-    let (num, den) = samples
-        .iter()
-        .fold((0.0, 0.0), |(a, b), &(x, y)| (a + (x.ln() - mx) * (y.ln() - my), b + (x.ln() - mx).powi(2)));
-    num / den
-}
-
 /// Runs the section.
 pub fn bench_roadmaps(suite: Suite, seed: u64, runs: u32) -> Result<RoadmapReport, String> {
     let (counts, queries): (&[usize], usize) = match suite {
@@ -120,7 +111,7 @@ pub fn bench_roadmaps(suite: Suite, seed: u64, runs: u32) -> Result<RoadmapRepor
         Suite::Full => (&[10, 20, 50, 100, 200, 300, 500], 100),
     };
     let mut rows = Vec::new();
-    let mut progress = crate::progress::Progress::new("roadmaps", counts.len());
+    let mut progress = SectionProgress::new("roadmaps", counts.len());
     for &count in counts {
         progress.step(format!("{count} obstacles"));
         rows.push(bench_world(count, seed, runs, queries)?);

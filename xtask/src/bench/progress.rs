@@ -6,14 +6,14 @@ use std::io::IsTerminal;
 use indicatif::{ProgressBar, ProgressStyle};
 
 /// The progress of one section of the benchmark.
-pub struct Progress {
+pub struct SectionProgress {
     section: &'static str,
     len: u64,
     done: u64,
     bar: Option<ProgressBar>,
 }
 
-impl Progress {
+impl SectionProgress {
     /// A section of `len` steps.
     pub fn new(section: &'static str, len: usize) -> Self {
         let bar = std::io::stderr().is_terminal().then(|| {
@@ -27,7 +27,7 @@ impl Progress {
             bar.set_prefix(section);
             bar
         });
-        Progress { section, len: len as u64, done: 0, bar }
+        SectionProgress { section, len: len as u64, done: 0, bar }
     }
 
     /// Starts the next step, described by `what`.
@@ -51,7 +51,7 @@ impl Progress {
     }
 }
 
-impl Drop for Progress {
+impl Drop for SectionProgress {
     fn drop(&mut self) {
         if let Some(bar) = &self.bar {
             bar.finish_and_clear();

@@ -15,9 +15,9 @@ use trailmark::core::geometry::Point;
 use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
 use trailmark::prelude::*;
 
-use crate::bench::median;
-use crate::bench_sampling::{World, ompl_queries, points};
-use crate::ompl::Driver;
+use crate::bench::ompl::{OmplDriver, OmplInput};
+use crate::bench::sampling::world::{PlaneQuery, SamplingWorld, ompl_queries, points};
+use crate::bench::stats::median;
 
 /// The name in `--only`, the JSON results and the OMPL driver's input.
 pub const NAME: &str = "prm_star";
@@ -76,7 +76,7 @@ pub struct PrmStats {
 
 /// Per-query results as they come.
 #[derive(Default)]
-struct Tally {
+struct PrmTally {
     times_us: Vec<f64>,
     ratios: Vec<f64>,
     solvable: usize,
@@ -84,10 +84,10 @@ struct Tally {
     invalid: usize,
 }
 
-impl Tally {
+impl PrmTally {
     /// One query of optimum `best` (`None`: no path) answered in `us` with `path` (`None`:
     /// not connected).
-    fn add(&mut self, w: &World, (a, b, best): (Point, Point, Option<f64>), us: f64, path: Option<&[Point]>) {
+    fn add(&mut self, w: &SamplingWorld, (a, b, best): PlaneQuery, us: f64, path: Option<&[Point]>) {
         let Some(best) = best else {
             self.invalid += usize::from(path.is_some());
             return;
@@ -121,11 +121,11 @@ impl Tally {
 /// Builds trailmark's roadmap of `samples` on `w`, answers `queries` on it, and does the same
 /// with OMPL's when `ompl` is given.
 pub fn bench_prm(
-    w: &World,
-    queries: &[(Point, Point, Option<f64>)],
+    w: &SamplingWorld,
+    queries: &[PlaneQuery],
     samples: usize,
     seed: u64,
-    ompl: Option<&Driver>,
+    ompl: Option<&OmplDriver>,
 ) -> Result<PrmRow, String> {
     let err = |e: &dyn std::fmt::Display| format!("{}: PRM*: {e}", w.name);
     let options = PrmOptions {
@@ -137,7 +137,7 @@ pub fn bench_prm(
     let mut prm = Prm::new(w.world.clone(), options).map_err(|e| err(&e))?;
     prm.grow(samples).map_err(|e| err(&e))?;
     let build_ms = clock.elapsed().as_secs_f64() * 1e3;
-    let mut tally = Tally::default();
+    let mut tally = PrmTally::default();
     for &(a, b, best) in queries {
         let clock = Instant::now();
         let q = prm.query(a, b).map_err(|e| err(&e))?;
@@ -157,13 +157,13 @@ pub fn bench_prm(
 }
 
 fn ompl_prm(
-    w: &World,
-    queries: &[(Point, Point, Option<f64>)],
+    w: &SamplingWorld,
+    queries: &[PlaneQuery],
     samples: usize,
     seed: u64,
-    driver: &Driver,
+    driver: &OmplDriver,
 ) -> Result<PrmStats, String> {
-    let input = crate::ompl::Input {
+    let input = OmplInput {
         world: Some(&w.world),
         boxes: None,
         planner: NAME,
@@ -178,7 +178,7 @@ fn ompl_prm(
     if build.milestones < samples as u64 {
         return Err(format!("{}: OMPL's PRMstar grew {} of {samples} milestones", w.name, build.milestones));
     }
-    let mut tally = Tally::default();
+    let mut tally = PrmTally::default();
     for run in &runs {
         let query =
             *queries.get(run.query).ok_or_else(|| format!("{}: OMPL ran an unknown query", w.name))?;

@@ -17,6 +17,8 @@ use trailmark::sample::{
     Bridge, KdNearest, Planner, Prm, Problem, R2, Rn, Rrt, RrtConnect, RrtStar, Sampled, StateSpace, Validity,
 };
 
+use crate::bench::stats::upper_median;
+
 /// A configuration of the six joints.
 type Joints = <Rn<6> as StateSpace>::State;
 
@@ -43,11 +45,6 @@ pub struct LimitRow {
     pub ended: String,
 }
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
-}
-
 /// `planners` on `problem`, each measured.
 fn measure<S, V>(
     name: &str,
@@ -69,7 +66,7 @@ where
                 problem: name.into(),
                 planner: label,
                 runs: RUNS,
-                median_ms: median(runs.runs.iter().map(|r| r.time_s * 1e3).collect()),
+                median_ms: upper_median(runs.runs.iter().map(|r| r.time_s * 1e3).collect()),
                 largest_overshoot_ms: runs.largest_overshoot_s() * 1e3,
                 ended: if runs.runs.iter().any(|r| r.solved) { "solved".into() } else { "time limit".into() },
             },

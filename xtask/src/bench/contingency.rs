@@ -1,5 +1,5 @@
-//! The contingency section of `cargo xtask bench`: contingency plans over choke points against
-//! following the shortest path and replanning with D* Lite.
+//! The contingency section: contingency plans over choke points against following the shortest
+//! path and replanning with D* Lite.
 //!
 //! The terrains: seeded river terrains (bridges, fords, forest roads; 64 x 48), and, when the
 //! MovingAI folder is there, the rooms map of `docs/contingency-rooms.json` with its 16 detected
@@ -8,6 +8,9 @@
 //! computed exactly, so their difference is the saving with no sampling error); and the Monte
 //! Carlo mean of driving the plan over seeded worlds, as a check of the expected cost. A plan
 //! dearer than replanning breaks a bound the planner guarantees and counts as an error.
+//!
+//! The section comes in two halves: the timed planning ([`plan_terrains`]), and the untimed
+//! replanning costs and Monte Carlo ([`check`]), which may run beside other sections.
 
 use std::path::Path;
 use std::time::Instant;
@@ -15,9 +18,12 @@ use std::time::Instant;
 use serde::Serialize;
 use trailmark::contingency::generate::{RiverOptions, river_terrain};
 use trailmark::contingency::simulate::{monte_carlo, naive_expected_cost};
-use trailmark::contingency::{PlannerOptions, Terrain, plan};
+use trailmark::contingency::{Planned, PlannerOptions, Terrain, plan};
 
-use crate::bench::{Suite, median};
+use crate::bench::progress::SectionProgress;
+use crate::bench::stats::median;
+use crate::bench::suite::Suite;
+use crate::terrain_file::read_spec;
 
 /// Monte Carlo worlds per terrain.
 const SAMPLES: usize = 1000;
@@ -73,8 +79,8 @@ fn terrains(suite: Suite, movingai: Option<&Path>) -> Result<Vec<(String, Terrai
     }
     match movingai {
         Some(dir) => {
-            let file = crate::workspace_root().join("docs/contingency-rooms.json");
-            let mut spec = crate::contingency::read_spec(&file)?;
+            let file = crate::workspace::root().join("docs/contingency-rooms.json");
+            let mut spec = read_spec(&file)?;
             let map = dir.join("maps/rooms/64room_000.map");
             spec.movingai = Some(map.to_string_lossy().into_owned());
             let terrain = spec.build(Path::new(".")).map_err(|e| format!("{}: {e}", file.display()))?;
@@ -85,17 +91,27 @@ fn terrains(suite: Suite, movingai: Option<&Path>) -> Result<Vec<(String, Terrai
     Ok(out)
 }
 
-/// Runs the section.
-pub fn bench_contingency(
+/// A terrain of the section and what the timed planner made of it.
+pub struct PlannedTerrain {
+    name: String,
+    terrain: Terrain,
+    planned: Planned,
+    /// Planning time, milliseconds (median over the rounds).
+    plan_ms: f64,
+    /// Peak heap held while planning, bytes.
+    peak_bytes: usize,
+}
+
+/// The timed half of the section: the suite's terrains, each planned `runs` times.
+pub fn plan_terrains(
     suite: Suite,
-    seed: u64,
     runs: u32,
     movingai: Option<&Path>,
-) -> Result<Vec<ContingencyRow>, String> {
+) -> Result<Vec<PlannedTerrain>, String> {
     let terrains = terrains(suite, movingai)?;
-    let mut progress = crate::progress::Progress::new("contingency", terrains.len());
-    let mut rows = Vec::new();
-    for (name, terrain) in &terrains {
+    let mut progress = SectionProgress::new("contingency", terrains.len());
+    let mut out = Vec::new();
+    for (name, terrain) in terrains {
         progress.step(name.clone());
         let mut times = Vec::new();
         let mut planned = None;
@@ -103,13 +119,25 @@ pub fn bench_contingency(
         for _ in 0..runs {
             let memory = crate::memory::mark();
             let started = Instant::now();
-            let p = plan(terrain, &PlannerOptions::default()).map_err(|e| format!("{name}: {e}"))?;
+            let p = plan(&terrain, &PlannerOptions::default()).map_err(|e| format!("{name}: {e}"))?;
             times.push(started.elapsed().as_secs_f64() * 1e3);
             peak_bytes = crate::memory::peak_since(memory);
             planned = Some(p);
         }
         let planned = planned.ok_or("no rounds")?;
         times.sort_by(f64::total_cmp);
+        out.push(PlannedTerrain { name, terrain, planned, plan_ms: median(&times), peak_bytes });
+    }
+    Ok(out)
+}
+
+/// The untimed half: D* Lite replanning's exact expected cost on each terrain, and the Monte
+/// Carlo check of each plan (`seed`). Nothing in it is timed, so it may run beside the timed
+/// sections; it is the section's longest part (on the rooms map, over a thousand D* Lite drives
+/// for each).
+pub fn check(planned: &[PlannedTerrain], seed: u64) -> Result<Vec<ContingencyRow>, String> {
+    let mut rows = Vec::new();
+    for PlannedTerrain { name, terrain, planned, plan_ms, peak_bytes } in planned {
         let naive = naive_expected_cost(terrain).map_err(|e| format!("{name}: {e}"))?;
         let mc = monte_carlo(terrain, &planned.plan, SAMPLES, seed).map_err(|e| format!("{name}: {e}"))?;
         let expected = planned.expected_cost;
@@ -117,10 +145,10 @@ pub fn bench_contingency(
             terrain: name.clone(),
             size: (terrain.grid().width(), terrain.grid().height()),
             choke_points: terrain.choke_points().len(),
-            plan_ms: median(&times),
+            plan_ms: *plan_ms,
             states: planned.stats.states,
             expansions: planned.stats.expansions,
-            peak_bytes,
+            peak_bytes: *peak_bytes,
             plan_points: planned.plan.size(),
             expected_cost: expected,
             stuck_probability: planned.stuck_probability,

@@ -13,6 +13,12 @@ use trailmark::sample::{
     BoxWorld, ChaCha8Rng, KdNearest, Planner, Prm, Problem, Rn, RrtConnect, RrtStar, StateSpace,
 };
 
+use crate::bench::ompl::{OmplBoxes, OmplDriver, OmplInput, OmplRun};
+use crate::bench::stats::upper_median;
+
+/// The name in `--only`.
+pub const NAME: &str = "boxes";
+
 /// RRT-Connect's iteration limit per query.
 const CONNECT_ITERATIONS: u64 = 10_000;
 
@@ -38,11 +44,6 @@ pub struct BoxRow {
     pub median_cost_ratio: f64,
     /// Paths that failed the re-check.
     pub invalid: usize,
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
 /// A free state near `(c, c, ..., c)`.
@@ -119,16 +120,16 @@ fn row<const N: usize>(
         planner,
         runs: paths.len(),
         solved: ratios.len(),
-        median_ms: median(paths.iter().map(|p| p.1).collect()),
-        median_cost_ratio: median(ratios),
+        median_ms: upper_median(paths.iter().map(|p| p.1).collect()),
+        median_cost_ratio: upper_median(ratios),
         invalid,
     }
 }
 
 /// The driver's box world for `world`.
-fn ompl_boxes<const N: usize>(world: &BoxWorld<N>) -> crate::ompl::Boxes {
+fn ompl_boxes<const N: usize>(world: &BoxWorld<N>) -> OmplBoxes {
     let space = world.space();
-    crate::ompl::Boxes {
+    OmplBoxes {
         low: space.low().iter().copied().collect(),
         high: space.high().iter().copied().collect(),
         obstacles: world.boxes().iter().map(|(lo, hi)| [lo.to_vec(), hi.to_vec()]).collect(),
@@ -138,7 +139,7 @@ fn ompl_boxes<const N: usize>(world: &BoxWorld<N>) -> crate::ompl::Boxes {
 /// The runs of OMPL's `planner` on `ends`, as paths and times (ms).
 #[allow(clippy::type_complexity)]
 fn ompl_runs<const N: usize>(
-    driver: &crate::ompl::Driver,
+    driver: &OmplDriver,
     world: &BoxWorld<N>,
     planner: &str,
     ends: &[(<Rn<N> as StateSpace>::State, <Rn<N> as StateSpace>::State)],
@@ -157,8 +158,8 @@ fn ompl_input<'a, const N: usize>(
     (runs, max_iterations, limit): (usize, u64, Duration),
     seed: u64,
     roadmap_size: usize,
-) -> crate::ompl::Input<'a> {
-    crate::ompl::Input {
+) -> OmplInput<'a> {
+    OmplInput {
         world: None,
         boxes: Some(ompl_boxes(world)),
         planner,
@@ -174,7 +175,7 @@ fn ompl_input<'a, const N: usize>(
 /// The driver's runs as paths (exact ones) and times in ms.
 #[allow(clippy::type_complexity)]
 fn paths_and_times<const N: usize>(
-    runs: &[crate::ompl::Run],
+    runs: &[OmplRun],
 ) -> Vec<(Option<Vec<<Rn<N> as StateSpace>::State>>, f64)> {
     runs.iter()
         .map(|r| {
@@ -194,7 +195,7 @@ fn roadmap_rows<const N: usize>(
     kd: KdNearest<Rn<N>, N>,
     ends: &[(<Rn<N> as StateSpace>::State, <Rn<N> as StateSpace>::State)],
     seed: u64,
-    ompl: Option<&crate::ompl::Driver>,
+    ompl: Option<&OmplDriver>,
 ) -> Result<Vec<BoxRow>, String> {
     let err = |e: &dyn std::fmt::Display| format!("{name}: PRM* roadmap: {e}");
     let space = world.space();
@@ -260,7 +261,7 @@ fn world_rows<const N: usize>(
     world: &BoxWorld<N>,
     (queries, runs, limit): (usize, usize, Duration),
     seed: u64,
-    ompl: Option<&crate::ompl::Driver>,
+    ompl: Option<&OmplDriver>,
 ) -> Result<Vec<BoxRow>, String> {
     let err = |e: &dyn std::fmt::Display| format!("{name}: {e}");
     let space = world.space();
@@ -334,7 +335,7 @@ fn world_rows<const N: usize>(
 pub fn bench_boxes(
     (queries, runs, limit): (usize, usize, Duration),
     seed: u64,
-    ompl: Option<&crate::ompl::Driver>,
+    ompl: Option<&OmplDriver>,
 ) -> Result<Vec<BoxRow>, String> {
     let r4 = BoxWorld::<4>::random(50, 0.15..0.35, seed).map_err(|e| e.to_string())?;
     let r8 = BoxWorld::<8>::random(100, 0.4..0.6, seed).map_err(|e| e.to_string())?;

@@ -10,7 +10,7 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use trailmark::core::generate;
 use trailmark::graph::Trapezoids;
-use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
+use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 
 const COUNTS: [usize; 5] = [10, 50, 100, 200, 500];
@@ -46,11 +46,14 @@ fn prm(c: &mut Criterion) {
     group.throughput(Throughput::Elements(1000));
     for count in [10, 100, 500] {
         let world = generate::convex_obstacles(1000.0, count, 6, 2.0, 1).expect("valid");
-        let options =
-            PrmOptions { sampler: Sampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
+        let options = PrmOptions {
+            sampler: PrmSampler::Halton,
+            connection: Connection::PrmStar,
+            ..PrmOptions::default()
+        };
         group.bench_with_input(BenchmarkId::from_parameter(count), &world, |b, world| {
             b.iter(|| {
-                let mut prm = Prm::new(black_box(world.clone()), options).expect("valid options");
+                let mut prm = PolygonPrm::new(black_box(world.clone()), options).expect("valid options");
                 prm.grow(1000).expect("free space to sample");
                 prm.edge_count()
             })

@@ -154,7 +154,7 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
     use trailmark::core::geometry::{Point, Pose};
     use trailmark::core::svg::WorldSvg;
     use trailmark::graph::Roadmap;
-    use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
+    use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
     use trailmark::graph::trapezoid::Trapezoids;
     use trailmark::graph::visibility::{Edges, VisibilityGraph};
     use trailmark::sample::Dubins;
@@ -206,8 +206,8 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
     write("graph-trapezoid.svg", svg)?;
 
     let options =
-        PrmOptions { sampler: Sampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
-    let mut prm = Prm::new(world.clone(), options)?;
+        PrmOptions { sampler: PrmSampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
+    let mut prm = PolygonPrm::new(world.clone(), options)?;
     prm.grow(400)?;
     let q = prm.query(start, goal)?;
     let found = dijkstra(&q, q.start(), q.goal())?;
@@ -231,11 +231,11 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
 
     let space = Dubins::new(world.bounds(), 1.0)?;
     let options = PrmOptions {
-        sampler: Sampler::Halton,
+        sampler: PrmSampler::Halton,
         connection: Connection::Nearest { k: 15 },
         ..PrmOptions::default()
     };
-    let mut dubins = Prm::with_space(world.clone(), space, options)?;
+    let mut dubins = PolygonPrm::with_space(world.clone(), space, options)?;
     dubins.grow(1500)?;
     let (a, b) = (
         Pose::new(start.coords, std::f64::consts::FRAC_PI_4),

@@ -8,7 +8,7 @@
 use std::time::Instant;
 
 use trailmark::core::generate::convex_obstacles;
-use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
+use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::sample::Dubins;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -18,10 +18,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
     for (obstacles, samples) in [(10, 1000), (100, 1000), (500, 1000), (100, 5000), (500, 5000)] {
         let world = convex_obstacles(1000.0, obstacles, 6, 2.0, 1)?;
-        let options =
-            PrmOptions { sampler: Sampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
+        let options = PrmOptions {
+            sampler: PrmSampler::Halton,
+            connection: Connection::PrmStar,
+            ..PrmOptions::default()
+        };
         let clock = Instant::now();
-        let mut prm = Prm::new(world, options)?;
+        let mut prm = PolygonPrm::new(world, options)?;
         prm.grow(samples)?;
         report(obstacles, samples, prm.edge_count(), prm.component_count(), prm.local_paths_checked(), clock);
     }
@@ -29,13 +32,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for (obstacles, samples) in [(100, 1000), (500, 1000)] {
         let world = convex_obstacles(1000.0, obstacles, 6, 2.0, 1)?;
         let options = PrmOptions {
-            sampler: Sampler::Halton,
+            sampler: PrmSampler::Halton,
             connection: Connection::Nearest { k: 15 },
             ..PrmOptions::default()
         };
         let clock = Instant::now();
         let space = Dubins::new(world.bounds(), 10.0)?;
-        let mut prm = Prm::with_space(world, space, options)?;
+        let mut prm = PolygonPrm::with_space(world, space, options)?;
         prm.grow(samples)?;
         report(obstacles, samples, prm.edge_count(), prm.component_count(), prm.local_paths_checked(), clock);
     }

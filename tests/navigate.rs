@@ -3,7 +3,7 @@
 //! and D* Lite does less planning work than A* from scratch on the same run.
 
 use trailmark::core::generate;
-use trailmark::navigate::{NavigateError, Navigation, Outcome, PlannerChoice, Target, navigate};
+use trailmark::navigate::{NavigateError, Navigation, NavigationOutcome, PlannerChoice, Target, navigate};
 use trailmark::prelude::*;
 
 const PLANNERS: [PlannerChoice; 4] = [
@@ -51,9 +51,11 @@ fn every_planner_reaches_the_goal_through_free_cells_only() {
                 let config = Navigation { planner, sensor_radius: radius, ..Navigation::default() };
                 let run = navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap();
                 match shortest {
-                    None => assert_eq!(run.outcome, Outcome::Unreachable, "{planner:?} seed {seed}"),
+                    None => {
+                        assert_eq!(run.outcome, NavigationOutcome::Unreachable, "{planner:?} seed {seed}")
+                    }
                     Some(best) => {
-                        assert_eq!(run.outcome, Outcome::Reached, "{planner:?} seed {seed}");
+                        assert_eq!(run.outcome, NavigationOutcome::Reached, "{planner:?} seed {seed}");
                         assert!(run.distance >= best - 1e-9, "{} < {best}", run.distance);
                         assert_eq!(run.trajectory.last(), Some(&goal));
                     }
@@ -81,7 +83,7 @@ fn a_walled_in_goal_is_proven_unreachable() {
     for planner in PLANNERS {
         let config = Navigation { planner, ..Navigation::default() };
         let run = navigate(&truth, &prior, Cell::new(0, 2), Target::Cell(Cell::new(7, 2)), &config).unwrap();
-        assert_eq!(run.outcome, Outcome::Unreachable, "{planner:?}");
+        assert_eq!(run.outcome, NavigationOutcome::Unreachable, "{planner:?}");
         assert!(run.discoveries >= 8, "the robot walked up to the walls and saw them");
     }
 }
@@ -100,10 +102,10 @@ fn a_huge_sensor_radius_sees_the_whole_map() {
             let config = Navigation { planner, sensor_radius: radius, ..Navigation::default() };
             let walled =
                 navigate(&truth, &prior, Cell::new(0, 2), Target::Cell(Cell::new(7, 2)), &config).unwrap();
-            assert_eq!(walled.outcome, Outcome::Unreachable, "{planner:?}, radius {radius}");
+            assert_eq!(walled.outcome, NavigationOutcome::Unreachable, "{planner:?}, radius {radius}");
             let open =
                 navigate(&truth, &prior, Cell::new(0, 2), Target::Cell(Cell::new(9, 2)), &config).unwrap();
-            assert_eq!(open.outcome, Outcome::Reached, "{planner:?}, radius {radius}");
+            assert_eq!(open.outcome, NavigationOutcome::Reached, "{planner:?}, radius {radius}");
             for pair in open.trajectory.windows(2) {
                 assert!(
                     graph.edge_cost(pair[0], pair[1]).is_some(),
@@ -128,7 +130,7 @@ fn greedy_mapping_visits_every_reachable_cell() {
     for planner in [PlannerChoice::AStar, PlannerChoice::DStarLite] {
         let config = Navigation { planner, ..Navigation::default() };
         let run = navigate(&truth, &prior, start, Target::Explore, &config).unwrap();
-        assert_eq!(run.outcome, Outcome::Explored, "{planner:?}");
+        assert_eq!(run.outcome, NavigationOutcome::Explored, "{planner:?}");
         for cell in &reachable {
             assert!(run.trajectory.contains(cell), "{planner:?} never visited {cell}");
         }
@@ -145,8 +147,8 @@ fn dstar_lite_plans_with_fewer_expansions_than_astar_from_scratch() {
         navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap()
     };
     let (scratch, incremental) = (run(PlannerChoice::AStar), run(PlannerChoice::DStarLite));
-    assert_eq!(scratch.outcome, Outcome::Reached);
-    assert_eq!(incremental.outcome, Outcome::Reached);
+    assert_eq!(scratch.outcome, NavigationOutcome::Reached);
+    assert_eq!(incremental.outcome, NavigationOutcome::Reached);
     assert!(
         incremental.expansions * 3 < scratch.expansions,
         "D* Lite {} expansions, A* {}",
@@ -164,7 +166,7 @@ fn a_follower_behind_the_robot_does_not_stop_it() {
         let config = Navigation { planner, sensor_radius: 2, follower_lag: Some(2), ..Navigation::default() };
         let run = navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap();
         assert!(
-            matches!(run.outcome, Outcome::Reached | Outcome::Unreachable),
+            matches!(run.outcome, NavigationOutcome::Reached | NavigationOutcome::Unreachable),
             "{planner:?}: {:?}",
             run.outcome
         );

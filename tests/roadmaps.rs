@@ -11,7 +11,7 @@ use trailmark::core::world::PolygonWorld;
 use trailmark::graph::Roadmap;
 use trailmark::graph::Trapezoids;
 use trailmark::graph::dynamic::{DynamicRoadmap, Rebuild};
-use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
+use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::graph::visibility::Edges;
 use trailmark::graph::visibility::VisibilityGraph;
 use trailmark::prelude::*;
@@ -34,7 +34,7 @@ fn sampled_free(world: &PolygonWorld, a: Point, b: Point, step: f64) -> bool {
 /// free points the visibility graph also sees as free, and a sampler.
 fn world_strategy(
     radius: impl Strategy<Value = f64>,
-) -> impl Strategy<Value = (PolygonWorld, Point, Point, Sampler)> {
+) -> impl Strategy<Value = (PolygonWorld, Point, Point, PrmSampler)> {
     (
         1usize..20,
         radius,
@@ -49,7 +49,7 @@ fn world_strategy(
             let (start, goal) = (at(picks[0], picks[1]), at(picks[2], picks[3]));
             let space = world.free_space_with_step(std::f64::consts::PI / 64.0).ok()?;
             let usable = |p: Point| checker.point_is_free(p) && space.locate(p) != Location::Blocked;
-            let sampler = sampler.map_or(Sampler::Halton, |seed| Sampler::Uniform { seed });
+            let sampler = sampler.map_or(PrmSampler::Halton, |seed| PrmSampler::Uniform { seed });
             (usable(start) && usable(goal)).then_some((world, start, goal, sampler))
         })
 }
@@ -102,7 +102,7 @@ proptest! {
     #[test]
     fn prm_edges_are_collision_free((world, start, goal, sampler) in world_strategy(0.0f64..1.5)) {
         let options = PrmOptions { sampler, connection: Connection::PrmStar, ..PrmOptions::default() };
-        let prm = Prm::new(world.clone(), options).expect("valid options");
+        let prm = PolygonPrm::new(world.clone(), options).expect("valid options");
         let mut prm = prm;
         if prm.grow(200).is_err() {
             return Ok(()); // a world too full to sample is reported, not a failure here
@@ -139,7 +139,7 @@ proptest! {
         let q = graph.query(start, goal).expect("free ends");
         let best = dijkstra(&q, q.start(), q.goal()).expect("valid").cost();
         for connection in [Connection::PrmStar, Connection::Radius { radius: 6.0 }] {
-            let mut prm = Prm::new(world.clone(), PrmOptions { sampler, connection, ..PrmOptions::default() }).unwrap();
+            let mut prm = PolygonPrm::new(world.clone(), PrmOptions { sampler, connection, ..PrmOptions::default() }).unwrap();
             if prm.grow(300).is_err() {
                 return Ok(());
             }
@@ -159,7 +159,7 @@ proptest! {
         (world, start, goal, sampler) in world_strategy(0.0f64..1.0),
         blocks in prop::collection::vec((2.0f64..38.0, 2.0f64..38.0, 1.0f64..6.0), 1..4)
     ) {
-        let mut prm = Prm::new(world, PrmOptions { sampler, ..PrmOptions::default() }).unwrap();
+        let mut prm = PolygonPrm::new(world, PrmOptions { sampler, ..PrmOptions::default() }).unwrap();
         if prm.grow(250).is_err() {
             return Ok(());
         }
@@ -221,7 +221,7 @@ proptest! {
     fn dubins_prm_edges_are_free_shortest_curves((world, start, goal, sampler) in world_strategy(0.0f64..1.0), rho in 0.5f64..3.0) {
         let space = Dubins::new(world.bounds(), rho).unwrap();
         let options = PrmOptions { sampler, connection: Connection::Nearest { k: 6 }, ..PrmOptions::default() };
-        let mut prm = Prm::with_space(world.clone(), space, options).unwrap();
+        let mut prm = PolygonPrm::with_space(world.clone(), space, options).unwrap();
         if prm.grow(60).is_err() {
             return Ok(());
         }
@@ -367,7 +367,7 @@ fn checked_accessors_answer_none_past_the_last_id() {
     let cells = Trapezoids::new(&space);
     assert!(cells.get_cell(0).is_some());
     assert!(cells.get_cell(cells.cell_count()).is_none());
-    let mut prm = Prm::new(world.clone(), PrmOptions::default()).unwrap();
+    let mut prm = PolygonPrm::new(world.clone(), PrmOptions::default()).unwrap();
     prm.grow(50).unwrap();
     let last = prm.node_count() as u32 - 1;
     assert_eq!(prm.get_position(last), Some(prm.position(last)));

@@ -55,5 +55,10 @@ mod world;
 pub use config::{Navigation, PlannerChoice, Target};
 pub use error::NavigateError;
 pub use graph::{VIRTUAL_EDGE_COST, VIRTUAL_GOAL};
-pub use report::{NavigationReport, Outcome};
+pub use report::{NavigationOutcome, NavigationReport};
+
+/// Old name of [`NavigationOutcome`], kept for one release (a contingency plan's `Outcome` is
+/// another concept).
+#[deprecated(since = "0.2.0", note = "use trailmark::navigate::NavigationOutcome")]
+pub type Outcome = NavigationOutcome;
 pub use simulation::{navigate, navigate_together};

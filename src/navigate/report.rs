@@ -11,7 +11,7 @@ use trailmark_core::svg::GridSvg;
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
-pub enum Outcome {
+pub enum NavigationOutcome {
     /// The robot stands on the goal.
     Reached,
     /// Greedy mapping: no unvisited cell is reachable any more.
@@ -29,7 +29,7 @@ pub struct NavigationReport {
     /// The planner's name.
     pub planner: String,
     /// How the run ended.
-    pub outcome: Outcome,
+    pub outcome: NavigationOutcome,
     /// Moves made.
     pub steps: usize,
     /// The cost of the trajectory (cell costs of the true map).
@@ -64,7 +64,7 @@ pub struct NavigationReport {
 impl NavigationReport {
     /// Whether the robot reached its goal (or, mapping, visited all it could reach).
     pub fn reached(&self) -> bool {
-        matches!(self.outcome, Outcome::Reached | Outcome::Explored)
+        matches!(self.outcome, NavigationOutcome::Reached | NavigationOutcome::Explored)
     }
 
     /// The mean planning time per plan.

@@ -11,7 +11,7 @@ use trailmark_search::{Replanner, SearchError};
 use crate::navigate::config::{Navigation, PlannerChoice, Target};
 use crate::navigate::error::NavigateError;
 use crate::navigate::graph::{NavGraph, VIRTUAL_GOAL, estimate};
-use crate::navigate::report::{NavigationReport, Outcome};
+use crate::navigate::report::{NavigationOutcome, NavigationReport};
 use crate::navigate::world::World;
 
 /// What one plan produced: the next cell (`None`: no path), the plan's cost, expansions, and
@@ -136,7 +136,7 @@ fn run(
     let max_steps = config.max_steps.unwrap_or(truth.len().saturating_mul(20));
     let mut report = NavigationReport {
         planner: planner.name().to_string(),
-        outcome: Outcome::StepLimit,
+        outcome: NavigationOutcome::StepLimit,
         steps: 0,
         distance: 0.0,
         plans: 0,
@@ -155,7 +155,7 @@ fn run(
     let mut changed = world.sense(robot, config.sensor_radius);
     loop {
         if target == Target::Cell(robot) {
-            report.outcome = Outcome::Reached;
+            report.outcome = NavigationOutcome::Reached;
             break;
         }
         if report.steps >= max_steps {
@@ -178,7 +178,8 @@ fn run(
             None => plan.next.filter(|&n| n != VIRTUAL_GOAL),
         };
         let Some(next) = next else {
-            report.outcome = if explore { Outcome::Explored } else { Outcome::Unreachable };
+            report.outcome =
+                if explore { NavigationOutcome::Explored } else { NavigationOutcome::Unreachable };
             break;
         };
         report.distance += world.known.grid.edge_cost(robot, next).unwrap_or(f64::INFINITY);
@@ -254,7 +255,7 @@ mod tests {
                         plans += 1;
                     })
                     .unwrap();
-                assert_ne!(report.outcome, Outcome::StepLimit, "{planner:?} seed {seed}");
+                assert_ne!(report.outcome, NavigationOutcome::StepLimit, "{planner:?} seed {seed}");
                 for pair in report.trajectory.windows(2) {
                     assert!(pair[0].x.abs_diff(pair[1].x) <= 1 && pair[0].y.abs_diff(pair[1].y) <= 1);
                 }

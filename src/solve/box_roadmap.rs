@@ -11,7 +11,7 @@ use trailmark_sample::{
     BoxWorld, Halton, KdNearest, PlanError, Prm, Rn, StateSampler, StateSpace, Uniform, paths,
 };
 
-use trailmark_graph::prm::{MAX_NODES, PrmError};
+use trailmark_graph::{MAX_ROADMAP_NODES, PrmError};
 
 use trailmark_core::grid::GridHeuristic;
 
@@ -76,7 +76,7 @@ fn query<const N: usize, Q: StateSampler<Rn<N>>>(
 ) -> Result<SolveResult, SolveError> {
     let space = world.space();
     let samples = problem.samples.unwrap_or(DEFAULT_SAMPLES);
-    if samples > MAX_NODES {
+    if samples > MAX_ROADMAP_NODES {
         return Err(SolveError::Prm(PrmError::TooManyNodes));
     }
     let clock = Instant::now();

@@ -8,7 +8,7 @@ use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::grid::GridHeuristic;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
-use trailmark_graph::prm::{Connection, PlanarSpace, Prm, PrmOptions, Sampler};
+use trailmark_graph::prm::{Connection, PlanarSpace, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::{Edges, VisibilityError};
 use trailmark_graph::{Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
@@ -87,7 +87,7 @@ pub(super) fn solve_polygons(
             (result, svg.title("Trapezoidal cells, their centroids and portal midpoints, and a path"))
         }
         _ => {
-            let prm = grow(problem, Prm::new(world.clone(), prm_options(problem)?)?)?;
+            let prm = grow(problem, PolygonPrm::new(world.clone(), prm_options(problem)?)?)?;
             let built = clock.elapsed();
             let result = search_roadmap(
                 problem,
@@ -134,7 +134,7 @@ fn solve_dubins(
     };
     let (start, goal) = (pose("start", &problem.start)?, pose("goal", &problem.goal)?);
     let clock = Instant::now();
-    let prm = grow(problem, Prm::with_space(world.clone(), space, prm_options(problem)?)?)?;
+    let prm = grow(problem, PolygonPrm::with_space(world.clone(), space, prm_options(problem)?)?)?;
     let built = clock.elapsed();
     let result =
         search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed().saturating_sub(built))?;
@@ -212,8 +212,8 @@ fn waypoint_point(waypoint: &Waypoint) -> Option<Point> {
 /// The PRM options of a problem.
 fn prm_options(problem: &ProblemSpec) -> Result<PrmOptions, SolveError> {
     let sampler = match problem.sampler.unwrap_or(SamplerKind::Uniform) {
-        SamplerKind::Uniform => Sampler::Uniform { seed: problem.seed.unwrap_or(0) },
-        SamplerKind::Halton => Sampler::Halton,
+        SamplerKind::Uniform => PrmSampler::Uniform { seed: problem.seed.unwrap_or(0) },
+        SamplerKind::Halton => PrmSampler::Halton,
     };
     let connection = match (problem.k, problem.radius) {
         (Some(_), Some(_)) => return Err(DocumentError::KAndRadius.into()),
@@ -225,7 +225,7 @@ fn prm_options(problem: &ProblemSpec) -> Result<PrmOptions, SolveError> {
 }
 
 /// `prm` grown by the problem's number of samples.
-fn grow<S: PlanarSpace>(problem: &ProblemSpec, mut prm: Prm<S>) -> Result<Prm<S>, SolveError> {
+fn grow<S: PlanarSpace>(problem: &ProblemSpec, mut prm: PolygonPrm<S>) -> Result<PolygonPrm<S>, SolveError> {
     prm.grow(problem.samples.unwrap_or(DEFAULT_SAMPLES))?;
     Ok(prm)
 }

@@ -117,7 +117,7 @@ pub struct RunSummary {
     /// The planner.
     pub planner: String,
     /// How the run ended.
-    pub outcome: trailmark::navigate::Outcome,
+    pub outcome: trailmark::navigate::NavigationOutcome,
     /// Moves made.
     pub steps: usize,
     /// Cost of the trajectory.

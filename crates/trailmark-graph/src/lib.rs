@@ -4,7 +4,7 @@
 //! corner-cutting rule. Roadmaps of polygon worlds: visibility graphs ([`VisibilityGraph`]) by
 //! Lee's rotational sweep with exact predicates, trapezoidal cell decompositions
 //! ([`Trapezoids`]), probabilistic roadmaps over the state spaces of `trailmark-sample`
-//! (segments in `R2`, Dubins curves, ...) ([`Prm`]), all queried through [`RoadmapQuery`]; and
+//! (segments in `R2`, Dubins curves, ...) ([`PolygonPrm`]), all queried through [`RoadmapQuery`]; and
 //! roadmaps of worlds whose obstacles change, with stable node ids and the changed edges for
 //! D* Lite ([`DynamicRoadmap`]). The graphs implement the traits of [`trailmark_core::graph`];
 //! no builder here runs a search.
@@ -47,7 +47,13 @@ pub mod visibility;
 
 pub use dynamic::{DynamicError, DynamicRoadmap, NodeKey, Rebuild};
 pub use grid::{CornerCutting, GridGraph, Neighbours};
-pub use prm::{Connection, DubinsPrm, MAX_NODES, PlanarSpace, Prm, PrmError, PrmOptions, PrmQuery, Sampler};
+pub use prm::{
+    Connection, DubinsPrm, MAX_ROADMAP_NODES, PlanarSpace, PolygonPrm, PrmError, PrmOptions, PrmQuery,
+    PrmSampler,
+};
+#[doc(hidden)]
+#[allow(deprecated)]
+pub use prm::{MAX_NODES, Prm, Sampler};
 pub use roadmap::{Roadmap, RoadmapQuery};
 pub use trapezoid::{Portal, Side, Trapezoid, TrapezoidError, TrapezoidQuery, Trapezoids};
 pub use visibility::{Edges, VisibilityError, VisibilityGraph, VisibilityQuery};

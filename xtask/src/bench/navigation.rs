@@ -10,7 +10,9 @@ use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 use trailmark::core::generate;
 use trailmark::movingai;
-use trailmark::navigate::{Navigation, NavigationReport, Outcome, PlannerChoice, Target, navigate_together};
+use trailmark::navigate::{
+    Navigation, NavigationOutcome, NavigationReport, PlannerChoice, Target, navigate_together,
+};
 use trailmark::prelude::*;
 
 use crate::bench::progress::SectionProgress;
@@ -38,7 +40,7 @@ pub struct NavRow {
     /// The planner.
     pub planner: String,
     /// How the run ended.
-    pub outcome: Outcome,
+    pub outcome: NavigationOutcome,
     /// Moves made.
     pub steps: usize,
     /// Cost of the trajectory.

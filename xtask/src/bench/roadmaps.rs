@@ -17,7 +17,7 @@ use trailmark::core::dubins::DubinsPath;
 use trailmark::core::freespace::Location;
 use trailmark::core::generate;
 use trailmark::core::geometry::{Point, Pose, Vector};
-use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
+use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::graph::{RoadmapQuery, Trapezoids};
 use trailmark::prelude::*;
@@ -142,9 +142,9 @@ fn bench_world(count: usize, seed: u64, runs: u32, queries: usize) -> Result<Roa
     // steps of π/8: a path around them is at most 1 / cos(π/16) (2%) longer than around the discs.
     let grown_visibility = VisibilityGraph::with_edges(grown.free_space(), Edges::Tangent);
     let options =
-        PrmOptions { sampler: Sampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
+        PrmOptions { sampler: PrmSampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
     let (prm_ms, prm) = timed(runs, || {
-        let mut prm = Prm::new(grown.clone(), options).map_err(|e| err(&e))?;
+        let mut prm = PolygonPrm::new(grown.clone(), options).map_err(|e| err(&e))?;
         prm.grow(PRM_SAMPLES).map_err(|e| err(&e))?;
         Ok::<_, String>(prm)
     });

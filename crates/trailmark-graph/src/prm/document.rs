@@ -5,7 +5,7 @@ use trailmark_core::world::PolygonWorld;
 use trailmark_sample::nearest::NearestNeighbors;
 use trailmark_sample::sampler::Halton;
 
-use super::{Drawer, PlanarSpace, Prm, PrmError, PrmOptions};
+use super::{Drawer, PlanarSpace, PolygonPrm, PrmError, PrmOptions};
 
 /// A saved roadmap: the world, the space, the settings, the nodes, every edge tried and where
 /// the sample stream stands.
@@ -32,7 +32,7 @@ struct StreamDocument {
     attempts: u64,
 }
 
-impl<S: PlanarSpace + Serialize> Serialize for Prm<S> {
+impl<S: PlanarSpace + Serialize> Serialize for PolygonPrm<S> {
     /// Saves as `{"world", "space", "options", "nodes", "edges", "stream"}`.
     fn serialize<Ser: serde::Serializer>(&self, serializer: Ser) -> Result<Ser::Ok, Ser::Error> {
         PrmDocument {
@@ -60,18 +60,18 @@ impl<S: PlanarSpace + Serialize> Serialize for Prm<S> {
     }
 }
 
-impl<'de, S: PlanarSpace + Deserialize<'de>> Deserialize<'de> for Prm<S> {
+impl<'de, S: PlanarSpace + Deserialize<'de>> Deserialize<'de> for PolygonPrm<S> {
     /// Loads a saved roadmap, re-checking every node and every edge's free or blocked state in
     /// the saved world; a mismatch is an error, not a silent repair.
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let document = PrmDocument::<S>::deserialize(deserializer)?;
-        Prm::from_document(document).map_err(serde::de::Error::custom)
+        PolygonPrm::from_document(document).map_err(serde::de::Error::custom)
     }
 }
 
-impl<S: PlanarSpace> Prm<S> {
+impl<S: PlanarSpace> PolygonPrm<S> {
     fn from_document(d: PrmDocument<S>) -> Result<Self, PrmError> {
-        let mut prm = Prm::with_space(d.world, d.space, d.options)?;
+        let mut prm = PolygonPrm::with_space(d.world, d.space, d.options)?;
         for (index, coordinates) in d.nodes.iter().enumerate() {
             let state =
                 prm.space.state_from_coordinates(coordinates).ok_or(PrmError::InvalidNode { index })?;

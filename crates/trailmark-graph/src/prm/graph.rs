@@ -4,10 +4,10 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_sample::nearest::NearestNeighbors;
 
-use super::{PlanarSpace, Prm};
+use super::{PlanarSpace, PolygonPrm};
 use crate::roadmap::Roadmap;
 
-impl<S: PlanarSpace> Roadmap for Prm<S> {
+impl<S: PlanarSpace> Roadmap for PolygonPrm<S> {
     type Position = S::State;
     const DIRECTED: bool = !S::SYMMETRIC;
 
@@ -48,7 +48,7 @@ impl<S: PlanarSpace> Roadmap for Prm<S> {
     }
 }
 
-impl<S: PlanarSpace> Graph for Prm<S> {
+impl<S: PlanarSpace> Graph for PolygonPrm<S> {
     type Node = u32;
 
     fn contains(&self, node: u32) -> bool {
@@ -56,19 +56,19 @@ impl<S: PlanarSpace> Graph for Prm<S> {
     }
 }
 
-impl<S: PlanarSpace> Successors for Prm<S> {
+impl<S: PlanarSpace> Successors for PolygonPrm<S> {
     fn for_each_successor<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
         self.for_each_out(node, visit)
     }
 }
 
-impl<S: PlanarSpace> Predecessors for Prm<S> {
+impl<S: PlanarSpace> Predecessors for PolygonPrm<S> {
     fn for_each_predecessor<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
         self.for_each_in(node, visit)
     }
 }
 
-impl<S: PlanarSpace> IndexedGraph for Prm<S> {
+impl<S: PlanarSpace> IndexedGraph for PolygonPrm<S> {
     fn node_bound(&self) -> usize {
         self.nearest.len()
     }

@@ -1,6 +1,6 @@
 //! Probabilistic roadmaps: samples in free space joined by collision-free local paths.
 //!
-//! A [`Prm`] draws configurations in the free space of a [`PolygonWorld`] (seeded uniform
+//! A [`PolygonPrm`] draws configurations in the free space of a [`PolygonWorld`] (seeded uniform
 //! samples, or a deterministic Halton sequence), and joins each new node to its neighbours
 //! among the nodes already there (the k nearest, those within a radius, or PRM*'s
 //! k = ⌈e(1 + 1/d) ln n⌉) wherever the local path between them is collision-free. Every local
@@ -12,23 +12,23 @@
 //! roadmap over points), or [`Dubins`](trailmark_sample::Dubins) curves for a car-like robot (a directed roadmap
 //! over poses, since a Dubins path from `a` to `b` is not the reverse of one from `b` to `a`).
 //!
-//! A roadmap grows incrementally ([`Prm::grow`], [`Prm::insert`]), tracks its connected
+//! A roadmap grows incrementally ([`PolygonPrm::grow`], [`PolygonPrm::insert`]), tracks its connected
 //! components, saves and loads with serde (re-checking everything it loads), reports which
-//! edges changed when an obstacle is added or removed ([`Prm::add_obstacle`],
-//! [`Prm::remove_obstacle`]) so D* Lite can repair its path, and answers queries without
-//! changing ([`Prm::query`]).
+//! edges changed when an obstacle is added or removed ([`PolygonPrm::add_obstacle`],
+//! [`PolygonPrm::remove_obstacle`]) so D* Lite can repair its path, and answers queries without
+//! changing ([`PolygonPrm::query`]).
 //!
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_graph::prm::{Connection, Prm, PrmOptions, Sampler};
+//! use trailmark_graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 //! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
 //! let world = PolygonWorld::new(bounds, vec![wall], 0.25)?;
 //!
-//! let options = PrmOptions { sampler: Sampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
-//! let mut prm = Prm::new(world, options)?;
+//! let options = PrmOptions { sampler: PrmSampler::Halton, connection: Connection::PrmStar, ..PrmOptions::default() };
+//! let mut prm = PolygonPrm::new(world, options)?;
 //! prm.grow(300)?;
 //! assert_eq!(prm.node_count(), 300);
 //!
@@ -62,7 +62,7 @@ mod options;
 mod space;
 
 use options::Drawer;
-pub use options::{MAX_NODES, PrmError, PrmOptions, Sampler};
+pub use options::{MAX_ROADMAP_NODES, PrmError, PrmOptions, PrmSampler};
 use space::Exact;
 pub use space::PlanarSpace;
 
@@ -88,12 +88,12 @@ struct Stream {
 /// segments for a disc robot, an undirected roadmap over points) by default, or
 /// [`Dubins`](trailmark_sample::Dubins) (a directed roadmap over poses, since a Dubins path
 /// from `a` to `b` is not the reverse of one from `b` to `a`). Node `i` is at
-/// [`Prm::position`]; edges cost their motion's distance in the space.
+/// [`PolygonPrm::position`]; edges cost their motion's distance in the space.
 ///
-/// It implements the graph traits itself (with permanent nodes from [`Prm::insert`]) and
-/// [`Roadmap`](crate::Roadmap), so [`Prm::query`] joins a start and a goal without changing it.
+/// It implements the graph traits itself (with permanent nodes from [`PolygonPrm::insert`]) and
+/// [`Roadmap`](crate::Roadmap), so [`PolygonPrm::query`] joins a start and a goal without changing it.
 #[derive(Clone, Debug)]
-pub struct Prm<S: PlanarSpace = R2> {
+pub struct PolygonPrm<S: PlanarSpace = R2> {
     checker: CollisionChecker,
     space: S,
     options: PrmOptions,
@@ -110,13 +110,28 @@ pub struct Prm<S: PlanarSpace = R2> {
     local_paths_checked: u64,
 }
 
+/// Old name of [`PolygonPrm`], kept for one release (`trailmark_sample::Prm` is the PRM over any
+/// space; this one is the roadmap of a polygon world).
+#[deprecated(since = "0.2.0", note = "use trailmark_graph::PolygonPrm")]
+pub type Prm<S = R2> = PolygonPrm<S>;
+
+/// Old name of [`PrmSampler`], kept for one release (beside the sampling crate's
+/// `StateSampler`, `Sampler` said nothing).
+#[deprecated(since = "0.2.0", note = "use trailmark_graph::PrmSampler")]
+pub type Sampler = PrmSampler;
+
+/// Old name of [`MAX_ROADMAP_NODES`], kept for one release (the search crate's `MAX_NODES` is
+/// another limit).
+#[deprecated(since = "0.2.0", note = "use trailmark_graph::MAX_ROADMAP_NODES")]
+pub const MAX_NODES: usize = MAX_ROADMAP_NODES;
+
 /// A probabilistic roadmap of Dubins paths between poses.
-pub type DubinsPrm = Prm<trailmark_sample::Dubins>;
+pub type DubinsPrm = PolygonPrm<trailmark_sample::Dubins>;
 
-/// A [`Prm`] with a start and a goal joined to it.
-pub type PrmQuery<'g, S = R2> = RoadmapQuery<'g, Prm<S>>;
+/// A [`PolygonPrm`] with a start and a goal joined to it.
+pub type PrmQuery<'g, S = R2> = RoadmapQuery<'g, PolygonPrm<S>>;
 
-impl Prm<R2> {
+impl PolygonPrm<R2> {
     /// An empty roadmap of straight segments over `world` (the space [`R2`] of its bounds).
     pub fn new(world: PolygonWorld, options: PrmOptions) -> Result<Self, PrmError> {
         let space = R2::new(world.bounds());
@@ -124,7 +139,7 @@ impl Prm<R2> {
     }
 }
 
-impl<S: PlanarSpace> Prm<S> {
+impl<S: PlanarSpace> PolygonPrm<S> {
     /// An empty roadmap over `world` whose states and motions are `space`'s.
     pub fn with_space(world: PolygonWorld, space: S, options: PrmOptions) -> Result<Self, PrmError> {
         match options.connection {
@@ -139,7 +154,7 @@ impl<S: PlanarSpace> Prm<S> {
         }
         let nearest = KdNearest::new(&space)?;
         let drawer = Drawer::new(options.sampler)?;
-        Ok(Prm {
+        Ok(PolygonPrm {
             checker: world.checker(),
             space,
             options,
@@ -159,9 +174,9 @@ impl<S: PlanarSpace> Prm<S> {
     /// `attempts_per_sample × samples` draws, or as soon as fewer than one draw in
     /// `attempts_per_sample` has been free over `attempts_per_sample × (added + 10)` draws,
     /// keeping the samples found; with [`PrmError::TooManyNodes`] before any draw if the
-    /// roadmap would pass [`MAX_NODES`].
+    /// roadmap would pass [`MAX_ROADMAP_NODES`].
     pub fn grow(&mut self, samples: usize) -> Result<std::ops::Range<u32>, PrmError> {
-        if self.node_count().saturating_add(samples) > MAX_NODES {
+        if self.node_count().saturating_add(samples) > MAX_ROADMAP_NODES {
             return Err(PrmError::TooManyNodes);
         }
         let first = self.node_count() as u32;
@@ -434,7 +449,7 @@ impl<S: PlanarSpace> Prm<S> {
         if let Some(&(v, _)) = at_zero.find(|&&(v, _)| *self.nearest.state(v) == state) {
             return Ok((v, false));
         }
-        if self.node_count() >= MAX_NODES {
+        if self.node_count() >= MAX_ROADMAP_NODES {
             return Err(PrmError::TooManyNodes);
         }
         let out = if S::SYMMETRIC { Vec::new() } else { self.neighbours_of(&state, Direction::FromQuery, n) };

@@ -10,7 +10,7 @@ use trailmark_sample::space::SpaceError;
 /// How samples are drawn: which of `trailmark-sample`'s samplers, with its settings.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
-pub enum Sampler {
+pub enum PrmSampler {
     /// Independent uniform samples ([`Uniform`](trailmark_sample::Uniform)) from a ChaCha8 generator with this seed: the
     /// same seed gives the same roadmap on every machine.
     Uniform {
@@ -36,7 +36,7 @@ pub enum Sampler {
     },
 }
 
-/// A [`Sampler`] made.
+/// A [`PrmSampler`] made.
 #[derive(Clone, Debug)]
 pub(super) enum Drawer {
     Uniform,
@@ -46,35 +46,37 @@ pub(super) enum Drawer {
 }
 
 impl Drawer {
-    pub(super) fn new(sampler: Sampler) -> Result<Self, PrmError> {
+    pub(super) fn new(sampler: PrmSampler) -> Result<Self, PrmError> {
         Ok(match sampler {
-            Sampler::Uniform { .. } => Drawer::Uniform,
-            Sampler::Halton => Drawer::Halton(Halton::new()),
-            Sampler::Gaussian { std_dev, .. } => Drawer::Gaussian(Gaussian::new(std_dev)?),
-            Sampler::Bridge { std_dev, .. } => Drawer::Bridge(Bridge::new(std_dev)?),
+            PrmSampler::Uniform { .. } => Drawer::Uniform,
+            PrmSampler::Halton => Drawer::Halton(Halton::new()),
+            PrmSampler::Gaussian { std_dev, .. } => Drawer::Gaussian(Gaussian::new(std_dev)?),
+            PrmSampler::Bridge { std_dev, .. } => Drawer::Bridge(Bridge::new(std_dev)?),
         })
     }
 }
 
-impl Sampler {
+impl PrmSampler {
     /// The generator's seed (0 for the Halton sequence, which does not use it).
     pub(super) fn seed(&self) -> u64 {
         match *self {
-            Sampler::Uniform { seed } | Sampler::Gaussian { seed, .. } | Sampler::Bridge { seed, .. } => seed,
-            Sampler::Halton => 0,
+            PrmSampler::Uniform { seed }
+            | PrmSampler::Gaussian { seed, .. }
+            | PrmSampler::Bridge { seed, .. } => seed,
+            PrmSampler::Halton => 0,
         }
     }
 }
 
-/// The settings of a [`Prm`](crate::Prm).
+/// The settings of a [`PolygonPrm`](crate::Prm).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct PrmOptions {
     /// How samples are drawn.
-    pub sampler: Sampler,
+    pub sampler: PrmSampler,
     /// Which nodes a new node is joined to.
     pub connection: Connection,
-    /// How many draws [`Prm::grow`](crate::Prm::grow) may make per sample asked for before it gives up (draws in
+    /// How many draws [`PolygonPrm::grow`](crate::Prm::grow) may make per sample asked for before it gives up (draws in
     /// obstacles are rejected).
     pub attempts_per_sample: u32,
 }
@@ -83,7 +85,7 @@ impl Default for PrmOptions {
     /// Seed-0 uniform samples joined to their 10 nearest neighbours, 1000 draws per sample.
     fn default() -> Self {
         PrmOptions {
-            sampler: Sampler::Uniform { seed: 0 },
+            sampler: PrmSampler::Uniform { seed: 0 },
             connection: Connection::Nearest { k: 10 },
             attempts_per_sample: 1000,
         }
@@ -93,7 +95,7 @@ impl Default for PrmOptions {
 /// The most nodes a roadmap holds. Each node keeps its state, a few dozen edges and their
 /// collision results, so ten million nodes take gigabytes; a larger request is refused with
 /// [`PrmError::TooManyNodes`] before anything is drawn.
-pub const MAX_NODES: usize = 10_000_000;
+pub const MAX_ROADMAP_NODES: usize = 10_000_000;
 
 /// What went wrong building, growing, querying, changing or loading a roadmap.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -113,8 +115,8 @@ pub enum PrmError {
     Space(#[from] SpaceError),
     /// A sampler setting out of its range.
     #[error(transparent)]
-    Sampler(#[from] SamplerError),
-    /// [`Prm::grow`](crate::Prm::grow) ran out of draws: the free space is empty or very small. The samples
+    PrmSampler(#[from] SamplerError),
+    /// [`PolygonPrm::grow`](crate::Prm::grow) ran out of draws: the free space is empty or very small. The samples
     /// found were added.
     #[error("found only {added} of {requested} free samples in {attempts} draws")]
     SamplingExhausted {
@@ -125,7 +127,7 @@ pub enum PrmError {
         /// Draws made.
         attempts: u64,
     },
-    /// A configuration given to [`Prm::insert`](crate::Prm::insert) collides or leaves the bounds.
+    /// A configuration given to [`PolygonPrm::insert`](crate::Prm::insert) collides or leaves the bounds.
     #[error("the configuration {0:?} collides or is outside the bounds")]
     Blocked(Vec<f64>),
     /// A query's start collides or is outside the bounds.
@@ -134,13 +136,13 @@ pub enum PrmError {
     /// A query's goal collides or is outside the bounds.
     #[error("the goal {0:?} collides or is outside the bounds")]
     GoalBlocked(Vec<f64>),
-    /// The roadmap would pass [`MAX_NODES`] nodes.
-    #[error("a roadmap holds at most {max} nodes", max = MAX_NODES)]
+    /// The roadmap would pass [`MAX_ROADMAP_NODES`] nodes.
+    #[error("a roadmap holds at most {max} nodes", max = MAX_ROADMAP_NODES)]
     TooManyNodes,
     /// The world rejected an obstacle change.
     #[error(transparent)]
     World(#[from] WorldError),
-    /// [`Prm::remove_obstacle`](crate::Prm::remove_obstacle) named an obstacle that does not exist.
+    /// [`PolygonPrm::remove_obstacle`](crate::Prm::remove_obstacle) named an obstacle that does not exist.
     #[error("there is no obstacle {index} (the world has {count})")]
     NoSuchObstacle {
         /// The index given.

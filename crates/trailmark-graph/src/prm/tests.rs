@@ -15,7 +15,7 @@ fn world(seed: u64, radius: f64) -> PolygonWorld {
     convex_obstacles(20.0, 12, 6, radius, seed).expect("a valid world")
 }
 
-fn nodes<S: PlanarSpace>(prm: &Prm<S>) -> Vec<S::State> {
+fn nodes<S: PlanarSpace>(prm: &PolygonPrm<S>) -> Vec<S::State> {
     (0..prm.node_count() as u32).map(|u| prm.position(u)).collect()
 }
 
@@ -35,17 +35,21 @@ fn prm_star_uses_karaman_and_frazzolis_k() {
 #[test]
 fn bad_settings_are_typed_errors() {
     let w = world(1, 0.0);
-    assert_eq!(Prm::new(w.clone(), options(Connection::Nearest { k: 0 })).err(), Some(PrmError::InvalidK));
+    assert_eq!(
+        PolygonPrm::new(w.clone(), options(Connection::Nearest { k: 0 })).err(),
+        Some(PrmError::InvalidK)
+    );
     for radius in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-        let e = Prm::new(w.clone(), options(Connection::Radius { radius })).err();
+        let e = PolygonPrm::new(w.clone(), options(Connection::Radius { radius })).err();
         assert!(matches!(e, Some(PrmError::InvalidRadius(_))), "{e:?}");
     }
     let none = PrmOptions { attempts_per_sample: 0, ..PrmOptions::default() };
-    assert_eq!(Prm::new(w.clone(), none).err(), Some(PrmError::InvalidAttempts));
+    assert_eq!(PolygonPrm::new(w.clone(), none).err(), Some(PrmError::InvalidAttempts));
     let b = w.bounds();
     assert!(Dubins::new(b, 0.0).is_err() && Dubins::new(b, f64::NAN).is_err());
-    let bad = PrmOptions { sampler: Sampler::Gaussian { seed: 0, std_dev: -1.0 }, ..PrmOptions::default() };
-    assert!(matches!(Prm::new(w, bad).err(), Some(PrmError::Sampler(_))));
+    let bad =
+        PrmOptions { sampler: PrmSampler::Gaussian { seed: 0, std_dev: -1.0 }, ..PrmOptions::default() };
+    assert!(matches!(PolygonPrm::new(w, bad).err(), Some(PrmError::PrmSampler(_))));
 }
 
 #[test]
@@ -54,7 +58,8 @@ fn sampling_a_blocked_world_gives_up_with_an_error() {
     let cover =
         vec![Point::new(-1.0, -1.0), Point::new(2.0, -1.0), Point::new(2.0, 2.0), Point::new(-1.0, 2.0)];
     let w = PolygonWorld::new(bounds, vec![cover], 0.0).unwrap();
-    let mut prm = Prm::new(w, PrmOptions { attempts_per_sample: 10, ..PrmOptions::default() }).unwrap();
+    let mut prm =
+        PolygonPrm::new(w, PrmOptions { attempts_per_sample: 10, ..PrmOptions::default() }).unwrap();
     assert_eq!(prm.grow(5), Err(PrmError::SamplingExhausted { requested: 5, added: 0, attempts: 50 }));
     assert!(matches!(prm.insert(Point::new(0.5, 0.5)), Err(PrmError::Blocked(_))));
 }
@@ -65,7 +70,7 @@ fn sampling_a_blocked_world_gives_up_with_an_error() {
 fn radius_roadmap_equals_brute_force_radius_graph() {
     for (seed, r) in [(1, 0.0), (2, 0.4), (3, 1.0)] {
         let radius = 3.0;
-        let mut prm = Prm::new(world(seed, r), options(Connection::Radius { radius })).unwrap();
+        let mut prm = PolygonPrm::new(world(seed, r), options(Connection::Radius { radius })).unwrap();
         prm.grow(150).unwrap();
         let checker = prm.world().checker();
         let mut brute = BTreeSet::new();
@@ -86,7 +91,7 @@ fn radius_roadmap_equals_brute_force_radius_graph() {
 /// Components by union-find equal components by graph search.
 #[test]
 fn components_match_a_traversal() {
-    let mut prm = Prm::new(world(4, 0.5), options(Connection::Nearest { k: 3 })).unwrap();
+    let mut prm = PolygonPrm::new(world(4, 0.5), options(Connection::Nearest { k: 3 })).unwrap();
     prm.grow(120).unwrap();
     let n = prm.node_count();
     let mut label = vec![u32::MAX; n];
@@ -117,7 +122,7 @@ fn components_match_a_traversal() {
 
 #[test]
 fn inserting_the_same_point_returns_the_same_node() {
-    let mut prm = Prm::new(world(5, 0.0), PrmOptions::default()).unwrap();
+    let mut prm = PolygonPrm::new(world(5, 0.0), PrmOptions::default()).unwrap();
     prm.grow(10).unwrap();
     let p = prm.position(3);
     // More repeats than a k-d tree bucket holds.
@@ -129,12 +134,12 @@ fn inserting_the_same_point_returns_the_same_node() {
 
 #[test]
 fn growing_in_steps_equals_growing_at_once() {
-    let bridge = Sampler::Bridge { seed: 4, std_dev: 0.5 };
-    for sampler in [Sampler::Halton, Sampler::Uniform { seed: 9 }, bridge] {
+    let bridge = PrmSampler::Bridge { seed: 4, std_dev: 0.5 };
+    for sampler in [PrmSampler::Halton, PrmSampler::Uniform { seed: 9 }, bridge] {
         let o = PrmOptions { sampler, ..options(Connection::PrmStar) };
-        let mut once = Prm::new(world(6, 0.3), o).unwrap();
+        let mut once = PolygonPrm::new(world(6, 0.3), o).unwrap();
         once.grow(90).unwrap();
-        let mut steps = Prm::new(world(6, 0.3), o).unwrap();
+        let mut steps = PolygonPrm::new(world(6, 0.3), o).unwrap();
         steps.grow(40).unwrap();
         steps.grow(50).unwrap();
         assert_eq!(nodes(&once), nodes(&steps));
@@ -144,11 +149,11 @@ fn growing_in_steps_equals_growing_at_once() {
 
 #[test]
 fn save_and_load_keep_the_roadmap_and_its_sample_stream() {
-    let o = PrmOptions { sampler: Sampler::Uniform { seed: 11 }, ..options(Connection::Nearest { k: 5 }) };
-    let mut prm = Prm::new(world(7, 0.4), o).unwrap();
+    let o = PrmOptions { sampler: PrmSampler::Uniform { seed: 11 }, ..options(Connection::Nearest { k: 5 }) };
+    let mut prm = PolygonPrm::new(world(7, 0.4), o).unwrap();
     prm.grow(60).unwrap();
     let text = serde_json::to_string(&prm).unwrap();
-    let mut loaded: Prm = serde_json::from_str(&text).unwrap();
+    let mut loaded: PolygonPrm = serde_json::from_str(&text).unwrap();
     assert_eq!(nodes(&loaded), nodes(&prm));
     assert_eq!(loaded.edges().collect::<Vec<_>>(), prm.edges().collect::<Vec<_>>());
     assert_eq!(loaded.candidate_count(), prm.candidate_count());
@@ -162,27 +167,27 @@ fn save_and_load_keep_the_roadmap_and_its_sample_stream() {
     let mut doc: serde_json::Value = serde_json::from_str(&text).unwrap();
     let flag = doc["edges"][0][2].as_u64().unwrap();
     doc["edges"][0][2] = serde_json::json!(1 - flag);
-    assert!(serde_json::from_value::<Prm>(doc.clone()).unwrap_err().to_string().contains("edge 0"));
+    assert!(serde_json::from_value::<PolygonPrm>(doc.clone()).unwrap_err().to_string().contains("edge 0"));
     doc["edges"][0] = serde_json::json!([0, 1000, 1]);
-    assert!(serde_json::from_value::<Prm>(doc.clone()).unwrap_err().to_string().contains("edge 0"));
+    assert!(serde_json::from_value::<PolygonPrm>(doc.clone()).unwrap_err().to_string().contains("edge 0"));
     let inside =
         prm.world().obstacles()[0].vertices().iter().fold(Vector::zeros(), |s, v| s + v.coords) / 6.0;
     doc["nodes"][2] = serde_json::json!([inside.x, inside.y]);
-    assert!(serde_json::from_value::<Prm>(doc).unwrap_err().to_string().contains("node 2"));
+    assert!(serde_json::from_value::<PolygonPrm>(doc).unwrap_err().to_string().contains("node 2"));
 }
 
 /// After an obstacle is added and removed, the free edges are the candidates free in the
 /// current world, and the reported changes are exactly the difference.
 #[test]
 fn obstacle_changes_report_exactly_the_changed_edges() {
-    let mut prm = Prm::new(world(8, 0.3), options(Connection::Nearest { k: 6 })).unwrap();
+    let mut prm = PolygonPrm::new(world(8, 0.3), options(Connection::Nearest { k: 6 })).unwrap();
     prm.grow(150).unwrap();
     let before: BTreeSet<(u32, u32)> = prm.edges().map(|(a, b, _)| (a, b)).collect();
     let block =
         vec![Point::new(6.0, 6.0), Point::new(14.0, 6.0), Point::new(14.0, 14.0), Point::new(6.0, 14.0)];
     let changes = prm.add_obstacle(block).unwrap();
     let checker = prm.world().checker();
-    let free_now = |prm: &Prm| -> BTreeSet<(u32, u32)> {
+    let free_now = |prm: &PolygonPrm| -> BTreeSet<(u32, u32)> {
         prm.candidates
             .iter()
             .filter(|c| checker_free(&checker, prm, c.ends))
@@ -209,7 +214,7 @@ fn obstacle_changes_report_exactly_the_changed_edges() {
     assert!(matches!(prm.remove_obstacle(99), Err(PrmError::NoSuchObstacle { index: 99, .. })));
 }
 
-fn checker_free(checker: &CollisionChecker, prm: &Prm, [a, b]: [u32; 2]) -> bool {
+fn checker_free(checker: &CollisionChecker, prm: &PolygonPrm, [a, b]: [u32; 2]) -> bool {
     checker.segment_is_free(prm.position(a), prm.position(b))
 }
 
@@ -219,8 +224,8 @@ fn checker_free(checker: &CollisionChecker, prm: &Prm, [a, b]: [u32; 2]) -> bool
 fn dubins_edges_are_directed_and_free() {
     let w = world(9, 0.3);
     let space = Dubins::new(w.bounds(), 1.5).unwrap();
-    let o = PrmOptions { sampler: Sampler::Halton, ..options(Connection::Nearest { k: 8 }) };
-    let mut prm = Prm::with_space(w, space, o).unwrap();
+    let o = PrmOptions { sampler: PrmSampler::Halton, ..options(Connection::Nearest { k: 8 }) };
+    let mut prm = PolygonPrm::with_space(w, space, o).unwrap();
     prm.grow(80).unwrap();
     let checker = prm.world().checker();
     let mut asymmetric = 0;

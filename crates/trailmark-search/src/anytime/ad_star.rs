@@ -13,7 +13,7 @@ use trailmark_core::termination::{Stop, Termination, Watch};
 use crate::anytime::{AnytimeResult, EpsilonSchedule, Iteration};
 use crate::error::SearchError;
 use crate::incremental::EdgeChange;
-use crate::incremental::engine::Direction;
+use crate::incremental::engine::SearchDirection;
 use crate::incremental::mode::Anytime;
 use crate::incremental::planner::LifelongPlanner;
 use crate::incremental::replanner::Replanner;
@@ -104,7 +104,7 @@ where
     {
         schedule.check()?;
         let planner = LifelongPlanner::new(
-            Direction::Backward,
+            SearchDirection::Backward,
             graph,
             start,
             goal,

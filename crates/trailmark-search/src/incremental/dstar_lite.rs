@@ -8,7 +8,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
-use crate::incremental::engine::Direction;
+use crate::incremental::engine::SearchDirection;
 use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
 use crate::incremental::replanner::replanner_by_inherent_methods;
 
@@ -61,7 +61,7 @@ where
     N: Copy + Eq + Hash + Debug,
     H: FnMut(N, N) -> Cost,
 {
-    shared_lifelong_methods!(Direction::Backward);
+    shared_lifelong_methods!(SearchDirection::Backward);
 
     /// Moves the robot to `to` (usually [`next_step`](Self::next_step)). Cheap: the keys are
     /// adjusted when the graph next changes. Errors when `to` is not a node of the graph.

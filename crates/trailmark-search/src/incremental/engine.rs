@@ -17,7 +17,7 @@ use crate::stats::SearchStats;
 
 /// Which way the values flow: from the start (LPA*) or from the goal (D* Lite).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Direction {
+pub(crate) enum SearchDirection {
     Forward,
     Backward,
 }
@@ -26,7 +26,7 @@ pub(crate) enum Direction {
 /// expanded nodes are treated ([`Exact`] for LPA* and D* Lite, [`Anytime`] for AD*).
 #[derive(Debug, Clone)]
 pub(crate) struct RepairEngine<N: Debug, M> {
-    pub dir: Direction,
+    pub dir: SearchDirection,
     /// `g` and `rhs` of every slot.
     v: Values,
     queue: IndexedHeap<PackedKey>,
@@ -74,7 +74,7 @@ pub(crate) fn cost_error<N: Debug>(from: N, to: N, cost: Cost) -> SearchError<N>
 impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
     /// An empty search with `source` (already checked to be a node) at `rhs = 0`; the caller
     /// queues it with [`RepairEngine::update_vertex`].
-    pub fn new<G>(dir: Direction, graph: &G, source: N, mode: M) -> Result<Self, SearchError<N>>
+    pub fn new<G>(dir: SearchDirection, graph: &G, source: N, mode: M) -> Result<Self, SearchError<N>>
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
@@ -310,7 +310,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.each_edge(graph, slot, self.dir == Direction::Forward, visit)
+        self.each_edge(graph, slot, self.dir == SearchDirection::Forward, visit)
     }
 
     /// Calls `visit(self, slot, neighbour, cost)` for each edge `slot`'s `rhs` is computed over: its
@@ -320,7 +320,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
-        self.each_edge(graph, slot, self.dir == Direction::Backward, visit)
+        self.each_edge(graph, slot, self.dir == SearchDirection::Backward, visit)
     }
 
     /// Calls `visit(self, slot, neighbour, cost)` for each edge leaving (`outgoing`) or entering

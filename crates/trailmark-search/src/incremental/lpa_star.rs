@@ -8,7 +8,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
-use crate::incremental::engine::Direction;
+use crate::incremental::engine::SearchDirection;
 use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
 use crate::incremental::replanner::replanner_by_inherent_methods;
 
@@ -56,7 +56,7 @@ where
     N: Copy + Eq + Hash + Debug,
     H: FnMut(N, N) -> Cost,
 {
-    shared_lifelong_methods!(Direction::Forward);
+    shared_lifelong_methods!(SearchDirection::Forward);
 
     /// Tells the planner that edges entering these nodes changed, in whatever way: each node's
     /// `rhs` is recomputed from its current in-edges. Name every node with an in-edge that

@@ -9,7 +9,7 @@ use trailmark_core::path::Path;
 
 use crate::error::{SearchError, check_endpoints};
 use crate::heuristic::HeuristicCheck;
-use crate::incremental::engine::{Direction, RepairEngine, cost_error, valid_cost};
+use crate::incremental::engine::{RepairEngine, SearchDirection, cost_error, valid_cost};
 use crate::incremental::mode::{Anytime, Exact, Mode};
 use crate::incremental::{EdgeChange, Expansion, Key};
 use crate::stats::SearchStats;
@@ -62,7 +62,7 @@ where
 {
     /// A planner in direction `dir` whose engine treats expanded nodes as `mode` says.
     pub fn new<G>(
-        dir: Direction,
+        dir: SearchDirection,
         graph: &G,
         start: N,
         goal: N,
@@ -73,7 +73,7 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         check_endpoints(graph, start, goal)?;
-        let source = if dir == Direction::Backward { goal } else { start };
+        let source = if dir == SearchDirection::Backward { goal } else { start };
         let engine = RepairEngine::new(dir, graph, source, mode)?;
         let (start_slot, goal_slot) = (graph.index_of(start), graph.index_of(goal));
         let mut planner = LifelongPlanner {
@@ -103,7 +103,7 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         check_endpoints(graph, start, goal)?;
-        let source = if self.engine.dir == Direction::Backward { goal } else { start };
+        let source = if self.engine.dir == SearchDirection::Backward { goal } else { start };
         self.engine.reset(graph, source)?;
         (self.start, self.goal, self.last) = (start, goal, start);
         (self.start_slot, self.goal_slot) = (graph.index_of(start), graph.index_of(goal));
@@ -122,8 +122,8 @@ where
     /// The node whose value the search computes: the goal (forward) or the start (backward).
     fn target(&self) -> usize {
         match self.engine.dir {
-            Direction::Forward => self.goal_slot,
-            Direction::Backward => self.start_slot,
+            SearchDirection::Forward => self.goal_slot,
+            SearchDirection::Backward => self.start_slot,
         }
     }
 
@@ -139,7 +139,7 @@ where
         G: IndexedGraph<Node = N> + ?Sized,
     {
         let LifelongPlanner { engine, heuristic, start, goal, last, k_m, heuristics, h_overflow, .. } = self;
-        let backward = engine.dir == Direction::Backward;
+        let backward = engine.dir == SearchDirection::Backward;
         let mut estimate =
             move |a: N, b: N| heuristics.accept(if backward { b } else { a }, heuristic(a, b)).unwrap_or(0.0);
         let mut rekey = false;
@@ -254,7 +254,7 @@ where
                 Ok((slots, new))
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let backward = self.engine.dir == Direction::Backward;
+        let backward = self.engine.dir == SearchDirection::Backward;
         {
             let (engine, mut h) = self.engine_with_heuristic(graph);
             for ((from, to), new) in slots {

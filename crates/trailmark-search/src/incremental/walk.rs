@@ -8,7 +8,7 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
-use crate::incremental::engine::{Direction, RepairEngine};
+use crate::incremental::engine::{RepairEngine, SearchDirection};
 use crate::incremental::mode::Mode;
 
 impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
@@ -72,8 +72,8 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
                 }
             };
             match self.dir {
-                Direction::Backward => graph.for_each_successor_index(at, |s, _, c| collect(s, c)),
-                Direction::Forward => graph.for_each_predecessor_index(at, |s, _, c| collect(s, c)),
+                SearchDirection::Backward => graph.for_each_successor_index(at, |s, _, c| collect(s, c)),
+                SearchDirection::Forward => graph.for_each_predecessor_index(at, |s, _, c| collect(s, c)),
             }
             let best = supports.iter().map(|&(_, via)| via).fold(f64::INFINITY, f64::min);
             for &(s, via) in &supports {
@@ -103,8 +103,8 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
             }
         };
         match self.dir {
-            Direction::Backward => graph.for_each_successor_index(at, |s, _, c| consider(s, c)),
-            Direction::Forward => graph.for_each_predecessor_index(at, |s, _, c| consider(s, c)),
+            SearchDirection::Backward => graph.for_each_successor_index(at, |s, _, c| consider(s, c)),
+            SearchDirection::Forward => graph.for_each_predecessor_index(at, |s, _, c| consider(s, c)),
         }
         best.map(|b| b.2)
     }
@@ -115,7 +115,7 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         let mut nodes: Vec<N> = self.walk(graph, target)?.into_iter().map(|s| graph.node_at(s)).collect();
-        if self.dir == Direction::Forward {
+        if self.dir == SearchDirection::Forward {
             nodes.reverse();
         }
         Some(Path { nodes, cost })

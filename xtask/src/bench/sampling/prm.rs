@@ -1,5 +1,5 @@
 //! PRM* in the sampling section: on each world, one roadmap shared by all the world's queries,
-//! trailmark's [`Prm`] beside OMPL's PRMstar (with `--with-ompl`).
+//! trailmark's [`PolygonPrm`] beside OMPL's PRMstar (with `--with-ompl`).
 //!
 //! Both grow a roadmap of the same number of uniform samples, each joined to its
 //! `⌈e (1 + 1/d) ln n⌉` nearest neighbours, validating states and motions with the same exact
@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 use trailmark::core::geometry::Point;
-use trailmark::graph::prm::{Connection, Prm, PrmOptions, Sampler};
+use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::prelude::*;
 
 use crate::bench::ompl::{OmplDriver, OmplInput};
@@ -129,12 +129,12 @@ pub fn bench_prm(
 ) -> Result<PrmRow, String> {
     let err = |e: &dyn std::fmt::Display| format!("{}: PRM*: {e}", w.name);
     let options = PrmOptions {
-        sampler: Sampler::Uniform { seed },
+        sampler: PrmSampler::Uniform { seed },
         connection: Connection::PrmStar,
         ..PrmOptions::default()
     };
     let clock = Instant::now();
-    let mut prm = Prm::new(w.world.clone(), options).map_err(|e| err(&e))?;
+    let mut prm = PolygonPrm::new(w.world.clone(), options).map_err(|e| err(&e))?;
     prm.grow(samples).map_err(|e| err(&e))?;
     let build_ms = clock.elapsed().as_secs_f64() * 1e3;
     let mut tally = PrmTally::default();

@@ -12,7 +12,7 @@ use crate::navigate::config::{Navigation, PlannerChoice, Target};
 use crate::navigate::error::NavigateError;
 use crate::navigate::graph::{NavGraph, VIRTUAL_GOAL, estimate};
 use crate::navigate::report::{NavigationOutcome, NavigationReport};
-use crate::navigate::world::World;
+use crate::navigate::world::SimulatedWorld;
 
 /// What one plan produced: the next cell (`None`: no path), the plan's cost, expansions, and
 /// the inflation it was made with (1 unless AD* stopped early).
@@ -128,7 +128,7 @@ fn run(
     planner.check()?;
     let mut replanner = None;
     let explore = target == Target::Explore;
-    let mut world = World::new(truth, prior, start, explore);
+    let mut world = SimulatedWorld::new(truth, prior, start, explore);
     let goal_node = match target {
         Target::Cell(goal) => goal,
         Target::Explore => VIRTUAL_GOAL,

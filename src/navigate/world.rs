@@ -7,7 +7,7 @@ use trailmark_graph::GridGraph;
 use crate::navigate::graph::NavGraph;
 
 /// The true world (with the follower), the robot's map, and the cells visited.
-pub(super) struct World {
+pub(super) struct SimulatedWorld {
     truth: Grid,
     /// The true map without the follower.
     fixed: Grid,
@@ -19,13 +19,13 @@ pub(super) struct World {
     pub(super) discoveries: usize,
 }
 
-impl World {
+impl SimulatedWorld {
     pub(super) fn new(truth: &Grid, prior: &Grid, start: Cell, explore: bool) -> Self {
         let grid = GridGraph::new(prior, Connectivity::Eight);
         let mut visited = vec![false; grid.node_bound()];
         visited[grid.index_of(start)] = true;
         let known = NavGraph { grid, visited, explore };
-        World {
+        SimulatedWorld {
             truth: truth.clone(),
             fixed: truth.clone(),
             known,
@@ -87,7 +87,7 @@ mod tests {
     #[test]
     fn a_follower_blocks_and_frees_cells() {
         let truth = Grid::new(5, 1).unwrap();
-        let mut world = World::new(&truth, &truth, Cell::new(0, 0), false);
+        let mut world = SimulatedWorld::new(&truth, &truth, Cell::new(0, 0), false);
         world.move_follower(Some(Cell::new(1, 0)));
         assert!(!world.truth.is_passable(Cell::new(1, 0)));
         world.move_follower(Some(Cell::new(2, 0)));

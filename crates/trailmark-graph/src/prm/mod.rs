@@ -63,7 +63,7 @@ mod space;
 
 use options::Drawer;
 pub use options::{MAX_ROADMAP_NODES, PrmError, PrmOptions, PrmSampler};
-use space::Exact;
+use space::ExactValidity;
 pub use space::PlanarSpace;
 
 /// An edge the roadmap tried: free (in the graph) or blocked (kept so an obstacle removal can
@@ -380,7 +380,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     /// One draw of the sampler (`None` when it found nothing).
     fn draw(&mut self) -> Option<S::State> {
         self.stream.attempts += 1;
-        let validity = Exact(&self.checker);
+        let validity = ExactValidity(&self.checker);
         let mut checks = 0;
         let mut draw = Draw::new(&mut self.stream.rng, &mut checks);
         let space = &self.space;

@@ -33,9 +33,9 @@ where
 }
 
 /// The world's checker as the samplers' validity.
-pub(super) struct Exact<'a>(pub(super) &'a CollisionChecker);
+pub(super) struct ExactValidity<'a>(pub(super) &'a CollisionChecker);
 
-impl<S: PlanarSpace> Validity<S> for Exact<'_> {
+impl<S: PlanarSpace> Validity<S> for ExactValidity<'_> {
     fn state_is_valid(&self, space: &S, state: &S::State) -> bool {
         space.state_is_free(self.0, state)
     }

@@ -39,7 +39,7 @@ use crate::roadmap::{Roadmap, RoadmapQuery};
 
 mod sweep;
 
-use sweep::{Incidence, Ray, Sweep, Target, Wedge};
+use sweep::{Incidence, Ray, Sighting, Sweep, Wedge};
 
 /// Which edges a [`VisibilityGraph`] keeps.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -215,7 +215,7 @@ impl VisibilityGraph {
                     &depart,
                     None,
                     |target| {
-                        let Target::Position(w) = target else { return };
+                        let Sighting::Position(w) = target else { return };
                         for &u in self.nodes_at(w) {
                             if (u as usize) > v && self.joins(node, &self.nodes[u as usize]) {
                                 pairs.push((v as u32, u));
@@ -319,13 +319,13 @@ impl VisibilityGraph {
             let row = &mut links[end];
             sweep.run(&self.space, &self.incident, at, position, Wedge::full(at), &depart, extra, |target| {
                 let w = match target {
-                    Target::Extra => {
+                    Sighting::Extra => {
                         if goal_admits_start {
                             direct = Some((goal - at).norm());
                         }
                         return;
                     }
-                    Target::Position(w) => w,
+                    Sighting::Position(w) => w,
                 };
                 if goal_position == Some(w) && goal_admits_start {
                     direct = Some((goal - at).norm());

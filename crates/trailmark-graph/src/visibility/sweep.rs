@@ -45,7 +45,7 @@ impl Incidence {
 }
 
 /// What a sweep found visible.
-pub(super) enum Target {
+pub(super) enum Sighting {
     /// A boundary vertex position.
     Position(usize),
     /// The extra point of the sweep.
@@ -255,7 +255,7 @@ impl Sweep {
         wedge: Wedge,
         depart: &dyn Fn(Point) -> bool,
         extra: Option<Point>,
-        mut found: impl FnMut(Target),
+        mut found: impl FnMut(Sighting),
     ) {
         let positions = space.positions();
         let extra_id = positions.len() as u32;
@@ -361,7 +361,7 @@ impl Sweep {
                     open = side * orient(nearest.a, nearest.b, w) >= 0.0;
                 }
                 if open {
-                    found(if id == extra_id { Target::Extra } else { Target::Position(id as usize) });
+                    found(if id == extra_id { Sighting::Extra } else { Sighting::Position(id as usize) });
                 }
                 previous = Some(id);
             }

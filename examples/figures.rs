@@ -4,8 +4,9 @@
 use std::path::Path;
 
 use trailmark::core::generate;
-use trailmark::navigate::{Navigation, PlannerChoice, Target, navigate_together};
+use trailmark::navigate::{Navigation, Target, navigate_together};
 use trailmark::prelude::*;
+use trailmark::solve::PlannerSpec;
 use trailmark::svg::GridSvg;
 
 fn write(name: &str, svg: String) -> std::io::Result<()> {
@@ -89,9 +90,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let truth = generate::rooms(96, 64, 15, 5)?;
     let prior = Grid::new(96, 64)?;
     let (start, goal) = (Cell::new(2, 61), Cell::new(93, 2));
-    let config = Navigation { planner: PlannerChoice::DStarLite, sensor_radius: 3, ..Navigation::default() };
-    let runs =
-        navigate_together(&truth, &prior, start, Target::Cell(goal), &config, &[PlannerChoice::AStar])?;
+    let config = Navigation {
+        planner: PlannerSpec::DStarLite { heuristic: None },
+        sensor_radius: 3,
+        ..Navigation::default()
+    };
+    let runs = navigate_together(
+        &truth,
+        &prior,
+        start,
+        Target::Cell(goal),
+        &config,
+        &[PlannerSpec::AStar { heuristic: None }],
+    )?;
     let (dstar, scratch) = (&runs[0], &runs[1]);
     println!(
         "navigation: {:?} in {} steps; D* Lite {} expansions, A* from scratch {}",

@@ -3,14 +3,21 @@
 //! and D* Lite does less planning work than A* from scratch on the same run.
 
 use trailmark::core::generate;
-use trailmark::navigate::{NavigateError, Navigation, NavigationOutcome, PlannerChoice, Target, navigate};
+use trailmark::navigate::{NavigateError, Navigation, NavigationOutcome, Target, navigate};
 use trailmark::prelude::*;
+use trailmark::solve::{AnytimeSpec, PlannerSpec, SamplingSpec};
 
-const PLANNERS: [PlannerChoice; 4] = [
-    PlannerChoice::AStar,
-    PlannerChoice::LpaStar,
-    PlannerChoice::DStarLite,
-    PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(200) },
+const PLANNERS: [PlannerSpec; 4] = [
+    PlannerSpec::AStar { heuristic: None },
+    PlannerSpec::LpaStar { heuristic: None },
+    PlannerSpec::DStarLite { heuristic: None },
+    PlannerSpec::AdStar(AnytimeSpec {
+        epsilon: Some(3.0),
+        epsilon_step: Some(0.5),
+        heuristic: None,
+        time_limit_s: None,
+        max_expansions: Some(200),
+    }),
 ];
 
 fn far_apart(grid: &Grid) -> (Cell, Cell) {
@@ -48,7 +55,8 @@ fn every_planner_reaches_the_goal_through_free_cells_only() {
             astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal)).unwrap().cost();
         for planner in PLANNERS {
             for radius in [1, 4] {
-                let config = Navigation { planner, sensor_radius: radius, ..Navigation::default() };
+                let config =
+                    Navigation { planner: planner.clone(), sensor_radius: radius, ..Navigation::default() };
                 let run = navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap();
                 match shortest {
                     None => {
@@ -81,7 +89,7 @@ fn a_walled_in_goal_is_proven_unreachable() {
         Grid::from_rows(&["..........", "......@@@.", "......@.@.", "......@@@.", ".........."]).unwrap();
     let prior = Grid::new(10, 5).unwrap();
     for planner in PLANNERS {
-        let config = Navigation { planner, ..Navigation::default() };
+        let config = Navigation { planner: planner.clone(), ..Navigation::default() };
         let run = navigate(&truth, &prior, Cell::new(0, 2), Target::Cell(Cell::new(7, 2)), &config).unwrap();
         assert_eq!(run.outcome, NavigationOutcome::Unreachable, "{planner:?}");
         assert!(run.discoveries >= 8, "the robot walked up to the walls and saw them");
@@ -99,7 +107,8 @@ fn a_huge_sensor_radius_sees_the_whole_map() {
     let graph = GridGraph::new(&truth, Connectivity::Eight);
     for planner in PLANNERS {
         for radius in [u32::MAX, u32::MAX - 1, u32::MAX / 2 + 1] {
-            let config = Navigation { planner, sensor_radius: radius, ..Navigation::default() };
+            let config =
+                Navigation { planner: planner.clone(), sensor_radius: radius, ..Navigation::default() };
             let walled =
                 navigate(&truth, &prior, Cell::new(0, 2), Target::Cell(Cell::new(7, 2)), &config).unwrap();
             assert_eq!(walled.outcome, NavigationOutcome::Unreachable, "{planner:?}, radius {radius}");
@@ -127,8 +136,8 @@ fn greedy_mapping_visits_every_reachable_cell() {
     let mut search = Search::new();
     search.dijkstra_all(&graph, start).unwrap();
     let reachable: Vec<Cell> = search.reached(&graph).collect();
-    for planner in [PlannerChoice::AStar, PlannerChoice::DStarLite] {
-        let config = Navigation { planner, ..Navigation::default() };
+    for planner in [PlannerSpec::AStar { heuristic: None }, PlannerSpec::DStarLite { heuristic: None }] {
+        let config = Navigation { planner: planner.clone(), ..Navigation::default() };
         let run = navigate(&truth, &prior, start, Target::Explore, &config).unwrap();
         assert_eq!(run.outcome, NavigationOutcome::Explored, "{planner:?}");
         for cell in &reachable {
@@ -142,11 +151,12 @@ fn dstar_lite_plans_with_fewer_expansions_than_astar_from_scratch() {
     let truth = generate::random(128, 128, 0.25, 5).unwrap();
     let prior = Grid::new(128, 128).unwrap();
     let (start, goal) = far_apart(&truth);
-    let run = |planner| {
+    let run = |planner: PlannerSpec| {
         let config = Navigation { planner, sensor_radius: 2, ..Navigation::default() };
         navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap()
     };
-    let (scratch, incremental) = (run(PlannerChoice::AStar), run(PlannerChoice::DStarLite));
+    let (scratch, incremental) =
+        (run(PlannerSpec::AStar { heuristic: None }), run(PlannerSpec::DStarLite { heuristic: None }));
     assert_eq!(scratch.outcome, NavigationOutcome::Reached);
     assert_eq!(incremental.outcome, NavigationOutcome::Reached);
     assert!(
@@ -163,7 +173,12 @@ fn a_follower_behind_the_robot_does_not_stop_it() {
     let prior = Grid::new(40, 30).unwrap();
     let (start, goal) = far_apart(&truth);
     for planner in PLANNERS {
-        let config = Navigation { planner, sensor_radius: 2, follower_lag: Some(2), ..Navigation::default() };
+        let config = Navigation {
+            planner: planner.clone(),
+            sensor_radius: 2,
+            follower_lag: Some(2),
+            ..Navigation::default()
+        };
         let run = navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap();
         assert!(
             matches!(run.outcome, NavigationOutcome::Reached | NavigationOutcome::Unreachable),
@@ -189,13 +204,50 @@ fn bad_settings_are_errors() {
     );
     assert_eq!(go(&prior, Cell::new(1, 1), b, &ok).unwrap_err(), NavigateError::Start(Cell::new(1, 1)));
     assert_eq!(go(&prior, a, Cell::new(3, 0), &ok).unwrap_err(), NavigateError::Goal(Cell::new(3, 0)));
-    let blind = Navigation { sensor_radius: 0, ..ok };
+    let blind = Navigation { sensor_radius: 0, ..ok.clone() };
     assert_eq!(go(&prior, a, b, &blind).unwrap_err(), NavigateError::SensorRadius);
-    let bad = Navigation {
-        planner: PlannerChoice::AdStar { epsilon: 0.5, epsilon_step: 0.5, expansions_per_step: None },
-        ..ok
-    };
+    let with = |planner: PlannerSpec| Navigation { planner, ..ok.clone() };
+    let ad_star = |spec| with(PlannerSpec::AdStar(spec));
+    let bad = ad_star(AnytimeSpec { epsilon: Some(0.5), epsilon_step: Some(0.5), ..AnytimeSpec::default() });
     assert!(matches!(go(&prior, a, b, &bad).unwrap_err(), NavigateError::Planner(_)));
+    for time_limit_s in [-1.0, f64::NAN, 1e300] {
+        let bad = ad_star(AnytimeSpec { time_limit_s: Some(time_limit_s), ..AnytimeSpec::default() });
+        assert!(matches!(go(&prior, a, b, &bad).unwrap_err(), NavigateError::Settings(_)), "{time_limit_s}");
+    }
+    for one_shot in [PlannerSpec::Dijkstra {}, PlannerSpec::RrtConnect(SamplingSpec::default())] {
+        let name = one_shot.name();
+        assert_eq!(
+            go(&prior, a, b, &with(one_shot)).unwrap_err(),
+            NavigateError::NotAReplanner { planner: name }
+        );
+    }
+    let manhattan = with(PlannerSpec::DStarLite { heuristic: Some(GridHeuristic::Manhattan) });
+    assert_eq!(go(&prior, a, b, &manhattan).unwrap_err(), NavigateError::Heuristic(GridHeuristic::Manhattan));
+    let octile = with(PlannerSpec::DStarLite { heuristic: Some(GridHeuristic::Octile) });
+    assert!(go(&prior, a, b, &octile).unwrap().reached());
+}
+
+/// The settings of the old `PlannerChoice` give the same runs as the `PlannerSpec` they convert
+/// into, for one release.
+#[test]
+#[allow(deprecated)]
+fn the_deprecated_planner_choice_converts_into_the_same_planner() {
+    use trailmark::navigate::PlannerChoice;
+    let truth = generate::random(40, 30, 0.25, 3).unwrap();
+    let prior = Grid::new(40, 30).unwrap();
+    let (start, goal) = far_apart(&truth);
+    let old = [
+        PlannerChoice::AStar,
+        PlannerChoice::LpaStar,
+        PlannerChoice::DStarLite,
+        PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(200) },
+    ];
+    for (choice, spec) in old.into_iter().zip(PLANNERS) {
+        assert_eq!(PlannerSpec::from(choice), spec);
+        let config = Navigation { planner: choice.into(), sensor_radius: 2, ..Navigation::default() };
+        let run = navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap();
+        assert_eq!(run.planner, spec.name());
+    }
 }
 
 #[test]
@@ -219,12 +271,13 @@ fn planners_on_one_run_agree_at_every_step() {
         let prior = Grid::new(60, 40).unwrap();
         let (start, goal) = connected_far_apart(&truth);
         let config = Navigation {
-            planner: PlannerChoice::DStarLite,
+            planner: PlannerSpec::DStarLite { heuristic: None },
             sensor_radius: radius,
             follower_lag: follower,
             ..Navigation::default()
         };
-        let others = [PLANNERS[0], PLANNERS[1], PLANNERS[3]];
+        let [astar, lpa_star, _, ad_star] = PLANNERS;
+        let others = [astar, lpa_star, ad_star];
         let reports = navigate_together(&truth, &prior, start, Target::Cell(goal), &config, &others).unwrap();
         let driver = &reports[0];
         assert!(

@@ -2,14 +2,45 @@
 
 use serde::{Deserialize, Serialize};
 
-use trailmark_core::cost::Cost;
-use trailmark_core::grid::Cell;
-use trailmark_core::termination::Termination;
-use trailmark_search::{AdStar, DStarLite, EpsilonSchedule, LpaStar, RepeatedAStar, Replanner, SearchError};
+use trailmark_core::grid::{Cell, GridHeuristic};
 
-use crate::navigate::graph::NavGraph;
+use crate::navigate::error::NavigateError;
+use crate::solve::{AnytimeSpec, PlannerSpec};
 
-/// Which planner drives the robot.
+/// Errors when the planner's settings are out of range (its limits, as `solve` checks them) or
+/// it asks for a heuristic other than the octile distance that guides every navigation planner.
+/// Whether it can replan at all is [`PlannerSpec::replanner`]'s answer.
+pub(super) fn check_planner(planner: &PlannerSpec) -> Result<(), NavigateError> {
+    planner.check_limits()?;
+    match planner.heuristic().0 {
+        None | Some(GridHeuristic::Octile) => Ok(()),
+        Some(heuristic) => Err(NavigateError::Heuristic(heuristic)),
+    }
+}
+
+/// The planner settings of the deprecated [`PlannerChoice`], as a [`PlannerSpec`].
+#[allow(deprecated)]
+impl From<PlannerChoice> for PlannerSpec {
+    fn from(choice: PlannerChoice) -> Self {
+        match choice {
+            PlannerChoice::AStar => PlannerSpec::AStar { heuristic: None },
+            PlannerChoice::LpaStar => PlannerSpec::LpaStar { heuristic: None },
+            PlannerChoice::DStarLite => PlannerSpec::DStarLite { heuristic: None },
+            PlannerChoice::AdStar { epsilon, epsilon_step, expansions_per_step } => {
+                PlannerSpec::AdStar(AnytimeSpec {
+                    epsilon: Some(epsilon),
+                    epsilon_step: Some(epsilon_step),
+                    max_expansions: expansions_per_step,
+                    ..AnytimeSpec::default()
+                })
+            }
+        }
+    }
+}
+
+/// Which planner drove the robot before [`Navigation::planner`] became a [`PlannerSpec`]; kept
+/// for one release, converting into one with `.into()`.
+#[deprecated(since = "0.2.0", note = "use trailmark::solve::PlannerSpec (the solve registry's planners)")]
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "name", rename_all = "snake_case")]
 pub enum PlannerChoice {
@@ -20,77 +51,15 @@ pub enum PlannerChoice {
     LpaStar,
     /// D* Lite.
     DStarLite,
-    /// AD*: each step improves within `expansions_per_step` expansions, from `epsilon` down by
-    /// `epsilon_step`; when the budget runs out before a path, the iteration in progress is
-    /// completed anyway (the robot needs a path to move). A budget of 0 makes one iteration per
-    /// step.
+    /// AD* with `expansions_per_step` expansions per step.
     AdStar {
         /// The initial inflation.
-        #[serde(default = "default_epsilon")]
         epsilon: f64,
         /// The decrease per iteration.
-        #[serde(default = "default_epsilon_step")]
         epsilon_step: f64,
         /// The expansion budget of one step's improvement; `None` improves to epsilon = 1.
-        #[serde(default)]
         expansions_per_step: Option<u64>,
     },
-}
-
-fn default_epsilon() -> f64 {
-    EpsilonSchedule::default().initial
-}
-
-fn default_epsilon_step() -> f64 {
-    EpsilonSchedule::default().step
-}
-
-impl PlannerChoice {
-    /// Errors when the planner's settings are invalid (an AD* epsilon schedule), before anything
-    /// runs.
-    pub(super) fn check(&self) -> Result<(), SearchError<Cell>> {
-        match *self {
-            PlannerChoice::AdStar { epsilon, epsilon_step, .. } => {
-                EpsilonSchedule::new(epsilon, epsilon_step).check::<Cell>()
-            }
-            _ => Ok(()),
-        }
-    }
-
-    /// The planner, from `start` to `target` on the robot's graph with the heuristic `h`. Each
-    /// is kept between steps and told what changed; LPA* restarts when the robot moves, since a
-    /// forward search cannot keep its values when its start moves.
-    pub(super) fn replanner<H>(
-        &self,
-        graph: &NavGraph,
-        start: Cell,
-        target: Cell,
-        h: H,
-    ) -> Result<Box<dyn Replanner<NavGraph>>, SearchError<Cell>>
-    where
-        H: Fn(Cell, Cell) -> Cost + Copy + 'static,
-    {
-        Ok(match *self {
-            PlannerChoice::AStar => Box::new(RepeatedAStar::new(graph, start, target, h)?),
-            PlannerChoice::LpaStar => Box::new(LpaStar::new(graph, start, target, h)?),
-            PlannerChoice::DStarLite => Box::new(DStarLite::new(graph, start, target, h)?),
-            PlannerChoice::AdStar { epsilon, epsilon_step, expansions_per_step } => {
-                let schedule = EpsilonSchedule::new(epsilon, epsilon_step);
-                let per_plan = Termination { max_expansions: expansions_per_step, ..Termination::default() };
-                Box::new(AdStar::new(graph, start, target, h, schedule)?.with_termination_per_plan(per_plan))
-            }
-        })
-    }
-
-    /// The planner's name as in the problem JSON (`"astar"`, `"lpa_star"`, ...).
-    pub fn name(&self) -> &'static str {
-        match self {
-            PlannerChoice::AStar => "astar",
-            PlannerChoice::LpaStar => "lpa_star",
-            PlannerChoice::DStarLite => "dstar_lite",
-            PlannerChoice::AdStar { .. } => "ad_star",
-        }
-    }
 }
 
 /// Where the robot is going.
@@ -104,10 +73,18 @@ pub enum Target {
 }
 
 /// How the simulation runs.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Navigation {
-    /// The planner.
-    pub planner: PlannerChoice,
+    /// The planner that drives the robot: a planner of the solve registry that can replan
+    /// ([`PlannerSpec::replanner`]), as in a problem document (`{"name": "dstar_lite"}`):
+    /// `astar` (A* from scratch at every step), `lpa_star` (restarted each time the start
+    /// moves: a forward search cannot keep its values when its start moves), `dstar_lite`, or
+    /// `ad_star`, whose `max_expansions` and `time_limit_s` bound each step's improvement from
+    /// `epsilon` down by `epsilon_step` (when they stop it before a path, the iteration in
+    /// progress is completed anyway, since the robot needs a path to move; a budget of 0 makes
+    /// one iteration per step). Every planner is guided by the octile distance (its
+    /// `heuristic` may be left out or be `octile`).
+    pub planner: PlannerSpec,
     /// Cells within this Chebyshev distance are sensed each step (at least 1).
     pub sensor_radius: u32,
     /// An obstacle that occupies the cell the robot stood on this many steps ago (when that
@@ -120,7 +97,7 @@ pub struct Navigation {
 impl Default for Navigation {
     fn default() -> Self {
         Navigation {
-            planner: PlannerChoice::DStarLite,
+            planner: PlannerSpec::DStarLite { heuristic: None },
             sensor_radius: 1,
             follower_lag: None,
             max_steps: None,

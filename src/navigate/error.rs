@@ -2,8 +2,10 @@
 
 use thiserror::Error;
 
-use trailmark_core::grid::Cell;
+use trailmark_core::grid::{Cell, GridHeuristic};
 use trailmark_search::SearchError;
+
+use crate::solve::DocumentError;
 
 /// Why a simulation could not start.
 #[derive(Debug, Error, PartialEq)]
@@ -28,4 +30,17 @@ pub enum NavigateError {
     /// A planner refused its input (an invalid epsilon schedule, for instance).
     #[error("planner: {0}")]
     Planner(#[from] SearchError<Cell>),
+    /// The planner does not replan (a one-shot search or a sampling planner).
+    #[error("\"{planner}\" cannot drive the robot: choose astar, lpa_star, dstar_lite or ad_star")]
+    NotAReplanner {
+        /// The planner's name.
+        planner: &'static str,
+    },
+    /// The planner asks for a heuristic other than the octile distance, which guides every
+    /// navigation planner on its 8-connected grid.
+    #[error("navigation guides its planners by the octile distance, not {0:?}")]
+    Heuristic(GridHeuristic),
+    /// A limit of the planner's settings is out of range (as `solve` refuses it).
+    #[error("planner settings: {0}")]
+    Settings(#[from] DocumentError),
 }

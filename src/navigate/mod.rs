@@ -5,7 +5,7 @@
 //! (often free space: every cell assumed passable) and, at each step, senses the true cells
 //! within its sensor radius (a square window: radius 1 is the eight neighbours), folds what
 //! differs into its map, replans from where it stands and moves one cell along the plan. Four
-//! planners can drive it, on the same run:
+//! planners of the solve registry can drive it ([`Navigation::planner`]), on the same run:
 //!
 //! - `astar`: A* from scratch at every step;
 //! - `lpa_star`: LPA*, restarted whenever the start moves (so at every step: a forward search
@@ -19,8 +19,9 @@
 //! robot keeps going to the nearest unvisited cell until it has visited every cell it can reach.
 //!
 //! ```
-//! use trailmark::navigate::{Navigation, PlannerChoice, Target, navigate};
+//! use trailmark::navigate::{Navigation, Target, navigate};
 //! use trailmark::prelude::*;
+//! use trailmark::solve::PlannerSpec;
 //!
 //! let truth = Grid::from_rows(&[
 //!     "........",
@@ -32,7 +33,7 @@
 //! let prior = Grid::new(8, 5)?; // the robot assumes free space
 //! let (start, goal) = (Cell::new(1, 2), Cell::new(7, 2));
 //! let mut costs = Vec::new();
-//! for planner in [PlannerChoice::AStar, PlannerChoice::DStarLite] {
+//! for planner in [PlannerSpec::AStar { heuristic: None }, PlannerSpec::DStarLite { heuristic: None }] {
 //!     let config = Navigation { planner, ..Navigation::default() };
 //!     let run = navigate(&truth, &prior, start, Target::Cell(goal), &config)?;
 //!     assert!(run.reached());
@@ -52,7 +53,9 @@ mod report;
 mod simulation;
 mod world;
 
-pub use config::{Navigation, PlannerChoice, Target};
+#[allow(deprecated)]
+pub use config::PlannerChoice;
+pub use config::{Navigation, Target};
 pub use error::NavigateError;
 pub use graph::{VIRTUAL_EDGE_COST, VIRTUAL_GOAL};
 pub use report::{NavigationOutcome, NavigationReport};

@@ -8,11 +8,12 @@ use trailmark_core::cost::Cost;
 use trailmark_core::grid::{Cell, Grid};
 use trailmark_search::{Replanner, SearchError};
 
-use crate::navigate::config::{Navigation, PlannerChoice, Target};
+use crate::navigate::config::{Navigation, Target, check_planner};
 use crate::navigate::error::NavigateError;
 use crate::navigate::graph::{NavGraph, VIRTUAL_GOAL, estimate};
 use crate::navigate::report::{NavigationOutcome, NavigationReport};
 use crate::navigate::world::SimulatedWorld;
+use crate::solve::PlannerSpec;
 
 /// What one plan produced: the next cell (`None`: no path), the plan's cost, expansions, and
 /// the inflation it was made with (1 unless AD* stopped early).
@@ -23,26 +24,19 @@ struct Plan {
     epsilon: f64,
 }
 
-/// Plans from `robot` to `target` on `graph` with `planner`, made at the first plan from
-/// `choice`, and told before every later one that the robot moved and that the out-edges of
-/// `changed` changed since the last plan.
+/// Plans from `robot` on `graph` with `planner`, told first (unless it was just made there)
+/// that the robot moved and that the out-edges of `changed` changed since the last plan.
 fn plan_step(
-    planner: &mut Option<Box<dyn Replanner<NavGraph>>>,
-    choice: PlannerChoice,
+    planner: &mut dyn Replanner<NavGraph>,
+    fresh: bool,
     graph: &NavGraph,
     robot: Cell,
-    target: Cell,
     changed: &[Cell],
-    h: impl Fn(Cell, Cell) -> Cost + Copy + 'static,
 ) -> Result<Plan, SearchError<Cell>> {
-    let planner = match planner {
-        Some(planner) => {
-            planner.move_start(graph, robot)?;
-            planner.update_nodes(graph, changed)?;
-            planner
-        }
-        None => planner.insert(choice.replanner(graph, robot, target, h)?),
-    };
+    if !fresh {
+        planner.move_start(graph, robot)?;
+        planner.update_nodes(graph, changed)?;
+    }
     let stats = planner.plan(graph)?;
     Ok(Plan {
         next: planner.next_step(graph),
@@ -54,9 +48,9 @@ fn plan_step(
 
 /// Runs the robot from `start` toward `target` through `truth`, starting from the map `prior`.
 ///
-/// Errors (before anything runs) when the maps differ in size, the start or goal is outside the
-/// map or blocked in the true map, the sensor radius is 0, or the planner's settings are
-/// invalid.
+/// Errors (before the robot moves) when the maps differ in size, the start or goal is outside
+/// the map or blocked in the true map, the sensor radius is 0, the planner cannot replan (see
+/// [`Navigation::planner`]) or its settings are invalid.
 pub fn navigate(
     truth: &Grid,
     prior: &Grid,
@@ -64,7 +58,7 @@ pub fn navigate(
     target: Target,
     config: &Navigation,
 ) -> Result<NavigationReport, NavigateError> {
-    run(truth, prior, start, target, config, config.planner, None, |_, _, _| {})
+    run(truth, prior, start, target, config, &config.planner, None, |_, _, _| {})
 }
 
 /// Several planners on one run: `config.planner` drives the robot, then each of `others` is run
@@ -79,11 +73,11 @@ pub fn navigate_together(
     start: Cell,
     target: Target,
     config: &Navigation,
-    others: &[PlannerChoice],
+    others: &[PlannerSpec],
 ) -> Result<Vec<NavigationReport>, NavigateError> {
-    let driver = run(truth, prior, start, target, config, config.planner, None, |_, _, _| {})?;
+    let driver = run(truth, prior, start, target, config, &config.planner, None, |_, _, _| {})?;
     let mut reports = Vec::with_capacity(others.len() + 1);
-    for &planner in others {
+    for planner in others {
         let script = Some(&driver.trajectory[..]);
         let mut report = run(truth, prior, start, target, config, planner, script, |_, _, _| {})?;
         report.outcome = driver.outcome;
@@ -103,7 +97,7 @@ fn run(
     start: Cell,
     target: Target,
     config: &Navigation,
-    planner: PlannerChoice,
+    planner: &PlannerSpec,
     script: Option<&[Cell]>,
     mut inspect: impl FnMut(&NavGraph, Cell, &Plan),
 ) -> Result<NavigationReport, NavigateError> {
@@ -125,8 +119,7 @@ fn run(
         return Err(NavigateError::SensorRadius);
     }
     let scale = truth.min_cost().unwrap_or(1.0).min(prior.min_cost().unwrap_or(1.0)).min(1.0);
-    planner.check()?;
-    let mut replanner = None;
+    check_planner(planner)?;
     let explore = target == Target::Explore;
     let mut world = SimulatedWorld::new(truth, prior, start, explore);
     let goal_node = match target {
@@ -153,6 +146,12 @@ fn run(
     let mut robot = start;
     let mut trail: VecDeque<Cell> = VecDeque::new();
     let mut changed = world.sense(robot, config.sensor_radius);
+    // Made on what the robot knows once it has looked around, and timed as part of its first plan.
+    let clock = Instant::now();
+    let mut replanner = planner
+        .replanner(&world.known, robot, goal_node, estimate(scale))
+        .ok_or(NavigateError::NotAReplanner { planner: planner.name() })??;
+    let mut making = Some(clock.elapsed());
     loop {
         if target == Target::Cell(robot) {
             report.outcome = NavigationOutcome::Reached;
@@ -162,9 +161,8 @@ fn run(
             break;
         }
         let clock = Instant::now();
-        let plan =
-            plan_step(&mut replanner, planner, &world.known, robot, goal_node, &changed, estimate(scale))?;
-        let spent = clock.elapsed();
+        let plan = plan_step(&mut *replanner, making.is_some(), &world.known, robot, &changed)?;
+        let spent = clock.elapsed() + making.take().unwrap_or_default();
         report.plans += 1;
         report.expansions += plan.expansions;
         report.planning_time += spent;
@@ -204,6 +202,7 @@ fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::solve::AnytimeSpec;
     use trailmark_core::generate;
     use trailmark_search::Search;
 
@@ -212,13 +211,21 @@ mod tests {
     /// a follower, toward a goal and mapping.
     #[test]
     fn every_plan_matches_astar_on_the_robots_map() {
+        let ad_star = |epsilon, epsilon_step, max_expansions| {
+            PlannerSpec::AdStar(AnytimeSpec {
+                epsilon: Some(epsilon),
+                epsilon_step: Some(epsilon_step),
+                max_expansions,
+                ..AnytimeSpec::default()
+            })
+        };
         let planners = [
-            PlannerChoice::AStar,
-            PlannerChoice::LpaStar,
-            PlannerChoice::DStarLite,
-            PlannerChoice::AdStar { epsilon: 2.5, epsilon_step: 0.5, expansions_per_step: Some(30) },
-            PlannerChoice::AdStar { epsilon: 2.0, epsilon_step: 1.0, expansions_per_step: None },
-            PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(0) },
+            PlannerSpec::AStar { heuristic: None },
+            PlannerSpec::LpaStar { heuristic: None },
+            PlannerSpec::DStarLite { heuristic: None },
+            ad_star(2.5, 0.5, Some(30)),
+            ad_star(2.0, 1.0, None),
+            ad_star(3.0, 0.5, Some(0)),
         ];
         let mut plans = 0;
         for seed in 0..16u64 {
@@ -228,9 +235,9 @@ mod tests {
             let cells: Vec<Cell> = truth.cells().filter(|&c| truth.is_passable(c)).collect();
             let (start, goal) = (cells[0], cells[cells.len() - 1]);
             let target = if seed % 4 == 3 { Target::Explore } else { Target::Cell(goal) };
-            for planner in planners {
+            for planner in &planners {
                 let config = Navigation {
-                    planner,
+                    planner: planner.clone(),
                     sensor_radius: 1 + (seed % 5) as u32,
                     follower_lag: (seed % 2 == 1).then_some(2),
                     max_steps: Some(2000),

@@ -81,16 +81,7 @@ fn solve_inner(
     picture: Option<&mut String>,
 ) -> Result<SolveResult, SolveError> {
     let planner = &problem.planner;
-    if let Some(t) = planner.time_limit_s()
-        && !(0.0..=MAX_TIME_LIMIT_S).contains(&t)
-    {
-        return Err(DocumentError::TimeLimit(t).into());
-    }
-    if let Some(n) = planner.sampling().and_then(|spec| spec.max_iterations)
-        && n > MAX_ITERATIONS
-    {
-        return Err(DocumentError::TooManyIterations(n).into());
-    }
+    planner.check_limits()?;
     if problem.space.is_some() && planner.sampling().is_none() {
         return Err(DocumentError::NotForPlanner { field: "space", planner: planner.name() }.into());
     }

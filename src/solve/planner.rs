@@ -13,10 +13,11 @@ use trailmark_sample::{
     NearestNeighbors, Planner, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
 };
 use trailmark_search::{
-    AdStar, DStarLite, EpsilonSchedule, LpaStar, Search, SearchError, SearchResult, ara_star,
+    AdStar, DStarLite, EpsilonSchedule, LpaStar, RepeatedAStar, Replanner, Search, SearchError, SearchResult,
+    ara_star,
 };
 
-use super::error::{DocumentError, SolveError};
+use super::error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
 use super::result::{SolveResult, Waypoint, anytime_result_of, result_of};
 
 /// A planner and its parameters. In JSON, an object whose `"name"` selects the planner.
@@ -122,7 +123,7 @@ impl PlannerSpec {
 
     /// The heuristic the planner asks for, and whether it promises least cost (so that the
     /// heuristic must be admissible).
-    pub(super) fn heuristic(&self) -> (Option<GridHeuristic>, bool) {
+    pub(crate) fn heuristic(&self) -> (Option<GridHeuristic>, bool) {
         match self {
             PlannerSpec::Bfs {} | PlannerSpec::Dfs {} | PlannerSpec::Dijkstra {} => (None, true),
             PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => (None, false),
@@ -135,8 +136,25 @@ impl PlannerSpec {
         }
     }
 
+    /// Errors when a limit of the planner's settings is out of range: a time limit that is
+    /// negative, not a number or above [`MAX_TIME_LIMIT_S`], an iteration limit above
+    /// [`MAX_ITERATIONS`].
+    pub fn check_limits(&self) -> Result<(), DocumentError> {
+        if let Some(t) = self.time_limit_s()
+            && !(0.0..=MAX_TIME_LIMIT_S).contains(&t)
+        {
+            return Err(DocumentError::TimeLimit(t));
+        }
+        if let Some(n) = self.sampling().and_then(|spec| spec.max_iterations)
+            && n > MAX_ITERATIONS
+        {
+            return Err(DocumentError::TooManyIterations(n));
+        }
+        Ok(())
+    }
+
     /// The planner's time limit in seconds, if it takes one and the document gives it.
-    pub(super) fn time_limit_s(&self) -> Option<f64> {
+    fn time_limit_s(&self) -> Option<f64> {
         match self {
             PlannerSpec::AraStar(spec) | PlannerSpec::AdStar(spec) => spec.time_limit_s,
             planner => planner.sampling().and_then(|spec| spec.time_limit_s),
@@ -168,14 +186,8 @@ impl PlannerSpec {
             PlannerSpec::WeightedAStar { weight, .. } => {
                 search.weighted_astar(graph, start, goal, to_goal, *weight)
             }
-            PlannerSpec::LpaStar { .. } => LpaStar::new(graph, start, goal, h).and_then(|mut planner| {
-                let stats = planner.compute_shortest_path(graph)?;
-                Ok(SearchResult { path: planner.path(graph), stats })
-            }),
-            PlannerSpec::DStarLite { .. } => DStarLite::new(graph, start, goal, h).and_then(|mut planner| {
-                let stats = planner.compute_shortest_path(graph)?;
-                Ok(SearchResult { path: planner.path(graph), stats })
-            }),
+            PlannerSpec::LpaStar { .. } => plan_once(graph, LpaStar::new(graph, start, goal, h)),
+            PlannerSpec::DStarLite { .. } => plan_once(graph, DStarLite::new(graph, start, goal, h)),
             PlannerSpec::AraStar(spec) => {
                 let found = ara_star(graph, start, goal, to_goal, spec.schedule(), spec.budget());
                 return Ok(anytime_result_of(&found.map_err(searched)?, waypoint));
@@ -190,6 +202,50 @@ impl PlannerSpec {
             }
         };
         Ok(result_of(&found.map_err(searched)?, waypoint))
+    }
+
+    /// This planner as a [`Replanner`] from `start` to `goal` on `graph` with the heuristic
+    /// `h(a, b)`, for the planners that keep their search between plans: `astar` (A* from
+    /// scratch at every plan), `lpa_star`, `dstar_lite` and `ad_star` (whose limits apply to
+    /// each plan); `None` for the others. [`navigate`](crate::navigate::navigate) drives the
+    /// robot with it, and `solve` runs LPA* and D* Lite through it.
+    pub fn replanner<'h, G, H>(
+        &self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+        h: H,
+    ) -> Option<Result<BoxedReplanner<'h, G>, SearchError<G::Node>>>
+    where
+        G: Successors + Predecessors + IndexedGraph + 'h,
+        H: Fn(G::Node, G::Node) -> Cost + Copy + 'h,
+    {
+        fn boxed<'h, G, R>(
+            made: Result<R, SearchError<G::Node>>,
+        ) -> Result<BoxedReplanner<'h, G>, SearchError<G::Node>>
+        where
+            G: Successors + Predecessors + IndexedGraph,
+            R: Replanner<G> + 'h,
+        {
+            made.map(|planner| Box::new(planner) as BoxedReplanner<'h, G>)
+        }
+        Some(match self {
+            PlannerSpec::AStar { .. } => boxed(RepeatedAStar::new(graph, start, goal, h)),
+            PlannerSpec::LpaStar { .. } => boxed(LpaStar::new(graph, start, goal, h)),
+            PlannerSpec::DStarLite { .. } => boxed(DStarLite::new(graph, start, goal, h)),
+            PlannerSpec::AdStar(spec) => boxed(
+                AdStar::new(graph, start, goal, h, spec.schedule())
+                    .map(|planner| planner.with_termination_per_plan(spec.budget())),
+            ),
+            PlannerSpec::Bfs {}
+            | PlannerSpec::Dfs {}
+            | PlannerSpec::Dijkstra {}
+            | PlannerSpec::WeightedAStar { .. }
+            | PlannerSpec::AraStar(_)
+            | PlannerSpec::Rrt(_)
+            | PlannerSpec::RrtConnect(_)
+            | PlannerSpec::RrtStar(_) => return None,
+        })
     }
 
     /// This sampling planner over the space `S` with the validity `V`, with its nearest
@@ -221,6 +277,23 @@ impl PlannerSpec {
             _ => return None,
         })
     }
+}
+
+/// A replanner of the registry, behind its trait.
+type BoxedReplanner<'h, G> = Box<dyn Replanner<G> + 'h>;
+
+/// One plan of a replanner just made: what `solve` asks of LPA* and D* Lite on a static world.
+fn plan_once<G, R>(
+    graph: &G,
+    made: Result<R, SearchError<G::Node>>,
+) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+where
+    G: Successors + Predecessors + IndexedGraph,
+    R: Replanner<G>,
+{
+    let mut planner = made?;
+    let stats = planner.plan(graph)?;
+    Ok(SearchResult { path: planner.path(graph), stats })
 }
 
 /// The settings of an anytime search (ARA*, AD*). Each has a default.

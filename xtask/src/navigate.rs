@@ -10,8 +10,9 @@ use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 use trailmark::core::generate;
 use trailmark::movingai;
-use trailmark::navigate::{Navigation, NavigationReport, PlannerChoice, Target, navigate, navigate_together};
+use trailmark::navigate::{Navigation, NavigationReport, Target, navigate, navigate_together};
 use trailmark::prelude::*;
+use trailmark::solve::{AnytimeSpec, PlannerSpec};
 
 /// A generated map kind.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -22,19 +23,6 @@ pub enum Generator {
     Maze,
     /// Rooms `--room` cells wide joined by doors.
     Rooms,
-}
-
-/// A planner name on the command line.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum PlannerName {
-    /// A* from scratch at every step.
-    Astar,
-    /// LPA*, restarted whenever the robot moves.
-    LpaStar,
-    /// D* Lite.
-    DstarLite,
-    /// AD* (see --epsilon, --epsilon-step, --expansions-per-step).
-    AdStar,
 }
 
 /// The arguments of `cargo xtask navigate`.
@@ -73,9 +61,10 @@ pub struct Args {
     /// Sensor radius in cells (a square window).
     #[arg(long, default_value_t = 1)]
     radius: u32,
-    /// The planners to run, each on the same world (comma-separated).
-    #[arg(long, value_enum, value_delimiter = ',', default_value = "astar,lpa-star,dstar-lite,ad-star")]
-    planner: Vec<PlannerName>,
+    /// The planners to run, each on the same world (comma-separated names of the solve
+    /// registry's planners that replan: astar, lpa_star, dstar_lite, ad_star).
+    #[arg(long, value_delimiter = ',', default_value = "astar,lpa_star,dstar_lite,ad_star", value_parser = parse_planner)]
+    planner: Vec<PlannerSpec>,
     /// AD*'s initial inflation.
     #[arg(long, default_value_t = 3.0)]
     epsilon: f64,
@@ -168,18 +157,22 @@ struct Summary {
     runs: Vec<RunSummary>,
 }
 
-/// The planner settings for a name.
-pub fn choice(
-    name: PlannerName,
-    epsilon: f64,
-    epsilon_step: f64,
-    expansions_per_step: Option<u64>,
-) -> PlannerChoice {
-    match name {
-        PlannerName::Astar => PlannerChoice::AStar,
-        PlannerName::LpaStar => PlannerChoice::LpaStar,
-        PlannerName::DstarLite => PlannerChoice::DStarLite,
-        PlannerName::AdStar => PlannerChoice::AdStar { epsilon, epsilon_step, expansions_per_step },
+/// A planner of the solve registry by its document name (`lpa-star` is read as `lpa_star`).
+fn parse_planner(name: &str) -> Result<PlannerSpec, String> {
+    let name = name.trim().replace('-', "_");
+    serde_json::from_value(serde_json::json!({ "name": name })).map_err(|e| e.to_string())
+}
+
+/// The planner with the command line's AD* settings, when it is AD*.
+fn with_ad_star_settings(planner: &PlannerSpec, args: &Args) -> PlannerSpec {
+    match planner {
+        PlannerSpec::AdStar(spec) => PlannerSpec::AdStar(AnytimeSpec {
+            epsilon: Some(args.epsilon),
+            epsilon_step: Some(args.epsilon_step),
+            max_expansions: args.expansions_per_step,
+            ..*spec
+        }),
+        other => other.clone(),
     }
 }
 
@@ -210,11 +203,7 @@ fn simulate(args: &Args) -> Result<String, String> {
     };
     let prior = Grid::new(truth.width() as usize, truth.height() as usize).map_err(|e| e.to_string())?;
     let target = goal.map_or(Target::Explore, Target::Cell);
-    let choices: Vec<PlannerChoice> = args
-        .planner
-        .iter()
-        .map(|&p| choice(p, args.epsilon, args.epsilon_step, args.expansions_per_step))
-        .collect();
+    let choices: Vec<PlannerSpec> = args.planner.iter().map(|p| with_ad_star_settings(p, args)).collect();
     let config = |planner| Navigation {
         planner,
         sensor_radius: args.radius,
@@ -224,12 +213,12 @@ fn simulate(args: &Args) -> Result<String, String> {
     let reports: Vec<NavigationReport> = if args.independent {
         choices
             .iter()
-            .map(|&p| navigate(&truth, &prior, start, target, &config(p)))
+            .map(|p| navigate(&truth, &prior, start, target, &config(p.clone())))
             .collect::<Result<_, _>>()
             .map_err(|e| e.to_string())?
     } else {
-        let (&driver, others) = choices.split_first().ok_or("no planner")?;
-        navigate_together(&truth, &prior, start, target, &config(driver), others)
+        let (driver, others) = choices.split_first().ok_or("no planner")?;
+        navigate_together(&truth, &prior, start, target, &config(driver.clone()), others)
             .map_err(|e| e.to_string())?
     };
     if let Some(dir) = &args.svg {

@@ -10,10 +10,9 @@ use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 use trailmark::core::generate;
 use trailmark::movingai;
-use trailmark::navigate::{
-    Navigation, NavigationOutcome, NavigationReport, PlannerChoice, Target, navigate_together,
-};
+use trailmark::navigate::{Navigation, NavigationOutcome, NavigationReport, Target, navigate_together};
 use trailmark::prelude::*;
+use trailmark::solve::{AnytimeSpec, PlannerSpec};
 
 use crate::bench::progress::SectionProgress;
 use crate::bench::report::GoalRow;
@@ -78,11 +77,17 @@ pub struct NavRatio {
 }
 
 /// The AD* settings of the navigation runs: one iteration per step from epsilon 3 down.
-const NAV_AD_STAR: PlannerChoice =
-    PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(0) };
+const NAV_AD_STAR: PlannerSpec = PlannerSpec::AdStar(AnytimeSpec {
+    epsilon: Some(3.0),
+    epsilon_step: Some(0.5),
+    heuristic: None,
+    time_limit_s: None,
+    max_expansions: Some(0),
+});
 
 /// The planners run along the trajectory of the driver, D* Lite.
-const NAV_OTHERS: [PlannerChoice; 3] = [PlannerChoice::AStar, PlannerChoice::LpaStar, NAV_AD_STAR];
+const NAV_OTHERS: [PlannerSpec; 3] =
+    [PlannerSpec::AStar { heuristic: None }, PlannerSpec::LpaStar { heuristic: None }, NAV_AD_STAR];
 
 /// The MovingAI maps of the navigation section: two games (Dragon Age, Baldur's Gate) and a city.
 const NAV_MOVINGAI: [(&str, &str); 3] =
@@ -155,7 +160,7 @@ pub fn bench_navigation(cases: &[NavCase], runs: u32) -> Result<Vec<NavRow>, Str
         let prior =
             Grid::new(case.grid.width() as usize, case.grid.height() as usize).map_err(|e| e.to_string())?;
         let config = Navigation {
-            planner: PlannerChoice::DStarLite,
+            planner: PlannerSpec::DStarLite { heuristic: None },
             sensor_radius: case.radius,
             follower_lag: None,
             max_steps: None,

@@ -11,6 +11,7 @@
 //! | [`search`] | `trailmark-search` | BFS, DFS, Dijkstra, A*, weighted A*, ARA*; LPA*, D* Lite, AD*; indexed priority queue |
 //! | [`sample`] | `trailmark-sample` | sampling planners: RRT, RRT-Connect, RRT*, PRM over R², Rⁿ, SE(2), Dubins; path shortcutting and smoothing |
 //! | [`contingency`] | `trailmark-contingency` | contingency route planning over choke points that may be blocked |
+//! | [`map`] | `trailmark-map` | robot maps: ROS map_server files and `nav_msgs/OccupancyGrid`, map frames in metres, Nav2-style costmaps and inflation |
 //!
 //! ```
 //! use trailmark::prelude::*;
@@ -37,6 +38,7 @@ pub mod solve;
 pub use trailmark_contingency as contingency;
 pub use trailmark_core as core;
 pub use trailmark_graph as graph;
+pub use trailmark_map as map;
 pub use trailmark_sample as sample;
 pub use trailmark_search as search;
 

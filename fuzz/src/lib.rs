@@ -15,6 +15,7 @@ pub mod generate;
 pub mod grid;
 pub mod movingai;
 pub mod polygon;
+pub mod ros_map;
 pub mod terrain;
 
 use std::path::Path;

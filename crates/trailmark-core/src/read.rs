@@ -139,6 +139,14 @@ fn open(path: &Path) -> std::io::Result<File> {
 /// Symbolic links are followed: what they point to is checked.
 pub fn read_to_string_capped(path: impl AsRef<Path>, max_bytes: u64) -> Result<String, ReadFileError> {
     let path = path.as_ref();
+    let bytes = read_capped(path, max_bytes)?;
+    String::from_utf8(bytes).map_err(|_| ReadFileError::NotUtf8 { path: path.to_path_buf() })
+}
+
+/// The bytes of the regular file at `path`, at most `max_bytes` of them: the same checks and
+/// errors as [`read_to_string_capped`], for binary files (images).
+pub fn read_capped(path: impl AsRef<Path>, max_bytes: u64) -> Result<Vec<u8>, ReadFileError> {
+    let path = path.as_ref();
     let io = |source| ReadFileError::Io { path: path.to_path_buf(), source };
     let check = |metadata: &Metadata| match not_a_file(metadata) {
         Some(kind) => Err(ReadFileError::NotAFile { path: path.to_path_buf(), kind }),
@@ -159,7 +167,7 @@ pub fn read_to_string_capped(path: impl AsRef<Path>, max_bytes: u64) -> Result<S
     if u64::try_from(bytes.len()).map_or(true, |n| n > max_bytes) {
         return Err(ReadFileError::TooLarge { path: path.to_path_buf(), max_bytes });
     }
-    String::from_utf8(bytes).map_err(|_| ReadFileError::NotUtf8 { path: path.to_path_buf() })
+    Ok(bytes)
 }
 
 #[cfg(test)]

@@ -72,11 +72,11 @@ pub struct GridGraph {
     width: u32,
     height: u32,
     /// `width + 2`: the row length of the padded arrays.
-    stride: usize,
+    pub(crate) stride: usize,
     connectivity: Connectivity,
-    corner_cutting: CornerCutting,
+    pub(crate) corner_cutting: CornerCutting,
     /// Padded passability, border cells false.
-    open: Vec<bool>,
+    pub(crate) open: Vec<bool>,
     /// Padded move masks: bit `k` is set when `MOVES[k]` from the cell is an edge (target
     /// passable, corners as the rule demands, within the connectivity). Precomputed so that
     /// enumerating successors tests nothing but these bits.
@@ -84,7 +84,7 @@ pub struct GridGraph {
     /// `MOVES[k]` as an offset in the padded arrays.
     offsets: [isize; 8],
     /// Padded cell costs, only when some passable cell does not cost 1.
-    costs: Option<Vec<Cost>>,
+    pub(crate) costs: Option<Vec<Cost>>,
     /// The smallest passable cell cost (1 when there is none), which scales heuristics.
     min_cost: Cost,
 }
@@ -182,7 +182,7 @@ impl GridGraph {
     }
 
     #[inline]
-    fn index(&self, cell: Cell) -> usize {
+    pub(crate) fn index(&self, cell: Cell) -> usize {
         (cell.y as usize + 1) * self.stride + cell.x as usize + 1
     }
 

@@ -40,6 +40,7 @@ pub mod grid;
 pub mod prm;
 #[doc(hidden)]
 pub mod roadmap;
+mod sight;
 #[doc(hidden)]
 pub mod trapezoid;
 #[doc(hidden)]

@@ -27,6 +27,16 @@ pub enum SearchError<N: Debug> {
         /// The cost reported.
         cost: f64,
     },
+    /// An any-angle search (Theta*) was given a negative or NaN cost for a straight line.
+    #[error("the line {from:?} -> {to:?} has cost {cost:?}; line costs must be non-negative")]
+    InvalidLineCost {
+        /// Where the line starts.
+        from: N,
+        /// Where it ends.
+        to: N,
+        /// The cost given.
+        cost: f64,
+    },
     /// An incremental planner (LPA*, D* Lite) met an edge of cost 0: they need positive costs.
     #[error("the edge {from:?} -> {to:?} has cost 0; LPA* and D* Lite need positive edge costs")]
     ZeroCostEdge {
@@ -98,6 +108,9 @@ impl<N: Debug> SearchError<N> {
             SearchError::GoalNotInGraph(n) => SearchError::GoalNotInGraph(f(n)),
             SearchError::InvalidEdgeCost { from, to, cost } => {
                 SearchError::InvalidEdgeCost { from: f(from), to: f(to), cost }
+            }
+            SearchError::InvalidLineCost { from, to, cost } => {
+                SearchError::InvalidLineCost { from: f(from), to: f(to), cost }
             }
             SearchError::ZeroCostEdge { from, to } => SearchError::ZeroCostEdge { from: f(from), to: f(to) },
             SearchError::InvalidHeuristic { node, value } => {

@@ -2,7 +2,7 @@
 //! in three families:
 //!
 //! - **one-shot searches** answer one query from scratch: [`bfs`], [`dfs`], [`dijkstra`],
-//!   [`astar`] and [`weighted_astar`], each a function and a method of the reusable [`Search`]
+//!   [`astar`], [`weighted_astar`] and the any-angle [`theta_star`], each a function and a method of the reusable [`Search`]
 //!   workspace, which keeps its per-node state in dense vectors across queries, returning a
 //!   [`SearchResult`];
 //! - **anytime searches** return an inflated solution fast and improve it while their
@@ -115,6 +115,7 @@ pub use index::{Dense, Hashed, NodeIndex};
 pub use limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_NODES, MAX_WEIGHT};
 pub use one_shot::SearchResult;
 pub use one_shot::astar::{astar, dijkstra, weighted_astar};
+pub use one_shot::theta_star::theta_star;
 pub use one_shot::uninformed::{bfs, dfs};
 pub use one_shot::workspace::Search;
 pub use queue::IndexedHeap;

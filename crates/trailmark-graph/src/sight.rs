@@ -1,0 +1,120 @@
+//! Straight lines between cell centres on a grid graph: which cells a line crosses, whether it
+//! may, and what it costs. Any-angle searches (Theta*) join cells by such lines.
+//!
+//! A line from the centre of one cell to the centre of another crosses the cells its interior
+//! enters, each for some length; it costs the sum of those lengths times the cells' costs (the
+//! integral of the cost along the line), so a move between neighbours costs exactly what the
+//! graph's edge costs. A line may be drawn when every cell it crosses is passable and, where it
+//! passes exactly through a corner shared by four cells, the two cells it only touches obey
+//! the graph's corner-cutting rule (both passable when corners may not be cut, as for diagonal
+//! moves).
+//!
+//! ```
+//! use trailmark_core::{Cell, Connectivity, Grid};
+//! use trailmark_graph::GridGraph;
+//!
+//! let mut grid = Grid::from_rows(&["....", "..@.", "...."])?;
+//! grid.set_cost(Cell::new(1, 0), 3.0)?;
+//! let graph = GridGraph::new(&grid, Connectivity::Eight);
+//! // Along the top row: half of (0, 0) and of (2, 0) at cost 1, all of (1, 0) at cost 3.
+//! assert_eq!(graph.line_cost(Cell::new(0, 0), Cell::new(2, 0)), Some(4.0));
+//! // Through the wall cell (2, 1).
+//! assert_eq!(graph.line_cost(Cell::new(0, 1), Cell::new(3, 1)), None);
+//! // Neighbours: the edge cost.
+//! assert_eq!(graph.line_cost(Cell::new(0, 0), Cell::new(1, 0)), graph.edge_cost(Cell::new(0, 0), Cell::new(1, 0)));
+//! # Ok::<(), trailmark_core::GridError>(())
+//! ```
+
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::Graph;
+use trailmark_core::grid::Cell;
+
+use crate::grid::{CornerCutting, GridGraph};
+
+impl GridGraph {
+    /// The cost of the straight line from the centre of `from` to the centre of `to`, or `None`
+    /// when it is blocked (or either cell is not a node).
+    pub fn line_cost(&self, from: Cell, to: Cell) -> Option<Cost> {
+        let mut total = 0.0;
+        self.walk_line(from, to, |fraction, cost, _| total += fraction * cost)?;
+        let (dx, dy) = (f64::from(from.x.abs_diff(to.x)), f64::from(from.y.abs_diff(to.y)));
+        Some(total * dx.hypot(dy))
+    }
+
+    /// Whether the straight line from the centre of `from` to the centre of `to` may be drawn.
+    pub fn line_of_sight(&self, from: Cell, to: Cell) -> bool {
+        self.walk_line(from, to, |_, _, _| ()).is_some()
+    }
+
+    /// The cells the line from `from` to `to` crosses, in order, each with the fraction of the
+    /// line inside it; `None` when the line is blocked.
+    pub fn line_cells(&self, from: Cell, to: Cell) -> Option<Vec<(Cell, f64)>> {
+        let mut cells = Vec::new();
+        let stride = self.stride;
+        self.walk_line(from, to, |fraction, _, i| {
+            // Padded index to cell: the border is one cell wide.
+            cells.push((Cell::new((i % stride - 1) as u32, (i / stride - 1) as u32), fraction));
+        })?;
+        Some(cells)
+    }
+
+    /// Walks the line from the centre of `from` to the centre of `to`, calling `visit(fraction,
+    /// cost, padded index)` for each crossed cell with the fraction of the line in it; `None` as
+    /// soon as the line is blocked.
+    fn walk_line(&self, from: Cell, to: Cell, mut visit: impl FnMut(f64, Cost, usize)) -> Option<()> {
+        if !self.contains(from) || !self.contains(to) {
+            return None;
+        }
+        let (adx, ady) = (u64::from(from.x.abs_diff(to.x)), u64::from(from.y.abs_diff(to.y)));
+        if adx == 0 && ady == 0 {
+            visit(1.0, self.costs.as_ref().map_or(1.0, |c| c[self.index(from)]), self.index(from));
+            return Some(());
+        }
+        let stride = self.stride as isize;
+        let step_x: isize = if to.x >= from.x { 1 } else { -1 };
+        let step_y: isize = if to.y >= from.y { stride } else { -stride };
+        let mut i = self.index(from) as isize;
+        let cost_at = |i: isize| self.costs.as_ref().map_or(1.0, |c| c[i as usize]);
+        // Crossings of vertical grid lines happen at t = (2 kx + 1) / (2 adx), of horizontal
+        // ones at (2 ky + 1) / (2 ady); they are compared exactly in integers.
+        let (mut kx, mut ky) = (0u64, 0u64);
+        let mut t_prev = 0.0;
+        while kx < adx || ky < ady {
+            let x_first = ky == ady || (kx < adx && (2 * kx + 1) * ady < (2 * ky + 1) * adx);
+            let y_first = kx == adx || (ky < ady && (2 * ky + 1) * adx < (2 * kx + 1) * ady);
+            let t = if x_first {
+                (2 * kx + 1) as f64 / (2 * adx) as f64
+            } else {
+                (2 * ky + 1) as f64 / (2 * ady) as f64
+            };
+            visit(t - t_prev, cost_at(i), i as usize);
+            t_prev = t;
+            if x_first {
+                i += step_x;
+                kx += 1;
+            } else if y_first {
+                i += step_y;
+                ky += 1;
+            } else {
+                // Exactly through a corner: the two cells beside it are only touched.
+                let (a, b) = (self.open[(i + step_x) as usize], self.open[(i + step_y) as usize]);
+                let allowed = match self.corner_cutting {
+                    CornerCutting::Forbidden => a && b,
+                    CornerCutting::Allowed => a || b,
+                    CornerCutting::Squeeze => true,
+                };
+                if !allowed {
+                    return None;
+                }
+                i += step_x + step_y;
+                kx += 1;
+                ky += 1;
+            }
+            if !self.open[i as usize] {
+                return None;
+            }
+        }
+        visit(1.0 - t_prev, cost_at(i), i as usize);
+        Some(())
+    }
+}

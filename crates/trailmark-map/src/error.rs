@@ -1,0 +1,146 @@
+//! What can be wrong with a map, its files, its frame or a costmap's settings.
+
+use std::path::PathBuf;
+
+use thiserror::Error;
+use trailmark_core::grid::GridError;
+use trailmark_core::read::ReadFileError;
+
+/// What was wrong with a map or with what was asked of it.
+#[derive(Debug, Error)]
+pub enum MapError {
+    /// A file could not be read (missing, not a regular file, too large, not UTF-8).
+    #[error(transparent)]
+    Read(#[from] ReadFileError),
+    /// A file could not be written.
+    #[error("cannot write {}: {source}", path.display())]
+    Write {
+        /// The file.
+        path: PathBuf,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+    /// The map's YAML file is not YAML, or not a mapping.
+    #[error("the map YAML is malformed: {reason}")]
+    Yaml {
+        /// What the parser said.
+        reason: String,
+    },
+    /// A field of the map's YAML file is missing.
+    #[error("the map YAML has no `{field}`")]
+    MissingField {
+        /// The field.
+        field: &'static str,
+    },
+    /// A field of the map's YAML file has the wrong type or an impossible value.
+    #[error("the map YAML's `{field}` is invalid: {reason}")]
+    InvalidField {
+        /// The field.
+        field: &'static str,
+        /// Why.
+        reason: String,
+    },
+    /// The thresholds are not `0 <= free_thresh < occupied_thresh <= 1`.
+    #[error(
+        "thresholds must satisfy 0 <= free_thresh < occupied_thresh <= 1, got free_thresh {free} and occupied_thresh {occupied}"
+    )]
+    Thresholds {
+        /// `free_thresh`.
+        free: f64,
+        /// `occupied_thresh`.
+        occupied: f64,
+    },
+    /// The resolution is not a positive finite number of metres per cell.
+    #[error("the resolution must be a positive finite number of metres per cell, got {resolution}")]
+    Resolution {
+        /// The resolution given.
+        resolution: f64,
+    },
+    /// The origin is not finite.
+    #[error("the origin must be finite metres and radians, got [{x}, {y}, {yaw}]")]
+    Origin {
+        /// x in metres.
+        x: f64,
+        /// y in metres.
+        y: f64,
+        /// yaw in radians.
+        yaw: f64,
+    },
+    /// The image could not be decoded (unknown format, truncated, corrupt).
+    #[error("cannot decode the map image {}: {reason}", path.display())]
+    Image {
+        /// The image file (empty when decoded from memory).
+        path: PathBuf,
+        /// What the decoder said.
+        reason: String,
+    },
+    /// The map cannot be saved as asked (no shade reads back as each kind of cell under the
+    /// thresholds, or the encoder failed).
+    #[error("cannot save the map: {reason}")]
+    Save {
+        /// Why.
+        reason: String,
+    },
+    /// The image is larger than a grid may be ([`trailmark_core::grid::Grid::MAX_CELLS`]).
+    #[error("the map image is {width} x {height} pixels, too large for a grid")]
+    TooLarge {
+        /// Width in pixels.
+        width: u64,
+        /// Height in pixels.
+        height: u64,
+    },
+    /// The grid's size is wrong (empty, too large) or does not match its data.
+    #[error(transparent)]
+    Grid(#[from] GridError),
+    /// The occupancy data has the wrong number of cells.
+    #[error("expected {expected} cells ({width} x {height}), got {found}")]
+    CellCount {
+        /// The width.
+        width: u64,
+        /// The height.
+        height: u64,
+        /// `width x height`.
+        expected: u64,
+        /// The number of values given.
+        found: usize,
+    },
+    /// An occupancy value is outside -1 (unknown) ..= 100 (occupied).
+    #[error("occupancy value {value} at data index {index} is outside -1..=100")]
+    Occupancy {
+        /// The index in the data.
+        index: usize,
+        /// The value.
+        value: i64,
+    },
+    /// An `nav_msgs/OccupancyGrid` message is malformed.
+    #[error("the OccupancyGrid message is malformed: {reason}")]
+    Message {
+        /// What was wrong.
+        reason: String,
+    },
+    /// The origin's orientation is not a rotation about z (the map is not level).
+    #[error("the origin's orientation is not a rotation about the z axis: quaternion {quaternion:?}")]
+    NotLevel {
+        /// `[x, y, z, w]`.
+        quaternion: [f64; 4],
+    },
+    /// A point in metres lies outside the map.
+    #[error("the point ({x}, {y}) m lies outside the map")]
+    OutsideMap {
+        /// x in metres.
+        x: f64,
+        /// y in metres.
+        y: f64,
+    },
+    /// A setting of the robot or of the inflation is not a finite, non-negative number (or is
+    /// out of its range).
+    #[error("{setting} must be {expected}, got {value}")]
+    Setting {
+        /// The setting.
+        setting: &'static str,
+        /// What it must be.
+        expected: &'static str,
+        /// The value given.
+        value: f64,
+    },
+}

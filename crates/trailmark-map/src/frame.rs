@@ -1,0 +1,191 @@
+//! The map frame: where the cells of a map lie in metres.
+//!
+//! ROS puts a map's origin at the outer corner of its lower-left cell, with y pointing up and
+//! the map possibly turned by a yaw about that corner; trailmark's grids number cells from the
+//! top-left, y pointing down. A [`MapFrame`] converts between the two, so a user speaks in
+//! metres and never flips a row: [`MapFrame::cell_at`] gives the cell that holds a point,
+//! [`MapFrame::centre`] the point at the middle of a cell.
+//!
+//! ```
+//! use trailmark_core::geometry::Point;
+//! use trailmark_core::grid::Cell;
+//! use trailmark_map::MapFrame;
+//!
+//! // 4 x 3 cells of 0.5 m, the lower-left corner at (-1, 2).
+//! let frame = MapFrame::new(4, 3, 0.5, [-1.0, 2.0, 0.0])?;
+//! // The top-left cell of the grid is the top row of the map: y from 3.0 to 3.5.
+//! assert_eq!(frame.cell_at(Point::new(-0.9, 3.4))?, Cell::new(0, 0));
+//! assert_eq!(frame.cell_at(Point::new(0.9, 2.1))?, Cell::new(3, 2));
+//! assert_eq!(frame.centre(Cell::new(3, 2)), Point::new(0.75, 2.25));
+//! assert!(frame.cell_at(Point::new(1.1, 2.1)).is_err()); // beyond the right edge
+//! # Ok::<(), trailmark_map::MapError>(())
+//! ```
+
+use serde::{Deserialize, Serialize};
+use trailmark_core::geometry::{Point, Vector};
+use trailmark_core::grid::{Cell, Grid};
+
+use crate::error::MapError;
+
+/// A map's size in cells, its resolution and the pose of its lower-left corner.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct MapFrame {
+    width: u32,
+    height: u32,
+    resolution: f64,
+    origin: [f64; 3],
+}
+
+impl MapFrame {
+    /// A frame of `width x height` cells of `resolution` metres, the outer corner of the
+    /// lower-left cell at `origin = [x, y, yaw]` (metres, radians, yaw counter-clockwise).
+    ///
+    /// Errors: an empty or too large size ([`MapError::Grid`]), a resolution that is not
+    /// positive and finite ([`MapError::Resolution`]), an origin that is not finite
+    /// ([`MapError::Origin`]).
+    pub fn new(width: usize, height: usize, resolution: f64, origin: [f64; 3]) -> Result<Self, MapError> {
+        Grid::cell_count(width, height)?;
+        check_resolution(resolution)?;
+        check_origin(origin)?;
+        // Within Grid::MAX_CELLS both sides fit a u32.
+        Ok(MapFrame { width: width as u32, height: height as u32, resolution, origin })
+    }
+
+    /// The width in cells.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// The height in cells.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// Metres per cell.
+    pub fn resolution(&self) -> f64 {
+        self.resolution
+    }
+
+    /// `[x, y, yaw]` of the lower-left corner, in metres and radians.
+    pub fn origin(&self) -> [f64; 3] {
+        self.origin
+    }
+
+    /// The point `p` in map coordinates: metres from the origin along the map's own axes.
+    fn map_coordinates(&self, p: Point) -> (f64, f64) {
+        let [ox, oy, yaw] = self.origin;
+        let (dx, dy) = (p.x - ox, p.y - oy);
+        if yaw == 0.0 {
+            return (dx, dy);
+        }
+        let (s, c) = yaw.sin_cos();
+        (c * dx + s * dy, -s * dx + c * dy)
+    }
+
+    /// The point at map coordinates `(u, v)` metres from the origin.
+    fn world_point(&self, u: f64, v: f64) -> Point {
+        let [ox, oy, yaw] = self.origin;
+        if yaw == 0.0 {
+            return Point::new(ox + u, oy + v);
+        }
+        let (s, c) = yaw.sin_cos();
+        Point::new(ox + c * u - s * v, oy + s * u + c * v)
+    }
+
+    /// The cell holding `p` (metres), or [`MapError::OutsideMap`]. A point on the line between
+    /// two cells belongs to the one to its right (larger x) and above it (larger y), as
+    /// `floor` gives; a point on the map's right or top edge is outside.
+    pub fn cell_at(&self, p: Point) -> Result<Cell, MapError> {
+        self.try_cell_at(p).ok_or(MapError::OutsideMap { x: p.x, y: p.y })
+    }
+
+    /// The cell holding `p`, or `None` when it lies outside the map (or is not finite).
+    pub fn try_cell_at(&self, p: Point) -> Option<Cell> {
+        let (u, v) = self.map_coordinates(p);
+        let (i, j) = ((u / self.resolution).floor(), (v / self.resolution).floor());
+        let inside = i >= 0.0 && j >= 0.0 && i < f64::from(self.width) && j < f64::from(self.height);
+        // NaN fails every comparison above.
+        inside.then(|| Cell::new(i as u32, self.height - 1 - j as u32))
+    }
+
+    /// The centre of `cell`, in metres. The cell need not be inside the map.
+    pub fn centre(&self, cell: Cell) -> Point {
+        let row_from_bottom = f64::from(self.height) - 1.0 - f64::from(cell.y);
+        self.world_point((f64::from(cell.x) + 0.5) * self.resolution, (row_from_bottom + 0.5) * self.resolution)
+    }
+
+    /// A point given in cell units of the grid (x right, y down from the top-left corner of the
+    /// map, so a cell's centre is `(x + 0.5, y + 0.5)`), in metres: for paths whose corners are
+    /// not cell centres (any-angle paths, smoothed curves).
+    pub fn point_from_grid(&self, gx: f64, gy: f64) -> Point {
+        self.world_point(gx * self.resolution, (f64::from(self.height) - gy) * self.resolution)
+    }
+
+    /// The inverse of [`MapFrame::point_from_grid`]: `p` in cell units of the grid.
+    pub fn point_to_grid(&self, p: Point) -> (f64, f64) {
+        let (u, v) = self.map_coordinates(p);
+        (u / self.resolution, f64::from(self.height) - v / self.resolution)
+    }
+
+    /// The map's x axis in the world: a unit vector.
+    pub fn x_axis(&self) -> Vector {
+        let (s, c) = self.origin[2].sin_cos();
+        Vector::new(c, s)
+    }
+}
+
+pub(crate) fn check_resolution(resolution: f64) -> Result<(), MapError> {
+    if resolution.is_finite() && resolution > 0.0 { Ok(()) } else { Err(MapError::Resolution { resolution }) }
+}
+
+pub(crate) fn check_origin(origin: [f64; 3]) -> Result<(), MapError> {
+    if origin.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(MapError::Origin { x: origin[0], y: origin[1], yaw: origin[2] })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cells_and_centres_agree() {
+        for yaw in [0.0, 0.3, -2.0, std::f64::consts::PI] {
+            let frame = MapFrame::new(7, 5, 0.25, [1.5, -3.0, yaw]).unwrap();
+            for y in 0..5 {
+                for x in 0..7 {
+                    let cell = Cell::new(x, y);
+                    assert_eq!(frame.cell_at(frame.centre(cell)).unwrap(), cell, "yaw {yaw}");
+                    let (gx, gy) = frame.point_to_grid(frame.centre(cell));
+                    assert!(
+                        (gx - (f64::from(x) + 0.5)).abs() < 1e-9 && (gy - (f64::from(y) + 0.5)).abs() < 1e-9
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_lower_left_corner_is_the_origin() {
+        let frame = MapFrame::new(10, 20, 0.1, [2.0, 3.0, 0.0]).unwrap();
+        assert_eq!(frame.cell_at(Point::new(2.0, 3.0)).unwrap(), Cell::new(0, 19));
+        assert_eq!(frame.cell_at(Point::new(2.999, 4.999)).unwrap(), Cell::new(9, 0));
+        assert!(frame.cell_at(Point::new(3.0, 3.5)).is_err());
+        assert!(frame.cell_at(Point::new(1.999, 3.5)).is_err());
+        assert!(frame.cell_at(Point::new(f64::NAN, 3.5)).is_err());
+        let turned = MapFrame::new(10, 20, 0.1, [0.0, 0.0, std::f64::consts::FRAC_PI_2]).unwrap();
+        // Turned a quarter to the left: the map's x axis points up the world's y.
+        assert_eq!(turned.cell_at(Point::new(-0.05, 0.05)).unwrap(), Cell::new(0, 19));
+    }
+
+    #[test]
+    fn bad_frames_are_refused() {
+        assert!(matches!(MapFrame::new(0, 3, 0.1, [0.0; 3]), Err(MapError::Grid(_))));
+        for r in [0.0, -0.05, f64::NAN, f64::INFINITY] {
+            assert!(matches!(MapFrame::new(3, 3, r, [0.0; 3]), Err(MapError::Resolution { .. })));
+        }
+        assert!(matches!(MapFrame::new(3, 3, 0.1, [0.0, f64::NAN, 0.0]), Err(MapError::Origin { .. })));
+    }
+}

@@ -1,0 +1,155 @@
+//! The inflation layer, with Nav2's conventions: the robot's inscribed radius around every
+//! lethal cell is `253` (the robot's centre there means a collision), and beyond it the cost
+//! falls off as `252 * exp(-cost_scaling_factor * (d - inscribed_radius))` up to the
+//! inflation radius.
+//!
+//! Distances are between cell centres, to the nearest lethal cell, exact (a Euclidean distance
+//! transform, [`crate::squared_distances`]); Nav2 finds them with a brushfire from the
+//! obstacles, which is exact in most cells and an estimate in some.
+
+use serde::{Deserialize, Serialize};
+use trailmark_core::geometry::Point;
+
+use crate::error::MapError;
+use crate::values::{INSCRIBED, LETHAL, MAX_NON_OBSTACLE};
+
+/// The robot's shape on the map, for its inscribed radius.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Footprint {
+    /// A disc of this radius in metres, centred on the robot's origin.
+    Radius(f64),
+    /// A polygon of points in metres around the robot's origin (Nav2's `footprint`).
+    Polygon(Vec<[f64; 2]>),
+}
+
+impl Footprint {
+    /// The radius of the largest circle about the robot's origin inside the footprint: the
+    /// radius itself, or for a polygon the smallest distance from the origin to an edge (as
+    /// Nav2's `calculateMinAndMaxDistances`).
+    ///
+    /// Errors: a negative or non-finite radius, a polygon of fewer than three points or with a
+    /// non-finite point.
+    pub fn inscribed_radius(&self) -> Result<f64, MapError> {
+        match self {
+            Footprint::Radius(r) => non_negative("robot_radius", *r),
+            Footprint::Polygon(points) => {
+                if points.len() < 3 || points.iter().flatten().any(|v| !v.is_finite()) {
+                    return Err(MapError::Setting {
+                        setting: "footprint",
+                        expected: "a polygon of at least three finite points",
+                        value: points.len() as f64,
+                    });
+                }
+                let origin = Point::origin();
+                let mut min = f64::INFINITY;
+                for (i, a) in points.iter().enumerate() {
+                    let b = points[(i + 1) % points.len()];
+                    let (a, b) = (Point::new(a[0], a[1]), Point::new(b[0], b[1]));
+                    min = min.min(segment_distance(origin, a, b));
+                }
+                Ok(min)
+            }
+        }
+    }
+}
+
+fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
+    let ab = b - a;
+    let t =
+        if ab.norm_squared() > 0.0 { ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0) } else { 0.0 };
+    (p - (a + ab * t)).norm()
+}
+
+/// How far costs spread from lethal cells.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Inflation {
+    /// Metres from a lethal cell within which the robot's centre means a collision (cost 253).
+    pub inscribed_radius: f64,
+    /// Metres from a lethal cell up to which cells get a cost (Nav2's `inflation_radius`).
+    pub inflation_radius: f64,
+    /// How fast the cost falls off beyond the inscribed radius, per metre (Nav2's
+    /// `cost_scaling_factor`).
+    pub cost_scaling_factor: f64,
+}
+
+impl Inflation {
+    /// Nav2's defaults around a robot: inflation radius 0.55 m, cost scaling factor 10.
+    pub fn around(footprint: &Footprint) -> Result<Self, MapError> {
+        let inflation = Inflation {
+            inscribed_radius: footprint.inscribed_radius()?,
+            inflation_radius: 0.55,
+            cost_scaling_factor: 10.0,
+        };
+        inflation.check()?;
+        Ok(inflation)
+    }
+
+    /// Checks that the radii and the factor are finite and not negative.
+    pub fn check(&self) -> Result<(), MapError> {
+        non_negative("inscribed_radius", self.inscribed_radius)?;
+        non_negative("inflation_radius", self.inflation_radius)?;
+        non_negative("cost_scaling_factor", self.cost_scaling_factor)?;
+        Ok(())
+    }
+
+    /// The cost of a cell `cells` cell-lengths (centre to centre) from the nearest lethal cell
+    /// on a map of `resolution` metres per cell: Nav2's `computeCost`. 254 at distance 0, 253
+    /// within the inscribed radius, `252 * exp(-k (d - r))` truncated beyond it, 0 beyond
+    /// [`Inflation::cell_radius`].
+    pub fn cost(&self, cells: f64, resolution: f64) -> u8 {
+        if cells == 0.0 {
+            return LETHAL;
+        }
+        if cells > self.cell_radius(resolution) {
+            return 0;
+        }
+        let metres = cells * resolution;
+        if metres <= self.inscribed_radius {
+            INSCRIBED
+        } else {
+            let factor = (-self.cost_scaling_factor * (metres - self.inscribed_radius)).exp();
+            // In [0, 252]: factor is in (0, 1].
+            (f64::from(MAX_NON_OBSTACLE) * factor) as u8
+        }
+    }
+
+    /// The inflation radius in cells, as Nav2 rounds it: `ceil(inflation_radius / resolution)`.
+    pub fn cell_radius(&self, resolution: f64) -> f64 {
+        (self.inflation_radius / resolution).ceil().max(0.0)
+    }
+}
+
+fn non_negative(setting: &'static str, value: f64) -> Result<f64, MapError> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(MapError::Setting { setting, expected: "a finite number of at least 0", value })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nav2_cost_curve() {
+        let inflation =
+            Inflation { inscribed_radius: 0.2, inflation_radius: 0.55, cost_scaling_factor: 10.0 };
+        let res = 0.05;
+        assert_eq!(inflation.cost(0.0, res), 254);
+        assert_eq!(inflation.cost(4.0, res), 253); // 0.2 m: on the inscribed radius
+        // 0.25 m: 252 * exp(-10 * 0.05) = 152.8..., truncated.
+        assert_eq!(inflation.cost(5.0, res), 152);
+        assert_eq!(inflation.cost(inflation.cell_radius(res) + 0.01, res), 0);
+    }
+
+    #[test]
+    fn inscribed_radius_of_a_footprint() {
+        let rectangle = Footprint::Polygon(vec![[-0.3, -0.2], [0.5, -0.2], [0.5, 0.2], [-0.3, 0.2]]);
+        assert!((rectangle.inscribed_radius().unwrap() - 0.2).abs() < 1e-12);
+        assert_eq!(Footprint::Radius(0.22).inscribed_radius().unwrap(), 0.22);
+        assert!(Footprint::Radius(-1.0).inscribed_radius().is_err());
+        assert!(Footprint::Polygon(vec![[0.0, 0.0], [1.0, 0.0]]).inscribed_radius().is_err());
+    }
+}

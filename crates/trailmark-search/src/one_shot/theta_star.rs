@@ -1,0 +1,185 @@
+//! Theta*: any-angle paths over a graph whose nodes can also be joined by straight lines (Nash,
+//! Daniel, Koenig and Felner, "Theta*: Any-Angle Path Planning on Grids", AAAI 2007).
+//!
+//! It is A* with one change: when a node `v` is reached from `u`, it also tries the straight
+//! line from `u`'s parent to `v`, and keeps whichever is cheaper. Paths then bend only where
+//! they must, at the corners of obstacles, instead of following the graph's eight directions.
+//! Each line's cost comes from the caller (`line_cost`), so the lines can be priced by the
+//! terrain they cross, as Nav2's Theta* does on a costmap; a blocked line is `None`.
+//!
+//! Theta* is not optimal: its paths are at least as long as the true shortest any-angle path
+//! (every segment is a line the caller accepted) and in practice within a few percent of it,
+//! and they are never longer than A*'s on the same graph with the same costs when the line
+//! costs agree with the edge costs.
+
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{IndexedGraph, Successors};
+
+use crate::error::SearchError;
+use crate::heuristic::HeuristicCheck;
+use crate::index::NodeIndex;
+use crate::one_shot::SearchResult;
+use crate::one_shot::edges::EdgeCheck;
+use crate::one_shot::key::FKey;
+use crate::one_shot::workspace::{Search, ensure};
+use crate::stats::SearchStats;
+
+/// Theta* from `start` to `goal`: an any-angle path whose corners are nodes of `graph`, each
+/// segment a straight line that `line_cost(from, to)` accepts (`Some(cost)`) or an edge.
+/// `heuristic` must be admissible for straight lines (on a grid: the Euclidean distance, not
+/// the octile one). The path's cost is the sum of its segments' costs.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::{astar, theta_star};
+///
+/// let grid = Grid::from_rows(&["........", "........", "........"])?;
+/// let graph = GridGraph::new(&grid, Connectivity::Eight);
+/// let (start, goal) = (Cell::new(0, 0), Cell::new(7, 2));
+/// let h = graph.heuristic(GridHeuristic::Euclidean, goal);
+/// let found = theta_star(&graph, start, goal, h, |a, b| graph.line_cost(a, b))?;
+/// let path = found.path.expect("reachable");
+/// assert_eq!(path.nodes, [start, goal]); // one straight line
+/// assert!((path.cost - 53f64.sqrt()).abs() < 1e-12);
+/// let grid_path = astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal))?;
+/// assert!(path.cost < grid_path.cost().unwrap());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn theta_star<G, H, L>(
+    graph: &G,
+    start: G::Node,
+    goal: G::Node,
+    heuristic: H,
+    line_cost: L,
+) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+where
+    G: Successors + IndexedGraph + ?Sized,
+    H: FnMut(G::Node) -> Cost,
+    L: FnMut(G::Node, G::Node) -> Option<Cost>,
+{
+    Search::new().theta_star(graph, start, goal, heuristic, line_cost)
+}
+
+impl<I> Search<I> {
+    /// Theta* from `start` to `goal` with this workspace; see [`theta_star`](crate::theta_star()).
+    pub fn theta_star<G, H, L>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+        mut heuristic: H,
+        mut line_cost: L,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+        H: FnMut(G::Node) -> Cost,
+        L: FnMut(G::Node, G::Node) -> Option<Cost>,
+    {
+        let query = self.begin(graph, start, goal)?;
+        let (t, open, closed) = (query.goal, query.open, query.closed);
+        let mut stats = SearchStats::default();
+        let mut heuristics = HeuristicCheck::new();
+        let mut overflow = None;
+        let mut lines = LineCheck::default();
+        if let Some(h) = heuristics.accept(start, heuristic(start)).filter(|h| h.is_finite()) {
+            self.heap.push(query.start, FKey::new(h, 0.0));
+            stats.pushes += 1;
+        }
+        let mut edges = EdgeCheck::new();
+        let mut found = None;
+        while let Some((u, _)) = self.heap.pop() {
+            if u == t {
+                found = Some(u);
+                break;
+            }
+            self.nodes.stamp[u] = closed;
+            stats.expansions += 1;
+            let gu = self.nodes.g[u];
+            let pu = self.nodes.parent[u] as usize;
+            // The line from u's parent: none from the start, which is its own parent.
+            let parent = (pu != u).then(|| (pu, self.nodes.g[pu], self.index.node(graph, pu)));
+            let (nodes, heap) = (&mut self.nodes, &mut self.heap);
+            self.index.for_each_successor(graph, u, |v, next, cost| {
+                if !edges.accept(next, cost) {
+                    return;
+                }
+                ensure(nodes, v);
+                let st = nodes.stamp[v];
+                if st == closed {
+                    return;
+                }
+                let (mut gv, mut from) = (gu + cost, u);
+                if let Some((pu, gp, pnode)) = parent
+                    && let Some(c) = lines.accept(pnode, next, line_cost(pnode, next))
+                {
+                    // Ties go to the line: fewer corners for the same cost.
+                    if gp + c <= gv {
+                        (gv, from) = (gp + c, pu);
+                    }
+                }
+                let seen = st >= open;
+                if seen && gv >= nodes.g[v] {
+                    return;
+                }
+                if gv == f64::INFINITY {
+                    overflow.get_or_insert(next);
+                    return;
+                }
+                let Some(h) = heuristics.accept(next, heuristic(next)) else { return };
+                nodes.reach(v, gv, from, open);
+                if h == f64::INFINITY {
+                    return;
+                }
+                if seen {
+                    stats.decreases += 1
+                } else {
+                    stats.pushes += 1
+                }
+                heap.push(v, FKey::new(gv + h, gv));
+            });
+            edges.check(|| self.index.node(graph, u))?;
+            lines.check()?;
+            heuristics.check()?;
+        }
+        heuristics.check()?;
+        if let (None, Some(node)) = (found, overflow) {
+            return Err(SearchError::CostOverflow { node });
+        }
+        Ok(self.finish(graph, &query, found, stats))
+    }
+}
+
+/// Keeps the first invalid line cost met (negative or not a number).
+struct LineCheck<N> {
+    bad: Option<(N, N, Cost)>,
+}
+
+impl<N> Default for LineCheck<N> {
+    fn default() -> Self {
+        LineCheck { bad: None }
+    }
+}
+
+impl<N: Copy + std::fmt::Debug> LineCheck<N> {
+    /// The line's cost when it can be used: `None` for a blocked line, an infinite cost, or an
+    /// invalid one (remembered).
+    fn accept(&mut self, from: N, to: N, cost: Option<Cost>) -> Option<Cost> {
+        match cost {
+            Some(c) if (0.0..f64::INFINITY).contains(&c) => Some(c),
+            Some(c) if c.is_nan() || c < 0.0 => {
+                self.bad.get_or_insert((from, to, c));
+                None
+            }
+            _ => None,
+        }
+    }
+
+    fn check(&self) -> Result<(), SearchError<N>> {
+        match self.bad {
+            None => Ok(()),
+            Some((from, to, cost)) => Err(SearchError::InvalidLineCost { from, to, cost }),
+        }
+    }
+}

@@ -95,7 +95,7 @@ fn query<const N: usize, Q: StateSampler<Rn<N>>>(
     let joined = clock.elapsed() - built;
     let heuristic = |a: u32, b: u32| space.distance(prm.state(a), prm.state(b));
     let waypoint = |n: u32| Waypoint::Point(space.coordinates(prm.state(n)));
-    let mut result = problem.planner.search(&prm, (s, g), heuristic, waypoint)?;
+    let mut result = problem.planner.search(&prm, (s, g), heuristic, waypoint, None)?;
     // A sampled roadmap without a path proves nothing: more samples may find one.
     if result.status == Status::NoPath {
         result.status = Status::Stopped;

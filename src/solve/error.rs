@@ -9,6 +9,7 @@ use trailmark_core::movingai::ReadError;
 use trailmark_graph::prm::PrmError;
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::VisibilityError;
+use trailmark_map::MapError;
 use trailmark_sample::{PlanError, SamplerError, SpaceError};
 use trailmark_search::SearchError;
 
@@ -30,6 +31,9 @@ pub enum SolveError {
     /// The map file could not be read or parsed.
     #[error(transparent)]
     Map(#[from] ReadError),
+    /// A ROS map could not be loaded, or its costmap settings are wrong.
+    #[error(transparent)]
+    RosMap(#[from] MapError),
     /// The grid (rows or costs) is invalid.
     #[error("invalid grid: {0}")]
     Grid(#[from] GridError),
@@ -254,6 +258,40 @@ pub enum DocumentError {
         /// The planner.
         planner: &'static str,
     },
+    /// An any-angle search on a graph without straight lines between its nodes.
+    #[error(
+        "the \"{planner}\" planner draws straight lines between grid cells: it plans on grid and ROS-map worlds"
+    )]
+    NeedsLines {
+        /// The planner.
+        planner: &'static str,
+    },
+    /// A start or goal in metres outside a ROS map.
+    #[error("the {which} ({x}, {y}) m lies outside the map")]
+    OutsideMap {
+        /// `"start"` or `"goal"`.
+        which: &'static str,
+        /// x in metres.
+        x: f64,
+        /// y in metres.
+        y: f64,
+    },
+    /// A start or goal in metres where the robot cannot be (a lethal, inscribed or unknown
+    /// cell of the costmap).
+    #[error("the {which} ({x}, {y}) m lies in a cell of cost {cost}: the robot cannot be there")]
+    BlockedPoint {
+        /// `"start"` or `"goal"`.
+        which: &'static str,
+        /// x in metres.
+        x: f64,
+        /// y in metres.
+        y: f64,
+        /// The cell's cost in the costmap (253 inscribed, 254 lethal, 255 unknown).
+        cost: u8,
+    },
+    /// A ROS-map world with both a robot radius and a footprint.
+    #[error("give \"robot_radius\" or \"footprint\", not both")]
+    RadiusAndFootprint,
     /// A graph search where a sampling planner is run.
     #[error("the \"{planner}\" planner searches a graph; it does not sample states")]
     NotASamplingPlanner {

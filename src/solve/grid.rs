@@ -86,7 +86,8 @@ pub(super) fn solve_grid(
         return Err(DocumentError::Inadmissible { heuristic: kind }.into());
     }
     let h = graph.heuristic_between(kind);
-    let result = problem.planner.search(&graph, (start, goal), h, Waypoint::Cell)?;
+    let lines = |a, b| graph.line_cost(a, b);
+    let result = problem.planner.search(&graph, (start, goal), h, Waypoint::Cell, Some(&lines))?;
     if let Some(picture) = picture {
         let cells: Vec<Cell> = result
             .path

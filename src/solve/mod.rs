@@ -30,16 +30,23 @@ mod planner;
 mod polygons;
 mod problem;
 mod result;
+mod ros_map;
 mod sampling;
 
 pub use error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
 pub use grid::{grid_graph, load_grid};
 pub use planner::{AnytimeSpec, PlannerSpec, SamplerSpec, SamplingSpec};
 pub use polygons::DEFAULT_SAMPLES;
-pub use problem::{BoxesSpec, GraphKind, GridSpec, ProblemSpec, SamplerKind, SpaceKind, WorldSpec};
+pub use problem::{
+    BoxesSpec, GraphKind, GridSpec, ProblemSpec, RosMapSpec, SamplerKind, SpaceKind, WorldSpec,
+};
 pub use result::{
     ErrorReport, GraphStats, ImprovementRecord, IterationRecord, ResultStats, SamplingStats, SmoothedRecord,
     SolveResult, Status, Waypoint, anytime_result_of, result_of,
+};
+pub use ros_map::{
+    DEFAULT_COST_FACTOR, DEFAULT_COST_SCALING_FACTOR, DEFAULT_INFLATION_RADIUS, DEFAULT_ROBOT_RADIUS,
+    ros_costmap, ros_travel_cost,
 };
 pub use sampling::{DEFAULT_ITERATIONS, MAX_BOX_DIMENSION, SHORTCUT_ATTEMPTS};
 
@@ -95,5 +102,9 @@ fn solve_inner(
         (WorldSpec::Boxes(_), _) if picture.is_some() => Err(undrawable().into()),
         (WorldSpec::Boxes(world), Some(spec)) => sampling::solve_boxes(problem, world, spec),
         (WorldSpec::Boxes(world), None) => box_roadmap::solve_box_roadmap(problem, world),
+        (WorldSpec::RosMap(_), Some(_)) => {
+            Err(DocumentError::NeedsPolygons { planner: planner.name() }.into())
+        }
+        (WorldSpec::RosMap(world), None) => ros_map::solve_ros_map(problem, world, base_dir, picture),
     }
 }

@@ -54,6 +54,10 @@ pub enum PlannerSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         heuristic: Option<GridHeuristic>,
     },
+    /// Theta*: any-angle paths on grids and ROS maps, straight lines between cell centres
+    /// priced by the cells they cross; the Euclidean heuristic.
+    #[serde(rename = "theta_star")]
+    ThetaStar {},
     /// Lifelong Planning A*: the incremental forward search (on a static world, one search).
     #[serde(rename = "lpa_star")]
     LpaStar {
@@ -96,6 +100,7 @@ impl PlannerSpec {
             | PlannerSpec::Dijkstra {}
             | PlannerSpec::AStar { .. }
             | PlannerSpec::WeightedAStar { .. }
+            | PlannerSpec::ThetaStar {}
             | PlannerSpec::LpaStar { .. }
             | PlannerSpec::DStarLite { .. }
             | PlannerSpec::AraStar(_)
@@ -111,6 +116,7 @@ impl PlannerSpec {
             PlannerSpec::Dijkstra {} => "dijkstra",
             PlannerSpec::AStar { .. } => "astar",
             PlannerSpec::WeightedAStar { .. } => "weighted_astar",
+            PlannerSpec::ThetaStar {} => "theta_star",
             PlannerSpec::LpaStar { .. } => "lpa_star",
             PlannerSpec::DStarLite { .. } => "dstar_lite",
             PlannerSpec::AraStar(_) => "ara_star",
@@ -128,6 +134,9 @@ impl PlannerSpec {
             PlannerSpec::Bfs {} | PlannerSpec::Dfs {} | PlannerSpec::Dijkstra {} => (None, true),
             PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => (None, false),
             PlannerSpec::WeightedAStar { heuristic, .. } => (*heuristic, false),
+            // Lines may be shorter than any path of the grid: only the straight line is a
+            // lower bound.
+            PlannerSpec::ThetaStar {} => (Some(GridHeuristic::Euclidean), false),
             PlannerSpec::AStar { heuristic }
             | PlannerSpec::LpaStar { heuristic }
             | PlannerSpec::DStarLite { heuristic }
@@ -162,7 +171,9 @@ impl PlannerSpec {
     }
 
     /// Runs this graph search from `start` to `goal` on `graph` with the heuristic `h(a, b)`,
-    /// writing each path node (and each node an error names) as `waypoint(node)`. Sampling
+    /// writing each path node (and each node an error names) as `waypoint(node)`. `line_cost`
+    /// prices straight lines between nodes for the any-angle searches (`None` where the graph
+    /// has no lines: Theta* is then refused). Sampling
     /// planners draw their own states: they are run by [`PlannerSpec::sampling_planner`].
     pub(super) fn search<G, H>(
         &self,
@@ -170,6 +181,7 @@ impl PlannerSpec {
         (start, goal): (G::Node, G::Node),
         h: H,
         waypoint: impl Fn(G::Node) -> Waypoint,
+        line_cost: Option<&LineCost<'_, G::Node>>,
     ) -> Result<SolveResult, SolveError>
     where
         G: Successors + Predecessors + IndexedGraph,
@@ -186,6 +198,10 @@ impl PlannerSpec {
             PlannerSpec::WeightedAStar { weight, .. } => {
                 search.weighted_astar(graph, start, goal, to_goal, *weight)
             }
+            PlannerSpec::ThetaStar {} => match line_cost {
+                Some(line_cost) => search.theta_star(graph, start, goal, to_goal, line_cost),
+                None => return Err(DocumentError::NeedsLines { planner: self.name() }.into()),
+            },
             PlannerSpec::LpaStar { .. } => plan_once(graph, LpaStar::new(graph, start, goal, h)),
             PlannerSpec::DStarLite { .. } => plan_once(graph, DStarLite::new(graph, start, goal, h)),
             PlannerSpec::AraStar(spec) => {
@@ -241,6 +257,7 @@ impl PlannerSpec {
             | PlannerSpec::Dfs {}
             | PlannerSpec::Dijkstra {}
             | PlannerSpec::WeightedAStar { .. }
+            | PlannerSpec::ThetaStar {}
             | PlannerSpec::AraStar(_)
             | PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)
@@ -278,6 +295,10 @@ impl PlannerSpec {
         })
     }
 }
+
+/// The price of a straight line between two nodes, `None` when it is blocked: what an
+/// any-angle search draws its segments with.
+pub(super) type LineCost<'a, N> = dyn Fn(N, N) -> Option<Cost> + 'a;
 
 /// A replanner of the registry, behind its trait.
 type BoxedReplanner<'h, G> = Box<dyn Replanner<G> + 'h>;

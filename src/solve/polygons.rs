@@ -245,8 +245,13 @@ where
     R::Position: Coordinates,
 {
     let waypoint = |node| Waypoint::Point(query.position(node).coordinates());
-    let mut result =
-        problem.planner.search(query, (query.start(), query.goal()), query.heuristic_between(), waypoint)?;
+    let mut result = problem.planner.search(
+        query,
+        (query.start(), query.goal()),
+        query.heuristic_between(),
+        waypoint,
+        None,
+    )?;
     // A sampled roadmap without a path proves nothing: more samples may find one.
     let sampled = matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm));
     if sampled && result.status == Status::NoPath {

@@ -43,6 +43,7 @@ use std::path::PathBuf;
 use serde::{Deserialize, Serialize};
 use trailmark_core::grid::Connectivity;
 use trailmark_core::world::PolygonWorld;
+use trailmark_map::Unknown;
 
 use super::planner::PlannerSpec;
 
@@ -53,8 +54,8 @@ use super::planner::PlannerSpec;
 pub struct ProblemSpec {
     /// The world to plan in.
     pub world: WorldSpec,
-    /// The start: a cell `[x, y]` of a grid, a point `[x, y]` of a polygon world, or a pose
-    /// `[x, y, θ]` (θ in radians) for a Dubins roadmap.
+    /// The start: a cell `[x, y]` of a grid, a point `[x, y]` of a polygon world or (in metres)
+    /// of a ROS map, or a pose `[x, y, θ]` (θ in radians) for a Dubins roadmap.
     pub start: Vec<f64>,
     /// The goal, as the start.
     pub goal: Vec<f64>,
@@ -196,6 +197,41 @@ pub enum WorldSpec {
     /// Axis-aligned boxes in any dimension, for the sampling planners in `"space": "rn"`:
     /// `{"boxes": {"bounds": [[lo, hi], ...], "obstacles": [[[lo, ...], [hi, ...]], ...]}}`.
     Boxes(BoxesSpec),
+    /// A ROS map (map_server's YAML and image) made into a Nav2-style costmap around the robot:
+    /// `{"ros_map": {"yaml": "PATH.yaml", "robot_radius": 0.2, "inflation_radius": 0.55,
+    /// "cost_scaling_factor": 10, "unknown": "lethal"}}`; start and goal in metres.
+    RosMap(RosMapSpec),
+}
+
+/// A ROS map world: the map's YAML file and the costmap's settings, each with Nav2's default.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RosMapSpec {
+    /// The map's YAML file (map_server's format), relative to the document's folder unless
+    /// absolute.
+    pub yaml: PathBuf,
+    /// The robot's radius in metres, its inscribed radius (default 0.1, Nav2's
+    /// `robot_radius`); or give `footprint`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub robot_radius: Option<f64>,
+    /// The robot's footprint, a polygon `[[x, y], ...]` in metres about its centre (its
+    /// inscribed radius is the smallest distance from the centre to an edge).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub footprint: Option<Vec<[f64; 2]>>,
+    /// How far costs spread from obstacles, in metres (default 0.55).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inflation_radius: Option<f64>,
+    /// How fast the cost falls off beyond the inscribed radius, per metre (default 10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cost_scaling_factor: Option<f64>,
+    /// What unknown cells are: `"lethal"` (default), `"free"`, `"no_information"` (blocked,
+    /// not inflated) or `{"cost": c}` with c in 0..=252.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unknown: Option<Unknown>,
+    /// How much a cell's cost adds to the price of crossing it: a move costs its length times
+    /// `1 + cost_factor * cost / 252` (default 2, Smac's `cost_travel_multiplier`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cost_factor: Option<f64>,
 }
 
 /// A world of axis-aligned boxes: the region, one `[lo, hi]` per axis, and the obstacles, each

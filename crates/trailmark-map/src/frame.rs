@@ -111,7 +111,10 @@ impl MapFrame {
     /// The centre of `cell`, in metres. The cell need not be inside the map.
     pub fn centre(&self, cell: Cell) -> Point {
         let row_from_bottom = f64::from(self.height) - 1.0 - f64::from(cell.y);
-        self.world_point((f64::from(cell.x) + 0.5) * self.resolution, (row_from_bottom + 0.5) * self.resolution)
+        self.world_point(
+            (f64::from(cell.x) + 0.5) * self.resolution,
+            (row_from_bottom + 0.5) * self.resolution,
+        )
     }
 
     /// A point given in cell units of the grid (x right, y down from the top-left corner of the

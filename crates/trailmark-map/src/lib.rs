@@ -43,6 +43,7 @@ mod inflation;
 mod message;
 mod metadata;
 mod occupancy;
+mod picture;
 mod pixels;
 mod values;
 
@@ -58,5 +59,6 @@ pub use inflation::{Footprint, Inflation};
 pub use message::MAX_MESSAGE_BYTES;
 pub use metadata::{MapMetadata, MapMode};
 pub use occupancy::{FREE, OCCUPIED, OccupancyCounts, OccupancyGrid, UNKNOWN};
+pub use picture::{CostmapSvg, cost_colour};
 pub use pixels::MAX_IMAGE_SIDE;
 pub use values::{FREE_SPACE, INSCRIBED, LETHAL, MAX_NON_OBSTACLE, NO_INFORMATION};

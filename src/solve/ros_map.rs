@@ -1,0 +1,118 @@
+//! ROS-map worlds: a map_server map made into a Nav2-style costmap around the robot, searched
+//! cell to cell (or by straight lines, Theta*) with start, goal and path in metres.
+
+use std::path::Path;
+
+use trailmark_core::geometry::Point;
+use trailmark_core::grid::{Cell, Connectivity, GridHeuristic};
+use trailmark_graph::GridGraph;
+use trailmark_map::{
+    Costmap, CostmapSettings, Footprint, INSCRIBED, Inflation, TravelCost, Unknown, load_map,
+};
+
+use super::error::{DocumentError, SolveError};
+use super::problem::{ProblemSpec, RosMapSpec};
+use super::result::{SolveResult, Waypoint};
+
+/// Nav2's default `robot_radius`, in metres.
+pub const DEFAULT_ROBOT_RADIUS: f64 = 0.1;
+/// Nav2's default `inflation_radius`, in metres.
+pub const DEFAULT_INFLATION_RADIUS: f64 = 0.55;
+/// Nav2's default `cost_scaling_factor`, per metre.
+pub const DEFAULT_COST_SCALING_FACTOR: f64 = 10.0;
+/// Smac 2-D's default `cost_travel_multiplier`.
+pub const DEFAULT_COST_FACTOR: f64 = 2.0;
+
+/// The costmap of a ROS-map world: the map loaded (relative paths against `base_dir`), its
+/// unknown cells read as the world says, inflated around the robot.
+pub fn ros_costmap(world: &RosMapSpec, base_dir: impl AsRef<Path>) -> Result<Costmap, SolveError> {
+    let footprint = match (&world.robot_radius, &world.footprint) {
+        (Some(_), Some(_)) => return Err(DocumentError::RadiusAndFootprint.into()),
+        (_, Some(points)) => Footprint::Polygon(points.clone()),
+        (radius, None) => Footprint::Radius(radius.unwrap_or(DEFAULT_ROBOT_RADIUS)),
+    };
+    let inflation = Inflation {
+        inflation_radius: world.inflation_radius.unwrap_or(DEFAULT_INFLATION_RADIUS),
+        cost_scaling_factor: world.cost_scaling_factor.unwrap_or(DEFAULT_COST_SCALING_FACTOR),
+        ..Inflation::around(&footprint)?
+    };
+    let map = load_map(base_dir.as_ref().join(&world.yaml))?;
+    let settings = CostmapSettings {
+        unknown: world.unknown.unwrap_or(Unknown::Lethal),
+        inflation: Some(inflation),
+        ..CostmapSettings::default()
+    };
+    Ok(Costmap::from_occupancy(&map, &settings)?)
+}
+
+/// The price of travel over a ROS-map world's costmap, per metre: a move over free cells costs
+/// its length in metres, over costly cells `1 + cost_factor * cost / 252` times that.
+pub fn ros_travel_cost(world: &RosMapSpec, resolution: f64) -> TravelCost {
+    let factor = world.cost_factor.unwrap_or(DEFAULT_COST_FACTOR);
+    TravelCost { neutral: resolution, factor: factor * resolution, blocked_from: INSCRIBED }
+}
+
+/// The cell of `which` (`[x, y]` in metres), or why the robot cannot start or end there.
+fn cell_at(which: &'static str, value: &[f64], costmap: &Costmap) -> Result<Cell, DocumentError> {
+    let &[x, y] = value else {
+        return Err(DocumentError::NotAPoint { which, value: value.to_vec(), graph: "ros_map" });
+    };
+    if !(x.is_finite() && y.is_finite()) {
+        return Err(DocumentError::NotAPoint { which, value: value.to_vec(), graph: "ros_map" });
+    }
+    let cell =
+        costmap.frame().try_cell_at(Point::new(x, y)).ok_or(DocumentError::OutsideMap { which, x, y })?;
+    match costmap.cost(cell) {
+        Some(cost) if cost < INSCRIBED => Ok(cell),
+        Some(cost) => Err(DocumentError::BlockedPoint { which, x, y, cost }),
+        None => Err(DocumentError::OutsideMap { which, x, y }),
+    }
+}
+
+/// Solves a ROS-map problem.
+pub(super) fn solve_ros_map(
+    problem: &ProblemSpec,
+    world: &RosMapSpec,
+    base_dir: &Path,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    if let Some(name) = problem.roadmap_fields().first() {
+        return Err(DocumentError::NotForGrids { field: name }.into());
+    }
+    let costmap = ros_costmap(world, base_dir)?;
+    let frame = *costmap.frame();
+    let grid = costmap.to_grid(&ros_travel_cost(world, frame.resolution()))?;
+    let start = cell_at("start", &problem.start, &costmap)?;
+    let goal = cell_at("goal", &problem.goal, &costmap)?;
+    let graph = GridGraph::new(&grid, Connectivity::Eight);
+    let (asked, optimal) = problem.planner.heuristic();
+    let kind = asked.unwrap_or(GridHeuristic::Octile);
+    if optimal && !kind.is_admissible(Connectivity::Eight) {
+        return Err(DocumentError::Inadmissible { heuristic: kind }.into());
+    }
+    let h = graph.heuristic_between(kind);
+    let lines = |a, b| graph.line_cost(a, b);
+    let waypoint = |cell: Cell| {
+        let p = frame.centre(cell);
+        Waypoint::Point(vec![p.x, p.y])
+    };
+    let result = problem.planner.search(&graph, (start, goal), h, waypoint, Some(&lines))?;
+    if let Some(picture) = picture {
+        let path: Vec<Point> = result
+            .path
+            .iter()
+            .filter_map(|w| match w {
+                Waypoint::Point(p) => Some(Point::new(p[0], p[1])),
+                Waypoint::Cell(_) => None,
+            })
+            .collect();
+        let title = format!("{} on {}", problem.planner.name(), world.yaml.display());
+        *picture = trailmark_map::CostmapSvg::new(&costmap)
+            .path(&path)
+            .start(frame.centre(start))
+            .goal(frame.centre(goal))
+            .title(title)
+            .to_svg()?;
+    }
+    Ok(result)
+}

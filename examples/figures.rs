@@ -113,7 +113,63 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     write("core-dubins.svg", dubins_words()?)?;
     roadmaps()?;
     bridge_samples()?;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    ros_map(&root.join("examples/maps/office.yaml"), "map-office.svg", [-4.2, -2.2], [4.3, 2.3])?;
+    let warehouse = root.join("../shared/rosmaps/warehouse.yaml");
+    if warehouse.is_file() {
+        ros_map(&warehouse, "map-warehouse.svg", [-12.0, -20.0], [10.0, 15.0])?;
+    } else {
+        println!("skipped docs/img/map-warehouse.svg: {} not found", warehouse.display());
+    }
     Ok(())
+}
+
+/// A ROS map made a costmap around a 0.2 m robot, with A* (blue), A* shortcut (green) and
+/// Theta* (orange) from `start` to `goal` in metres.
+fn ros_map(
+    yaml: &Path,
+    name: &str,
+    start: [f64; 2],
+    goal: [f64; 2],
+) -> Result<(), Box<dyn std::error::Error>> {
+    use trailmark::core::geometry::Point;
+    use trailmark::map::CostmapSvg;
+    use trailmark::search::theta_star;
+    use trailmark::solve::{RosMapSpec, ros_costmap, ros_travel_cost};
+    let spec: RosMapSpec = serde_json::from_value(serde_json::json!({
+        "yaml": yaml, "robot_radius": 0.2, "inflation_radius": 0.55, "cost_scaling_factor": 10.0
+    }))?;
+    let costmap = ros_costmap(&spec, ".")?;
+    let frame = *costmap.frame();
+    let graph =
+        GridGraph::new(&costmap.to_grid(&ros_travel_cost(&spec, frame.resolution()))?, Connectivity::Eight);
+    let (s, g) = (frame.cell_at(Point::from(start))?, frame.cell_at(Point::from(goal))?);
+    let grid_path = astar(&graph, s, g, graph.heuristic(GridHeuristic::Octile, g))?.path.ok_or("no path")?;
+    let lines = |a, b| graph.line_cost(a, b);
+    let theta = theta_star(&graph, s, g, graph.heuristic(GridHeuristic::Euclidean, g), lines)?
+        .path
+        .ok_or("no path")?;
+    let short = graph.shortcut(&grid_path.nodes);
+    let metres = |cells: &[Cell]| -> Vec<Point> { cells.iter().map(|&c| frame.centre(c)).collect() };
+    let cost = |cells: &[Cell]| -> f64 { cells.windows(2).filter_map(|w| graph.line_cost(w[0], w[1])).sum() };
+    println!(
+        "{name}: A* {:.2}, A* shortcut {:.2}, Theta* {:.2} (cost, metres on free cells)",
+        grid_path.cost,
+        cost(&short),
+        theta.cost
+    );
+    let svg = CostmapSvg::new(&costmap)
+        .path(&metres(&grid_path.nodes))
+        .path(&metres(&theta.nodes))
+        .path(&metres(&short))
+        .start(Point::from(start))
+        .goal(Point::from(goal))
+        .title(format!(
+            "{}: costmap of a 0.2 m robot; A* (blue), Theta* (orange), A* shortcut (green)",
+            yaml.file_stem().map_or(String::new(), |s| s.to_string_lossy().into_owned())
+        ))
+        .to_svg()?;
+    Ok(write(name, svg)?)
 }
 
 /// The bridge-test sampler on the six-door world of the sampling benchmark: where its samples

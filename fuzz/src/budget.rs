@@ -58,6 +58,12 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
             }
             0
         }
+        WorldSpec::RosMap(world) => {
+            if world.yaml.is_absolute() || world.yaml.has_root() {
+                return false; // Path::join would leave the base folder: never read a file.
+            }
+            0
+        }
     };
     let time_ok = |t: Option<f64>| t.is_some_and(|t| t <= MAX_TIME_LIMIT_S);
     match &problem.planner {
@@ -125,7 +131,7 @@ fn roadmap_nodes(problem: &ProblemSpec) -> usize {
         _ => match &problem.world {
             // Grown corners are arcs of up to 16 vertices.
             WorldSpec::Polygons(w) => 16 * w.obstacles().iter().map(|o| o.vertices().len()).sum::<usize>() + 6,
-            WorldSpec::Grid(_) | WorldSpec::Boxes(_) => 0,
+            WorldSpec::Grid(_) | WorldSpec::Boxes(_) | WorldSpec::RosMap(_) => 0,
         },
     }
 }

@@ -46,6 +46,7 @@ pub enum PlannerName {
     Rrt,
     RrtConnect,
     RrtStar,
+    ThetaStar,
 }
 
 impl PlannerName {
@@ -63,6 +64,7 @@ impl PlannerName {
             PlannerName::Rrt => "rrt",
             PlannerName::RrtConnect => "rrt_connect",
             PlannerName::RrtStar => "rrt_star",
+            PlannerName::ThetaStar => "theta_star",
         }
     }
 
@@ -520,7 +522,7 @@ fn planner_spec(u: &mut Unstructured, planner: PlannerName, grid: bool) -> Resul
     let mut spec = Map::new();
     spec.insert("name".into(), json!(planner.name()));
     match planner {
-        PlannerName::Bfs | PlannerName::Dfs | PlannerName::Dijkstra => {}
+        PlannerName::Bfs | PlannerName::Dfs | PlannerName::Dijkstra | PlannerName::ThetaStar => {}
         PlannerName::Astar | PlannerName::LpaStar | PlannerName::DstarLite => {
             insert(&mut spec, "heuristic", heuristic(u, grid)?);
         }

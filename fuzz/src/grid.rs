@@ -111,6 +111,19 @@ impl RefGrid {
         self.open(cell.x.into(), cell.y.into())
     }
 
+    /// Whether every point of the segment between the centres of `a` and `b`, sampled every
+    /// 1/256 of a cell, lies in a passable cell (points on a cell boundary are skipped).
+    pub fn line_clear(&self, a: Cell, b: Cell) -> bool {
+        let (ax, ay) = (f64::from(a.x) + 0.5, f64::from(a.y) + 0.5);
+        let (bx, by) = (f64::from(b.x) + 0.5, f64::from(b.y) + 0.5);
+        let n = (((bx - ax).hypot(by - ay)) * 256.0).ceil().max(1.0) as usize;
+        (0..=n).all(|k| {
+            let t = k as f64 / n as f64;
+            let (x, y) = (ax + t * (bx - ax), ay + t * (by - ay));
+            x.fract() == 0.0 || y.fract() == 0.0 || self.open(x.floor() as i64, y.floor() as i64)
+        })
+    }
+
     /// The cost of the move `a -> b`, `None` unless it is a move of this grid.
     pub fn step_cost(&self, a: Cell, b: Cell) -> Option<f64> {
         let (ax, ay, bx, by) = (i64::from(a.x), i64::from(a.y), i64::from(b.x), i64::from(b.y));
@@ -253,6 +266,21 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         .collect();
     assert_eq!(cells.first(), Some(&start), "the path does not start at the start");
     assert_eq!(cells.last(), Some(&goal), "the path does not end at the goal");
+    let cost = result.cost.expect("a solved result without a cost");
+    assert!(cost.is_finite() && cost >= 0.0, "cost {cost}");
+    let optimum = optimum.unwrap_or_else(|| panic!("a path was found but the reference finds none"));
+    if matches!(planner, PlannerSpec::ThetaStar {}) {
+        // Straight lines between cell centres: each clear, and the whole no dearer than the
+        // least-cost grid path (Theta* with a consistent heuristic never is).
+        for pair in cells.windows(2) {
+            assert!(grid.line_clear(pair[0], pair[1]), "the line {} -> {} crosses a blocked cell", pair[0], pair[1]);
+        }
+        assert!(
+            cost <= optimum * (1.0 + COST_TOLERANCE) + 16.0 * f64::MIN_POSITIVE,
+            "theta_star cost {cost} above the least grid cost {optimum}"
+        );
+        return;
+    }
     let mut sum = 0.0;
     for (i, pair) in cells.windows(2).enumerate() {
         let step = grid
@@ -260,10 +288,7 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
             .unwrap_or_else(|| panic!("move {i} {} -> {} is not a move of the grid", pair[0], pair[1]));
         sum += step;
     }
-    let cost = result.cost.expect("a solved result without a cost");
-    assert!(cost.is_finite() && cost >= 0.0, "cost {cost}");
     assert!(close(cost, sum, COST_TOLERANCE), "cost {cost} but the moves sum to {sum}");
-    let optimum = optimum.unwrap_or_else(|| panic!("a path was found but the reference finds none"));
     let optimal = || {
         assert!(close(cost, optimum, COST_TOLERANCE), "{} cost {cost}, least cost {optimum}", planner.name())
     };
@@ -300,5 +325,6 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => {
             panic!("a sampling planner solved a grid problem")
         }
+        PlannerSpec::ThetaStar {} => unreachable!("checked above"),
     }
 }

@@ -58,6 +58,53 @@ impl GridGraph {
         Some(cells)
     }
 
+    /// A path of cells shortened by straight lines (string pulling): from each corner, the
+    /// farthest of the following cells reached by a clear line that costs no more than the path
+    /// it replaces, scanning forward until a line is blocked or dearer. The result starts and
+    /// ends where `path` does, every line of it is clear, and it never costs more (by
+    /// [`GridGraph::line_cost`]) than `path`. Consecutive cells of `path` must be joined by
+    /// clear lines (a path of this graph's moves is).
+    ///
+    /// ```
+    /// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+    /// use trailmark_graph::GridGraph;
+    /// use trailmark_search::astar;
+    ///
+    /// let graph = GridGraph::new(&Grid::from_rows(&["......", "......", "......"])?, Connectivity::Eight);
+    /// let goal = Cell::new(5, 2);
+    /// let found = astar(&graph, Cell::new(0, 0), goal, graph.heuristic(GridHeuristic::Octile, goal))?;
+    /// let path = found.path.expect("reachable").nodes;
+    /// assert_eq!(graph.shortcut(&path), [Cell::new(0, 0), goal]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn shortcut(&self, path: &[Cell]) -> Vec<Cell> {
+        if path.len() <= 2 {
+            return path.to_vec();
+        }
+        // The cost along the path up to each cell.
+        let mut along = Vec::with_capacity(path.len());
+        along.push(0.0);
+        for pair in path.windows(2) {
+            let step = self.line_cost(pair[0], pair[1]).unwrap_or(f64::INFINITY);
+            along.push(along.last().copied().unwrap_or(0.0) + step);
+        }
+        let mut out = vec![path[0]];
+        let mut i = 0;
+        while i + 1 < path.len() {
+            let mut reach = i + 1;
+            for j in i + 2..path.len() {
+                let slack = 1e-12 * along[j].max(1.0);
+                match self.line_cost(path[i], path[j]) {
+                    Some(c) if c <= along[j] - along[i] + slack => reach = j,
+                    _ => break,
+                }
+            }
+            out.push(path[reach]);
+            i = reach;
+        }
+        out
+    }
+
     /// Walks the line from the centre of `from` to the centre of `to`, calling `visit(fraction,
     /// cost, padded index)` for each crossed cell with the fraction of the line in it; `None` as
     /// soon as the line is blocked.

@@ -1,7 +1,7 @@
 //! Theta* on random grids with costs: every segment of its paths is checked by dense sampling
 //! (every point of the segment lies in a passable cell), its cost is the sum of its lines'
 //! costs, it finds a path exactly when Dijkstra does, and its paths are never cheaper than the
-//! straight line allows nor costlier than the grid path.
+//! straight line allows nor costlier than the grid path. Shortcut grid paths likewise.
 
 use proptest::prelude::*;
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
@@ -73,6 +73,22 @@ proptest! {
         prop_assert!(path.cost >= straight * graph.min_cost() - 1e-9);
         let grid_cost = reference.cost().unwrap();
         prop_assert!(path.cost <= grid_cost * (1.0 + 1e-9), "Theta* {} above the grid path {}", path.cost, grid_cost);
+    }
+
+    #[test]
+    fn shortcut_grid_paths_stay_clear_and_never_cost_more((grid, start, goal) in world()) {
+        let graph = GridGraph::new(&grid, Connectivity::Eight);
+        let found = astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal)).unwrap();
+        let Some(path) = found.path else { return Ok(()) };
+        let short = graph.shortcut(&path.nodes);
+        prop_assert_eq!(short.first(), path.nodes.first());
+        prop_assert_eq!(short.last(), path.nodes.last());
+        let mut cost = 0.0;
+        for pair in short.windows(2) {
+            prop_assert!(clear_by_sampling(&grid, pair[0], pair[1]), "segment {:?} crosses a wall", pair);
+            cost += graph.line_cost(pair[0], pair[1]).unwrap();
+        }
+        prop_assert!(cost <= path.cost * (1.0 + 1e-9), "shortcut {} above the path {}", cost, path.cost);
     }
 }
 

@@ -3,8 +3,10 @@
 //!
 //! The harness in three floors, arrows pointing down only. At the bottom, what every section
 //! uses: the suite and its maps ([`suite`]), the statistics ([`stats`]), the report's writing
-//! ([`report`], [`plots`]), the progress display and the OMPL peer. Above it, one module per
-//! section ([`grid`], [`navigation`], [`anytime`], [`roadmaps`], [`sampling`], [`contingency`]),
+//! ([`report`], [`plots`]), the progress display and the peers (OMPL, [`peer`] for
+//! `pathfinding`). Above it, one module per
+//! section ([`grid`], [`navigation`], [`anytime`], [`roadmaps`], [`sampling`], [`contingency`],
+//! [`rosmaps`]),
 //! none of which uses another. At the top, this module: the options, which sections run, and the
 //! report assembled from each section's part.
 //!
@@ -17,10 +19,12 @@ mod contingency;
 mod grid;
 mod navigation;
 mod ompl;
+mod peer;
 mod plots;
 mod progress;
 mod report;
 mod roadmaps;
+mod rosmaps;
 mod sampling;
 mod stats;
 mod suite;
@@ -38,6 +42,7 @@ use navigation::{NavRatio, NavRow};
 use ompl::OmplDriver;
 use report::{Figure, GoalRow};
 use roadmaps::RoadmapReport;
+use rosmaps::RosMapRow;
 use sampling::SamplingReport;
 use suite::{Suite, SuiteMap};
 use times::RunTimes;
@@ -69,12 +74,12 @@ pub struct Args {
     json: bool,
     /// The sections to run: grid search beside the peers, unknown-terrain navigation
     /// (incremental planners), anytime planners, geometric roadmaps, sampling planners,
-    /// contingency plans over choke points (comma-separated).
+    /// contingency plans over choke points, ROS maps (comma-separated).
     #[arg(
         long,
         value_enum,
         value_delimiter = ',',
-        default_value = "grid,navigation,anytime,roadmaps,sampling,contingency"
+        default_value = "grid,navigation,anytime,roadmaps,sampling,contingency,rosmaps"
     )]
     sections: Vec<Section>,
     /// Also run OMPL's planners on the sampling section's problems (needs libompl-dev and
@@ -100,6 +105,8 @@ pub enum Section {
     /// Contingency plans over choke points against D* Lite replanning, on river terrains and a
     /// MovingAI rooms map.
     Contingency,
+    /// ROS maps: loading, inflation, A* beside `pathfinding` on the costmap, Theta*.
+    Rosmaps,
 }
 
 /// What the report holds, in the order of `results.json`.
@@ -123,6 +130,7 @@ struct BenchReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     sampling: Option<SamplingReport>,
     contingency: Vec<ContingencyRow>,
+    rosmaps: Vec<RosMapRow>,
 }
 
 /// A map of the suite in the report.
@@ -153,6 +161,7 @@ impl BenchReport {
     /// The goals table's rows, each from its section.
     fn goals(&self) -> Vec<GoalRow> {
         let mut goals = vec![grid::goal(&self.ratios), navigation::goal(&self.navigation_ratios)];
+        goals.push(rosmaps::goal(&self.rosmaps));
         goals.extend(sampling::goals(self.sampling.as_ref()));
         goals
     }
@@ -163,6 +172,7 @@ impl BenchReport {
             + self.roadmaps.iter().flat_map(|r| &r.rows).map(|r| r.cost_errors).sum::<usize>()
             + self.sampling.as_ref().map_or(0, |s| s.errors())
             + self.contingency.iter().filter(|r| r.error).count()
+            + self.rosmaps.iter().map(|r| r.cost_errors).sum::<usize>()
     }
 
     /// The report: `time_line` after the versions, `anytime_plot` (the anytime section's plot
@@ -205,6 +215,7 @@ impl BenchReport {
             out.push('\n');
             out.push_str(&contingency::markdown(&self.contingency));
         }
+        out.push_str(&rosmaps::markdown(&self.rosmaps));
         out
     }
 }
@@ -247,6 +258,7 @@ struct Parts {
     roadmaps: Option<RoadmapReport>,
     sampling: Option<SamplingReport>,
     contingency: Vec<ContingencyRow>,
+    rosmaps: Vec<RosMapRow>,
     date: String,
 }
 
@@ -312,7 +324,11 @@ fn run_parts<'scope>(
             sampling::bench(args.suite, args.seed, driver.as_ref(), &date, &args.only)
         })?);
     }
-    Ok(Parts { maps, results, navigation, anytime, roadmaps, sampling, contingency, date })
+    let mut rosmaps = Vec::new();
+    if wants(Section::Rosmaps) && args.only.is_empty() {
+        rosmaps = times.section("rosmaps", || rosmaps::bench(args.suite, args.seed, args.runs))?;
+    }
+    Ok(Parts { maps, results, navigation, anytime, roadmaps, sampling, contingency, rosmaps, date })
 }
 
 /// Runs the benchmark and writes its report; exit 1 when a planner broke its cost bound.
@@ -345,7 +361,8 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         args.only.is_empty() || args.only.iter().any(|o| sampling_names.contains(&o.as_str()));
     let mut times = RunTimes::start();
     let parts = std::thread::scope(|scope| run_parts(scope, args, &planners, sampling_named, &mut times))?;
-    let Parts { maps, results, navigation, mut anytime, roadmaps, sampling, contingency, date } = parts;
+    let Parts { maps, results, navigation, mut anytime, roadmaps, sampling, contingency, rosmaps, date } =
+        parts;
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let report = BenchReport {
         suite: args.suite,
@@ -363,6 +380,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         roadmaps,
         sampling,
         contingency,
+        rosmaps,
     };
     let mut figures: Vec<Figure> = Vec::new();
     if !report.results.is_empty() {

@@ -75,6 +75,11 @@ pub mod problem {
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+/// The code of the guide's page on ROS maps, run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/ros-maps.md")]
+pub struct RosMapsGuideDoctests;
+
 /// The names most programs need: `use trailmark::prelude::*;`.
 pub mod prelude {
     pub use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};

@@ -8,8 +8,10 @@ use std::collections::BTreeSet;
 use proptest::prelude::*;
 use trailmark::core::freespace::{FreeSpace, Location};
 use trailmark::core::geometry::Point;
+use trailmark::graph::CornerGraph;
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::prelude::*;
+use trailmark::search::theta_star;
 
 mod common;
 use common::grid_strategy;
@@ -186,6 +188,34 @@ proptest! {
             prop_assert!((a - b).abs() <= 1e-9 * a.max(1.0), "full {} tangent {}", a, b);
             prop_assert!(a >= (goal - start).norm() - 1e-9);
             prop_assert!(a <= lattice + 1e-9, "any-angle {} above lattice {}", a, lattice);
+        }
+    }
+
+    /// Theta* on the corner graph: never shorter than the visibility graph's optimum, every
+    /// segment clear of blocked cells (sampled), a path only where one exists.
+    #[test]
+    fn theta_star_on_corners_is_never_shorter(grid in grid_strategy(), pick in any::<(usize, usize)>()) {
+        let points = query_points(&grid);
+        prop_assume!(!points.is_empty());
+        let (start, goal) = (points[pick.0 % points.len()], points[pick.1 % points.len()]);
+        let graph = VisibilityGraph::new(FreeSpace::from_grid(&grid));
+        let q = graph.query(start, goal).expect("free");
+        let optimum = astar(&q, q.start(), q.goal(), q.heuristic()).expect("valid").cost();
+        let corners = CornerGraph::new(&grid);
+        let corner = |p: Point| Cell::new(p.x as u32, p.y as u32);
+        let (s, g) = (corner(start), corner(goal));
+        let h = |c: Cell| f64::from(c.x.abs_diff(g.x)).hypot(f64::from(c.y.abs_diff(g.y)));
+        let found = theta_star(&corners, s, g, h, |a, b| corners.line_cost(a, b)).expect("valid");
+        if let Some(path) = found.path {
+            let optimum = optimum.expect("Theta* found a path where the visibility graph finds none");
+            prop_assert!(path.cost >= optimum - 1e-9, "Theta* {} below the optimum {}", path.cost, optimum);
+            for pair in path.nodes.windows(2) {
+                let (a, b) = (Point::new(f64::from(pair[0].x), f64::from(pair[0].y)), Point::new(f64::from(pair[1].x), f64::from(pair[1].y)));
+                for k in 1..64 {
+                    let p = a + (b - a) * (f64::from(k) / 64.0);
+                    prop_assert!(!strictly_blocked(&grid, p), "{} -> {} crosses a blocked cell at {}", a, b, p);
+                }
+            }
         }
     }
 }

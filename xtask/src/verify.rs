@@ -7,6 +7,7 @@ use std::time::Instant;
 
 use trailmark::core::freespace::FreeSpace;
 use trailmark::core::geometry::Point;
+use trailmark::graph::CornerGraph;
 use trailmark::graph::trapezoid::Trapezoids;
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::movingai::{self, Scenario};
@@ -238,7 +239,40 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
             messages.push(format!("trapezoid cells cover {area}, the map has {free} free cells"));
         }
         let mut detour = Vec::new();
+        // Theta* on the map's corners: never shorter than the published optimum.
+        let corners = CornerGraph::new(&grid);
+        let (mut theta_ratios, mut theta_seconds) = (Vec::new(), 0.0);
         for (i, s) in scenarios.iter().enumerate().filter(|(i, _)| (*i as u64).is_multiple_of(every)) {
+            let h = |c: Cell| f64::from(c.x.abs_diff(s.goal.x)).hypot(f64::from(c.y.abs_diff(s.goal.y)));
+            let clock = Instant::now();
+            let theta = search.theta_star(&corners, s.start, s.goal, h, |a, b| corners.line_cost(a, b));
+            theta_seconds += clock.elapsed().as_secs_f64();
+            match theta.map(|found| found.cost()) {
+                Ok(Some(cost)) if cost >= s.optimal_length * (1.0 - rel) - rel => {
+                    theta_ratios.push(cost / s.optimal_length.max(1e-300));
+                }
+                Ok(Some(cost)) => {
+                    bad += 1;
+                    messages.push(format!(
+                        "scenario {}: Theta* path {cost} below the optimum {}",
+                        i + 1,
+                        s.optimal_length
+                    ));
+                }
+                Ok(None) => {
+                    bad += 1;
+                    messages.push(format!(
+                        "scenario {} {} -> {}: Theta* found no path",
+                        i + 1,
+                        s.start,
+                        s.goal
+                    ));
+                }
+                Err(e) => {
+                    bad += 1;
+                    messages.push(format!("scenario {} {} -> {}: Theta*: {e}", i + 1, s.start, s.goal));
+                }
+            }
             let corner = |c: Cell| Point::new(f64::from(c.x), f64::from(c.y));
             let (start, goal) = (corner(s.start), corner(s.goal));
             let through_cells = cells
@@ -300,6 +334,17 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
                 "",
                 cells.cell_count(),
                 cells.portals().len()
+            );
+        }
+        let finite: Vec<f64> = theta_ratios.iter().copied().filter(|r| r.is_finite() && *r > 0.0).collect();
+        if !finite.is_empty() {
+            let mean = finite.iter().sum::<f64>() / finite.len() as f64;
+            let worst = finite.iter().copied().fold(1.0, f64::max);
+            outln!(
+                "{:<24} Theta* on the corners: {} paths, length / optimum mean {mean:.5}, worst {worst:.5}, {:.1} ms per query",
+                "",
+                finite.len(),
+                theta_seconds * 1e3 / theta_ratios.len().max(1) as f64
             );
         }
         print_messages(&messages);

@@ -32,6 +32,7 @@
 #![deny(missing_docs)]
 
 // One documented path per item: the root. The modules stay public, hidden, for one release.
+mod corners;
 #[doc(hidden)]
 pub mod dynamic;
 #[doc(hidden)]
@@ -46,6 +47,7 @@ pub mod trapezoid;
 #[doc(hidden)]
 pub mod visibility;
 
+pub use corners::CornerGraph;
 pub use dynamic::{DynamicError, DynamicRoadmap, NodeKey, Rebuild};
 pub use grid::{CornerCutting, GridGraph, Neighbours};
 pub use prm::{

@@ -3,7 +3,8 @@
 //! every point along every segment, sampled every centimetre, lies in a cell the robot may occupy
 //! (below the inscribed cost); each waypoint maps back to a cell centre; consecutive waypoints of a
 //! grid path are neighbouring cells; A*, Dijkstra, LPA* and D* Lite agree on the least cost and
-//! Theta* never costs more. Bad documents give typed errors.
+//! Theta* never costs more; every smoothing method keeps the path on cells below a chosen cost.
+//! Bad documents give typed errors.
 
 use std::path::{Path, PathBuf};
 
@@ -154,6 +155,49 @@ fn warehouse_queries_agree_and_stay_clear() {
         assert!(t <= a * (1.0 + 1e-9), "Theta* {t} above A* {a}");
         check_path(&costmap, &points(&astar.path), false);
         check_path(&costmap, &points(&theta.path), true);
+    }
+}
+
+#[test]
+fn smoothed_paths_stay_on_cells_below_the_chosen_cost() {
+    use trailmark::core::smooth::{Smoothing, smooth};
+    use trailmark::map::{CostmapClearance, TravelCost};
+    use trailmark::prelude::*;
+    let base = PathBuf::from(EXAMPLES);
+    let costmap = costmap_of(&office(r#"{"name": "astar"}"#, [0.0, 0.0], [0.0, 0.0]), &base);
+    let frame = *costmap.frame();
+    // Keep well clear: only cells below cost 128, a band beyond the inscribed one.
+    for below in [INSCRIBED, 128] {
+        let graph = GridGraph::new(
+            &costmap.to_grid(&TravelCost { blocked_from: below, ..TravelCost::default() }).unwrap(),
+            Connectivity::Eight,
+        );
+        let (s, g) =
+            (frame.cell_at(Point::new(-4.2, -2.2)).unwrap(), frame.cell_at(Point::new(4.3, 2.3)).unwrap());
+        let path = astar(&graph, s, g, graph.heuristic(GridHeuristic::Octile, g)).unwrap().path.unwrap();
+        let corners: Vec<Point> = graph.shortcut(&path.nodes).iter().map(|&c| frame.centre(c)).collect();
+        let clear = CostmapClearance::new(&costmap, below);
+        for method in Smoothing::ALL {
+            let smoothed = smooth(&clear, &corners, method).unwrap();
+            assert_eq!(
+                (smoothed.start(), smoothed.end()),
+                (corners.first().copied(), corners.last().copied())
+            );
+            for piece in &smoothed.pieces {
+                for k in 0..=2000 {
+                    let p = piece.point(f64::from(k) / 2000.0);
+                    let (gx, gy) = frame.point_to_grid(p);
+                    if (gx - gx.round()).abs() < 1e-9 || (gy - gy.round()).abs() < 1e-9 {
+                        continue;
+                    }
+                    let cost = costmap.cost(frame.try_cell_at(p).unwrap()).unwrap();
+                    assert!(
+                        cost < below,
+                        "{method:?}: {p:?} lies in a cell of cost {cost} (must be below {below})"
+                    );
+                }
+            }
+        }
     }
 }
 

@@ -18,7 +18,8 @@
 //!   pinned: the curve passes through it and splits there, each part its own B-spline, and a
 //!   part between two neighbouring pinned waypoints is the input's own leg.
 //!
-//! Every curved piece is accepted only when [`CollisionChecker::bezier_is_free`] proves it free,
+//! Every curved piece is accepted only when the world's [`Clearance`] (for a polygon world,
+//! [`CollisionChecker::bezier_is_free`]) proves it free,
 //! and every straight piece is either tested exactly or is one of the input's own legs, so a
 //! collision-free input gives a collision-free result, starting and ending at the same points.
 //!
@@ -52,6 +53,26 @@ use crate::curve::{BSpline, Bezier, CubicHermite, CurveError, MAX_SAMPLES};
 use crate::geometry::{Point, Vector};
 use crate::predicates::orient;
 use crate::world::CollisionChecker;
+
+/// What smoothing asks of a world: whether a curved piece, and a straight segment, are free.
+/// A polygon world's [`CollisionChecker`] answers exactly; a costmap answers for the cells
+/// below a chosen cost (`trailmark-map`); implement it for your own world to smooth paths in it.
+pub trait Clearance {
+    /// Whether every point of `curve` is free.
+    fn bezier_is_free(&self, curve: &Bezier) -> bool;
+    /// Whether every point of the segment from `a` to `b` is free.
+    fn segment_is_free(&self, a: Point, b: Point) -> bool;
+}
+
+impl Clearance for CollisionChecker {
+    fn bezier_is_free(&self, curve: &Bezier) -> bool {
+        CollisionChecker::bezier_is_free(self, curve)
+    }
+
+    fn segment_is_free(&self, a: Point, b: Point) -> bool {
+        CollisionChecker::segment_is_free(self, a, b)
+    }
+}
 
 /// How to smooth a path.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -139,10 +160,14 @@ impl Smoothed {
 /// How many times a curve is shrunk toward the polyline before the polyline is kept.
 const SHRINKS: usize = 4;
 
-/// `path` smoothed by `method` in the world of `checker` (see the [module](self) for the
-/// methods). Repeated consecutive waypoints are merged; a path of one point gives no pieces.
+/// `path` smoothed by `method` in the world of `checker` (a polygon world's
+/// [`CollisionChecker`], or any [`Clearance`]; see the [module](self) for the methods). Repeated consecutive waypoints are merged; a path of one point gives no pieces.
 /// A waypoint that is not finite is an error.
-pub fn smooth(checker: &CollisionChecker, path: &[Point], method: Smoothing) -> Result<Smoothed, CurveError> {
+pub fn smooth<C: Clearance + ?Sized>(
+    checker: &C,
+    path: &[Point],
+    method: Smoothing,
+) -> Result<Smoothed, CurveError> {
     if let Some(index) = path.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
         return Err(CurveError::NotFinite { index });
     }
@@ -177,7 +202,7 @@ fn tangents(points: &[Point]) -> Vec<Vector> {
         .collect()
 }
 
-fn hermite(checker: &CollisionChecker, points: &[Point]) -> Smoothed {
+fn hermite<C: Clearance + ?Sized>(checker: &C, points: &[Point]) -> Smoothed {
     let tangent = tangents(points);
     let mut kept = 0;
     let pieces = points
@@ -199,7 +224,7 @@ fn hermite(checker: &CollisionChecker, points: &[Point]) -> Smoothed {
     Smoothed { pieces, kept }
 }
 
-fn round_corners(checker: &CollisionChecker, points: &[Point]) -> Smoothed {
+fn round_corners<C: Clearance + ?Sized>(checker: &C, points: &[Point]) -> Smoothed {
     let n = points.len();
     // Corners kept sharp because a straight connector beside them was not proven free.
     let mut sharp = vec![false; n];
@@ -267,7 +292,7 @@ fn round_corners(checker: &CollisionChecker, points: &[Point]) -> Smoothed {
     }
 }
 
-fn bspline(checker: &CollisionChecker, points: &[Point]) -> Result<Smoothed, CurveError> {
+fn bspline<C: Clearance + ?Sized>(checker: &C, points: &[Point]) -> Result<Smoothed, CurveError> {
     let n = points.len();
     let pinned = SHRINKS + 1;
     // How tightly each waypoint holds the curve: 0 alone; 1..=SHRINKS flanked by control points

@@ -34,6 +34,7 @@
 #![deny(missing_docs)]
 
 // One documented path per item: everything is named from the crate root.
+mod clearance;
 mod costmap;
 mod distance;
 mod error;
@@ -47,6 +48,7 @@ mod picture;
 mod pixels;
 mod values;
 
+pub use clearance::CostmapClearance;
 pub use costmap::{Costmap, CostmapSettings, TravelCost, Unknown};
 pub use distance::squared_distances;
 pub use error::MapError;

@@ -145,8 +145,7 @@ fn ros_map(
         GridGraph::new(&costmap.to_grid(&ros_travel_cost(&spec, frame.resolution()))?, Connectivity::Eight);
     let (s, g) = (frame.cell_at(Point::from(start))?, frame.cell_at(Point::from(goal))?);
     let grid_path = astar(&graph, s, g, graph.heuristic(GridHeuristic::Octile, g))?.path.ok_or("no path")?;
-    let lines = |a, b| graph.line_cost(a, b);
-    let theta = theta_star(&graph, s, g, graph.heuristic(GridHeuristic::Euclidean, g), lines)?
+    let theta = theta_star(&graph, s, g, graph.heuristic(GridHeuristic::Euclidean, g), &graph)?
         .path
         .ok_or("no path")?;
     let short = graph.shortcut(&grid_path.nodes);

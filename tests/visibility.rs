@@ -205,7 +205,7 @@ proptest! {
         let corner = |p: Point| Cell::new(p.x as u32, p.y as u32);
         let (s, g) = (corner(start), corner(goal));
         let h = |c: Cell| f64::from(c.x.abs_diff(g.x)).hypot(f64::from(c.y.abs_diff(g.y)));
-        let found = theta_star(&corners, s, g, h, |a, b| corners.line_cost(a, b)).expect("valid");
+        let found = theta_star(&corners, s, g, h, &corners).expect("valid");
         if let Some(path) = found.path {
             let optimum = optimum.expect("Theta* found a path where the visibility graph finds none");
             prop_assert!(path.cost >= optimum - 1e-9, "Theta* {} below the optimum {}", path.cost, optimum);

@@ -86,8 +86,7 @@ pub(super) fn solve_grid(
         return Err(DocumentError::Inadmissible { heuristic: kind }.into());
     }
     let h = graph.heuristic_between(kind);
-    let lines = |a, b| graph.line_cost(a, b);
-    let result = problem.planner.search(&graph, (start, goal), h, Waypoint::Cell, Some(&lines))?;
+    let result = problem.planner.search(&graph, (start, goal), h, Waypoint::Cell, Some(&graph))?;
     if let Some(picture) = picture {
         let cells: Vec<Cell> = result
             .path

@@ -5,7 +5,7 @@ use std::time::Duration;
 
 use serde::{Deserialize, Serialize};
 use trailmark_core::Cost;
-use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
+use trailmark_core::graph::{IndexedGraph, Lines, Predecessors, Successors};
 use trailmark_core::grid::GridHeuristic;
 use trailmark_core::smooth::Smoothing;
 use trailmark_core::termination::Termination;
@@ -298,7 +298,7 @@ impl PlannerSpec {
 
 /// The price of a straight line between two nodes, `None` when it is blocked: what an
 /// any-angle search draws its segments with.
-pub(super) type LineCost<'a, N> = dyn Fn(N, N) -> Option<Cost> + 'a;
+pub(super) type LineCost<'a, N> = dyn Lines<N> + 'a;
 
 /// A replanner of the registry, behind its trait.
 type BoxedReplanner<'h, G> = Box<dyn Replanner<G> + 'h>;

@@ -91,12 +91,11 @@ pub(super) fn solve_ros_map(
         return Err(DocumentError::Inadmissible { heuristic: kind }.into());
     }
     let h = graph.heuristic_between(kind);
-    let lines = |a, b| graph.line_cost(a, b);
     let waypoint = |cell: Cell| {
         let p = frame.centre(cell);
         Waypoint::Point(vec![p.x, p.y])
     };
-    let result = problem.planner.search(&graph, (start, goal), h, waypoint, Some(&lines))?;
+    let result = problem.planner.search(&graph, (start, goal), h, waypoint, Some(&graph))?;
     if let Some(picture) = picture {
         let path: Vec<Point> = result
             .path

@@ -245,7 +245,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
         for (i, s) in scenarios.iter().enumerate().filter(|(i, _)| (*i as u64).is_multiple_of(every)) {
             let h = |c: Cell| f64::from(c.x.abs_diff(s.goal.x)).hypot(f64::from(c.y.abs_diff(s.goal.y)));
             let clock = Instant::now();
-            let theta = search.theta_star(&corners, s.start, s.goal, h, |a, b| corners.line_cost(a, b));
+            let theta = search.theta_star(&corners, s.start, s.goal, h, &corners);
             theta_seconds += clock.elapsed().as_secs_f64();
             match theta.map(|found| found.cost()) {
                 Ok(Some(cost)) if cost >= s.optimal_length * (1.0 - rel) - rel => {

@@ -167,6 +167,29 @@ impl<G: IndexedGraph + ?Sized> IndexedGraph for &G {
     }
 }
 
+/// Straight lines between the nodes of a graph whose nodes are places: what an any-angle search
+/// (Theta*) draws its segments with. A grid graph joins cell centres, a corner graph cell
+/// corners; a closure `|a, b| -> Option<Cost>` is one too.
+pub trait Lines<N> {
+    /// The cost of the straight line from `from` to `to`, `None` when it is blocked.
+    fn line_cost(&self, from: N, to: N) -> Option<Cost>;
+
+    /// A lower bound on [`Lines::line_cost`] of any clear line from `from` to `to` (0 unless a
+    /// graph knows better, e.g. the length times the cheapest cost): an any-angle search
+    /// that knows it can put off checking a line until it must.
+    #[inline]
+    fn line_lower_bound(&self, _from: N, _to: N) -> Cost {
+        0.0
+    }
+}
+
+impl<N, F: Fn(N, N) -> Option<Cost> + ?Sized> Lines<N> for F {
+    #[inline]
+    fn line_cost(&self, from: N, to: N) -> Option<Cost> {
+        self(from, to)
+    }
+}
+
 /// A change of one directed edge, told to an incremental planner after the graph changed.
 ///
 /// Graphs that change (a grid whose cells are blocked, a roadmap whose obstacles move) report

@@ -47,7 +47,7 @@ pub mod world;
 #[doc(hidden)]
 pub use cost::Cost;
 #[doc(hidden)]
-pub use graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
+pub use graph::{EdgeChange, Graph, IndexedGraph, Lines, Predecessors, Successors};
 #[doc(hidden)]
 pub use grid::{Cell, Connectivity, Grid, GridError, GridHeuristic};
 #[doc(hidden)]

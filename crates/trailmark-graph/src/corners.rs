@@ -26,7 +26,7 @@
 //! ```
 
 use trailmark_core::cost::{Cost, SQRT_2};
-use trailmark_core::graph::{Graph, IndexedGraph, Successors};
+use trailmark_core::graph::{Graph, IndexedGraph, Lines, Successors};
 use trailmark_core::grid::{Cell, Grid};
 
 /// The eight unit moves between corners.
@@ -211,5 +211,18 @@ impl Successors for CornerGraph {
                 visit(next, if k < 4 { 1.0 } else { SQRT_2 });
             }
         }
+    }
+}
+
+/// The corners' lines for any-angle searches: [`CornerGraph::line_cost`], at least the length.
+impl Lines<Cell> for CornerGraph {
+    #[inline]
+    fn line_cost(&self, from: Cell, to: Cell) -> Option<Cost> {
+        CornerGraph::line_cost(self, from, to)
+    }
+
+    #[inline]
+    fn line_lower_bound(&self, from: Cell, to: Cell) -> Cost {
+        f64::from(from.x.abs_diff(to.x)).hypot(f64::from(from.y.abs_diff(to.y)))
     }
 }

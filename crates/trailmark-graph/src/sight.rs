@@ -26,7 +26,7 @@
 //! ```
 
 use trailmark_core::cost::Cost;
-use trailmark_core::graph::Graph;
+use trailmark_core::graph::{Graph, Lines};
 use trailmark_core::grid::Cell;
 
 use crate::grid::{CornerCutting, GridGraph};
@@ -163,5 +163,20 @@ impl GridGraph {
         }
         visit(1.0 - t_prev, cost_at(i), i as usize);
         Some(())
+    }
+}
+
+/// The grid's lines for any-angle searches: [`GridGraph::line_cost`], bounded below by the
+/// line's length times the cheapest cell cost.
+impl Lines<Cell> for GridGraph {
+    #[inline]
+    fn line_cost(&self, from: Cell, to: Cell) -> Option<Cost> {
+        GridGraph::line_cost(self, from, to)
+    }
+
+    #[inline]
+    fn line_lower_bound(&self, from: Cell, to: Cell) -> Cost {
+        let (dx, dy) = (f64::from(from.x.abs_diff(to.x)), f64::from(from.y.abs_diff(to.y)));
+        dx.hypot(dy) * self.min_cost()
     }
 }

@@ -54,7 +54,7 @@ proptest! {
     fn paths_are_clear_and_priced_by_their_lines((grid, start, goal) in world()) {
         let graph = GridGraph::new(&grid, Connectivity::Eight);
         let h = graph.heuristic(GridHeuristic::Euclidean, goal);
-        let found = theta_star(&graph, start, goal, h, |a, b| graph.line_cost(a, b)).unwrap();
+        let found = theta_star(&graph, start, goal, h, &graph).unwrap();
         let reference = dijkstra(&graph, start, goal).unwrap();
         prop_assert_eq!(found.path.is_some(), reference.path.is_some());
         let Some(path) = found.path else { return Ok(()) };
@@ -117,7 +117,7 @@ fn around_a_wall_the_path_bends_at_its_corner() {
     let graph = GridGraph::new(&grid, Connectivity::Eight);
     let (start, goal) = (Cell::new(0, 2), Cell::new(9, 2));
     let h = graph.heuristic(GridHeuristic::Euclidean, goal);
-    let found = theta_star(&graph, start, goal, h, |a, b| graph.line_cost(a, b)).unwrap();
+    let found = theta_star(&graph, start, goal, h, &graph).unwrap();
     let path = found.path.unwrap();
     let grid_path = astar(&graph, start, goal, graph.heuristic(GridHeuristic::Octile, goal)).unwrap();
     assert!(path.nodes.len() <= 4, "{:?}", path.nodes);
@@ -128,6 +128,6 @@ fn around_a_wall_the_path_bends_at_its_corner() {
 fn a_bad_line_cost_is_an_error() {
     let graph = GridGraph::new(&Grid::new(4, 1).unwrap(), Connectivity::Eight);
     let goal = Cell::new(3, 0);
-    let found = theta_star(&graph, Cell::new(0, 0), goal, |_| 0.0, |_, _| Some(f64::NAN));
+    let found = theta_star(&graph, Cell::new(0, 0), goal, |_| 0.0, &|_, _| Some(f64::NAN));
     assert!(matches!(found, Err(SearchError::InvalidLineCost { .. })));
 }

@@ -131,7 +131,7 @@ pub const PLANNERS: [GridPlanner; 9] = [
         plot_colour: None,
         solve: |graph, search, q| {
             let h = graph.heuristic(GridHeuristic::Euclidean, q.goal);
-            ours(search.theta_star(graph, q.start, q.goal, h, |a, b| graph.line_cost(a, b)))
+            ours(search.theta_star(graph, q.start, q.goal, h, graph))
         },
     },
     GridPlanner {

@@ -144,11 +144,8 @@ fn bench_map(name: &str, yaml: &Path, n: usize, seed: u64, runs: u32) -> Result<
         });
         t_peer.push(t);
         let theta_h = graph.heuristic(GridHeuristic::Euclidean, goal);
-        let (theta, t) = timed(runs, || {
-            search
-                .theta_star(&graph, start, goal, theta_h, |a, b| graph.line_cost(a, b))
-                .expect("a valid query")
-        });
+        let (theta, t) =
+            timed(runs, || search.theta_star(&graph, start, goal, theta_h, &graph).expect("a valid query"));
         t_theta.push(t);
         let (short, t) = timed(runs, || {
             let path = search.astar(&graph, start, goal, h).expect("a valid query").path.expect("connected");

@@ -4,8 +4,9 @@
 //! It is A* with one change: when a node `v` is reached from `u`, it also tries the straight
 //! line from `u`'s parent to `v`, and keeps whichever is cheaper. Paths then bend only where
 //! they must, at the corners of obstacles, instead of following the graph's eight directions.
-//! Each line's cost comes from the caller (`line_cost`), so the lines can be priced by the
-//! terrain they cross, as Nav2's Theta* does on a costmap; a blocked line is `None`.
+//! Each line's cost comes from the caller ([`Lines`]: the graph itself, or a closure), so the
+//! lines can be priced by the terrain they cross, as Nav2's Theta* does on a costmap; a blocked
+//! line is `None`.
 //!
 //! Theta* is not optimal: its paths are at least as long as the true shortest any-angle path
 //! (every segment is a line the caller accepted) and in practice within a few percent of it,
@@ -13,7 +14,7 @@
 //! costs agree with the edge costs.
 
 use trailmark_core::cost::Cost;
-use trailmark_core::graph::{IndexedGraph, Successors};
+use trailmark_core::graph::{IndexedGraph, Lines, Successors};
 
 use crate::error::SearchError;
 use crate::heuristic::HeuristicCheck;
@@ -25,9 +26,18 @@ use crate::one_shot::workspace::{Search, ensure};
 use crate::stats::SearchStats;
 
 /// Theta* from `start` to `goal`: an any-angle path whose corners are nodes of `graph`, each
-/// segment a straight line that `line_cost(from, to)` accepts (`Some(cost)`) or an edge.
-/// `heuristic` must be admissible for straight lines (on a grid: the Euclidean distance, not
-/// the octile one). The path's cost is the sum of its segments' costs.
+/// segment a straight line that `lines` accepts or an edge. `heuristic` must be admissible for
+/// straight lines (on a grid: the Euclidean distance, not the octile one). The path's cost is the
+/// sum of its segments' costs.
+///
+/// Lines are checked when a node is taken from the open list, not when it is generated (the
+/// order of work of Lazy Theta*, Nash, Koenig and Tovey, AAAI 2010): a node reached through its
+/// parent's parent is queued at that parent's cost plus [`Lines::line_lower_bound`]; when it
+/// comes out, the line is priced and the node takes the cheaper of it and the best edge that
+/// reached it, and goes back into the queue if that costs more than its key said. Nodes are
+/// expanded at their exact cost, in order, so with a consistent heuristic the path never costs
+/// more than the least-cost path of the graph's edges; one line is priced per node reached
+/// instead of one per edge.
 ///
 /// ```
 /// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
@@ -38,7 +48,7 @@ use crate::stats::SearchStats;
 /// let graph = GridGraph::new(&grid, Connectivity::Eight);
 /// let (start, goal) = (Cell::new(0, 0), Cell::new(7, 2));
 /// let h = graph.heuristic(GridHeuristic::Euclidean, goal);
-/// let found = theta_star(&graph, start, goal, h, |a, b| graph.line_cost(a, b))?;
+/// let found = theta_star(&graph, start, goal, h, &graph)?; // the graph prices its own lines
 /// let path = found.path.expect("reachable");
 /// assert_eq!(path.nodes, [start, goal]); // one straight line
 /// assert!((path.cost - 53f64.sqrt()).abs() < 1e-12);
@@ -51,14 +61,14 @@ pub fn theta_star<G, H, L>(
     start: G::Node,
     goal: G::Node,
     heuristic: H,
-    line_cost: L,
+    lines: &L,
 ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
 where
     G: Successors + IndexedGraph + ?Sized,
     H: FnMut(G::Node) -> Cost,
-    L: FnMut(G::Node, G::Node) -> Option<Cost>,
+    L: Lines<G::Node> + ?Sized,
 {
-    Search::new().theta_star(graph, start, goal, heuristic, line_cost)
+    Search::new().theta_star(graph, start, goal, heuristic, lines)
 }
 
 impl<I> Search<I> {
@@ -69,27 +79,54 @@ impl<I> Search<I> {
         start: G::Node,
         goal: G::Node,
         mut heuristic: H,
-        mut line_cost: L,
+        lines: &L,
     ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
     where
         G: Successors + ?Sized,
         I: NodeIndex<G>,
         H: FnMut(G::Node) -> Cost,
-        L: FnMut(G::Node, G::Node) -> Option<Cost>,
+        L: Lines<G::Node> + ?Sized,
     {
         let query = self.begin(graph, start, goal)?;
-        let (t, open, closed) = (query.goal, query.open, query.closed);
+        let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
+        let mut exact = std::mem::take(&mut self.any_angle);
+        exact.resize(self.nodes.len());
+        exact.set(s, 0.0, s, true);
         let mut stats = SearchStats::default();
         let mut heuristics = HeuristicCheck::new();
         let mut overflow = None;
-        let mut lines = LineCheck::default();
+        let mut checks = LineCheck::default();
         if let Some(h) = heuristics.accept(start, heuristic(start)).filter(|h| h.is_finite()) {
-            self.heap.push(query.start, FKey::new(h, 0.0));
+            self.heap.push(s, FKey::new(h, 0.0));
             stats.pushes += 1;
         }
         let mut edges = EdgeCheck::new();
         let mut found = None;
-        while let Some((u, _)) = self.heap.pop() {
+        while let Some((u, key)) = self.heap.pop() {
+            if !exact.verified[u] {
+                // Price the line from the lazily chosen parent; keep the cheaper of it and the
+                // best exact way known (an edge, or a line priced before).
+                exact.verified[u] = true;
+                let p = self.nodes.parent[u] as usize;
+                let (pn, un) = (self.index.node(graph, p), self.index.node(graph, u));
+                let (mut g, mut from) = (exact.g[u], exact.parent[u] as usize);
+                if let Some(c) = checks.accept(pn, un, lines.line_cost(pn, un))
+                    && self.nodes.g[p] + c <= g
+                {
+                    (g, from) = (self.nodes.g[p] + c, p);
+                }
+                exact.set(u, g, from, true);
+                self.nodes.g[u] = g;
+                self.nodes.parent[u] = from as u32;
+                checks.check()?;
+                // Expand it now if its key still holds, else queue it at its exact key (its
+                // heuristic was finite and accepted when it was queued).
+                let exact_key = FKey::new(g + heuristic(un), g);
+                if exact_key > key {
+                    self.heap.push(u, exact_key);
+                    continue;
+                }
+            }
             if u == t {
                 found = Some(u);
                 break;
@@ -101,25 +138,34 @@ impl<I> Search<I> {
             // The line from u's parent: none from the start, which is its own parent.
             let parent = (pu != u).then(|| (pu, self.nodes.g[pu], self.index.node(graph, pu)));
             let (nodes, heap) = (&mut self.nodes, &mut self.heap);
+            let exact = &mut exact;
             self.index.for_each_successor(graph, u, |v, next, cost| {
                 if !edges.accept(next, cost) {
                     return;
                 }
                 ensure(nodes, v);
+                exact.ensure(v);
                 let st = nodes.stamp[v];
                 if st == closed {
                     return;
                 }
-                let (mut gv, mut from) = (gu + cost, u);
-                if let Some((pu, gp, pnode)) = parent
-                    && let Some(c) = lines.accept(pnode, next, line_cost(pnode, next))
-                {
-                    // Ties go to the line: fewer corners for the same cost.
-                    if gp + c <= gv {
-                        (gv, from) = (gp + c, pu);
+                let seen = st >= open;
+                if !seen {
+                    exact.set(v, f64::INFINITY, v, true);
+                }
+                let g1 = gu + cost;
+                if g1 < exact.g[v] {
+                    exact.g[v] = g1;
+                    exact.parent[v] = u as u32;
+                }
+                // The best candidate: the exact one, or the parent's line at its lower bound.
+                let (mut gv, mut from, mut verified) = (exact.g[v], exact.parent[v] as usize, true);
+                if let Some((pu, gp, pnode)) = parent {
+                    let lazy = gp + lines.line_lower_bound(pnode, next).max(0.0);
+                    if lazy <= gv {
+                        (gv, from, verified) = (lazy, pu, false);
                     }
                 }
-                let seen = st >= open;
                 if seen && gv >= nodes.g[v] {
                     return;
                 }
@@ -129,6 +175,7 @@ impl<I> Search<I> {
                 }
                 let Some(h) = heuristics.accept(next, heuristic(next)) else { return };
                 nodes.reach(v, gv, from, open);
+                exact.verified[v] = verified;
                 if h == f64::INFINITY {
                     return;
                 }
@@ -140,9 +187,9 @@ impl<I> Search<I> {
                 heap.push(v, FKey::new(gv + h, gv));
             });
             edges.check(|| self.index.node(graph, u))?;
-            lines.check()?;
             heuristics.check()?;
         }
+        self.any_angle = exact;
         heuristics.check()?;
         if let (None, Some(node)) = (found, overflow) {
             return Err(SearchError::CostOverflow { node });

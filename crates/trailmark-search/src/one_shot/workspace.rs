@@ -84,6 +84,45 @@ impl Nodes {
     }
 }
 
+/// Per-node state of an any-angle search beside the workspace's: the best exact way known to
+/// each node (an edge, or a line already priced) and whether the node's current parent line has
+/// been priced. Valid where the workspace's stamp says the node was reached by this query.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct AnyAngle {
+    pub(crate) g: Vec<Cost>,
+    pub(crate) parent: Vec<u32>,
+    pub(crate) verified: Vec<bool>,
+}
+
+impl AnyAngle {
+    pub(crate) fn resize(&mut self, len: usize) {
+        if self.g.len() < len {
+            self.g.resize(len, f64::INFINITY);
+            self.parent.resize(len, 0);
+            self.verified.resize(len, true);
+        }
+    }
+
+    #[inline]
+    pub(crate) fn ensure(&mut self, slot: usize) {
+        if slot >= self.g.len() {
+            self.resize((slot + 1).next_power_of_two());
+        }
+    }
+
+    #[inline]
+    pub(crate) fn set(&mut self, slot: usize, g: Cost, parent: usize, verified: bool) {
+        self.ensure(slot);
+        self.g[slot] = g;
+        self.parent[slot] = parent as u32;
+        self.verified[slot] = verified;
+    }
+
+    pub(crate) fn memory_bytes(&self) -> usize {
+        self.g.capacity() * 8 + self.parent.capacity() * 4 + self.verified.capacity()
+    }
+}
+
 /// A reusable search workspace: per-node state in dense vectors, and the open list.
 ///
 /// `I` decides how nodes get their slot in the vectors: [`Dense`] (the default) uses the
@@ -118,6 +157,8 @@ pub struct Search<I = Dense> {
     pub(crate) stack: Vec<u32>,
     /// The slot of the last query's start, or `None` before the first query.
     pub(crate) start: Option<u32>,
+    /// Theta*'s state beside `nodes` (empty until a Theta* query).
+    pub(crate) any_angle: AnyAngle,
 }
 
 impl Default for Search<Dense> {
@@ -151,6 +192,7 @@ impl<I> Search<I> {
             fifo: VecDeque::new(),
             stack: Vec::new(),
             start: None,
+            any_angle: AnyAngle::default(),
         }
     }
 
@@ -161,6 +203,7 @@ impl<I> Search<I> {
             + self.heap.memory_bytes()
             + self.fifo.capacity() * 4
             + self.stack.capacity() * 4
+            + self.any_angle.memory_bytes()
     }
 
     #[inline]

@@ -18,7 +18,8 @@ pub const OCCUPIED: i8 = 100;
 ///
 /// Cells are addressed as everywhere in trailmark, `(0, 0)` the top-left cell; the frame turns
 /// them into metres. (A `nav_msgs/OccupancyGrid` message keeps its rows the other way up, from
-/// the origin's row; [`crate::message`] converts.)
+/// the origin's row; [`OccupancyGrid::from_message_json`] and [`OccupancyGrid::to_message_json`]
+/// convert.)
 #[derive(Debug, Clone, PartialEq)]
 pub struct OccupancyGrid {
     frame: MapFrame,

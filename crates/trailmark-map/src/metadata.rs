@@ -184,11 +184,29 @@ fn real(v: f64) -> String {
     if v.fract() == 0.0 && v.abs() < 1e15 { format!("{v:.1}") } else { format!("{v}") }
 }
 
-/// A file name as a YAML scalar: plain when it is safe, double-quoted otherwise.
+/// A file name as a YAML scalar: plain when it is safe, double-quoted otherwise, with YAML's
+/// escapes for the backslash, the quote, control characters and the characters YAML reads as
+/// line breaks or a byte-order mark.
 fn quote(s: &str) -> String {
     let plain = s.chars().all(|c| c.is_ascii_alphanumeric() || "._-/".contains(c))
         && s.chars().next().is_some_and(|c| c.is_ascii_alphanumeric() || c == '.' || c == '/');
-    if plain { s.to_string() } else { format!("{s:?}") }
+    if plain {
+        return s.to_string();
+    }
+    let mut out = String::from("\"");
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 || c == '\u{7f}' => out.push_str(&format!("\\x{:02x}", c as u32)),
+            '\u{80}'..='\u{9f}' | '\u{2028}' | '\u{2029}' | '\u{feff}' => {
+                out.push_str(&format!("\\u{:04x}", c as u32))
+            }
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
 }
 
 #[cfg(test)]
@@ -213,6 +231,9 @@ mod tests {
     fn writing_reads_back() {
         let mut m = MapMetadata::parse(NAV2).unwrap();
         m.image = "my map #2.png".into();
+        assert_eq!(MapMetadata::parse(&m.to_yaml()).unwrap(), m);
+        // Control characters, quotes, backslashes and YAML's other line breaks, escaped.
+        m.image = "a \"b\" \\ c\u{18}\t\u{85}\u{2028}é.pgm".into();
         m.origin = [0.1 + 0.2, -1e-9, 3.0];
         m.mode = MapMode::Raw;
         assert_eq!(MapMetadata::parse(&m.to_yaml()).unwrap(), m);

@@ -24,6 +24,7 @@ fn planners() -> Vec<PlannerSpec> {
         PlannerSpec::WeightedAStar { weight: 2.0, heuristic: None },
         PlannerSpec::LpaStar { heuristic: None },
         PlannerSpec::DStarLite { heuristic: None },
+        PlannerSpec::AdaptiveAStar { heuristic: None },
         anytime(false, None, None),
         anytime(true, None, None),
     ]
@@ -190,6 +191,7 @@ fn incremental_and_anytime_planners_parse_from_json() {
     for (json, name) in [
         (r#"{"name": "lpa_star"}"#, "LpaStar"),
         (r#"{"name": "dstar_lite"}"#, "DStarLite"),
+        (r#"{"name": "adaptive_astar"}"#, "AdaptiveAStar"),
         (r#"{"name": "ara_star", "epsilon": 3.0, "epsilon_step": 0.5}"#, "AraStar"),
         (r#"{"name": "ad_star", "epsilon": 2.0, "max_expansions": 100}"#, "AdStar"),
     ] {

@@ -47,6 +47,7 @@ pub enum PlannerName {
     RrtConnect,
     RrtStar,
     ThetaStar,
+    AdaptiveAstar,
 }
 
 impl PlannerName {
@@ -65,6 +66,7 @@ impl PlannerName {
             PlannerName::RrtConnect => "rrt_connect",
             PlannerName::RrtStar => "rrt_star",
             PlannerName::ThetaStar => "theta_star",
+            PlannerName::AdaptiveAstar => "adaptive_astar",
         }
     }
 
@@ -523,7 +525,7 @@ fn planner_spec(u: &mut Unstructured, planner: PlannerName, grid: bool) -> Resul
     spec.insert("name".into(), json!(planner.name()));
     match planner {
         PlannerName::Bfs | PlannerName::Dfs | PlannerName::Dijkstra | PlannerName::ThetaStar => {}
-        PlannerName::Astar | PlannerName::LpaStar | PlannerName::DstarLite => {
+        PlannerName::Astar | PlannerName::LpaStar | PlannerName::DstarLite | PlannerName::AdaptiveAstar => {
             insert(&mut spec, "heuristic", heuristic(u, grid)?);
         }
         PlannerName::WeightedAstar => {

@@ -296,6 +296,7 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         PlannerSpec::Dijkstra {}
         | PlannerSpec::AStar { .. }
         | PlannerSpec::LpaStar { .. }
+        | PlannerSpec::AdaptiveAStar { .. }
         | PlannerSpec::DStarLite { .. } => optimal(),
         PlannerSpec::Bfs {} => {
             let fewest = grid.bfs_moves(start, goal).expect("reachable");

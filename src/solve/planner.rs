@@ -13,8 +13,8 @@ use trailmark_sample::{
     NearestNeighbors, Planner, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
 };
 use trailmark_search::{
-    AdStar, DStarLite, EpsilonSchedule, LpaStar, RepeatedAStar, Replanner, Search, SearchError, SearchResult,
-    ara_star,
+    AdStar, AdaptiveAStar, DStarLite, EpsilonSchedule, LpaStar, RepeatedAStar, Replanner, Search,
+    SearchError, SearchResult, ara_star,
 };
 
 use super::error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
@@ -65,6 +65,14 @@ pub enum PlannerSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         heuristic: Option<GridHeuristic>,
     },
+    /// Adaptive A*: A* from the robot at every plan with a heuristic learned from the plans
+    /// before, kept consistent when costs fall (on a static world, one search).
+    #[serde(rename = "adaptive_astar")]
+    AdaptiveAStar {
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
     /// D* Lite: the incremental backward search (on a static world, one search).
     #[serde(rename = "dstar_lite")]
     DStarLite {
@@ -102,6 +110,7 @@ impl PlannerSpec {
             | PlannerSpec::WeightedAStar { .. }
             | PlannerSpec::ThetaStar {}
             | PlannerSpec::LpaStar { .. }
+            | PlannerSpec::AdaptiveAStar { .. }
             | PlannerSpec::DStarLite { .. }
             | PlannerSpec::AraStar(_)
             | PlannerSpec::AdStar(_) => None,
@@ -118,6 +127,7 @@ impl PlannerSpec {
             PlannerSpec::WeightedAStar { .. } => "weighted_astar",
             PlannerSpec::ThetaStar {} => "theta_star",
             PlannerSpec::LpaStar { .. } => "lpa_star",
+            PlannerSpec::AdaptiveAStar { .. } => "adaptive_astar",
             PlannerSpec::DStarLite { .. } => "dstar_lite",
             PlannerSpec::AraStar(_) => "ara_star",
             PlannerSpec::AdStar(_) => "ad_star",
@@ -139,6 +149,7 @@ impl PlannerSpec {
             PlannerSpec::ThetaStar {} => (Some(GridHeuristic::Euclidean), false),
             PlannerSpec::AStar { heuristic }
             | PlannerSpec::LpaStar { heuristic }
+            | PlannerSpec::AdaptiveAStar { heuristic }
             | PlannerSpec::DStarLite { heuristic }
             | PlannerSpec::AraStar(AnytimeSpec { heuristic, .. })
             | PlannerSpec::AdStar(AnytimeSpec { heuristic, .. }) => (*heuristic, true),
@@ -203,6 +214,7 @@ impl PlannerSpec {
                 None => return Err(DocumentError::NeedsLines { planner: self.name() }.into()),
             },
             PlannerSpec::LpaStar { .. } => plan_once(graph, LpaStar::new(graph, start, goal, h)),
+            PlannerSpec::AdaptiveAStar { .. } => plan_once(graph, AdaptiveAStar::new(graph, start, goal, h)),
             PlannerSpec::DStarLite { .. } => plan_once(graph, DStarLite::new(graph, start, goal, h)),
             PlannerSpec::AraStar(spec) => {
                 let found = ara_star(graph, start, goal, to_goal, spec.schedule(), spec.budget());
@@ -248,6 +260,7 @@ impl PlannerSpec {
         Some(match self {
             PlannerSpec::AStar { .. } => boxed(RepeatedAStar::new(graph, start, goal, h)),
             PlannerSpec::LpaStar { .. } => boxed(LpaStar::new(graph, start, goal, h)),
+            PlannerSpec::AdaptiveAStar { .. } => boxed(AdaptiveAStar::new(graph, start, goal, h)),
             PlannerSpec::DStarLite { .. } => boxed(DStarLite::new(graph, start, goal, h)),
             PlannerSpec::AdStar(spec) => boxed(
                 AdStar::new(graph, start, goal, h, spec.schedule())

@@ -106,6 +106,7 @@ pub use anytime::ara_star::ara_star;
 pub use anytime::budget::Budget;
 pub use anytime::{AnytimeResult, EpsilonSchedule, Iteration};
 pub use error::SearchError;
+pub use incremental::adaptive_astar::AdaptiveAStar;
 pub use incremental::dstar_lite::DStarLite;
 pub use incremental::lpa_star::LpaStar;
 pub use incremental::repeated_astar::RepeatedAStar;

@@ -1,5 +1,5 @@
-//! LPA* and D* Lite against A* from scratch: after every batch of random changes (and, for D*
-//! Lite, moves of the start), the incremental planners must report the cost A* finds on the
+//! LPA*, D* Lite and Adaptive A* against A* from scratch: after every batch of random changes
+//! (and, for D* Lite and Adaptive A*, moves of the start), the planners must report the cost A* finds on the
 //! graph as it is now, with a path that exists in that graph and costs what they say.
 
 mod common;
@@ -11,7 +11,8 @@ use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
 use trailmark_search::{
-    AdStar, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, SearchError, astar, dijkstra,
+    AdStar, AdaptiveAStar, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, Replanner, SearchError, astar,
+    dijkstra,
 };
 
 /// Relative tolerance between costs summed in different orders (forward by A*, backward by D*
@@ -129,6 +130,35 @@ proptest! {
                     got.unwrap();
                     prop_assert!(same_cost(planner.cost(), cost), "D* Lite {:?}, A* {:?}", planner.cost(), cost);
                     if let Some(path) = planner.path(&graph) {
+                        prop_assert_eq!(path.start(), Some(robot));
+                        prop_assert_eq!(path.goal(), Some(goal));
+                        prop_assert!(same_cost(walk_cost(&graph, &path.nodes), cost));
+                    } else {
+                        prop_assert!(cost.is_none());
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn adaptive_astar_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
+        let mut graph = GridGraph::new(&grid, connectivity);
+        let mut planner = AdaptiveAStar::new(&graph, start, goal, octile).unwrap();
+        let mut robot = start;
+        for batch in std::iter::once(&vec![]).chain(&batches) {
+            apply(batch, &mut graph, &mut robot, |graph, told| match told {
+                Told::Cells(cells) => Replanner::update_nodes(&mut planner, graph, &cells).unwrap(),
+                Told::Moved(to) => Replanner::move_start(&mut planner, graph, to).unwrap(),
+            });
+            let expected = reference(&graph, robot, goal);
+            let got = Replanner::plan(&mut planner, &graph);
+            match expected {
+                Err(e) => prop_assert_eq!(got.unwrap_err(), e),
+                Ok(cost) => {
+                    got.unwrap();
+                    prop_assert!(same_cost(planner.cost(), cost), "Adaptive A* {:?}, A* {:?}", planner.cost(), cost);
+                    if let Some(path) = Replanner::path(&planner, &graph) {
                         prop_assert_eq!(path.start(), Some(robot));
                         prop_assert_eq!(path.goal(), Some(goal));
                         prop_assert!(same_cost(walk_cost(&graph, &path.nodes), cost));

@@ -86,8 +86,12 @@ const NAV_AD_STAR: PlannerSpec = PlannerSpec::AdStar(AnytimeSpec {
 });
 
 /// The planners run along the trajectory of the driver, D* Lite.
-const NAV_OTHERS: [PlannerSpec; 3] =
-    [PlannerSpec::AStar { heuristic: None }, PlannerSpec::LpaStar { heuristic: None }, NAV_AD_STAR];
+const NAV_OTHERS: [PlannerSpec; 4] = [
+    PlannerSpec::AStar { heuristic: None },
+    PlannerSpec::LpaStar { heuristic: None },
+    NAV_AD_STAR,
+    PlannerSpec::AdaptiveAStar { heuristic: None },
+];
 
 /// The MovingAI maps of the navigation section: two games (Dragon Age, Baldur's Gate) and a city.
 const NAV_MOVINGAI: [(&str, &str); 3] =

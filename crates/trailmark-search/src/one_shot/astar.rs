@@ -256,6 +256,9 @@ impl<I> Search<I> {
                 break;
             }
             self.nodes.stamp[u] = closed;
+            if let Some(log) = self.expanded_log.as_mut() {
+                log.push(u as u32);
+            }
             stats.expansions += 1;
             let gu = self.nodes.g[u];
             let (nodes, heap) = (&mut self.nodes, &mut self.heap);

@@ -159,6 +159,9 @@ pub struct Search<I = Dense> {
     pub(crate) start: Option<u32>,
     /// Theta*'s state beside `nodes` (empty until a Theta* query).
     pub(crate) any_angle: AnyAngle,
+    /// When kept, the slots the best-first searches expand, in order (Adaptive A* learns from
+    /// them); cleared by each query.
+    pub(crate) expanded_log: Option<Vec<u32>>,
 }
 
 impl Default for Search<Dense> {
@@ -193,6 +196,7 @@ impl<I> Search<I> {
             stack: Vec::new(),
             start: None,
             any_angle: AnyAngle::default(),
+            expanded_log: None,
         }
     }
 
@@ -241,6 +245,9 @@ impl<I> Search<I> {
         self.heap.clear();
         self.fifo.clear();
         self.stack.clear();
+        if let Some(log) = self.expanded_log.as_mut() {
+            log.clear();
+        }
         if self.generation >= Stamp::MAX / 2 - 1 {
             self.nodes.stamp.fill(0);
             self.generation = 0;

@@ -1,0 +1,262 @@
+//! Adaptive A*: A* from the robot at every plan, with a heuristic that learns from the plans
+//! before (Koenig and Likhachev, "Adaptive A*", AAMAS 2005), kept consistent when costs fall as
+//! well as rise (Generalized Adaptive A*, Sun, Koenig and Yeoh, AAMAS 2008).
+//!
+//! After a plan that reached the goal at cost `g*`, every node `s` it expanded learns
+//! `h(s) = g* - g(s)`: the cost from `s` to the goal is at least that, and the next plan, from
+//! wherever the robot then is, is guided by the larger of this and the given heuristic, so it
+//! expands fewer nodes. Costs that rise keep the learned values admissible and consistent; where
+//! a cost may have fallen (every edge at a node the planner is told of), a learned value that
+//! became too large is lowered, and the decrease is carried back to the predecessors that relied
+//! on it, cheapest first, before the next plan. Each plan is an A* search with a consistent
+//! heuristic: its path costs what A* from scratch finds.
+
+use std::fmt::Debug;
+
+use trailmark_core::cost::Cost;
+use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
+use trailmark_core::path::Path;
+
+use crate::error::{SearchError, check_endpoints};
+use crate::incremental::EdgeChange;
+use crate::incremental::replanner::Replanner;
+use crate::one_shot::workspace::Search;
+use crate::queue::IndexedHeap;
+use crate::stats::SearchStats;
+
+/// Adaptive A* from a moving start to a fixed goal, behind the [`Replanner`] interface.
+///
+/// ```
+/// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
+/// use trailmark_graph::GridGraph;
+/// use trailmark_search::{AdaptiveAStar, Replanner};
+///
+/// let mut graph = GridGraph::new(&Grid::new(32, 32)?, Connectivity::Eight);
+/// let h = graph.heuristic_between(GridHeuristic::Octile);
+/// let mut planner = AdaptiveAStar::new(&graph, Cell::new(0, 0), Cell::new(31, 20), h)?;
+/// let first = planner.plan(&graph)?;
+/// // A wall appears across the way; the robot has moved one step.
+/// for y in 0..25 {
+///     graph.set_cost(Cell::new(16, y), f64::INFINITY)?;
+///     planner.update_nodes(&graph, &graph.cells_affected_by(Cell::new(16, y)).collect::<Vec<_>>())?;
+/// }
+/// planner.move_start(&graph, Cell::new(1, 1))?;
+/// planner.plan(&graph)?;
+/// let fresh = trailmark_search::astar(&graph, Cell::new(1, 1), Cell::new(31, 20), graph.heuristic(GridHeuristic::Octile, Cell::new(31, 20)))?;
+/// assert_eq!(planner.cost(), fresh.cost()); // the least cost, as A* from scratch
+/// # let _ = first;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct AdaptiveAStar<N, H> {
+    search: Search,
+    heuristic: H,
+    start: N,
+    goal: N,
+    /// The learned heuristic per node index; 0 where nothing was learned.
+    learned: Vec<Cost>,
+    /// Nodes whose edges may have changed since the last plan.
+    touched: Vec<N>,
+    /// The open list of the consistency repair (by heuristic value).
+    repair: IndexedHeap<Cost>,
+    path: Option<Path<N>>,
+    totals: SearchStats,
+}
+
+impl<N, H> AdaptiveAStar<N, H>
+where
+    N: Copy + Eq + std::hash::Hash + Debug,
+    H: FnMut(N, N) -> Cost,
+{
+    /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent estimate of the
+    /// cost from `a` to `b` (the grid heuristics are). Nothing is searched until
+    /// [`plan`](Replanner::plan). Errors when the start or the goal is not a node of the graph.
+    pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        check_endpoints(graph, start, goal)?;
+        let mut search = Search::new();
+        search.expanded_log = Some(Vec::new());
+        Ok(AdaptiveAStar {
+            search,
+            heuristic,
+            start,
+            goal,
+            learned: vec![0.0; graph.node_bound()],
+            touched: Vec::new(),
+            repair: IndexedHeap::new(),
+            path: None,
+            totals: SearchStats::default(),
+        })
+    }
+
+    /// The start.
+    pub fn start(&self) -> N {
+        self.start
+    }
+
+    /// The goal.
+    pub fn goal(&self) -> N {
+        self.goal
+    }
+
+    /// The cost of the last plan's path (`None` without one).
+    pub fn cost(&self) -> Option<Cost> {
+        self.path.as_ref().map(|p| p.cost)
+    }
+
+    /// Counters summed over every plan since the planner was made.
+    pub fn totals(&self) -> SearchStats {
+        self.totals
+    }
+
+    /// Bytes held by the search workspace and the learned heuristic.
+    pub fn memory_bytes(&self) -> usize {
+        self.search.memory_bytes() + self.learned.capacity() * 8 + self.repair.memory_bytes()
+    }
+
+    /// The heuristic of `node` (index `i`): the larger of the given and the learned one.
+    fn h_at(learned: &[Cost], heuristic: &mut H, node: N, i: usize, goal: N) -> Cost {
+        heuristic(node, goal).max(learned.get(i).copied().unwrap_or(0.0))
+    }
+
+    /// Lowers the learned value of `u` where an edge `u -> v` of cost `c` makes it too large
+    /// (`h(u) > c + h(v)`), queueing `u` so the decrease reaches its predecessors.
+    fn relax<G>(&mut self, graph: &G, u: N, v: N, c: Cost)
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+    {
+        let (i, j) = (graph.index_of(u), graph.index_of(v));
+        if u == self.goal || self.learned[i] == 0.0 {
+            return; // the given heuristic is consistent by itself
+        }
+        let goal = self.goal;
+        let hv = Self::h_at(&self.learned, &mut self.heuristic, v, j, goal);
+        let hu = Self::h_at(&self.learned, &mut self.heuristic, u, i, goal);
+        if hu > c + hv {
+            // At least the given heuristic, which is consistent: h(u) becomes exactly c + h(v).
+            self.learned[i] = c + hv;
+            self.repair.push(i, c + hv);
+        }
+    }
+
+    /// Lowers the learned values that an edge which became cheaper made too large, and carries
+    /// each decrease back to the predecessors that relied on it, smallest first.
+    fn restore_consistency<G>(&mut self, graph: &G)
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        if self.learned.len() < graph.node_bound() {
+            self.learned.resize(graph.node_bound(), 0.0);
+        }
+        self.repair.reserve_items(graph.node_bound());
+        self.repair.clear();
+        let touched = std::mem::take(&mut self.touched);
+        let mut edges = Vec::new();
+        for &x in &touched {
+            if !graph.contains(x) {
+                continue;
+            }
+            // The edges out of x and into x may have become cheaper.
+            edges.clear();
+            graph.for_each_successor(x, |v, c| edges.push((x, v, c)));
+            graph.for_each_predecessor(x, |p, c| edges.push((p, x, c)));
+            for &(u, v, c) in &edges {
+                self.relax(graph, u, v, c);
+            }
+        }
+        self.touched = touched;
+        self.touched.clear();
+        while let Some((i, _)) = self.repair.pop() {
+            let x = graph.node_at(i);
+            edges.clear();
+            graph.for_each_predecessor(x, |p, c| edges.push((p, x, c)));
+            for &(u, v, c) in &edges {
+                self.relax(graph, u, v, c);
+            }
+        }
+    }
+}
+
+impl<G, H> Replanner<G> for AdaptiveAStar<G::Node, H>
+where
+    G: Successors + Predecessors + IndexedGraph + ?Sized,
+    H: FnMut(G::Node, G::Node) -> Cost,
+{
+    fn update_edges(
+        &mut self,
+        graph: &G,
+        changes: &[EdgeChange<G::Node>],
+    ) -> Result<(), SearchError<G::Node>> {
+        if let Some(c) = changes
+            .iter()
+            .find(|c| graph.checked_index(c.from).is_none() || graph.checked_index(c.to).is_none())
+        {
+            let bad = if graph.checked_index(c.from).is_none() { c.from } else { c.to };
+            return Err(SearchError::UnknownNode(bad));
+        }
+        self.touched.extend(changes.iter().flat_map(|c| [c.from, c.to]));
+        Ok(())
+    }
+
+    fn update_nodes(&mut self, graph: &G, nodes: &[G::Node]) -> Result<(), SearchError<G::Node>> {
+        if let Some(&n) = nodes.iter().find(|&&n| graph.checked_index(n).is_none()) {
+            return Err(SearchError::UnknownNode(n));
+        }
+        self.touched.extend_from_slice(nodes);
+        Ok(())
+    }
+
+    fn move_start(&mut self, graph: &G, to: G::Node) -> Result<(), SearchError<G::Node>> {
+        if !graph.contains(to) {
+            return Err(SearchError::StartNotInGraph(to));
+        }
+        self.start = to;
+        Ok(())
+    }
+
+    fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
+        self.restore_consistency(graph);
+        let goal = self.goal;
+        let (learned, heuristic) = (&self.learned, &mut self.heuristic);
+        let found = self.search.astar(graph, self.start, goal, |n| {
+            let i = graph.index_of(n);
+            Self::h_at(learned, heuristic, n, i, goal)
+        })?;
+        if let Some(path) = &found.path {
+            // Every expanded node learns the cost to the goal it is known to be at least.
+            let (nodes, best) = (&self.search.nodes, path.cost);
+            for &i in self.search.expanded_log.iter().flatten() {
+                let i = i as usize;
+                if i < self.learned.len() {
+                    self.learned[i] = self.learned[i].max(best - nodes.g[i]);
+                }
+            }
+        }
+        let stats = found.stats;
+        self.path = found.path;
+        self.totals += stats;
+        Ok(stats)
+    }
+
+    fn path(&self, _graph: &G) -> Option<Path<G::Node>> {
+        self.path.clone()
+    }
+
+    fn cost(&self) -> Option<Cost> {
+        AdaptiveAStar::cost(self)
+    }
+
+    fn next_step(&self, _graph: &G) -> Option<G::Node> {
+        self.path.as_ref().and_then(|p| p.nodes.get(1).copied())
+    }
+
+    fn totals(&self) -> SearchStats {
+        AdaptiveAStar::totals(self)
+    }
+
+    fn memory_bytes(&self) -> usize {
+        AdaptiveAStar::memory_bytes(self)
+    }
+}

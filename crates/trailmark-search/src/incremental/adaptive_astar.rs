@@ -17,10 +17,10 @@ use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
-use crate::error::{SearchError, check_endpoints};
+use crate::error::SearchError;
 use crate::incremental::EdgeChange;
+use crate::incremental::repeated_astar::RepeatedAStar;
 use crate::incremental::replanner::Replanner;
-use crate::one_shot::workspace::Search;
 use crate::queue::IndexedHeap;
 use crate::stats::SearchStats;
 
@@ -49,18 +49,14 @@ use crate::stats::SearchStats;
 /// ```
 #[derive(Debug, Clone)]
 pub struct AdaptiveAStar<N, H> {
-    search: Search,
-    heuristic: H,
-    start: N,
-    goal: N,
+    /// A* from scratch: its workspace, heuristic, ends, last path and totals.
+    base: RepeatedAStar<N, H>,
     /// The learned heuristic per node index; 0 where nothing was learned.
     learned: Vec<Cost>,
     /// Nodes whose edges may have changed since the last plan.
     touched: Vec<N>,
     /// The open list of the consistency repair (by heuristic value).
     repair: IndexedHeap<Cost>,
-    path: Option<Path<N>>,
-    totals: SearchStats,
 }
 
 impl<N, H> AdaptiveAStar<N, H>
@@ -75,45 +71,39 @@ where
     where
         G: IndexedGraph<Node = N> + ?Sized,
     {
-        check_endpoints(graph, start, goal)?;
-        let mut search = Search::new();
-        search.expanded_log = Some(Vec::new());
+        let mut base = RepeatedAStar::new(graph, start, goal, heuristic)?;
+        base.search.expanded_log = Some(Vec::new());
         Ok(AdaptiveAStar {
-            search,
-            heuristic,
-            start,
-            goal,
+            base,
             learned: vec![0.0; graph.node_bound()],
             touched: Vec::new(),
             repair: IndexedHeap::new(),
-            path: None,
-            totals: SearchStats::default(),
         })
     }
 
     /// The start.
     pub fn start(&self) -> N {
-        self.start
+        self.base.start()
     }
 
     /// The goal.
     pub fn goal(&self) -> N {
-        self.goal
+        self.base.goal()
     }
 
     /// The cost of the last plan's path (`None` without one).
     pub fn cost(&self) -> Option<Cost> {
-        self.path.as_ref().map(|p| p.cost)
+        self.base.cost()
     }
 
     /// Counters summed over every plan since the planner was made.
     pub fn totals(&self) -> SearchStats {
-        self.totals
+        self.base.totals()
     }
 
     /// Bytes held by the search workspace and the learned heuristic.
     pub fn memory_bytes(&self) -> usize {
-        self.search.memory_bytes() + self.learned.capacity() * 8 + self.repair.memory_bytes()
+        self.base.memory_bytes() + self.learned.capacity() * 8 + self.repair.memory_bytes()
     }
 
     /// The heuristic of `node` (index `i`): the larger of the given and the learned one.
@@ -128,12 +118,12 @@ where
         G: IndexedGraph<Node = N> + ?Sized,
     {
         let (i, j) = (graph.index_of(u), graph.index_of(v));
-        if u == self.goal || self.learned[i] == 0.0 {
+        let goal = self.base.goal();
+        if u == goal || self.learned[i] == 0.0 {
             return; // the given heuristic is consistent by itself
         }
-        let goal = self.goal;
-        let hv = Self::h_at(&self.learned, &mut self.heuristic, v, j, goal);
-        let hu = Self::h_at(&self.learned, &mut self.heuristic, u, i, goal);
+        let hv = Self::h_at(&self.learned, &mut self.base.heuristic, v, j, goal);
+        let hu = Self::h_at(&self.learned, &mut self.base.heuristic, u, i, goal);
         if hu > c + hv {
             // At least the given heuristic, which is consistent: h(u) becomes exactly c + h(v).
             self.learned[i] = c + hv;
@@ -189,45 +179,34 @@ where
         graph: &G,
         changes: &[EdgeChange<G::Node>],
     ) -> Result<(), SearchError<G::Node>> {
-        if let Some(c) = changes
-            .iter()
-            .find(|c| graph.checked_index(c.from).is_none() || graph.checked_index(c.to).is_none())
-        {
-            let bad = if graph.checked_index(c.from).is_none() { c.from } else { c.to };
-            return Err(SearchError::UnknownNode(bad));
-        }
+        self.base.update_edges(graph, changes)?;
         self.touched.extend(changes.iter().flat_map(|c| [c.from, c.to]));
         Ok(())
     }
 
     fn update_nodes(&mut self, graph: &G, nodes: &[G::Node]) -> Result<(), SearchError<G::Node>> {
-        if let Some(&n) = nodes.iter().find(|&&n| graph.checked_index(n).is_none()) {
-            return Err(SearchError::UnknownNode(n));
-        }
+        self.base.update_nodes(graph, nodes)?;
         self.touched.extend_from_slice(nodes);
         Ok(())
     }
 
     fn move_start(&mut self, graph: &G, to: G::Node) -> Result<(), SearchError<G::Node>> {
-        if !graph.contains(to) {
-            return Err(SearchError::StartNotInGraph(to));
-        }
-        self.start = to;
-        Ok(())
+        self.base.move_start(graph, to)
     }
 
     fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
         self.restore_consistency(graph);
-        let goal = self.goal;
-        let (learned, heuristic) = (&self.learned, &mut self.heuristic);
-        let found = self.search.astar(graph, self.start, goal, |n| {
+        let (start, goal) = (self.base.start(), self.base.goal());
+        let (learned, base) = (&self.learned, &mut self.base);
+        let heuristic = &mut base.heuristic;
+        let found = base.search.astar(graph, start, goal, |n| {
             let i = graph.index_of(n);
             Self::h_at(learned, heuristic, n, i, goal)
         })?;
         if let Some(path) = &found.path {
             // Every expanded node learns the cost to the goal it is known to be at least.
-            let (nodes, best) = (&self.search.nodes, path.cost);
-            for &i in self.search.expanded_log.iter().flatten() {
+            let (nodes, best) = (&base.search.nodes, path.cost);
+            for &i in base.search.expanded_log.iter().flatten() {
                 let i = i as usize;
                 if i < self.learned.len() {
                     self.learned[i] = self.learned[i].max(best - nodes.g[i]);
@@ -235,21 +214,21 @@ where
             }
         }
         let stats = found.stats;
-        self.path = found.path;
-        self.totals += stats;
+        base.path = found.path;
+        base.totals += stats;
         Ok(stats)
     }
 
-    fn path(&self, _graph: &G) -> Option<Path<G::Node>> {
-        self.path.clone()
+    fn path(&self, graph: &G) -> Option<Path<G::Node>> {
+        self.base.path(graph)
     }
 
     fn cost(&self) -> Option<Cost> {
         AdaptiveAStar::cost(self)
     }
 
-    fn next_step(&self, _graph: &G) -> Option<G::Node> {
-        self.path.as_ref().and_then(|p| p.nodes.get(1).copied())
+    fn next_step(&self, graph: &G) -> Option<G::Node> {
+        self.base.next_step(graph)
     }
 
     fn totals(&self) -> SearchStats {

@@ -34,13 +34,13 @@ use crate::stats::SearchStats;
 /// ```
 #[derive(Debug, Clone)]
 pub struct RepeatedAStar<N, H> {
-    search: Search,
-    heuristic: H,
+    pub(crate) search: Search,
+    pub(crate) heuristic: H,
     start: N,
     goal: N,
     /// The last plan's path.
-    path: Option<Path<N>>,
-    totals: SearchStats,
+    pub(crate) path: Option<Path<N>>,
+    pub(crate) totals: SearchStats,
 }
 
 impl<N, H> RepeatedAStar<N, H>

@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use trailmark_core::grid::{Cell, Grid, GridError, GridHeuristic, is_cell_cost};
+use trailmark_core::grid::{Cell, Grid, GridError, is_cell_cost};
 use trailmark_core::movingai;
 use trailmark_core::svg::GridSvg;
 use trailmark_graph::{CornerCutting, GridGraph};
@@ -79,13 +79,7 @@ pub(super) fn solve_grid(
     let start = cell_of("start", &problem.start, &grid)?;
     let goal = cell_of("goal", &problem.goal, &grid)?;
     let graph = grid_graph(world, &grid);
-    let natural = GridHeuristic::for_connectivity(world.connectivity);
-    let (asked, optimal) = problem.planner.heuristic();
-    let kind = asked.unwrap_or(natural);
-    if optimal && !kind.is_admissible(world.connectivity) {
-        return Err(DocumentError::Inadmissible { heuristic: kind }.into());
-    }
-    let h = graph.heuristic_between(kind);
+    let h = graph.heuristic_between(problem.planner.grid_heuristic(world.connectivity)?);
     let result = problem.planner.search(&graph, (start, goal), h, Waypoint::Cell, Some(&graph))?;
     if let Some(picture) = picture {
         let cells: Vec<Cell> = result

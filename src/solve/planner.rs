@@ -6,7 +6,7 @@ use std::time::Duration;
 use serde::{Deserialize, Serialize};
 use trailmark_core::Cost;
 use trailmark_core::graph::{IndexedGraph, Lines, Predecessors, Successors};
-use trailmark_core::grid::GridHeuristic;
+use trailmark_core::grid::{Connectivity, GridHeuristic};
 use trailmark_core::smooth::Smoothing;
 use trailmark_core::termination::Termination;
 use trailmark_sample::{
@@ -135,6 +135,18 @@ impl PlannerSpec {
             PlannerSpec::RrtConnect(_) => "rrt_connect",
             PlannerSpec::RrtStar(_) => "rrt_star",
         }
+    }
+
+    /// The heuristic this planner searches a grid of `connectivity` with: the one it asks for,
+    /// else the grid's own (octile or Manhattan); an error when the planner promises least cost
+    /// and that heuristic may overestimate.
+    pub(crate) fn grid_heuristic(&self, connectivity: Connectivity) -> Result<GridHeuristic, DocumentError> {
+        let (asked, optimal) = self.heuristic();
+        let kind = asked.unwrap_or(GridHeuristic::for_connectivity(connectivity));
+        if optimal && !kind.is_admissible(connectivity) {
+            return Err(DocumentError::Inadmissible { heuristic: kind });
+        }
+        Ok(kind)
     }
 
     /// The heuristic the planner asks for, and whether it promises least cost (so that the

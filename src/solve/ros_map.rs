@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use trailmark_core::geometry::Point;
-use trailmark_core::grid::{Cell, Connectivity, GridHeuristic};
+use trailmark_core::grid::{Cell, Connectivity};
 use trailmark_graph::GridGraph;
 use trailmark_map::{
     Costmap, CostmapSettings, Footprint, INSCRIBED, Inflation, TravelCost, Unknown, load_map,
@@ -85,12 +85,7 @@ pub(super) fn solve_ros_map(
     let start = cell_at("start", &problem.start, &costmap)?;
     let goal = cell_at("goal", &problem.goal, &costmap)?;
     let graph = GridGraph::new(&grid, Connectivity::Eight);
-    let (asked, optimal) = problem.planner.heuristic();
-    let kind = asked.unwrap_or(GridHeuristic::Octile);
-    if optimal && !kind.is_admissible(Connectivity::Eight) {
-        return Err(DocumentError::Inadmissible { heuristic: kind }.into());
-    }
-    let h = graph.heuristic_between(kind);
+    let h = graph.heuristic_between(problem.planner.grid_heuristic(Connectivity::Eight)?);
     let waypoint = |cell: Cell| {
         let p = frame.centre(cell);
         Waypoint::Point(vec![p.x, p.y])

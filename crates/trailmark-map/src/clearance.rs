@@ -26,6 +26,7 @@
 
 use trailmark_core::curve::Bezier;
 use trailmark_core::geometry::Point;
+use trailmark_core::grid::Cell;
 use trailmark_core::smooth::Clearance;
 
 use crate::costmap::Costmap;
@@ -46,12 +47,8 @@ impl<'a> CostmapClearance<'a> {
     }
 
     fn free(&self, x: i64, y: i64) -> bool {
-        let frame = self.costmap.frame();
-        x >= 0
-            && y >= 0
-            && x < i64::from(frame.width())
-            && y < i64::from(frame.height())
-            && self.costmap.costs()[y as usize * frame.width() as usize + x as usize] < self.below
+        let cell = u32::try_from(x).ok().zip(u32::try_from(y).ok()).map(|(x, y)| Cell::new(x, y));
+        cell.and_then(|c| self.costmap.cost(c)).is_some_and(|cost| cost < self.below)
     }
 
     /// Whether the segment between two points in grid units (x right, y down) crosses only

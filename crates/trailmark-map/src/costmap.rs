@@ -79,10 +79,7 @@ pub struct Costmap {
 impl Costmap {
     /// A costmap from row-major costs, row 0 at the top; one per cell ([`MapError::CellCount`]).
     pub fn new(frame: MapFrame, costs: Vec<u8>) -> Result<Self, MapError> {
-        let (w, h) = (u64::from(frame.width()), u64::from(frame.height()));
-        if costs.len() as u64 != w * h {
-            return Err(MapError::CellCount { width: w, height: h, expected: w * h, found: costs.len() });
-        }
+        frame.check_count(costs.len())?;
         Ok(Costmap { frame, costs })
     }
 
@@ -164,8 +161,7 @@ impl Costmap {
 
     /// The cost of `cell`, or `None` outside the map.
     pub fn cost(&self, cell: Cell) -> Option<u8> {
-        (cell.x < self.frame.width() && cell.y < self.frame.height())
-            .then(|| self.costs[cell.y as usize * self.frame.width() as usize + cell.x as usize])
+        self.frame.index_of(cell).map(|i| self.costs[i])
     }
 
     /// The grid every grid planner searches: cells of cost at least `model.blocked_from`

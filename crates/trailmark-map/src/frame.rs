@@ -66,6 +66,23 @@ impl MapFrame {
         self.resolution
     }
 
+    /// The row-major index of `cell` (row 0 at the top), or `None` outside the map: where its
+    /// value is in a map's data.
+    pub fn index_of(&self, cell: Cell) -> Option<usize> {
+        (cell.x < self.width && cell.y < self.height)
+            .then(|| cell.y as usize * self.width as usize + cell.x as usize)
+    }
+
+    /// Errors unless `found` values are one per cell ([`MapError::CellCount`]).
+    pub(crate) fn check_count(&self, found: usize) -> Result<(), MapError> {
+        let (w, h) = (u64::from(self.width), u64::from(self.height));
+        if found as u64 == w * h {
+            Ok(())
+        } else {
+            Err(MapError::CellCount { width: w, height: h, expected: w * h, found })
+        }
+    }
+
     /// `[x, y, yaw]` of the lower-left corner, in metres and radians.
     pub fn origin(&self) -> [f64; 3] {
         self.origin

@@ -100,14 +100,7 @@ impl OccupancyGrid {
             usize::try_from(height).map_err(|_| too_large())?,
         );
         let frame = MapFrame::new(w, h, resolution, [origin.position.x, origin.position.y, yaw])?;
-        if message.data.len() as u64 != width * height {
-            return Err(MapError::CellCount {
-                width,
-                height,
-                expected: width * height,
-                found: message.data.len(),
-            });
-        }
+        frame.check_count(message.data.len())?;
         if let Some(index) = message.data.iter().position(|v| !(-1..=100).contains(v)) {
             return Err(MapError::Occupancy { index, value: message.data[index] });
         }

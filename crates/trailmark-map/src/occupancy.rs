@@ -46,10 +46,7 @@ impl OccupancyGrid {
     /// or in 0..=100 ([`MapError::Occupancy`]), and there must be one per cell
     /// ([`MapError::CellCount`]).
     pub fn new(frame: MapFrame, values: Vec<i8>) -> Result<Self, MapError> {
-        let (w, h) = (u64::from(frame.width()), u64::from(frame.height()));
-        if values.len() as u64 != w * h {
-            return Err(MapError::CellCount { width: w, height: h, expected: w * h, found: values.len() });
-        }
+        frame.check_count(values.len())?;
         if let Some(index) = values.iter().position(|&v| !(-1..=100).contains(&v)) {
             return Err(MapError::Occupancy { index, value: i64::from(values[index]) });
         }
@@ -68,8 +65,7 @@ impl OccupancyGrid {
 
     /// The value of `cell`, or `None` outside the map.
     pub fn value(&self, cell: Cell) -> Option<i8> {
-        (cell.x < self.frame.width() && cell.y < self.frame.height())
-            .then(|| self.values[cell.y as usize * self.frame.width() as usize + cell.x as usize])
+        self.frame.index_of(cell).map(|i| self.values[i])
     }
 
     /// How many cells are free, occupied, unknown and in between.

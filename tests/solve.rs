@@ -25,6 +25,7 @@ fn planners() -> Vec<PlannerSpec> {
         PlannerSpec::LpaStar { heuristic: None },
         PlannerSpec::DStarLite { heuristic: None },
         PlannerSpec::AdaptiveAStar { heuristic: None },
+        PlannerSpec::MpgaaStar { heuristic: None },
         anytime(false, None, None),
         anytime(true, None, None),
     ]
@@ -192,6 +193,7 @@ fn incremental_and_anytime_planners_parse_from_json() {
         (r#"{"name": "lpa_star"}"#, "LpaStar"),
         (r#"{"name": "dstar_lite"}"#, "DStarLite"),
         (r#"{"name": "adaptive_astar"}"#, "AdaptiveAStar"),
+        (r#"{"name": "mpgaa_star"}"#, "MpgaaStar"),
         (r#"{"name": "ara_star", "epsilon": 3.0, "epsilon_step": 0.5}"#, "AraStar"),
         (r#"{"name": "ad_star", "epsilon": 2.0, "max_expansions": 100}"#, "AdStar"),
     ] {

@@ -48,6 +48,7 @@ pub enum PlannerName {
     RrtStar,
     ThetaStar,
     AdaptiveAstar,
+    MpgaaStar,
 }
 
 impl PlannerName {
@@ -67,6 +68,7 @@ impl PlannerName {
             PlannerName::RrtStar => "rrt_star",
             PlannerName::ThetaStar => "theta_star",
             PlannerName::AdaptiveAstar => "adaptive_astar",
+            PlannerName::MpgaaStar => "mpgaa_star",
         }
     }
 
@@ -525,7 +527,11 @@ fn planner_spec(u: &mut Unstructured, planner: PlannerName, grid: bool) -> Resul
     spec.insert("name".into(), json!(planner.name()));
     match planner {
         PlannerName::Bfs | PlannerName::Dfs | PlannerName::Dijkstra | PlannerName::ThetaStar => {}
-        PlannerName::Astar | PlannerName::LpaStar | PlannerName::DstarLite | PlannerName::AdaptiveAstar => {
+        PlannerName::Astar
+        | PlannerName::LpaStar
+        | PlannerName::DstarLite
+        | PlannerName::AdaptiveAstar
+        | PlannerName::MpgaaStar => {
             insert(&mut spec, "heuristic", heuristic(u, grid)?);
         }
         PlannerName::WeightedAstar => {

@@ -297,6 +297,7 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         | PlannerSpec::AStar { .. }
         | PlannerSpec::LpaStar { .. }
         | PlannerSpec::AdaptiveAStar { .. }
+        | PlannerSpec::MpgaaStar { .. }
         | PlannerSpec::DStarLite { .. } => optimal(),
         PlannerSpec::Bfs {} => {
             let fewest = grid.bfs_moves(start, goal).expect("reachable");

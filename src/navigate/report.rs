@@ -56,6 +56,9 @@ pub struct NavigationReport {
     /// The expansions of each plan.
     #[serde(skip)]
     pub plan_expansions: Vec<u64>,
+    /// The time of each plan (the first includes making the planner).
+    #[serde(skip)]
+    pub plan_times: Vec<Duration>,
     /// Whether each cell of the grid (row-major) was ever sensed.
     #[serde(skip)]
     pub sensed: Vec<bool>,

@@ -141,6 +141,7 @@ fn run(
         plan_costs: Vec::new(),
         plan_bounds: Vec::new(),
         plan_expansions: Vec::new(),
+        plan_times: Vec::new(),
         sensed: Vec::new(),
     };
     let mut robot = start;
@@ -170,6 +171,7 @@ fn run(
         report.plan_costs.push(plan.cost.unwrap_or(f64::INFINITY));
         report.plan_bounds.push(plan.epsilon);
         report.plan_expansions.push(plan.expansions);
+        report.plan_times.push(spent);
         inspect(&world.known, robot, &plan);
         let next = match script {
             Some(script) => script.get(report.steps + 1).copied(),

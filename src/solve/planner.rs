@@ -13,7 +13,7 @@ use trailmark_sample::{
     NearestNeighbors, Planner, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
 };
 use trailmark_search::{
-    AdStar, AdaptiveAStar, DStarLite, EpsilonSchedule, LpaStar, RepeatedAStar, Replanner, Search,
+    AdStar, AdaptiveAStar, DStarLite, EpsilonSchedule, LpaStar, MpgaaStar, RepeatedAStar, Replanner, Search,
     SearchError, SearchResult, ara_star,
 };
 
@@ -73,6 +73,14 @@ pub enum PlannerSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         heuristic: Option<GridHeuristic>,
     },
+    /// MPGAA*: Adaptive A* that also ends where it meets a path of an earlier plan that is
+    /// still good (on a static world, one search).
+    #[serde(rename = "mpgaa_star")]
+    MpgaaStar {
+        /// The heuristic (default as for A*).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heuristic: Option<GridHeuristic>,
+    },
     /// D* Lite: the incremental backward search (on a static world, one search).
     #[serde(rename = "dstar_lite")]
     DStarLite {
@@ -111,6 +119,7 @@ impl PlannerSpec {
             | PlannerSpec::ThetaStar {}
             | PlannerSpec::LpaStar { .. }
             | PlannerSpec::AdaptiveAStar { .. }
+            | PlannerSpec::MpgaaStar { .. }
             | PlannerSpec::DStarLite { .. }
             | PlannerSpec::AraStar(_)
             | PlannerSpec::AdStar(_) => None,
@@ -128,6 +137,7 @@ impl PlannerSpec {
             PlannerSpec::ThetaStar {} => "theta_star",
             PlannerSpec::LpaStar { .. } => "lpa_star",
             PlannerSpec::AdaptiveAStar { .. } => "adaptive_astar",
+            PlannerSpec::MpgaaStar { .. } => "mpgaa_star",
             PlannerSpec::DStarLite { .. } => "dstar_lite",
             PlannerSpec::AraStar(_) => "ara_star",
             PlannerSpec::AdStar(_) => "ad_star",
@@ -162,6 +172,7 @@ impl PlannerSpec {
             PlannerSpec::AStar { heuristic }
             | PlannerSpec::LpaStar { heuristic }
             | PlannerSpec::AdaptiveAStar { heuristic }
+            | PlannerSpec::MpgaaStar { heuristic }
             | PlannerSpec::DStarLite { heuristic }
             | PlannerSpec::AraStar(AnytimeSpec { heuristic, .. })
             | PlannerSpec::AdStar(AnytimeSpec { heuristic, .. }) => (*heuristic, true),
@@ -227,6 +238,7 @@ impl PlannerSpec {
             },
             PlannerSpec::LpaStar { .. } => plan_once(graph, LpaStar::new(graph, start, goal, h)),
             PlannerSpec::AdaptiveAStar { .. } => plan_once(graph, AdaptiveAStar::new(graph, start, goal, h)),
+            PlannerSpec::MpgaaStar { .. } => plan_once(graph, MpgaaStar::new(graph, start, goal, h)),
             PlannerSpec::DStarLite { .. } => plan_once(graph, DStarLite::new(graph, start, goal, h)),
             PlannerSpec::AraStar(spec) => {
                 let found = ara_star(graph, start, goal, to_goal, spec.schedule(), spec.budget());
@@ -273,6 +285,7 @@ impl PlannerSpec {
             PlannerSpec::AStar { .. } => boxed(RepeatedAStar::new(graph, start, goal, h)),
             PlannerSpec::LpaStar { .. } => boxed(LpaStar::new(graph, start, goal, h)),
             PlannerSpec::AdaptiveAStar { .. } => boxed(AdaptiveAStar::new(graph, start, goal, h)),
+            PlannerSpec::MpgaaStar { .. } => boxed(MpgaaStar::new(graph, start, goal, h)),
             PlannerSpec::DStarLite { .. } => boxed(DStarLite::new(graph, start, goal, h)),
             PlannerSpec::AdStar(spec) => boxed(
                 AdStar::new(graph, start, goal, h, spec.schedule())

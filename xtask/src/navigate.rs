@@ -62,7 +62,7 @@ pub struct Args {
     #[arg(long, default_value_t = 1)]
     radius: u32,
     /// The planners to run, each on the same world (comma-separated names of the solve
-    /// registry's planners that replan: astar, lpa_star, dstar_lite, ad_star).
+    /// registry's planners that replan: astar, lpa_star, dstar_lite, ad_star, adaptive_astar, mpgaa_star).
     #[arg(long, value_delimiter = ',', default_value = "astar,lpa_star,dstar_lite,ad_star", value_parser = parse_planner)]
     planner: Vec<PlannerSpec>,
     /// AD*'s initial inflation.

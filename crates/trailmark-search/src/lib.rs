@@ -109,6 +109,7 @@ pub use error::SearchError;
 pub use incremental::adaptive_astar::AdaptiveAStar;
 pub use incremental::dstar_lite::DStarLite;
 pub use incremental::lpa_star::LpaStar;
+pub use incremental::mpgaa_star::MpgaaStar;
 pub use incremental::repeated_astar::RepeatedAStar;
 pub use incremental::replanner::Replanner;
 pub use incremental::{Consistency, EdgeChange, Expansion, Key};

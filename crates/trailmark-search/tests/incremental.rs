@@ -1,5 +1,5 @@
-//! LPA*, D* Lite and Adaptive A* against A* from scratch: after every batch of random changes
-//! (and, for D* Lite and Adaptive A*, moves of the start), the planners must report the cost A* finds on the
+//! LPA*, D* Lite, Adaptive A* and MPGAA* against A* from scratch: after every batch of random
+//! changes (and, for all but LPA*, moves of the start), the planners must report the cost A* finds on the
 //! graph as it is now, with a path that exists in that graph and costs what they say.
 
 mod common;
@@ -11,8 +11,8 @@ use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 use trailmark_graph::GridGraph;
 use trailmark_search::{
-    AdStar, AdaptiveAStar, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, Replanner, SearchError, astar,
-    dijkstra,
+    AdStar, AdaptiveAStar, DStarLite, EdgeChange, EpsilonSchedule, LpaStar, MpgaaStar, Replanner,
+    SearchError, astar, dijkstra,
 };
 
 /// Relative tolerance between costs summed in different orders (forward by A*, backward by D*
@@ -34,14 +34,15 @@ fn octile(a: Cell, b: Cell) -> Cost {
 enum Change {
     /// Set the cost of cell (x, y): a finite cost in [1, 4], or blocked.
     Cell { x: u32, y: u32, cost: Option<f64> },
-    /// Move the robot to a random neighbour (index among the neighbours), D* Lite only.
+    /// Move the robot to a neighbour: the next step of the planner's last plan for indices from
+    /// 8 on where it has one (a robot following its plan), else a neighbour by index.
     Step(usize),
 }
 
 fn change(w: u32, h: u32) -> impl Strategy<Value = Change> {
     prop_oneof![
         4 => (0..w, 0..h, prop::option::weighted(0.6, 1.0f64..4.0)).prop_map(|(x, y, cost)| Change::Cell { x, y, cost }),
-        1 => (0usize..8).prop_map(Change::Step),
+        1 => (0usize..12).prop_map(Change::Step),
     ]
 }
 
@@ -83,8 +84,15 @@ enum Told {
     Moved(Cell),
 }
 
-/// Applies `batch` to `graph` and the robot, telling `tell` of each change.
-fn apply(batch: &[Change], graph: &mut GridGraph, robot: &mut Cell, mut tell: impl FnMut(&GridGraph, Told)) {
+/// Applies `batch` to `graph` and the robot, telling `tell` of each change; `planned` is the
+/// next step of the planner's last plan, if any.
+fn apply(
+    batch: &[Change],
+    graph: &mut GridGraph,
+    robot: &mut Cell,
+    mut planned: Option<Cell>,
+    mut tell: impl FnMut(&GridGraph, Told),
+) {
     for change in batch {
         match *change {
             Change::Cell { x, y, cost } => {
@@ -95,13 +103,52 @@ fn apply(batch: &[Change], graph: &mut GridGraph, robot: &mut Cell, mut tell: im
             }
             Change::Step(k) => {
                 let next: Vec<Cell> = graph.neighbours(*robot).map(|(c, _)| c).collect();
-                if let Some(&to) = next.get(k % next.len().max(1)) {
+                let follow = planned.take().filter(|c| k >= 8 && next.contains(c));
+                if let Some(to) = follow.or_else(|| next.get(k % next.len().max(1)).copied()) {
                     *robot = to;
                     tell(graph, Told::Moved(to));
                 }
             }
         }
     }
+}
+
+/// A replanner told every batch of changes and moves (half of the moves along its own plan)
+/// plans after each the cost of A* from scratch, with a path of the graph from the robot to the
+/// goal that costs what it says, and the same error when an end is blocked.
+fn replanner_matches_astar(
+    mut graph: GridGraph,
+    mut planner: impl Replanner<GridGraph>,
+    start: Cell,
+    goal: Cell,
+    batches: &[Vec<Change>],
+    name: &str,
+) -> Result<(), TestCaseError> {
+    let mut robot = start;
+    for batch in std::iter::once(&vec![]).chain(batches) {
+        let planned = planner.next_step(&graph);
+        apply(batch, &mut graph, &mut robot, planned, |graph, told| match told {
+            Told::Cells(cells) => planner.update_nodes(graph, &cells).unwrap(),
+            Told::Moved(to) => planner.move_start(graph, to).unwrap(),
+        });
+        let expected = reference(&graph, robot, goal);
+        let got = planner.plan(&graph);
+        match expected {
+            Err(e) => prop_assert_eq!(got.unwrap_err(), e),
+            Ok(cost) => {
+                got.unwrap();
+                prop_assert!(same_cost(planner.cost(), cost), "{} {:?}, A* {:?}", name, planner.cost(), cost);
+                if let Some(path) = planner.path(&graph) {
+                    prop_assert_eq!(path.start(), Some(robot));
+                    prop_assert_eq!(path.goal(), Some(goal));
+                    prop_assert!(same_cost(walk_cost(&graph, &path.nodes), cost));
+                } else {
+                    prop_assert!(cost.is_none());
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// A* from scratch: the cost, or an error when an endpoint is blocked.
@@ -114,60 +161,23 @@ proptest! {
 
     #[test]
     fn dstar_lite_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
-        let mut graph = GridGraph::new(&grid, connectivity);
-        let mut planner = DStarLite::new(&graph, start, goal, octile).unwrap();
-        let mut robot = start;
-        for batch in std::iter::once(&vec![]).chain(&batches) {
-            apply(batch, &mut graph, &mut robot, |graph, told| match told {
-                Told::Cells(cells) => planner.update_nodes(graph, cells).unwrap(),
-                Told::Moved(to) => planner.move_start(graph, to).unwrap(),
-            });
-            let expected = reference(&graph, robot, goal);
-            let got = planner.compute_shortest_path(&graph);
-            match expected {
-                Err(e) => prop_assert_eq!(got.unwrap_err(), e),
-                Ok(cost) => {
-                    got.unwrap();
-                    prop_assert!(same_cost(planner.cost(), cost), "D* Lite {:?}, A* {:?}", planner.cost(), cost);
-                    if let Some(path) = planner.path(&graph) {
-                        prop_assert_eq!(path.start(), Some(robot));
-                        prop_assert_eq!(path.goal(), Some(goal));
-                        prop_assert!(same_cost(walk_cost(&graph, &path.nodes), cost));
-                    } else {
-                        prop_assert!(cost.is_none());
-                    }
-                }
-            }
-        }
+        let graph = GridGraph::new(&grid, connectivity);
+        let planner = DStarLite::new(&graph, start, goal, octile).unwrap();
+        replanner_matches_astar(graph, planner, start, goal, &batches, "D* Lite")?;
     }
 
     #[test]
     fn adaptive_astar_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
-        let mut graph = GridGraph::new(&grid, connectivity);
-        let mut planner = AdaptiveAStar::new(&graph, start, goal, octile).unwrap();
-        let mut robot = start;
-        for batch in std::iter::once(&vec![]).chain(&batches) {
-            apply(batch, &mut graph, &mut robot, |graph, told| match told {
-                Told::Cells(cells) => Replanner::update_nodes(&mut planner, graph, &cells).unwrap(),
-                Told::Moved(to) => Replanner::move_start(&mut planner, graph, to).unwrap(),
-            });
-            let expected = reference(&graph, robot, goal);
-            let got = Replanner::plan(&mut planner, &graph);
-            match expected {
-                Err(e) => prop_assert_eq!(got.unwrap_err(), e),
-                Ok(cost) => {
-                    got.unwrap();
-                    prop_assert!(same_cost(planner.cost(), cost), "Adaptive A* {:?}, A* {:?}", planner.cost(), cost);
-                    if let Some(path) = Replanner::path(&planner, &graph) {
-                        prop_assert_eq!(path.start(), Some(robot));
-                        prop_assert_eq!(path.goal(), Some(goal));
-                        prop_assert!(same_cost(walk_cost(&graph, &path.nodes), cost));
-                    } else {
-                        prop_assert!(cost.is_none());
-                    }
-                }
-            }
-        }
+        let graph = GridGraph::new(&grid, connectivity);
+        let planner = AdaptiveAStar::new(&graph, start, goal, octile).unwrap();
+        replanner_matches_astar(graph, planner, start, goal, &batches, "Adaptive A*")?;
+    }
+
+    #[test]
+    fn mpgaa_star_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
+        let graph = GridGraph::new(&grid, connectivity);
+        let planner = MpgaaStar::new(&graph, start, goal, octile).unwrap();
+        replanner_matches_astar(graph, planner, start, goal, &batches, "MPGAA*")?;
     }
 
     #[test]
@@ -221,7 +231,7 @@ proptest! {
         let mut planner = AdStar::new(&graph, start, goal, octile, schedule).unwrap().with_raise_threshold(threshold);
         let mut robot = start;
         for batch in std::iter::once(&vec![]).chain(&batches) {
-            apply(batch, &mut graph, &mut robot, |graph, told| match told {
+            apply(batch, &mut graph, &mut robot, None, |graph, told| match told {
                 Told::Cells(cells) => planner.update_nodes(graph, cells).unwrap(),
                 Told::Moved(to) => planner.move_start(graph, to).unwrap(),
             });
@@ -411,7 +421,7 @@ proptest! {
         // Change the world a little, so that a reset must forget repaired state too.
         let mut robot = start;
         for batch in batches.iter().take(1) {
-            apply(batch, &mut graph, &mut robot, |graph, told| {
+            apply(batch, &mut graph, &mut robot, None, |graph, told| {
                 if let Told::Cells(cells) = told {
                     dstar.update_nodes(graph, cells.iter().copied()).unwrap();
                     lpa.update_nodes(graph, cells.iter().copied()).unwrap();

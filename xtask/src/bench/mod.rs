@@ -38,7 +38,7 @@ use serde::Serialize;
 use anytime::{AnytimePart, AnytimeRow};
 use contingency::ContingencyRow;
 use grid::{GridPlanner, GridRow, PeerRatio};
-use navigation::{NavRatio, NavRow};
+use navigation::{NavRatio, NavRow, ReplannerRatio};
 use ompl::OmplDriver;
 use report::{Figure, GoalRow};
 use roadmaps::RoadmapReport;
@@ -124,6 +124,7 @@ struct BenchReport {
     ratios: Vec<PeerRatio>,
     navigation: Vec<NavRow>,
     navigation_ratios: Vec<NavRatio>,
+    replanner_ratios: Vec<ReplannerRatio>,
     anytime: Vec<AnytimeRow>,
     #[serde(skip_serializing_if = "Option::is_none")]
     roadmaps: Option<RoadmapReport>,
@@ -161,6 +162,7 @@ impl BenchReport {
     /// The goals table's rows, each from its section.
     fn goals(&self) -> Vec<GoalRow> {
         let mut goals = vec![grid::goal(&self.ratios), navigation::goal(&self.navigation_ratios)];
+        goals.extend(navigation::best_goals(&self.replanner_ratios));
         goals.push(rosmaps::goal(&self.rosmaps));
         goals.extend(sampling::goals(self.sampling.as_ref()));
         goals
@@ -193,7 +195,11 @@ impl BenchReport {
         out.push_str(time_line);
         out.push_str(&report::goals_markdown(&self.goals()));
         out.push_str(&grid::markdown(&self.results, &self.ratios));
-        out.push_str(&navigation::markdown(&self.navigation, &self.navigation_ratios));
+        out.push_str(&navigation::markdown(
+            &self.navigation,
+            &self.navigation_ratios,
+            &self.replanner_ratios,
+        ));
         out.push_str(&anytime::markdown(&self.anytime));
         out.push_str("\n## Maps\n\n| map | source | size | passable | queries |\n|---|---|---|---:|---:|\n");
         for m in &self.maps {
@@ -375,6 +381,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         ratios: grid::ratios(&results),
         results,
         navigation_ratios: navigation::nav_ratios(&navigation),
+        replanner_ratios: navigation::replanner_ratios(&navigation),
         navigation,
         anytime: anytime.as_mut().map_or(Vec::new(), |a| std::mem::take(&mut a.rows)),
         roadmaps,

@@ -1,6 +1,7 @@
 //! The navigation section: a robot crosses a map it does not know (free-space prior), sensing a
-//! square window around it, replanning at every step with A* from scratch, LPA*, D* Lite and
-//! AD*; the planning work of each is summed over the run. A "trap" case puts an unseen
+//! square window around it, replanning at every step with A* from scratch, LPA*, D* Lite, AD*,
+//! Adaptive A* and MPGAA*; the planning work of each is summed over the run, and each plan's
+//! time is kept for the latency per step. A "trap" case puts an unseen
 //! cup-shaped wall around the goal, the change D* Lite handles worst: it is discovered next to
 //! the goal, the root of D* Lite's search.
 
@@ -16,7 +17,7 @@ use trailmark::solve::{AnytimeSpec, PlannerSpec};
 
 use crate::bench::progress::SectionProgress;
 use crate::bench::report::GoalRow;
-use crate::bench::stats::median;
+use crate::bench::stats::{median, quantile, sorted};
 use crate::bench::suite::Suite;
 use crate::region::endpoints;
 
@@ -50,6 +51,10 @@ pub struct NavRow {
     pub planning_ms: f64,
     /// The longest single plan, milliseconds.
     pub max_plan_ms: f64,
+    /// The median plan, microseconds.
+    pub median_plan_us: f64,
+    /// The 99th percentile of the plans, milliseconds.
+    pub p99_plan_ms: f64,
     /// Expansions of each plan, in order.
     #[serde(skip)]
     pub plan_expansions: Vec<u64>,
@@ -76,6 +81,23 @@ pub struct NavRatio {
     pub worst_step: f64,
 }
 
+/// A replanner against A* from scratch on one case.
+#[derive(Debug, Clone, Serialize)]
+pub struct ReplannerRatio {
+    /// The map.
+    pub map: String,
+    /// The sensor radius.
+    pub radius: u32,
+    /// The replanner.
+    pub planner: String,
+    /// A* planning time / the replanner's.
+    pub time: f64,
+    /// A*'s 99th-percentile plan / the replanner's.
+    pub p99: f64,
+    /// A* expansions / the replanner's.
+    pub expansions: f64,
+}
+
 /// The AD* settings of the navigation runs: one iteration per step from epsilon 3 down.
 const NAV_AD_STAR: PlannerSpec = PlannerSpec::AdStar(AnytimeSpec {
     epsilon: Some(3.0),
@@ -86,11 +108,12 @@ const NAV_AD_STAR: PlannerSpec = PlannerSpec::AdStar(AnytimeSpec {
 });
 
 /// The planners run along the trajectory of the driver, D* Lite.
-const NAV_OTHERS: [PlannerSpec; 4] = [
+const NAV_OTHERS: [PlannerSpec; 5] = [
     PlannerSpec::AStar { heuristic: None },
     PlannerSpec::LpaStar { heuristic: None },
     NAV_AD_STAR,
     PlannerSpec::AdaptiveAStar { heuristic: None },
+    PlannerSpec::MpgaaStar { heuristic: None },
 ];
 
 /// The MovingAI maps of the navigation section: two games (Dragon Age, Baldur's Gate) and a city.
@@ -185,6 +208,18 @@ pub fn bench_navigation(cases: &[NavCase], runs: u32) -> Result<Vec<NavRow>, Str
         }
         for k in 0..=NAV_OTHERS.len() {
             let reports: Vec<&NavigationReport> = all.iter().map(|run| &run[k]).collect();
+            // Each plan's time, its median over the rounds (every round makes the same plans).
+            let plan_ms: Vec<f64> = (0..reports[0].plan_times.len())
+                .map(|i| {
+                    let at: Vec<f64> = reports
+                        .iter()
+                        .filter_map(|r| r.plan_times.get(i))
+                        .map(|t| t.as_secs_f64() * 1e3)
+                        .collect();
+                    median(&sorted(at))
+                })
+                .collect();
+            let plan_ms = sorted(plan_ms);
             let mut times: Vec<f64> = reports.iter().map(|r| r.planning_time.as_secs_f64() * 1e3).collect();
             times.sort_by(f64::total_cmp);
             let mut worst: Vec<f64> = reports.iter().map(|r| r.max_plan_time.as_secs_f64() * 1e3).collect();
@@ -200,6 +235,8 @@ pub fn bench_navigation(cases: &[NavCase], runs: u32) -> Result<Vec<NavRow>, Str
                 expansions: r.expansions,
                 planning_ms: median(&times),
                 max_plan_ms: median(&worst),
+                median_plan_us: median(&plan_ms) * 1e3,
+                p99_plan_ms: quantile(&plan_ms, 0.99),
                 plan_expansions: r.plan_expansions.clone(),
             });
         }
@@ -236,6 +273,65 @@ pub fn nav_ratios(rows: &[NavRow]) -> Vec<NavRatio> {
         .collect()
 }
 
+/// Every replanner against A* from scratch, per case.
+pub fn replanner_ratios(rows: &[NavRow]) -> Vec<ReplannerRatio> {
+    let astar = |map: &str, radius: u32| {
+        rows.iter().find(|r| r.map == map && r.radius == radius && r.planner == "astar")
+    };
+    rows.iter()
+        .filter(|r| r.planner != "astar")
+        .filter_map(|r| {
+            let a = astar(&r.map, r.radius)?;
+            Some(ReplannerRatio {
+                map: r.map.clone(),
+                radius: r.radius,
+                planner: r.planner.clone(),
+                time: a.planning_ms / r.planning_ms.max(1e-9),
+                p99: a.p99_plan_ms / r.p99_plan_ms.max(1e-9),
+                expansions: a.expansions as f64 / r.expansions.max(1) as f64,
+            })
+        })
+        .collect()
+}
+
+/// The replanner with the least planning time on each case, in the order of the cases.
+pub fn best_replanners(ratios: &[ReplannerRatio]) -> Vec<&ReplannerRatio> {
+    let mut best: Vec<&ReplannerRatio> = Vec::new();
+    for r in ratios {
+        match best.iter_mut().find(|b| b.map == r.map && b.radius == r.radius) {
+            Some(b) if b.time < r.time => *b = r,
+            Some(_) => {}
+            None => best.push(r),
+        }
+    }
+    best
+}
+
+/// The goals of the best replanner: never slower than A* from scratch, and the aim of 3x.
+pub fn best_goals(ratios: &[ReplannerRatio]) -> [GoalRow; 2] {
+    let figures: Vec<(String, f64)> = best_replanners(ratios)
+        .iter()
+        .map(|b| (format!("{} radius {}, {}", b.map, b.radius, b.planner), b.time))
+        .collect();
+    let missing = "the navigation section did not run";
+    [
+        GoalRow {
+            goal: "the best replanner never slower in total planning time than A* from scratch",
+            figures: figures.clone(),
+            target: 1.0,
+            unit: "x",
+            missing,
+        },
+        GoalRow {
+            goal: "the best replanner at least 3x less total planning time than A* from scratch",
+            figures,
+            target: 3.0,
+            unit: "x",
+            missing,
+        },
+    ]
+}
+
 /// The goal of the section for the report's goals table.
 pub fn goal(ratios: &[NavRatio]) -> GoalRow {
     GoalRow {
@@ -248,21 +344,22 @@ pub fn goal(ratios: &[NavRatio]) -> GoalRow {
 }
 
 /// The section of the report.
-pub fn markdown(nav: &[NavRow], ratios: &[NavRatio]) -> String {
+pub fn markdown(nav: &[NavRow], ratios: &[NavRatio], replanners: &[ReplannerRatio]) -> String {
     let mut out = String::new();
     if !nav.is_empty() {
         out.push_str("## Unknown-terrain navigation\n\n");
         out.push_str(
             "Free-space prior, 8-connected, sensing a square window of the given radius. D* Lite drives the \
-             robot; A*, LPA* (restarted at every step, as the start moves) and AD* (one iteration per step, \
-             epsilon 3 down by 0.5) are each run along that trajectory, planning from the same cells with the same knowledge (one planner at a time, so none runs with caches filled by another). Planning work \
-             summed over the run (time: median over rounds).\n\n",
+             robot; A*, LPA* (restarted at every step, as the start moves), AD* (one iteration per step, \
+             epsilon 3 down by 0.5), Adaptive A* and MPGAA* are each run along that trajectory, planning from the same cells with the same knowledge (one planner at a time, so none runs with caches filled by another). Planning work \
+             summed over the run (time: median over rounds); the latency of a step is the time of its plan \
+             (the first plan includes making the planner).\n\n",
         );
-        out.push_str("| map | radius | planner | outcome | steps | distance | expansions | planning ms | worst plan ms |\n");
-        out.push_str("|---|---:|---|---|---:|---:|---:|---:|---:|\n");
+        out.push_str("| map | radius | planner | outcome | steps | distance | expansions | planning ms | median plan µs | p99 plan ms | worst plan ms |\n");
+        out.push_str("|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
         for r in nav {
             out.push_str(&format!(
-                "| {} | {} | {} | {:?} | {} | {:.1} | {} | {:.2} | {:.3} |\n",
+                "| {} | {} | {} | {:?} | {} | {:.1} | {} | {:.2} | {:.1} | {:.3} | {:.3} |\n",
                 r.map,
                 r.radius,
                 r.planner,
@@ -271,7 +368,24 @@ pub fn markdown(nav: &[NavRow], ratios: &[NavRatio]) -> String {
                 r.distance,
                 r.expansions,
                 r.planning_ms,
+                r.median_plan_us,
+                r.p99_plan_ms,
                 r.max_plan_ms
+            ));
+        }
+        out.push_str("\n### Every replanner against A* from scratch (goal: the best at least 1x everywhere, aim 3x)\n\n");
+        out.push_str(
+            "Total planning time, 99th-percentile plan and expansions of A* from scratch divided by each \
+             replanner's (above 1: the replanner is faster). The best per case is in bold.\n\n",
+        );
+        out.push_str("| map | radius | planner | time A* / it | p99 plan A* / it | expansions A* / it |\n");
+        out.push_str("|---|---:|---|---:|---:|---:|\n");
+        let best = best_replanners(replanners);
+        for r in replanners {
+            let bold = if best.iter().any(|b| std::ptr::eq(*b, r)) { "**" } else { "" };
+            out.push_str(&format!(
+                "| {} | {} | {bold}{}{bold} | {bold}{:.2}x{bold} | {:.2}x | {:.1}x |\n",
+                r.map, r.radius, r.planner, r.time, r.p99, r.expansions
             ));
         }
         out.push_str("\n### D* Lite against A* from scratch (goal: 10x fewer expansions, 5x less time)\n\n");

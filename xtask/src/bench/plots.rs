@@ -5,6 +5,8 @@
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
+use crate::bench::stats::quantile;
+
 /// Colours of the series, in order.
 pub const COLOURS: [RGBColor; 5] = [
     RGBColor(225, 48, 108),
@@ -32,13 +34,6 @@ pub struct Box5 {
     pub q3: f64,
     pub high: f64,
     pub outliers: Vec<f64>,
-}
-
-/// The value at fraction `p` of sorted `v`, interpolated between neighbours.
-fn quantile(v: &[f64], p: f64) -> f64 {
-    let at = p * (v.len() - 1) as f64;
-    let (i, f) = (at.floor() as usize, at.fract());
-    if i + 1 < v.len() { v[i] + (v[i + 1] - v[i]) * f } else { v[i] }
 }
 
 impl Box5 {

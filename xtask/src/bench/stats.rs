@@ -9,6 +9,16 @@ pub fn median(sorted: &[f64]) -> f64 {
     }
 }
 
+/// The value at fraction `p` of `sorted`, interpolated between neighbours (NaN when empty).
+pub fn quantile(sorted: &[f64], p: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let at = p * (sorted.len() - 1) as f64;
+    let (i, f) = (at.floor() as usize, at.fract());
+    if i + 1 < sorted.len() { sorted[i] + (sorted[i + 1] - sorted[i]) * f } else { sorted[i] }
+}
+
 /// `values` in increasing order (NaN last).
 pub fn sorted(mut values: Vec<f64>) -> Vec<f64> {
     values.sort_by(f64::total_cmp);
@@ -48,6 +58,9 @@ mod tests {
         assert_eq!(median(&[1.0, 2.0, 7.0]), 2.0);
         assert_eq!(median(&[1.0, 2.0, 4.0, 7.0]), 3.0);
         assert!(median(&[]).is_nan());
+        assert_eq!(quantile(&[1.0, 2.0, 4.0, 8.0, 16.0], 0.5), 4.0);
+        assert_eq!(quantile(&[1.0, 2.0, 4.0, 8.0, 16.0], 0.875), 12.0);
+        assert!(quantile(&[], 0.99).is_nan());
         assert_eq!(upper_median(vec![7.0, 1.0, 4.0, 2.0]), 4.0);
         assert!(upper_median(Vec::new()).is_nan());
     }

@@ -19,6 +19,7 @@ use trailmark_core::path::Path;
 
 use crate::error::SearchError;
 use crate::incremental::EdgeChange;
+use crate::incremental::path_reuse::PathReuse;
 use crate::incremental::repeated_astar::RepeatedAStar;
 use crate::incremental::replanner::Replanner;
 use crate::queue::IndexedHeap;
@@ -53,10 +54,12 @@ pub struct AdaptiveAStar<N, H> {
     base: RepeatedAStar<N, H>,
     /// The learned heuristic per node index; 0 where nothing was learned.
     learned: Vec<Cost>,
-    /// Nodes whose edges may have changed since the last plan.
-    touched: Vec<N>,
+    /// The indices of the nodes whose edges may have changed since the last plan.
+    touched: Vec<usize>,
     /// The open list of the consistency repair (by heuristic value).
     repair: IndexedHeap<Cost>,
+    /// The paths of earlier plans, when they are reused (MPGAA*).
+    pub(crate) reuse: Option<PathReuse>,
 }
 
 impl<N, H> AdaptiveAStar<N, H>
@@ -78,6 +81,7 @@ where
             learned: vec![0.0; graph.node_bound()],
             touched: Vec::new(),
             repair: IndexedHeap::new(),
+            reuse: None,
         })
     }
 
@@ -103,7 +107,10 @@ where
 
     /// Bytes held by the search workspace and the learned heuristic.
     pub fn memory_bytes(&self) -> usize {
-        self.base.memory_bytes() + self.learned.capacity() * 8 + self.repair.memory_bytes()
+        self.base.memory_bytes()
+            + self.learned.capacity() * 8
+            + self.repair.memory_bytes()
+            + self.reuse.as_ref().map_or(0, PathReuse::memory_bytes)
     }
 
     /// The heuristic of `node` (index `i`): the larger of the given and the learned one.
@@ -111,23 +118,70 @@ where
         heuristic(node, goal).max(learned.get(i).copied().unwrap_or(0.0))
     }
 
-    /// Lowers the learned value of `u` where an edge `u -> v` of cost `c` makes it too large
-    /// (`h(u) > c + h(v)`), queueing `u` so the decrease reaches its predecessors.
-    fn relax<G>(&mut self, graph: &G, u: N, v: N, c: Cost)
+    /// Lowers the learned value of `x` (index `i`) where an edge out of it makes it too large:
+    /// to the least `c + h(v)` over its edges `x -> v`, queueing `x` so that the decrease
+    /// reaches its predecessors.
+    fn relax_out<G>(&mut self, graph: &G, x: N, i: usize)
     where
-        G: IndexedGraph<Node = N> + ?Sized,
+        G: Successors + IndexedGraph<Node = N> + ?Sized,
     {
-        let (i, j) = (graph.index_of(u), graph.index_of(v));
         let goal = self.base.goal();
-        if u == goal || self.learned[i] == 0.0 {
+        if x == goal || self.learned[i] == 0.0 {
             return; // the given heuristic is consistent by itself
         }
-        let hv = Self::h_at(&self.learned, &mut self.base.heuristic, v, j, goal);
-        let hu = Self::h_at(&self.learned, &mut self.base.heuristic, u, i, goal);
-        if hu > c + hv {
-            // At least the given heuristic, which is consistent: h(u) becomes exactly c + h(v).
-            self.learned[i] = c + hv;
-            self.repair.push(i, c + hv);
+        let (learned, heuristic) = (&self.learned, &mut self.base.heuristic);
+        let mut best = (f64::INFINITY, i, 0.0);
+        graph.for_each_successor(x, |v, c| {
+            let j = graph.index_of(v);
+            let through = c + Self::h_at(learned, heuristic, v, j, goal);
+            if through < best.0 {
+                best = (through, j, c);
+            }
+        });
+        let hx = Self::h_at(learned, heuristic, x, i, goal);
+        if hx > best.0 {
+            self.lower(i, best);
+        }
+    }
+
+    /// Lowers the learned values of the predecessors of `x` (index `i`) that the edge into `x`
+    /// makes too large (`h(p) > c + h(x)`), queueing each.
+    fn relax_into<G>(&mut self, graph: &G, x: N, i: usize)
+    where
+        G: Predecessors + IndexedGraph<Node = N> + ?Sized,
+    {
+        let goal = self.base.goal();
+        let hx = Self::h_at(&self.learned, &mut self.base.heuristic, x, i, goal);
+        let AdaptiveAStar { base, learned, repair, reuse, .. } = self;
+        graph.for_each_predecessor(x, |p, c| {
+            let k = graph.index_of(p);
+            if p == goal || learned[k] == 0.0 {
+                return;
+            }
+            if Self::h_at(learned, &mut base.heuristic, p, k, goal) > c + hx {
+                Self::lower_in(learned, repair, reuse, k, (c + hx, i, c));
+            }
+        });
+    }
+
+    fn lower(&mut self, i: usize, to: (Cost, usize, Cost)) {
+        Self::lower_in(&mut self.learned, &mut self.repair, &mut self.reuse, i, to);
+    }
+
+    /// Sets the learned value of index `i` to `to.0`, reached over the edge of cost `to.2` to
+    /// index `to.1`. It is at least the given heuristic, which is consistent: `h` becomes
+    /// exactly `c + h(v)`, and the way to the goal is through that edge.
+    fn lower_in(
+        learned: &mut [Cost],
+        repair: &mut IndexedHeap<Cost>,
+        reuse: &mut Option<PathReuse>,
+        i: usize,
+        (value, j, c): (Cost, usize, Cost),
+    ) {
+        learned[i] = value;
+        repair.push(i, value);
+        if let Some(reuse) = reuse.as_mut() {
+            reuse.point(i, j, c);
         }
     }
 
@@ -140,31 +194,33 @@ where
         if self.learned.len() < graph.node_bound() {
             self.learned.resize(graph.node_bound(), 0.0);
         }
+        if let Some(reuse) = self.reuse.as_mut() {
+            reuse.resize(graph.node_bound());
+        }
+        if self.touched.is_empty() {
+            return;
+        }
+        // Neighbouring changes name the same nodes: each is looked at once.
+        self.touched.sort_unstable();
+        self.touched.dedup();
+        let touched = std::mem::take(&mut self.touched);
+        if let Some(reuse) = self.reuse.as_mut() {
+            for &i in &touched {
+                reuse.check_changed(graph, graph.node_at(i));
+            }
+        }
         self.repair.reserve_items(graph.node_bound());
         self.repair.clear();
-        let touched = std::mem::take(&mut self.touched);
-        let mut edges = Vec::new();
-        for &x in &touched {
-            if !graph.contains(x) {
-                continue;
-            }
+        for &i in &touched {
             // The edges out of x and into x may have become cheaper.
-            edges.clear();
-            graph.for_each_successor(x, |v, c| edges.push((x, v, c)));
-            graph.for_each_predecessor(x, |p, c| edges.push((p, x, c)));
-            for &(u, v, c) in &edges {
-                self.relax(graph, u, v, c);
-            }
+            let x = graph.node_at(i);
+            self.relax_out(graph, x, i);
+            self.relax_into(graph, x, i);
         }
         self.touched = touched;
         self.touched.clear();
         while let Some((i, _)) = self.repair.pop() {
-            let x = graph.node_at(i);
-            edges.clear();
-            graph.for_each_predecessor(x, |p, c| edges.push((p, x, c)));
-            for &(u, v, c) in &edges {
-                self.relax(graph, u, v, c);
-            }
+            self.relax_into(graph, graph.node_at(i), i);
         }
     }
 }
@@ -180,13 +236,13 @@ where
         changes: &[EdgeChange<G::Node>],
     ) -> Result<(), SearchError<G::Node>> {
         self.base.update_edges(graph, changes)?;
-        self.touched.extend(changes.iter().flat_map(|c| [c.from, c.to]));
+        self.touched.extend(changes.iter().flat_map(|c| [c.from, c.to]).map(|n| graph.index_of(n)));
         Ok(())
     }
 
     fn update_nodes(&mut self, graph: &G, nodes: &[G::Node]) -> Result<(), SearchError<G::Node>> {
         self.base.update_nodes(graph, nodes)?;
-        self.touched.extend_from_slice(nodes);
+        self.touched.extend(nodes.iter().map(|&n| graph.index_of(n)));
         Ok(())
     }
 
@@ -197,13 +253,28 @@ where
     fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
         self.restore_consistency(graph);
         let (start, goal) = (self.base.start(), self.base.goal());
+        let goal_slot = graph.index_of(goal);
         let (learned, base) = (&self.learned, &mut self.base);
         let heuristic = &mut base.heuristic;
-        let found = base.search.astar(graph, start, goal, |n| {
-            let i = graph.index_of(n);
-            Self::h_at(learned, heuristic, n, i, goal)
-        })?;
-        if let Some(path) = &found.path {
+        let h = |n| Self::h_at(learned, heuristic, n, graph.index_of(n), goal);
+        let found = match self.reuse.as_mut() {
+            None => base.search.astar(graph, start, goal, h)?,
+            Some(reuse) => base
+                .search
+                .astar_until(graph, start, goal, h, |slot| reuse.reaches_goal(learned, slot, goal_slot))?,
+        };
+        let stats = found.stats;
+        base.totals += stats;
+        base.path = found.path.map(|mut path| {
+            // Where the search stopped on a kept path, the path and its cost go on along it.
+            let searched = path.nodes.len();
+            let end = graph.index_of(path.nodes[searched - 1]);
+            if end != goal_slot {
+                path.cost += self.learned[end];
+                if let Some(reuse) = &self.reuse {
+                    reuse.extend(graph, &mut path, end, goal_slot);
+                }
+            }
             // Every expanded node learns the cost to the goal it is known to be at least.
             let (nodes, best) = (&base.search.nodes, path.cost);
             for &i in base.search.expanded_log.iter().flatten() {
@@ -212,10 +283,11 @@ where
                     self.learned[i] = self.learned[i].max(best - nodes.g[i]);
                 }
             }
-        }
-        let stats = found.stats;
-        base.path = found.path;
-        base.totals += stats;
+            if let Some(reuse) = self.reuse.as_mut() {
+                reuse.lay(graph, &mut self.learned, &path.nodes[..searched]);
+            }
+            path
+        });
         Ok(stats)
     }
 

@@ -132,7 +132,7 @@ impl<I> Search<I> {
         I: NodeIndex<G>,
         H: FnMut(G::Node) -> Cost,
     {
-        self.best_first(graph, start, Some(goal), heuristic, 1.0, true)
+        self.best_first(graph, start, Some(goal), heuristic, 1.0, true, |_| false)
     }
 
     /// Weighted A* from `start` to `goal` with this workspace; see [`weighted_astar`](crate::weighted_astar()).
@@ -152,7 +152,7 @@ impl<I> Search<I> {
         if !(1.0..=MAX_WEIGHT).contains(&weight) {
             return Err(SearchError::InvalidWeight(weight));
         }
-        self.best_first(graph, start, Some(goal), heuristic, weight, false)
+        self.best_first(graph, start, Some(goal), heuristic, weight, false, |_| false)
     }
 
     /// Dijkstra's algorithm from `start` to `goal` with this workspace; see [`dijkstra`](crate::dijkstra()).
@@ -166,7 +166,7 @@ impl<I> Search<I> {
         G: Successors + ?Sized,
         I: NodeIndex<G>,
     {
-        self.best_first(graph, start, Some(goal), |_| 0.0, 1.0, true)
+        self.best_first(graph, start, Some(goal), |_| 0.0, 1.0, true, |_| false)
     }
 
     /// Dijkstra's algorithm from `start` to every reachable node. Afterwards
@@ -195,10 +195,31 @@ impl<I> Search<I> {
         G: Successors + ?Sized,
         I: NodeIndex<G>,
     {
-        self.best_first(graph, start, None, |_| 0.0, 1.0, true)
+        self.best_first(graph, start, None, |_| 0.0, 1.0, true, |_| false)
     }
 
-    fn best_first<G, H>(
+    /// A* from `start` that also ends at the first node leaving the open list for which
+    /// `ends_here(slot)` holds (a node from which a path to the goal is already known, as in
+    /// MPGAA*); the path returned leads to that node.
+    pub(crate) fn astar_until<G, H, E>(
+        &mut self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+        heuristic: H,
+        ends_here: E,
+    ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
+    where
+        G: Successors + ?Sized,
+        I: NodeIndex<G>,
+        H: FnMut(G::Node) -> Cost,
+        E: FnMut(usize) -> bool,
+    {
+        self.best_first(graph, start, Some(goal), heuristic, 1.0, true, ends_here)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn best_first<G, H, E>(
         &mut self,
         graph: &G,
         start: G::Node,
@@ -206,11 +227,13 @@ impl<I> Search<I> {
         mut heuristic: H,
         weight: f64,
         reopen: bool,
+        mut ends_here: E,
     ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
     where
         G: Successors + ?Sized,
         I: NodeIndex<G>,
         H: FnMut(G::Node) -> Cost,
+        E: FnMut(usize) -> bool,
     {
         let query = self.begin(graph, start, goal.unwrap_or(start))?;
         let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
@@ -251,7 +274,7 @@ impl<I> Search<I> {
                     None => break,
                 },
             };
-            if u == goal_slot {
+            if u == goal_slot || ends_here(u) {
                 found = Some(u);
                 break;
             }

@@ -60,6 +60,8 @@ pub struct AdaptiveAStar<N, H> {
     repair: IndexedHeap<Cost>,
     /// The paths of earlier plans, when they are reused (MPGAA*).
     pub(crate) reuse: Option<PathReuse>,
+    /// Where the last plan's search ended on a kept path (its path goes on along it).
+    tail: Option<usize>,
 }
 
 impl<N, H> AdaptiveAStar<N, H>
@@ -82,6 +84,7 @@ where
             touched: Vec::new(),
             repair: IndexedHeap::new(),
             reuse: None,
+            tail: None,
         })
     }
 
@@ -120,45 +123,65 @@ where
 
     /// Lowers the learned value of `x` (index `i`) where an edge out of it makes it too large:
     /// to the least `c + h(v)` over its edges `x -> v`, queueing `x` so that the decrease
-    /// reaches its predecessors.
+    /// reaches its predecessors. A kept step out of `x` whose edge changed is cut.
+    ///
+    /// As the given heuristic is consistent, `h(x) > c + h(v)` holds exactly when the learned
+    /// value of `x` exceeds `c + h(v)`; and `h(v)` needs the given heuristic only where
+    /// `c` plus the learned value of `v` already does.
     fn relax_out<G>(&mut self, graph: &G, x: N, i: usize)
     where
         G: Successors + IndexedGraph<Node = N> + ?Sized,
     {
         let goal = self.base.goal();
-        if x == goal || self.learned[i] == 0.0 {
+        let relax = x != goal && self.learned[i] != 0.0;
+        let mut step = self.reuse.as_ref().and_then(|r| r.next_of(i)).map(|n| (n, false));
+        if !relax && step.is_none() {
             return; // the given heuristic is consistent by itself
         }
-        let (learned, heuristic) = (&self.learned, &mut self.base.heuristic);
+        let (learned, heuristic, reuse) = (&self.learned, &mut self.base.heuristic, &self.reuse);
+        let hx = learned[i];
         let mut best = (f64::INFINITY, i, 0.0);
         graph.for_each_successor(x, |v, c| {
             let j = graph.index_of(v);
-            let through = c + Self::h_at(learned, heuristic, v, j, goal);
-            if through < best.0 {
-                best = (through, j, c);
+            if let (Some((n, kept)), Some(reuse)) = (step.as_mut(), reuse) {
+                *kept |= *n == j && reuse.step_is(i, c);
+            }
+            if relax && c + learned[j] < hx.min(best.0) {
+                let through = c + Self::h_at(learned, heuristic, v, j, goal);
+                if through < best.0 {
+                    best = (through, j, c);
+                }
             }
         });
-        let hx = Self::h_at(learned, heuristic, x, i, goal);
-        if hx > best.0 {
+        if let (Some((_, false)), Some(reuse)) = (step, self.reuse.as_mut()) {
+            reuse.cut(i);
+        }
+        if relax && hx > best.0 {
             self.lower(i, best);
         }
     }
 
     /// Lowers the learned values of the predecessors of `x` (index `i`) that the edge into `x`
-    /// makes too large (`h(p) > c + h(x)`), queueing each.
-    fn relax_into<G>(&mut self, graph: &G, x: N, i: usize)
+    /// makes too large (`h(p) > c + h(x)`, which for a consistent given heuristic is the learned
+    /// value of `p` exceeding `c + h(x)`), queueing each. With `check`, a kept step into `x`
+    /// whose edge changed is cut first.
+    fn relax_into<G>(&mut self, graph: &G, x: N, i: usize, check: bool)
     where
-        G: Predecessors + IndexedGraph<Node = N> + ?Sized,
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         let goal = self.base.goal();
         let hx = Self::h_at(&self.learned, &mut self.base.heuristic, x, i, goal);
-        let AdaptiveAStar { base, learned, repair, reuse, .. } = self;
+        let AdaptiveAStar { learned, repair, reuse, .. } = self;
         graph.for_each_predecessor(x, |p, c| {
             let k = graph.index_of(p);
-            if p == goal || learned[k] == 0.0 {
-                return;
+            if let Some(reuse) = reuse.as_mut().filter(|_| check)
+                && reuse.next_of(k) == Some(i)
+                && !reuse.step_is(k, c)
+                && !reuse.step_kept(graph, k)
+            {
+                reuse.cut(k);
             }
-            if Self::h_at(learned, &mut base.heuristic, p, k, goal) > c + hx {
+            if p != goal && learned[k] > c + hx {
                 Self::lower_in(learned, repair, reuse, k, (c + hx, i, c));
             }
         });
@@ -204,23 +227,19 @@ where
         self.touched.sort_unstable();
         self.touched.dedup();
         let touched = std::mem::take(&mut self.touched);
-        if let Some(reuse) = self.reuse.as_mut() {
-            for &i in &touched {
-                reuse.check_changed(graph, graph.node_at(i));
-            }
-        }
         self.repair.reserve_items(graph.node_bound());
         self.repair.clear();
         for &i in &touched {
-            // The edges out of x and into x may have become cheaper.
+            // The edges out of x and into x may have become cheaper, or changed under a kept
+            // step.
             let x = graph.node_at(i);
             self.relax_out(graph, x, i);
-            self.relax_into(graph, x, i);
+            self.relax_into(graph, x, i, true);
         }
         self.touched = touched;
         self.touched.clear();
         while let Some((i, _)) = self.repair.pop() {
-            self.relax_into(graph, graph.node_at(i), i);
+            self.relax_into(graph, graph.node_at(i), i, false);
         }
     }
 }
@@ -265,15 +284,14 @@ where
         };
         let stats = found.stats;
         base.totals += stats;
+        self.tail = None;
         base.path = found.path.map(|mut path| {
-            // Where the search stopped on a kept path, the path and its cost go on along it.
-            let searched = path.nodes.len();
-            let end = graph.index_of(path.nodes[searched - 1]);
+            // Where the search stopped on a kept path, the path goes on along it (read out when
+            // asked for), and so does its cost.
+            let end = graph.index_of(path.nodes[path.nodes.len() - 1]);
             if end != goal_slot {
                 path.cost += self.learned[end];
-                if let Some(reuse) = &self.reuse {
-                    reuse.extend(graph, &mut path, end, goal_slot);
-                }
+                self.tail = Some(end);
             }
             // Every expanded node learns the cost to the goal it is known to be at least.
             let (nodes, best) = (&base.search.nodes, path.cost);
@@ -284,7 +302,7 @@ where
                 }
             }
             if let Some(reuse) = self.reuse.as_mut() {
-                reuse.lay(graph, &mut self.learned, &path.nodes[..searched]);
+                reuse.lay(graph, &mut self.learned, &path.nodes);
             }
             path
         });
@@ -292,7 +310,11 @@ where
     }
 
     fn path(&self, graph: &G) -> Option<Path<G::Node>> {
-        self.base.path(graph)
+        let mut path = self.base.path(graph)?;
+        if let (Some(end), Some(reuse)) = (self.tail, &self.reuse) {
+            reuse.extend(graph, &mut path, end, graph.index_of(self.base.goal()));
+        }
+        Some(path)
     }
 
     fn cost(&self) -> Option<Cost> {
@@ -300,7 +322,12 @@ where
     }
 
     fn next_step(&self, graph: &G) -> Option<G::Node> {
-        self.base.next_step(graph)
+        let searched = self.base.path.as_ref()?;
+        match (searched.nodes.get(1), self.tail, &self.reuse) {
+            (Some(&next), _, _) => Some(next),
+            (None, Some(end), Some(reuse)) => reuse.next_of(end).map(|n| graph.node_at(n)),
+            (None, _, _) => None,
+        }
     }
 
     fn totals(&self) -> SearchStats {

@@ -11,7 +11,7 @@
 //! the test makes, so the equality is exact in floating point.
 
 use trailmark_core::cost::Cost;
-use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
+use trailmark_core::graph::{IndexedGraph, Successors};
 use trailmark_core::path::Path;
 
 use crate::incremental::planner::edge_cost;
@@ -85,41 +85,41 @@ impl PathReuse {
     }
 
     /// Whether the step from node index `s` along its pointer is exact under `learned` (edge
-    /// costs are checked when changes are told, by [`check_changed`](Self::check_changed)).
+    /// costs are checked when changes are told: [`step_kept`](Self::step_kept)).
     #[inline]
     fn step_holds(&self, learned: &[Cost], s: usize) -> bool {
         let n = self.next[s];
         n != NONE && learned[s] == self.step[s] + learned[n as usize - 1]
     }
 
-    /// Whether the edge of the step from node index `s` still costs what it did.
-    fn edge_unchanged<G>(&self, graph: &G, s: usize) -> bool
+    /// The node index that the pointer of node index `s` names, if any.
+    #[inline]
+    pub fn next_of(&self, s: usize) -> Option<usize> {
+        (self.next[s] != NONE).then(|| self.next[s] as usize - 1)
+    }
+
+    /// Whether an edge of cost `c` is the one the step of node index `s` was set with.
+    #[inline]
+    pub fn step_is(&self, s: usize, c: Cost) -> bool {
+        c.to_bits() == self.step[s].to_bits()
+    }
+
+    /// Whether an edge from node index `s` to the node its pointer names still has the cost the
+    /// step was set with (a parallel edge may serve).
+    pub fn step_kept<G>(&self, graph: &G, s: usize) -> bool
     where
         G: Successors + IndexedGraph + ?Sized,
     {
-        let n = self.next[s] as usize - 1;
-        edge_cost(graph, graph.node_at(s), graph.node_at(n)).to_bits() == self.step[s].to_bits()
+        let Some(n) = self.next_of(s) else { return false };
+        let to = graph.node_at(n);
+        let mut kept = false;
+        graph.for_each_successor(graph.node_at(s), |v, c| kept |= v == to && self.step_is(s, c));
+        kept
     }
 
-    /// Cuts the kept steps over edges at `node` that changed cost (the step out of it and the
-    /// steps into it), and forgets what was verified through them.
-    pub fn check_changed<G>(&mut self, graph: &G, node: G::Node)
-    where
-        G: Successors + Predecessors + IndexedGraph + ?Sized,
-    {
-        let x = graph.index_of(node);
-        if self.next[x] != NONE && !self.edge_unchanged(graph, x) {
-            self.cut(x);
-        }
-        graph.for_each_predecessor(node, |p, _| {
-            let p = graph.index_of(p);
-            if self.next[p] == x as u32 + 1 && !self.edge_unchanged(graph, p) {
-                self.cut(p);
-            }
-        });
-    }
-
-    fn cut(&mut self, s: usize) {
+    /// Cuts the pointer of node index `s` (its edge changed), forgetting what was verified
+    /// through it.
+    pub fn cut(&mut self, s: usize) {
         self.next[s] = NONE;
         self.forget_through(s);
     }
@@ -153,8 +153,9 @@ impl PathReuse {
         reached
     }
 
-    /// The kept path from node index `from`, which [`reaches_goal`](Self::reaches_goal) has just
-    /// accepted, appended to `path` (whose last node is `from`).
+    /// The kept path from node index `from`, which [`reaches_goal`](Self::reaches_goal) has
+    /// accepted in the last plan, appended to `path` (whose last node is `from`). Pointers change
+    /// only while planning, and none of that path's: no node of a verified path is expanded.
     pub fn extend<G>(&self, graph: &G, path: &mut Path<G::Node>, from: usize, goal: usize)
     where
         G: IndexedGraph + ?Sized,

@@ -182,8 +182,10 @@ mod tests {
     use trailmark_core::termination::Termination;
 
     use crate::anytime::EpsilonSchedule;
+    use crate::incremental::adaptive_astar::AdaptiveAStar;
     use crate::incremental::dstar_lite::DStarLite;
     use crate::incremental::lpa_star::LpaStar;
+    use crate::incremental::mpgaa_star::MpgaaStar;
     use crate::incremental::repeated_astar::RepeatedAStar;
     use crate::one_shot::astar::dijkstra;
 
@@ -204,7 +206,7 @@ mod tests {
         }
     }
 
-    /// All four planners, told the same changes and start moves through the trait, plan the
+    /// The exact planners, told the same changes and start moves through the trait, plan the
     /// same cost as Dijkstra from scratch; AD* with a small budget per plan stays within its
     /// inflation of it.
     #[test]
@@ -218,7 +220,10 @@ mod tests {
             Box::new(LpaStar::new(&graph, start, goal, heuristic).unwrap()),
             Box::new(DStarLite::new(&graph, start, goal, heuristic).unwrap()),
             Box::new(AdStar::new(&graph, start, goal, heuristic, EpsilonSchedule::default()).unwrap()),
+            Box::new(AdaptiveAStar::new(&graph, start, goal, heuristic).unwrap()),
+            Box::new(MpgaaStar::new(&graph, start, goal, heuristic).unwrap()),
         ];
+        let exact_count = exact.len();
         let schedule = EpsilonSchedule::new(2.5, 0.5);
         let limits = Termination::expansions(5);
         let mut bounded =
@@ -250,7 +255,7 @@ mod tests {
                 let stats = planner.plan(&graph).unwrap();
                 assert!(planner.totals().expansions >= stats.expansions);
                 let cost = planner.cost();
-                if i < 4 {
+                if i < exact_count {
                     assert!(same(cost, best), "planner {i} at step {step}: {cost:?} vs {best:?}");
                     assert_eq!(planner.inflation(), 1.0);
                 } else if let (Some(cost), Some(best)) = (cost, best) {
@@ -263,8 +268,13 @@ mod tests {
                 assert_eq!(planner.next_step(&graph), path.and_then(|p| p.nodes.get(1).copied()));
                 checked += 1;
             }
-            // Half the time the robot follows D* Lite's plan; otherwise it jumps elsewhere.
-            let next = if step % 2 == 0 { exact[2].next_step(&graph) } else { None };
+            // Half the time the robot follows a plan (D* Lite's or MPGAA*'s); otherwise it jumps
+            // elsewhere.
+            let next = match step % 4 {
+                0 => exact[2].next_step(&graph),
+                2 => exact[exact_count - 1].next_step(&graph),
+                _ => None,
+            };
             robot = next.unwrap_or_else(|| {
                 let cells: Vec<Cell> = (0..h as u32)
                     .flat_map(|y| (0..w as u32).map(move |x| Cell::new(x, y)))
@@ -273,7 +283,7 @@ mod tests {
                 cells[rng.below(cells.len() as u32) as usize]
             });
         }
-        assert_eq!(checked, 300);
+        assert_eq!(checked, 60 * (exact_count + 1));
         for planner in &exact {
             assert!(planner.memory_bytes() > 0);
         }

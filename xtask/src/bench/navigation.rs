@@ -138,20 +138,35 @@ fn trap(size: usize) -> (Grid, Cell, Cell) {
     (grid, Cell::new(size as u32 / 16, size as u32 / 2), goal)
 }
 
-/// The navigation cases of a suite: generated random maps (25% and 40% obstacles), the trap,
-/// and the MovingAI maps when the folder is there, each with sensor radius 1 and 5.
+/// The navigation cases of a suite, one map of each family: generated random maps (10%, 25%
+/// and 40% obstacles), rooms, mazes with corridors 1, 4 and 32 cells wide (3/8 of the size: a
+/// robot in an unknown maze walks far), the trap, and the MovingAI maps when the folder is
+/// there; each with sensor radius 1, 5 and 10. The maps of the first version of the section
+/// (random 25% and 40%, the trap, the MovingAI maps) keep their start and goal.
 pub fn nav_cases(suite: Suite, seed: u64, movingai_dir: Option<&Path>) -> Result<Vec<NavCase>, String> {
     let size = match suite {
         Suite::Quick => 256,
         Suite::Full => 512,
     };
     let mut rng = <ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed ^ 0x6e61_7669);
+    let mut later = <ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed ^ 0x6661_6d69);
     let mut maps: Vec<(String, Grid, Cell, Cell)> = Vec::new();
-    for density in [25, 40] {
-        let grid =
-            generate::random(size, size, f64::from(density) / 100.0, seed).map_err(|e| e.to_string())?;
-        let (start, goal) = endpoints(&grid, &mut rng).ok_or("an empty map")?;
-        maps.push((format!("random{size}-{density}-s{seed}"), grid, start, goal));
+    let mut add = |name: String, grid: Result<Grid, generate::GenerateError>, rng: &mut ChaCha8Rng| {
+        let grid = grid.map_err(|e| e.to_string())?;
+        let (start, goal) = endpoints(&grid, rng).ok_or("an empty map")?;
+        maps.push((name, grid, start, goal));
+        Ok::<(), String>(())
+    };
+    for density in [10, 25, 40] {
+        let grid = generate::random(size, size, f64::from(density) / 100.0, seed);
+        let rng = if density == 10 { &mut later } else { &mut rng };
+        add(format!("random{size}-{density}-s{seed}"), grid, rng)?;
+    }
+    add(format!("rooms{size}-16-s{seed}"), generate::rooms(size, size, 16, seed), &mut later)?;
+    let small = size * 3 / 8;
+    for corridor in [1, 4, 32] {
+        let grid = generate::maze(small, small, corridor, seed);
+        add(format!("maze{small}-{corridor}-s{seed}"), grid, &mut later)?;
     }
     let (grid, start, goal) = trap(size);
     maps.push((format!("trap{size}"), grid, start, goal));
@@ -169,7 +184,7 @@ pub fn nav_cases(suite: Suite, seed: u64, movingai_dir: Option<&Path>) -> Result
     }
     let mut cases = Vec::new();
     for (name, grid, start, goal) in maps {
-        for radius in [1, 5] {
+        for radius in [1, 5, 10] {
             cases.push(NavCase { name: name.clone(), grid: grid.clone(), start, goal, radius });
         }
     }

@@ -10,10 +10,12 @@
 //!   [`AdStar`], with an [`EpsilonSchedule`], reporting every [`Iteration`] in an
 //!   [`AnytimeResult`];
 //! - **incremental searches** repair their last search after edge costs change
-//!   ([`EdgeChange`]): [`LpaStar`], and [`DStarLite`], which also follows a robot that moves.
-//!   [`Replanner`] is the one interface of the planners kept between plans (LPA*, D* Lite, AD*,
-//!   and [`RepeatedAStar`], A* from scratch at every plan, the baseline), so a program picks one
-//!   at run time (`Box<dyn Replanner<G>>`) or compares them on the same changes.
+//!   ([`EdgeChange`]): [`LpaStar`], and [`DStarLite`], which also follows a robot that moves;
+//!   [`AdaptiveAStar`] and [`MpgaaStar`] search forward from the robot at every plan, guided by
+//!   what earlier plans learned (MPGAA* also reuses their paths). [`Replanner`] is the one
+//!   interface of the planners kept between plans (these, AD*, and [`RepeatedAStar`], A* from
+//!   scratch at every plan, the baseline), so a program picks one at run time
+//!   (`Box<dyn Replanner<G>>`) or compares them on the same changes.
 //!
 //! Shared by all: [`SearchStats`], [`SearchError`], the node numbering ([`NodeIndex`]: [`Dense`]
 //! or [`Hashed`]) and the indexed priority queue [`IndexedHeap`]. Every search returns the path

@@ -397,6 +397,12 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
             Err(e) => errln!("warning: no grid time plot: {e}"),
         }
     }
+    if !report.navigation.is_empty() {
+        match navigation::time_svg(&report.navigation) {
+            Ok(svg) => figures.push(("navigation-time.svg", svg)),
+            Err(e) => errln!("warning: no navigation time plot: {e}"),
+        }
+    }
     let anytime_plot = anytime.as_ref().map_or(String::new(), |a| a.cost_time_markdown());
     let text = report.markdown(&times.markdown(cores), &anytime_plot);
     figures.extend(anytime.iter().flat_map(|a| a.figures()));

@@ -15,6 +15,7 @@ use trailmark::navigate::{Navigation, NavigationOutcome, NavigationReport, Targe
 use trailmark::prelude::*;
 use trailmark::solve::{AnytimeSpec, PlannerSpec};
 
+use crate::bench::plots::{BoxSeries, COLOURS, box_plot_svg};
 use crate::bench::progress::SectionProgress;
 use crate::bench::report::GoalRow;
 use crate::bench::stats::{median, quantile, sorted};
@@ -322,6 +323,40 @@ pub fn best_replanners(ratios: &[ReplannerRatio]) -> Vec<&ReplannerRatio> {
     best
 }
 
+/// The planners of the time plot (the exact ones), in the order of their colours.
+const PLOTTED: [&str; 5] = ["astar", "lpa_star", "dstar_lite", "adaptive_astar", "mpgaa_star"];
+
+/// The plot of total planning time per map family: for each map a box per exact planner over
+/// its runs with the sensor radii of the section.
+pub fn time_svg(rows: &[NavRow]) -> Result<String, String> {
+    let mut maps: Vec<String> = Vec::new();
+    for r in rows {
+        if !maps.contains(&r.map) {
+            maps.push(r.map.clone());
+        }
+    }
+    let series: Vec<BoxSeries> = PLOTTED
+        .iter()
+        .zip(COLOURS)
+        .map(|(&planner, colour)| BoxSeries {
+            name: planner.to_string(),
+            colour,
+            values: maps
+                .iter()
+                .map(|m| {
+                    rows.iter().filter(|r| &r.map == m && r.planner == planner).map(|r| r.planning_ms).collect()
+                })
+                .collect(),
+        })
+        .collect();
+    box_plot_svg(
+        "Unknown terrain: total planning time of a run (box over sensor radii)",
+        "milliseconds",
+        &maps,
+        &series,
+    )
+}
+
 /// The goals of the best replanner: never slower than A* from scratch, and the aim of 3x.
 pub fn best_goals(ratios: &[ReplannerRatio]) -> [GoalRow; 2] {
     let figures: Vec<(String, f64)> = best_replanners(ratios)
@@ -388,6 +423,7 @@ pub fn markdown(nav: &[NavRow], ratios: &[NavRatio], replanners: &[ReplannerRati
                 r.max_plan_ms
             ));
         }
+        out.push_str("\n![total planning time of each exact planner per map, over the sensor radii](navigation-time.svg)\n");
         out.push_str("\n### Every replanner against A* from scratch (goal: the best at least 1x everywhere, aim 3x)\n\n");
         out.push_str(
             "Total planning time, 99th-percentile plan and expansions of A* from scratch divided by each \

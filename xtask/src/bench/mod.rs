@@ -123,6 +123,7 @@ struct BenchReport {
     results: Vec<GridRow>,
     ratios: Vec<PeerRatio>,
     navigation: Vec<NavRow>,
+    navigation_own: Vec<NavRow>,
     navigation_ratios: Vec<NavRatio>,
     replanner_ratios: Vec<ReplannerRatio>,
     anytime: Vec<AnytimeRow>,
@@ -197,6 +198,7 @@ impl BenchReport {
         out.push_str(&grid::markdown(&self.results, &self.ratios));
         out.push_str(&navigation::markdown(
             &self.navigation,
+            &self.navigation_own,
             &self.navigation_ratios,
             &self.replanner_ratios,
         ));
@@ -260,6 +262,7 @@ struct Parts {
     maps: Vec<SuiteMap>,
     results: Vec<GridRow>,
     navigation: Vec<NavRow>,
+    navigation_own: Vec<NavRow>,
     anytime: Option<AnytimePart>,
     roadmaps: Option<RoadmapReport>,
     sampling: Option<SamplingReport>,
@@ -305,9 +308,9 @@ fn run_parts<'scope>(
     if wants(Section::Grid) && !planners.is_empty() {
         results = times.section("grid", || grid::bench_grid(&maps, planners, args.runs));
     }
-    let mut navigation = Vec::new();
+    let (mut navigation, mut navigation_own) = (Vec::new(), Vec::new());
     if wants(Section::Navigation) {
-        navigation = times.section("navigation", || {
+        (navigation, navigation_own) = times.section("navigation", || {
             let cases = navigation::nav_cases(args.suite, args.seed, movingai_dir.as_deref())?;
             navigation::bench_navigation(&cases, args.runs)
         })?;
@@ -334,7 +337,18 @@ fn run_parts<'scope>(
     if wants(Section::Rosmaps) && args.only.is_empty() {
         rosmaps = times.section("rosmaps", || rosmaps::bench(args.suite, args.seed, args.runs))?;
     }
-    Ok(Parts { maps, results, navigation, anytime, roadmaps, sampling, contingency, rosmaps, date })
+    Ok(Parts {
+        maps,
+        results,
+        navigation,
+        navigation_own,
+        anytime,
+        roadmaps,
+        sampling,
+        contingency,
+        rosmaps,
+        date,
+    })
 }
 
 /// Runs the benchmark and writes its report; exit 1 when a planner broke its cost bound.
@@ -367,8 +381,18 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         args.only.is_empty() || args.only.iter().any(|o| sampling_names.contains(&o.as_str()));
     let mut times = RunTimes::start();
     let parts = std::thread::scope(|scope| run_parts(scope, args, &planners, sampling_named, &mut times))?;
-    let Parts { maps, results, navigation, mut anytime, roadmaps, sampling, contingency, rosmaps, date } =
-        parts;
+    let Parts {
+        maps,
+        results,
+        navigation,
+        navigation_own,
+        mut anytime,
+        roadmaps,
+        sampling,
+        contingency,
+        rosmaps,
+        date,
+    } = parts;
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let report = BenchReport {
         suite: args.suite,
@@ -383,6 +407,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         navigation_ratios: navigation::nav_ratios(&navigation),
         replanner_ratios: navigation::replanner_ratios(&navigation),
         navigation,
+        navigation_own,
         anytime: anytime.as_mut().map_or(Vec::new(), |a| std::mem::take(&mut a.rows)),
         roadmaps,
         sampling,

@@ -1,35 +1,25 @@
-//! The navigation section: a robot crosses a map it does not know (free-space prior), sensing a
+//! The navigation section: a robot crosses a map it does not know (free-space prior, or a map
+//! with walls wrong, or an obstacle following it; the cases are in `cases`), sensing a
 //! square window around it, replanning at every step with A* from scratch, LPA*, D* Lite, AD*,
 //! Adaptive A* and MPGAA*; the planning work of each is summed over the run, and each plan's
 //! time is kept for the latency per step. A "trap" case puts an unseen
 //! cup-shaped wall around the goal, the change D* Lite handles worst: it is discovered next to
 //! the goal, the root of D* Lite's search.
 
-use std::path::Path;
-
-use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
-use trailmark::core::generate;
-use trailmark::movingai;
-use trailmark::navigate::{Navigation, NavigationOutcome, NavigationReport, Target, navigate_together};
-use trailmark::prelude::*;
+use trailmark::navigate::{
+    Navigation, NavigationOutcome, NavigationReport, Target, navigate, navigate_together,
+};
 use trailmark::solve::{AnytimeSpec, PlannerSpec};
 
 use crate::bench::plots::{BoxSeries, COLOURS, box_plot_svg};
 use crate::bench::progress::SectionProgress;
 use crate::bench::report::GoalRow;
 use crate::bench::stats::{median, quantile, sorted};
-use crate::bench::suite::Suite;
-use crate::region::endpoints;
 
-/// One navigation problem: a map, a start and a goal, a sensor radius.
-pub struct NavCase {
-    name: String,
-    grid: Grid,
-    start: Cell,
-    goal: Cell,
-    radius: u32,
-}
+mod cases;
+
+pub use cases::{NavCase, nav_cases};
 
 /// One planner's run on a navigation case (time: median over the rounds).
 #[derive(Debug, Clone, Serialize)]
@@ -108,6 +98,9 @@ const NAV_AD_STAR: PlannerSpec = PlannerSpec::AdStar(AnytimeSpec {
     max_expansions: Some(0),
 });
 
+/// The planner that drives the robot.
+const DRIVER: PlannerSpec = PlannerSpec::DStarLite { heuristic: None };
+
 /// The planners run along the trajectory of the driver, D* Lite.
 const NAV_OTHERS: [PlannerSpec; 5] = [
     PlannerSpec::AStar { heuristic: None },
@@ -117,147 +110,80 @@ const NAV_OTHERS: [PlannerSpec; 5] = [
     PlannerSpec::MpgaaStar { heuristic: None },
 ];
 
-/// The MovingAI maps of the navigation section: two games (Dragon Age, Baldur's Gate) and a city.
-const NAV_MOVINGAI: [(&str, &str); 3] =
-    [("dao", "brc202d"), ("bg512", "AR0011SR"), ("cities", "Berlin_0_512")];
-
-/// A map whose goal sits in a cup-shaped wall that opens away from the start: the robot sees
-/// the wall only when it arrives next to the goal.
-fn trap(size: usize) -> (Grid, Cell, Cell) {
-    let mut grid = Grid::new(size, size).expect("a valid size");
-    let (c, r) = (size as u32 * 3 / 4, size as u32 / 8);
-    let goal = Cell::new(c, size as u32 / 2);
-    for d in 0..=2 * r {
-        for cell in [
-            Cell::new(goal.x - r, goal.y - r + d), // the side facing the start
-            Cell::new(goal.x - r + d, goal.y - r), // top
-            Cell::new(goal.x - r + d, goal.y + r), // bottom
-        ] {
-            grid.set_blocked(cell, true).expect("inside");
-        }
+/// The planning work of the runs of one planner on one case: the rounds' reports, which differ
+/// only in their times.
+fn row(case: &NavCase, reports: &[&NavigationReport]) -> NavRow {
+    // Each plan's time, its median over the rounds (every round makes the same plans).
+    let plan_ms: Vec<f64> = (0..reports[0].plan_times.len())
+        .map(|i| {
+            let at: Vec<f64> =
+                reports.iter().filter_map(|r| r.plan_times.get(i)).map(|t| t.as_secs_f64() * 1e3).collect();
+            median(&sorted(at))
+        })
+        .collect();
+    let plan_ms = sorted(plan_ms);
+    let times = sorted(reports.iter().map(|r| r.planning_time.as_secs_f64() * 1e3).collect());
+    let worst = sorted(reports.iter().map(|r| r.max_plan_time.as_secs_f64() * 1e3).collect());
+    let r = reports[0];
+    NavRow {
+        map: case.name.clone(),
+        radius: case.radius,
+        planner: r.planner.clone(),
+        outcome: r.outcome,
+        steps: r.steps,
+        distance: r.distance,
+        expansions: r.expansions,
+        planning_ms: median(&times),
+        max_plan_ms: median(&worst),
+        median_plan_us: median(&plan_ms) * 1e3,
+        p99_plan_ms: quantile(&plan_ms, 0.99),
+        plan_expansions: r.plan_expansions.clone(),
     }
-    (grid, Cell::new(size as u32 / 16, size as u32 / 2), goal)
 }
 
-/// The navigation cases of a suite, one map of each family: generated random maps (10%, 25%
-/// and 40% obstacles), rooms, mazes with corridors 1, 4 and 32 cells wide (3/8 of the size: a
-/// robot in an unknown maze walks far), the trap, and the MovingAI maps when the folder is
-/// there; each with sensor radius 1, 5 and 10. The maps of the first version of the section
-/// (random 25% and 40%, the trap, the MovingAI maps) keep their start and goal.
-pub fn nav_cases(suite: Suite, seed: u64, movingai_dir: Option<&Path>) -> Result<Vec<NavCase>, String> {
-    let size = match suite {
-        Suite::Quick => 256,
-        Suite::Full => 512,
-    };
-    let mut rng = <ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed ^ 0x6e61_7669);
-    let mut later = <ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed ^ 0x6661_6d69);
-    let mut maps: Vec<(String, Grid, Cell, Cell)> = Vec::new();
-    let mut add = |name: String, grid: Result<Grid, generate::GenerateError>, rng: &mut ChaCha8Rng| {
-        let grid = grid.map_err(|e| e.to_string())?;
-        let (start, goal) = endpoints(&grid, rng).ok_or("an empty map")?;
-        maps.push((name, grid, start, goal));
-        Ok::<(), String>(())
-    };
-    for density in [10, 25, 40] {
-        let grid = generate::random(size, size, f64::from(density) / 100.0, seed);
-        let rng = if density == 10 { &mut later } else { &mut rng };
-        add(format!("random{size}-{density}-s{seed}"), grid, rng)?;
-    }
-    add(format!("rooms{size}-16-s{seed}"), generate::rooms(size, size, 16, seed), &mut later)?;
-    let small = size * 3 / 8;
-    for corridor in [1, 4, 32] {
-        let grid = generate::maze(small, small, corridor, seed);
-        add(format!("maze{small}-{corridor}-s{seed}"), grid, &mut later)?;
-    }
-    let (grid, start, goal) = trap(size);
-    maps.push((format!("trap{size}"), grid, start, goal));
-    if let Some(dir) = movingai_dir {
-        let chosen: &[(&str, &str)] = match suite {
-            Suite::Quick => &NAV_MOVINGAI[..1],
-            Suite::Full => &NAV_MOVINGAI,
-        };
-        for (set, name) in chosen {
-            let path = dir.join("maps").join(set).join(format!("{name}.map"));
-            let grid = movingai::read_map(&path).map_err(|e| e.to_string())?;
-            let (start, goal) = endpoints(&grid, &mut rng).ok_or("an empty map")?;
-            maps.push((name.to_string(), grid, start, goal));
-        }
-    }
-    let mut cases = Vec::new();
-    for (name, grid, start, goal) in maps {
-        for radius in [1, 5, 10] {
-            cases.push(NavCase { name: name.clone(), grid: grid.clone(), start, goal, radius });
-        }
-    }
-    Ok(cases)
+/// The settings of a run of `case` driven by `planner`.
+fn config(case: &NavCase, planner: PlannerSpec) -> Navigation {
+    Navigation { planner, sensor_radius: case.radius, follower_lag: case.follower_lag, max_steps: None }
 }
 
 /// Runs every planner on every case, `runs` times (the runs are deterministic but for time).
-/// D* Lite drives the robot; each other planner is run along its trajectory, planning from the same cells with the
-/// same knowledge, so all of them solve exactly the same sequence of problems.
-pub fn bench_navigation(cases: &[NavCase], runs: u32) -> Result<Vec<NavRow>, String> {
+/// D* Lite drives the robot; each other planner is run along its trajectory, planning from the
+/// same cells with the same knowledge, so all of them solve exactly the same sequence of
+/// problems. Then, on the free-space cases with sensor radius 5, each planner drives a robot
+/// of its own (the second list): among paths of equal cost each picks its own, so the robots
+/// may part ways.
+pub fn bench_navigation(cases: &[NavCase], runs: u32) -> Result<(Vec<NavRow>, Vec<NavRow>), String> {
+    let own_cases: Vec<&NavCase> = cases.iter().filter(|c| c.radius == 5 && !c.name.contains(' ')).collect();
+    let mut progress = SectionProgress::new("navigation", cases.len() + own_cases.len());
     let mut rows = Vec::new();
-    let mut progress = SectionProgress::new("navigation", cases.len());
     for case in cases {
         progress.step(format!("{} radius {}", case.name, case.radius));
-        let prior =
-            Grid::new(case.grid.width() as usize, case.grid.height() as usize).map_err(|e| e.to_string())?;
-        let config = Navigation {
-            planner: PlannerSpec::DStarLite { heuristic: None },
-            sensor_radius: case.radius,
-            follower_lag: None,
-            max_steps: None,
-        };
+        let config = config(case, DRIVER);
         let mut all: Vec<Vec<NavigationReport>> = Vec::new();
         for _ in 0..runs {
-            all.push(
-                navigate_together(
-                    &case.grid,
-                    &prior,
-                    case.start,
-                    Target::Cell(case.goal),
-                    &config,
-                    &NAV_OTHERS,
-                )
-                .map_err(|e| format!("{}: {e}", case.name))?,
-            );
+            let target = Target::Cell(case.goal);
+            let run = navigate_together(&case.grid, &case.prior, case.start, target, &config, &NAV_OTHERS);
+            all.push(run.map_err(|e| format!("{}: {e}", case.name))?);
         }
         for k in 0..=NAV_OTHERS.len() {
             let reports: Vec<&NavigationReport> = all.iter().map(|run| &run[k]).collect();
-            // Each plan's time, its median over the rounds (every round makes the same plans).
-            let plan_ms: Vec<f64> = (0..reports[0].plan_times.len())
-                .map(|i| {
-                    let at: Vec<f64> = reports
-                        .iter()
-                        .filter_map(|r| r.plan_times.get(i))
-                        .map(|t| t.as_secs_f64() * 1e3)
-                        .collect();
-                    median(&sorted(at))
-                })
-                .collect();
-            let plan_ms = sorted(plan_ms);
-            let mut times: Vec<f64> = reports.iter().map(|r| r.planning_time.as_secs_f64() * 1e3).collect();
-            times.sort_by(f64::total_cmp);
-            let mut worst: Vec<f64> = reports.iter().map(|r| r.max_plan_time.as_secs_f64() * 1e3).collect();
-            worst.sort_by(f64::total_cmp);
-            let r = reports[0];
-            rows.push(NavRow {
-                map: case.name.clone(),
-                radius: case.radius,
-                planner: r.planner.clone(),
-                outcome: r.outcome,
-                steps: r.steps,
-                distance: r.distance,
-                expansions: r.expansions,
-                planning_ms: median(&times),
-                max_plan_ms: median(&worst),
-                median_plan_us: median(&plan_ms) * 1e3,
-                p99_plan_ms: quantile(&plan_ms, 0.99),
-                plan_expansions: r.plan_expansions.clone(),
-            });
+            rows.push(row(case, &reports));
         }
     }
-    Ok(rows)
+    let mut own = Vec::new();
+    for case in own_cases {
+        progress.step(format!("{} radius {}, a robot each", case.name, case.radius));
+        for planner in std::iter::once(DRIVER).chain(NAV_OTHERS) {
+            let config = config(case, planner);
+            let mut reports = Vec::new();
+            for _ in 0..runs {
+                let run = navigate(&case.grid, &case.prior, case.start, Target::Cell(case.goal), &config);
+                reports.push(run.map_err(|e| format!("{}: {e}", case.name))?);
+            }
+            own.push(row(case, &reports.iter().collect::<Vec<_>>()));
+        }
+    }
+    Ok((rows, own))
 }
 
 /// D* Lite against A* from scratch, per case.
@@ -344,7 +270,10 @@ pub fn time_svg(rows: &[NavRow]) -> Result<String, String> {
             values: maps
                 .iter()
                 .map(|m| {
-                    rows.iter().filter(|r| &r.map == m && r.planner == planner).map(|r| r.planning_ms).collect()
+                    rows.iter()
+                        .filter(|r| &r.map == m && r.planner == planner)
+                        .map(|r| r.planning_ms)
+                        .collect()
                 })
                 .collect(),
         })
@@ -394,12 +323,19 @@ pub fn goal(ratios: &[NavRatio]) -> GoalRow {
 }
 
 /// The section of the report.
-pub fn markdown(nav: &[NavRow], ratios: &[NavRatio], replanners: &[ReplannerRatio]) -> String {
+pub fn markdown(
+    nav: &[NavRow],
+    own: &[NavRow],
+    ratios: &[NavRatio],
+    replanners: &[ReplannerRatio],
+) -> String {
     let mut out = String::new();
     if !nav.is_empty() {
         out.push_str("## Unknown-terrain navigation\n\n");
         out.push_str(
-            "Free-space prior, 8-connected, sensing a square window of the given radius. D* Lite drives the \
+            "8-connected, sensing a square window of the given radius; a free-space prior, or (`partial`) the \
+             true map with 15% of its walls missing and 3% of its free cells blocked by phantom walls that go \
+             when seen, or (`follower`) a free-space prior and an obstacle 3 steps behind the robot. D* Lite drives the \
              robot; A*, LPA* (restarted at every step, as the start moves), AD* (one iteration per step, \
              epsilon 3 down by 0.5), Adaptive A* and MPGAA* are each run along that trajectory, planning from the same cells with the same knowledge (one planner at a time, so none runs with caches filled by another). Planning work \
              summed over the run (time: median over rounds); the latency of a step is the time of its plan \
@@ -438,6 +374,31 @@ pub fn markdown(nav: &[NavRow], ratios: &[NavRatio], replanners: &[ReplannerRati
                 "| {} | {} | {bold}{}{bold} | {bold}{:.2}x{bold} | {:.2}x | {:.1}x |\n",
                 r.map, r.radius, r.planner, r.time, r.p99, r.expansions
             ));
+        }
+        if !own.is_empty() {
+            out.push_str("\n### Each planner driving a robot of its own\n\n");
+            out.push_str(
+                "The free-space cases with sensor radius 5, each planner moving its own robot along its own \
+                 plans: among paths of equal cost each picks its own, so trajectories, distances and the \
+                 problems planned may differ.\n\n",
+            );
+            out.push_str(
+                "| map | planner | outcome | steps | distance | expansions | planning ms | p99 plan ms |\n",
+            );
+            out.push_str("|---|---|---|---:|---:|---:|---:|---:|\n");
+            for r in own {
+                out.push_str(&format!(
+                    "| {} | {} | {:?} | {} | {:.1} | {} | {:.2} | {:.3} |\n",
+                    r.map,
+                    r.planner,
+                    r.outcome,
+                    r.steps,
+                    r.distance,
+                    r.expansions,
+                    r.planning_ms,
+                    r.p99_plan_ms
+                ));
+            }
         }
         out.push_str("\n### D* Lite against A* from scratch (goal: 10x fewer expansions, 5x less time)\n\n");
         out.push_str(

@@ -329,6 +329,99 @@ proptest! {
     }
 }
 
+/// Costs: none, zero (cycles of zero-cost edges among them), tiny or ordinary.
+fn cost_or_zero() -> impl Strategy<Value = Cost> {
+    prop_oneof![3 => Just(f64::INFINITY), 1 => Just(0.0), 1 => Just(1e-9), 4 => 0.5f64..10.0]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1500))]
+
+    /// Adaptive A* and MPGAA* on digraphs with cycles and zero-cost edges (which they accept, as
+    /// A* does), edge changes and jumps of the robot or steps along its plan: the cost of
+    /// Dijkstra from the robot after every batch.
+    #[test]
+    fn learning_planners_on_digraphs_match_dijkstra(
+        n in 2usize..12,
+        seed in prop::collection::vec(cost_or_zero(), 144),
+        ends in (0usize..12, 0usize..12),
+        batches in prop::collection::vec(prop::collection::vec((0usize..12, 0usize..12, cost_or_zero(), 0usize..24), 1..5), 1..8),
+    ) {
+        let cost = (0..n).map(|a| (0..n).map(|b| seed[a * 12 + b]).collect()).collect();
+        let mut graph = Digraph { cost };
+        let (start, goal) = (ends.0 % n, ends.1 % n);
+        let zero = |_: usize, _: usize| 0.0;
+        let mut planners: Vec<Box<dyn Replanner<Digraph>>> = vec![
+            Box::new(AdaptiveAStar::new(&graph, start, goal, zero).unwrap()),
+            Box::new(MpgaaStar::new(&graph, start, goal, zero).unwrap()),
+        ];
+        let mut robots = vec![start; planners.len()];
+        for batch in std::iter::once(&vec![]).chain(&batches) {
+            let mut changes = Vec::new();
+            for &(a, b, c, jump) in batch {
+                let (a, b) = (a % n, b % n);
+                if a != b {
+                    changes.push(EdgeChange { from: a, to: b, old_cost: graph.cost[a][b] });
+                    graph.cost[a][b] = c;
+                }
+                for (planner, robot) in planners.iter_mut().zip(&mut robots) {
+                    // A third of the time a jump, a third a step along the last plan.
+                    *robot = match jump % 3 {
+                        0 => jump / 2 % n,
+                        1 => planner.next_step(&graph).unwrap_or(*robot),
+                        _ => *robot,
+                    };
+                }
+            }
+            for (planner, &robot) in planners.iter_mut().zip(&robots) {
+                planner.update_edges(&graph, &changes).unwrap();
+                planner.move_start(&graph, robot).unwrap();
+                planner.plan(&graph).unwrap();
+                let best = dijkstra(&graph, robot, goal).unwrap().cost();
+                prop_assert!(same_cost(planner.cost(), best), "{:?}, Dijkstra {:?}", planner.cost(), best);
+                if let Some(path) = planner.path(&graph) {
+                    prop_assert_eq!((path.start(), path.goal()), (Some(robot), Some(goal)));
+                    prop_assert!(same_cost(walk_cost(&graph, &path.nodes), Some(path.cost)));
+                    prop_assert_eq!(planner.next_step(&graph), path.nodes.get(1).copied());
+                }
+            }
+        }
+    }
+}
+
+/// Adaptive A* and MPGAA*: notifications naming nothing are errors that change nothing; a NaN
+/// edge is reported, and once the graph is fixed and the change told they plan as before.
+#[test]
+fn learning_planners_reject_bad_input_and_stay_usable() {
+    let mut graph = Digraph::new(3, &[(0, 1, 1.0), (1, 2, 1.0), (0, 2, 5.0)]);
+    let zero = |_: usize, _: usize| 0.0;
+    let planners: Vec<Box<dyn Replanner<Digraph>>> = vec![
+        Box::new(AdaptiveAStar::new(&graph, 0, 2, zero).unwrap()),
+        Box::new(MpgaaStar::new(&graph, 0, 2, zero).unwrap()),
+    ];
+    for mut planner in planners {
+        graph.cost[1][2] = 1.0;
+        planner.plan(&graph).unwrap();
+        assert_eq!(planner.cost(), Some(2.0));
+        assert_eq!(planner.update_nodes(&graph, &[1, 7]), Err(SearchError::UnknownNode(7)));
+        let outside = EdgeChange { from: 1, to: 9, old_cost: 1.0 };
+        assert_eq!(planner.update_edges(&graph, &[outside]), Err(SearchError::UnknownNode(9)));
+        assert_eq!(planner.move_start(&graph, 3), Err(SearchError::StartNotInGraph(3)));
+        planner.plan(&graph).unwrap();
+        assert_eq!((planner.cost(), planner.next_step(&graph)), (Some(2.0), Some(1)));
+
+        graph.cost[1][2] = f64::NAN;
+        planner.update_edges(&graph, &[EdgeChange { from: 1, to: 2, old_cost: 1.0 }]).unwrap();
+        let err = planner.plan(&graph).unwrap_err();
+        assert!(matches!(err, SearchError::InvalidEdgeCost { from: 1, to: 2, .. }), "{err:?}");
+        graph.cost[1][2] = 3.0;
+        planner.update_edges(&graph, &[EdgeChange { from: 1, to: 2, old_cost: f64::NAN }]).unwrap();
+        planner.plan(&graph).unwrap();
+        assert_eq!(planner.cost(), Some(4.0));
+        assert_eq!(planner.path(&graph).unwrap().nodes, [0, 1, 2]);
+    }
+}
+
 /// Notifications naming nothing, or invalid costs, are errors that change nothing.
 #[test]
 fn bad_notifications_are_rejected_and_the_planner_stays_usable() {

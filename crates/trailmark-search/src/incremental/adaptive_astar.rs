@@ -141,8 +141,7 @@ where
         let (learned, heuristic, reuse) = (&self.learned, &mut self.base.heuristic, &self.reuse);
         let hx = learned[i];
         let mut best = (f64::INFINITY, i, 0.0);
-        graph.for_each_successor(x, |v, c| {
-            let j = graph.index_of(v);
+        graph.for_each_successor_index(i, |j, v, c| {
             if let (Some((n, kept)), Some(reuse)) = (step.as_mut(), reuse) {
                 *kept |= *n == j && reuse.step_is(i, c);
             }
@@ -172,8 +171,7 @@ where
         let goal = self.base.goal();
         let hx = Self::h_at(&self.learned, &mut self.base.heuristic, x, i, goal);
         let AdaptiveAStar { learned, repair, reuse, .. } = self;
-        graph.for_each_predecessor(x, |p, c| {
-            let k = graph.index_of(p);
+        graph.for_each_predecessor_index(i, |k, p, c| {
             if let Some(reuse) = reuse.as_mut().filter(|_| check)
                 && reuse.next_of(k) == Some(i)
                 && !reuse.step_is(k, c)

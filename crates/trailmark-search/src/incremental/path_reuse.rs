@@ -111,9 +111,8 @@ impl PathReuse {
         G: Successors + IndexedGraph + ?Sized,
     {
         let Some(n) = self.next_of(s) else { return false };
-        let to = graph.node_at(n);
         let mut kept = false;
-        graph.for_each_successor(graph.node_at(s), |v, c| kept |= v == to && self.step_is(s, c));
+        graph.for_each_successor_index(s, |j, _, c| kept |= j == n && self.step_is(s, c));
         kept
     }
 

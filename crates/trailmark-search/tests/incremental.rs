@@ -414,6 +414,8 @@ fn learning_planners_reject_bad_input_and_stay_usable() {
         planner.update_edges(&graph, &[EdgeChange { from: 1, to: 2, old_cost: 1.0 }]).unwrap();
         let err = planner.plan(&graph).unwrap_err();
         assert!(matches!(err, SearchError::InvalidEdgeCost { from: 1, to: 2, .. }), "{err:?}");
+        // A plan that failed leaves no answer.
+        assert_eq!((planner.cost(), planner.path(&graph), planner.next_step(&graph)), (None, None, None));
         graph.cost[1][2] = 3.0;
         planner.update_edges(&graph, &[EdgeChange { from: 1, to: 2, old_cost: f64::NAN }]).unwrap();
         planner.plan(&graph).unwrap();

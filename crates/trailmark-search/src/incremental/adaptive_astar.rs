@@ -268,6 +268,9 @@ where
     }
 
     fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
+        // The repair may cut the kept path the last answer goes on along: a plan that fails
+        // leaves no answer behind.
+        (self.tail, self.base.path) = (None, None);
         self.restore_consistency(graph);
         let (start, goal) = (self.base.start(), self.base.goal());
         let goal_slot = graph.index_of(goal);
@@ -282,7 +285,6 @@ where
         };
         let stats = found.stats;
         base.totals += stats;
-        self.tail = None;
         base.path = found.path.map(|mut path| {
             // Where the search stopped on a kept path, the path goes on along it (read out when
             // asked for), and so does its cost.

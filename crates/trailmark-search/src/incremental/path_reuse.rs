@@ -161,7 +161,8 @@ impl PathReuse {
     {
         let mut s = from;
         while s != goal && path.nodes.len() <= self.next.len() {
-            s = self.next[s] as usize - 1;
+            let Some(n) = self.next_of(s) else { break };
+            s = n;
             path.nodes.push(graph.node_at(s));
         }
     }

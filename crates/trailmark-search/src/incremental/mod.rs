@@ -15,6 +15,11 @@
 //! how expanded nodes are treated (`mode`: reopened at once, or closed per iteration as AD*
 //! does), the repair engine (`engine`) and the path read out of its values (`walk`), and the
 //! planner between a start and a goal that LPA*, D* Lite and AD* wrap (`planner`).
+//!
+//! Beside them, the replanners that search forward from the robot at every plan: A* from
+//! scratch (`repeated_astar`), Adaptive A* (`adaptive_astar`, which learns its heuristic from
+//! earlier plans) and MPGAA* (`mpgaa_star`, which also keeps their paths, `path_reuse`); and
+//! the one interface of them all (`replanner`).
 
 use serde::{Deserialize, Serialize};
 use trailmark_core::cost::Cost;

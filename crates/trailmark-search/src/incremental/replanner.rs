@@ -20,7 +20,10 @@ use crate::stats::SearchStats;
 /// scratch ([`RepeatedAStar`](crate::RepeatedAStar)) ignores it, LPA* ([`LpaStar`](crate::LpaStar))
 /// repairs after changes but restarts when its start moves, D* Lite
 /// ([`DStarLite`](crate::DStarLite)) repairs after both, AD* ([`AdStar`](crate::AdStar)) repairs
-/// and improves an inflated path within a budget per plan.
+/// and improves an inflated path within a budget per plan, Adaptive A*
+/// ([`AdaptiveAStar`](crate::AdaptiveAStar)) searches afresh with what earlier plans learned, and
+/// MPGAA* ([`MpgaaStar`](crate::MpgaaStar)) also stops where it meets an earlier path that is
+/// still good.
 ///
 /// The trait is object safe: a `Box<dyn Replanner<G>>` holds any planner for graphs of type `G`.
 ///

@@ -190,18 +190,22 @@ impl<N, F: Fn(N, N) -> Option<Cost> + ?Sized> Lines<N> for F {
     }
 }
 
-/// A change of one directed edge, told to an incremental planner after the graph changed.
+/// A change of one directed edge, told to an incremental planner after the graph changed: its
+/// endpoints. The new cost is read from the graph; the old one is not needed.
 ///
 /// Graphs that change (a grid whose cells are blocked, a roadmap whose obstacles move) report
 /// their changes in this form, and the incremental planners of `trailmark-search` take it.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct EdgeChange<N> {
     /// The tail of the edge.
     pub from: N,
     /// The head of the edge.
     pub to: N,
-    /// The cost before the change (`f64::INFINITY` if the edge did not exist). The new cost is
-    /// read from the graph. The planners check it (not NaN, not negative) but do not rely on
-    /// it: a wrong old cost cannot make their answer wrong.
-    pub old_cost: Cost,
+}
+
+impl<N> EdgeChange<N> {
+    /// The change of the edge `from -> to` (one that appeared, went, or changed cost).
+    pub fn new(from: N, to: N) -> Self {
+        EdgeChange { from, to }
+    }
 }

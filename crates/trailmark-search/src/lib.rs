@@ -108,6 +108,7 @@ pub use anytime::ara_star::ara_star;
 pub use anytime::budget::Budget;
 pub use anytime::{AnytimeResult, EpsilonSchedule, Iteration};
 pub use error::SearchError;
+pub use heuristic::{Heuristic, ReadsGraph};
 pub use incremental::adaptive_astar::AdaptiveAStar;
 pub use incremental::dstar_lite::DStarLite;
 pub use incremental::lpa_star::LpaStar;

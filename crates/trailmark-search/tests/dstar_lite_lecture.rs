@@ -44,14 +44,13 @@ impl Lecture {
         EDGES.iter().find(|&&(x, y, _)| (x, y) == (a, b) || (y, x) == (a, b)).map_or(INF, |e| e.2)
     }
 
-    /// The directed edges whose cost differs between `self` and `after`, with their old costs.
+    /// The directed edges whose cost differs between `self` and `after`.
     fn changes_to(&self, after: &Lecture) -> Vec<EdgeChange<usize>> {
         let mut changes = Vec::new();
         for &(a, b, _) in &EDGES {
             for (from, to) in [(a, b), (b, a)] {
-                let old_cost = self.cost(from, to);
-                if old_cost != after.cost(from, to) {
-                    changes.push(EdgeChange { from, to, old_cost });
+                if self.cost(from, to) != after.cost(from, to) {
+                    changes.push(EdgeChange::new(from, to));
                 }
             }
         }

@@ -309,7 +309,7 @@ proptest! {
                 if a == b {
                     continue;
                 }
-                changes.push(EdgeChange { from: a, to: b, old_cost: graph.cost[a][b] });
+                changes.push(EdgeChange::new(a, b));
                 graph.cost[a][b] = c;
                 robot = if jump % 3 == 0 { jump } else { robot };
             }
@@ -361,7 +361,7 @@ proptest! {
             for &(a, b, c, jump) in batch {
                 let (a, b) = (a % n, b % n);
                 if a != b {
-                    changes.push(EdgeChange { from: a, to: b, old_cost: graph.cost[a][b] });
+                    changes.push(EdgeChange::new(a, b));
                     graph.cost[a][b] = c;
                 }
                 for (planner, robot) in planners.iter_mut().zip(&mut robots) {
@@ -404,20 +404,20 @@ fn learning_planners_reject_bad_input_and_stay_usable() {
         planner.plan(&graph).unwrap();
         assert_eq!(planner.cost(), Some(2.0));
         assert_eq!(planner.update_nodes(&graph, &[1, 7]), Err(SearchError::UnknownNode(7)));
-        let outside = EdgeChange { from: 1, to: 9, old_cost: 1.0 };
+        let outside = EdgeChange::new(1, 9);
         assert_eq!(planner.update_edges(&graph, &[outside]), Err(SearchError::UnknownNode(9)));
         assert_eq!(planner.move_start(&graph, 3), Err(SearchError::StartNotInGraph(3)));
         planner.plan(&graph).unwrap();
         assert_eq!((planner.cost(), planner.next_step(&graph)), (Some(2.0), Some(1)));
 
         graph.cost[1][2] = f64::NAN;
-        planner.update_edges(&graph, &[EdgeChange { from: 1, to: 2, old_cost: 1.0 }]).unwrap();
+        planner.update_edges(&graph, &[EdgeChange::new(1, 2)]).unwrap();
         let err = planner.plan(&graph).unwrap_err();
         assert!(matches!(err, SearchError::InvalidEdgeCost { from: 1, to: 2, .. }), "{err:?}");
         // A plan that failed leaves no answer.
         assert_eq!((planner.cost(), planner.path(&graph), planner.next_step(&graph)), (None, None, None));
         graph.cost[1][2] = 3.0;
-        planner.update_edges(&graph, &[EdgeChange { from: 1, to: 2, old_cost: f64::NAN }]).unwrap();
+        planner.update_edges(&graph, &[EdgeChange::new(1, 2)]).unwrap();
         planner.plan(&graph).unwrap();
         assert_eq!(planner.cost(), Some(4.0));
         assert_eq!(planner.path(&graph).unwrap().nodes, [0, 1, 2]);
@@ -440,8 +440,8 @@ fn bad_notifications_are_rejected_and_the_planner_stays_usable() {
         planner.update_nodes(&graph, [Cell::new(1, 1), outside]),
         Err(SearchError::UnknownNode(outside))
     );
-    let bad = EdgeChange { from: Cell::new(0, 0), to: Cell::new(1, 0), old_cost: f64::NAN };
-    assert!(matches!(planner.update_edges(&graph, &[bad]), Err(SearchError::InvalidEdgeCost { .. })));
+    let bad = [EdgeChange::new(Cell::new(0, 0), Cell::new(1, 0)), EdgeChange::new(Cell::new(3, 0), outside)];
+    assert_eq!(planner.update_edges(&graph, &bad), Err(SearchError::UnknownNode(outside)));
     assert_eq!(planner.move_start(&graph, outside), Err(SearchError::StartNotInGraph(outside)));
     assert_eq!(planner.compute_shortest_path(&graph).unwrap().expansions, 0);
     assert_eq!(planner.cost(), cost);
@@ -474,7 +474,7 @@ fn invalid_edge_costs_are_reported_then_repaired() {
     assert!(matches!(err, SearchError::InvalidEdgeCost { from: 1, to: 2, .. }), "{err:?}");
     assert_eq!(planner.cost(), Some(5.0)); // the NaN edge counted as absent
     graph.cost[1][2] = 1.0;
-    planner.update_edges(&graph, &[EdgeChange { from: 1, to: 2, old_cost: f64::INFINITY }]).unwrap();
+    planner.update_edges(&graph, &[EdgeChange::new(1, 2)]).unwrap();
     planner.compute_shortest_path(&graph).unwrap();
     assert_eq!(planner.cost(), Some(2.0));
     assert_eq!(planner.path(&graph).unwrap().nodes, [0, 1, 2]);
@@ -490,7 +490,7 @@ fn zero_cost_edges_are_refused() {
     let mut planner = DStarLite::new(&graph, 0, 1, zero).unwrap();
     planner.compute_shortest_path(&graph).unwrap();
     graph.cost[0][1] = 0.0;
-    let change = EdgeChange { from: 0, to: 1, old_cost: 1.0 };
+    let change = EdgeChange::new(0, 1);
     assert_eq!(planner.update_edges(&graph, &[change]), Err(SearchError::ZeroCostEdge { from: 0, to: 1 }));
     let mut fresh = LpaStar::new(&graph, 0, 1, zero).unwrap();
     assert_eq!(fresh.compute_shortest_path(&graph), Err(SearchError::ZeroCostEdge { from: 0, to: 1 }));

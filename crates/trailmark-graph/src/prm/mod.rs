@@ -244,7 +244,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     }
 
     /// Adds an obstacle (checked like the world's) and blocks the edges it collides with.
-    /// Returns the changed edges with their old costs, in both directions for an undirected
+    /// Returns the changed edges, in both directions for an undirected
     /// roadmap, for [`DStarLite::update_edges`](https://docs.rs/trailmark-search) after the
     /// change. Nodes inside the obstacle stay, with all their edges blocked.
     pub fn add_obstacle(&mut self, vertices: Vec<Point>) -> Result<Vec<EdgeChange<u32>>, PrmError> {
@@ -258,7 +258,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
             if cost.is_finite() && self.local_path(&alone, a, b).is_none() {
                 self.candidates[id].cost = Cost::INFINITY;
                 self.edge_count -= 1;
-                self.report(&mut changes, a, b, cost);
+                self.report(&mut changes, a, b);
             }
         }
         self.rebuild_components();
@@ -266,7 +266,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     }
 
     /// Removes obstacle `index` (later obstacles move down by one) and restores the edges it
-    /// alone blocked. Returns the changed edges (old cost infinite), as
+    /// alone blocked. Returns the changed edges, as
     /// [`add_obstacle`](Self::add_obstacle) does.
     pub fn remove_obstacle(&mut self, index: usize) -> Result<Vec<EdgeChange<u32>>, PrmError> {
         let count = self.checker.world().obstacles().len();
@@ -283,7 +283,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
             {
                 self.candidates[id].cost = c;
                 self.edge_count += 1;
-                self.report(&mut changes, a, b, Cost::INFINITY);
+                self.report(&mut changes, a, b);
             }
         }
         self.rebuild_components();
@@ -496,10 +496,10 @@ impl<S: PlanarSpace> PolygonPrm<S> {
         self.connect(checker, self.nearest.state(from), self.nearest.state(to))
     }
 
-    fn report(&self, changes: &mut Vec<EdgeChange<u32>>, a: u32, b: u32, old_cost: Cost) {
-        changes.push(EdgeChange { from: a, to: b, old_cost });
+    fn report(&self, changes: &mut Vec<EdgeChange<u32>>, a: u32, b: u32) {
+        changes.push(EdgeChange::new(a, b));
         if S::SYMMETRIC {
-            changes.push(EdgeChange { from: b, to: a, old_cost });
+            changes.push(EdgeChange::new(b, a));
         }
     }
 

@@ -12,6 +12,7 @@ use trailmark_core::termination::{Stop, Termination, Watch};
 
 use crate::anytime::{AnytimeResult, EpsilonSchedule, Iteration};
 use crate::error::SearchError;
+use crate::heuristic::Heuristic;
 use crate::incremental::EdgeChange;
 use crate::incremental::engine::SearchDirection;
 use crate::incremental::mode::Anytime;
@@ -87,7 +88,6 @@ pub struct AdStar<N: Debug, H> {
 impl<N, H> AdStar<N, H>
 where
     N: Copy + Eq + Hash + Debug,
-    H: FnMut(N, N) -> Cost,
 {
     /// A planner from `start` to `goal` with `heuristic(a, b)` a consistent lower bound on the
     /// cost from `a` to `b`, and the inflation `schedule`. Errors when an endpoint is not a node
@@ -101,6 +101,7 @@ where
     ) -> Result<Self, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         schedule.check()?;
         let planner = LifelongPlanner::new(
@@ -133,6 +134,7 @@ where
     pub fn reset<G>(&mut self, graph: &G, start: N, goal: N) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.planner.reset(graph, start, goal)?;
         self.planner.engine.set_epsilon(self.schedule.initial);
@@ -194,6 +196,7 @@ where
     ) -> Result<AnytimeResult<N>, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.iterate(graph, &termination.into(), usize::MAX)
     }
@@ -204,6 +207,7 @@ where
     pub fn improve_once<G>(&mut self, graph: &G) -> Result<AnytimeResult<N>, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.iterate(graph, &Termination::unlimited(), 1)
     }
@@ -216,6 +220,7 @@ where
     ) -> Result<AnytimeResult<N>, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         let mut watch = Watch::start(termination);
         watch.begin_iteration();
@@ -338,10 +343,10 @@ where
     }
 
     /// Tells the planner that these edges changed cost; see [`DStarLite::update_edges`](crate::DStarLite::update_edges)
-    /// (the old costs are checked but not relied on).
     pub fn update_edges<G>(&mut self, graph: &G, changes: &[EdgeChange<N>]) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.planner.update_edges(graph, changes)?;
         self.changes += changes.len();
@@ -360,6 +365,7 @@ where
     ) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         let told = self.planner.update_nodes(graph, nodes)?;
         self.changes += told;
@@ -406,7 +412,7 @@ where
 impl<G, H> Replanner<G> for AdStar<G::Node, H>
 where
     G: Successors + Predecessors + IndexedGraph + ?Sized,
-    H: FnMut(G::Node, G::Node) -> Cost,
+    H: Heuristic<G>,
 {
     fn update_edges(
         &mut self,

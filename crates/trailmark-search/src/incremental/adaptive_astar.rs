@@ -18,6 +18,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
+use crate::heuristic::Heuristic;
 use crate::incremental::EdgeChange;
 use crate::incremental::path_reuse::PathReuse;
 use crate::incremental::repeated_astar::RepeatedAStar;
@@ -67,7 +68,6 @@ pub struct AdaptiveAStar<N, H> {
 impl<N, H> AdaptiveAStar<N, H>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
-    H: FnMut(N, N) -> Cost,
 {
     /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent estimate of the
     /// cost from `a` to `b` (the grid heuristics are). Nothing is searched until
@@ -75,6 +75,7 @@ where
     pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
     where
         G: IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         let mut base = RepeatedAStar::new(graph, start, goal, heuristic)?;
         base.search.expanded_log = Some(Vec::new());
@@ -117,8 +118,12 @@ where
     }
 
     /// The heuristic of `node` (index `i`): the larger of the given and the learned one.
-    fn h_at(learned: &[Cost], heuristic: &mut H, node: N, i: usize, goal: N) -> Cost {
-        heuristic(node, goal).max(learned.get(i).copied().unwrap_or(0.0))
+    fn h_at<G>(graph: &G, learned: &[Cost], heuristic: &mut H, node: N, i: usize, goal: N) -> Cost
+    where
+        G: IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
+    {
+        heuristic.estimate(graph, node, goal).max(learned.get(i).copied().unwrap_or(0.0))
     }
 
     /// Lowers the learned value of `x` (index `i`) where an edge out of it makes it too large:
@@ -131,6 +136,7 @@ where
     fn relax_out<G>(&mut self, graph: &G, x: N, i: usize)
     where
         G: Successors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         let goal = self.base.goal();
         let relax = x != goal && self.learned[i] != 0.0;
@@ -146,7 +152,7 @@ where
                 *kept |= *n == j && reuse.step_is(i, c);
             }
             if relax && c + learned[j] < hx.min(best.0) {
-                let through = c + Self::h_at(learned, heuristic, v, j, goal);
+                let through = c + Self::h_at(graph, learned, heuristic, v, j, goal);
                 if through < best.0 {
                     best = (through, j, c);
                 }
@@ -167,9 +173,10 @@ where
     fn relax_into<G>(&mut self, graph: &G, x: N, i: usize, check: bool)
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         let goal = self.base.goal();
-        let hx = Self::h_at(&self.learned, &mut self.base.heuristic, x, i, goal);
+        let hx = Self::h_at(graph, &self.learned, &mut self.base.heuristic, x, i, goal);
         let AdaptiveAStar { learned, repair, reuse, .. } = self;
         graph.for_each_predecessor_index(i, |k, p, c| {
             if let Some(reuse) = reuse.as_mut().filter(|_| check)
@@ -211,6 +218,7 @@ where
     fn restore_consistency<G>(&mut self, graph: &G)
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         if self.learned.len() < graph.node_bound() {
             self.learned.resize(graph.node_bound(), 0.0);
@@ -245,7 +253,7 @@ where
 impl<G, H> Replanner<G> for AdaptiveAStar<G::Node, H>
 where
     G: Successors + Predecessors + IndexedGraph + ?Sized,
-    H: FnMut(G::Node, G::Node) -> Cost,
+    H: Heuristic<G>,
 {
     fn update_edges(
         &mut self,
@@ -276,7 +284,7 @@ where
         let goal_slot = graph.index_of(goal);
         let (learned, base) = (&self.learned, &mut self.base);
         let heuristic = &mut base.heuristic;
-        let h = |n| Self::h_at(learned, heuristic, n, graph.index_of(n), goal);
+        let h = |n| Self::h_at(graph, learned, heuristic, n, graph.index_of(n), goal);
         let found = match self.reuse.as_mut() {
             None => base.search.astar(graph, start, goal, h)?,
             Some(reuse) => base

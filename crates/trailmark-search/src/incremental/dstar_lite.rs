@@ -8,6 +8,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
+use crate::heuristic::Heuristic;
 use crate::incremental::engine::SearchDirection;
 use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
 use crate::incremental::replanner::replanner_by_inherent_methods;
@@ -22,8 +23,8 @@ use crate::incremental::replanner::replanner_by_inherent_methods;
 /// `GridGraph::heuristic_between`).
 ///
 /// The planner holds no reference to the graph: each call takes the graph as it is now. After
-/// changing the graph, tell the planner which edges changed ([`DStarLite::update_edges`], with
-/// their old costs) or which nodes had edges change ([`DStarLite::update_nodes`]), then call
+/// changing the graph, tell the planner which edges changed ([`DStarLite::update_edges`]: their
+/// endpoints, no old costs) or which nodes had edges change ([`DStarLite::update_nodes`]), then call
 /// [`DStarLite::compute_shortest_path`] again. Search state is dense, one slot per node index.
 ///
 /// ```
@@ -59,7 +60,6 @@ pub struct DStarLite<N: Debug, H> {
 impl<N, H> DStarLite<N, H>
 where
     N: Copy + Eq + Hash + Debug,
-    H: FnMut(N, N) -> Cost,
 {
     shared_lifelong_methods!(SearchDirection::Backward);
 
@@ -84,6 +84,7 @@ where
     ) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.planner.update_nodes(graph, nodes).map(|_| ())
     }

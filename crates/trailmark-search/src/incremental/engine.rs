@@ -412,12 +412,11 @@ impl<N: Copy + Eq + std::hash::Hash + Debug, M: Mode> RepairEngine<N, M> {
     /// edge joins `dependent` (whose `rhs` it enters) and `support` (whose `g` it carries). Only
     /// the dependent's `rhs` can change.
     ///
-    /// The edge's old cost is not used, so a caller who gives a wrong one cannot mislead the
-    /// repair (the papers' test "was the old edge the best?" trusts it): when the edge now offers
-    /// less than the dependent's `rhs`, that is the new `rhs`; when it offers the same, nothing
-    /// changes; when it offers more, it may have been the best before and got dearer, and `rhs`
-    /// is recomputed from all of the dependent's edges. With a right old cost this does what
-    /// the papers' version does (the same values, the same queue), at the price of a
+    /// The edge's old cost is not needed (the papers' test "was the old edge the best?" asks for
+    /// it): when the edge now offers less than the dependent's `rhs`, that is the new `rhs`; when
+    /// it offers the same, nothing changes; when it offers more, it may have been the best before
+    /// and got dearer, and `rhs` is recomputed from all of the dependent's edges. This gives what
+    /// the papers' version gives (the same values, the same queue), at the price of a
     /// recomputation for an edge that got dearer without being the best.
     pub fn edge_changed<G>(
         &mut self,

@@ -8,6 +8,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
+use crate::heuristic::Heuristic;
 use crate::incremental::engine::SearchDirection;
 use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
 use crate::incremental::replanner::replanner_by_inherent_methods;
@@ -54,7 +55,6 @@ pub struct LpaStar<N: Debug, H> {
 impl<N, H> LpaStar<N, H>
 where
     N: Copy + Eq + Hash + Debug,
-    H: FnMut(N, N) -> Cost,
 {
     shared_lifelong_methods!(SearchDirection::Forward);
 
@@ -70,6 +70,7 @@ where
     ) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.planner.update_nodes(graph, nodes).map(|_| ())
     }
@@ -90,6 +91,7 @@ where
     pub fn move_start<G>(&mut self, graph: &G, to: N) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         if to == self.planner.start {
             return Ok(());

@@ -8,6 +8,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
+use crate::heuristic::Heuristic;
 use crate::incremental::EdgeChange;
 use crate::incremental::adaptive_astar::AdaptiveAStar;
 use crate::incremental::path_reuse::PathReuse;
@@ -53,7 +54,6 @@ pub struct MpgaaStar<N, H>(AdaptiveAStar<N, H>);
 impl<N, H> MpgaaStar<N, H>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
-    H: FnMut(N, N) -> Cost,
 {
     /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent estimate of the
     /// cost from `a` to `b` (the grid heuristics are). Nothing is searched until
@@ -61,6 +61,7 @@ where
     pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
     where
         G: IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         let mut planner = AdaptiveAStar::new(graph, start, goal, heuristic)?;
         planner.reuse = Some(PathReuse::new(graph.node_bound()));
@@ -96,7 +97,7 @@ where
 impl<G, H> Replanner<G> for MpgaaStar<G::Node, H>
 where
     G: Successors + Predecessors + IndexedGraph + ?Sized,
-    H: FnMut(G::Node, G::Node) -> Cost,
+    H: Heuristic<G>,
 {
     fn update_edges(
         &mut self,

@@ -8,7 +8,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::{SearchError, check_endpoints};
-use crate::heuristic::HeuristicCheck;
+use crate::heuristic::{Heuristic, HeuristicCheck};
 use crate::incremental::engine::{RepairEngine, SearchDirection, cost_error, valid_cost};
 use crate::incremental::mode::{Anytime, Exact, Mode};
 use crate::incremental::{EdgeChange, Expansion, Key};
@@ -57,7 +57,6 @@ pub(crate) struct LifelongPlanner<N: Debug, H, M = Exact> {
 impl<N, H, M> LifelongPlanner<N, H, M>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
-    H: FnMut(N, N) -> Cost,
     M: Mode,
 {
     /// A planner in direction `dir` whose engine treats expanded nodes as `mode` says.
@@ -71,6 +70,7 @@ where
     ) -> Result<Self, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         check_endpoints(graph, start, goal)?;
         let source = if dir == SearchDirection::Backward { goal } else { start };
@@ -101,6 +101,7 @@ where
     pub fn reset<G>(&mut self, graph: &G, start: N, goal: N) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         check_endpoints(graph, start, goal)?;
         let source = if self.engine.dir == SearchDirection::Backward { goal } else { start };
@@ -134,14 +135,19 @@ where
     /// Should `k_m` overflow (or a hostile heuristic make it infinite), it starts again from 0
     /// and every queued key is recomputed from the current start, which is what `k_m` exists to
     /// avoid, and exact.
-    fn engine_with_heuristic<G>(&mut self, graph: &G) -> (&mut RepairEngine<N, M>, impl FnMut(N) -> Cost + '_)
+    fn engine_with_heuristic<'a, G>(
+        &'a mut self,
+        graph: &'a G,
+    ) -> (&'a mut RepairEngine<N, M>, impl FnMut(N) -> Cost + 'a)
     where
         G: IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         let LifelongPlanner { engine, heuristic, start, goal, last, k_m, heuristics, h_overflow, .. } = self;
         let backward = engine.dir == SearchDirection::Backward;
-        let mut estimate =
-            move |a: N, b: N| heuristics.accept(if backward { b } else { a }, heuristic(a, b)).unwrap_or(0.0);
+        let mut estimate = move |a: N, b: N| {
+            heuristics.accept(if backward { b } else { a }, heuristic.estimate(graph, a, b)).unwrap_or(0.0)
+        };
         let mut rekey = false;
         if backward && M::KEY_MODIFIER && *last != *start {
             let moved = *k_m + estimate(*last, *start);
@@ -179,6 +185,7 @@ where
     ) -> Result<SearchStats, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.run(graph, trace, &mut |_| false).map(|(_, stats)| stats)
     }
@@ -192,6 +199,7 @@ where
     ) -> Result<(bool, SearchStats), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         let clock = std::time::Instant::now();
         check_endpoints(graph, self.start, self.goal)?;
@@ -237,19 +245,18 @@ where
     pub fn update_edges<G>(&mut self, graph: &G, changes: &[EdgeChange<N>]) -> Result<(), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.engine.fit(graph)?;
         let slots = changes
             .iter()
             .map(|c| {
                 let slots = (self.engine.slot_of(graph, c.from)?, self.engine.slot_of(graph, c.to)?);
+                // The repair reads the new cost from the graph and needs no old one (see
+                // `RepairEngine::edge_changed`).
                 let new = edge_cost(graph, c.from, c.to);
-                // The old cost is checked (one that cannot be a cost says the caller is confused)
-                // but not used: the repair reads the graph (see `RepairEngine::edge_changed`).
-                for cost in [c.old_cost, new] {
-                    if !valid_cost(cost) {
-                        return Err(cost_error(c.from, c.to, cost));
-                    }
+                if !valid_cost(new) {
+                    return Err(cost_error(c.from, c.to, new));
                 }
                 Ok((slots, new))
             })
@@ -273,6 +280,7 @@ where
     ) -> Result<usize, SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.engine.fit(graph)?;
         let slots =
@@ -339,7 +347,6 @@ where
 impl<N, H> LifelongPlanner<N, H, Anytime>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
-    H: FnMut(N, N) -> Cost,
 {
     /// AD*: one pass of the repair loop at the current inflation, from the current start,
     /// stopped early when `interrupt(expansions)` says so. Returns whether the pass completed,
@@ -351,6 +358,7 @@ where
     ) -> Result<(bool, SearchStats), SearchError<N>>
     where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.run(graph, |_| {}, interrupt)
     }
@@ -359,6 +367,7 @@ where
     pub fn next_iteration<G>(&mut self, graph: &G, epsilon: f64)
     where
         G: IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         self.engine.set_epsilon(epsilon);
         let (engine, mut h) = self.engine_with_heuristic(graph);
@@ -379,6 +388,7 @@ macro_rules! shared_lifelong_methods {
         pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, $crate::SearchError<N>>
         where
             G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+            H: $crate::Heuristic<G>,
         {
             let mode = $crate::incremental::mode::Exact;
             let planner = $crate::incremental::planner::LifelongPlanner::new(
@@ -393,6 +403,7 @@ macro_rules! shared_lifelong_methods {
         pub fn reset<G>(&mut self, graph: &G, start: N, goal: N) -> Result<(), $crate::SearchError<N>>
         where
             G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+            H: $crate::Heuristic<G>,
         {
             self.planner.reset(graph, start, goal)
         }
@@ -415,6 +426,7 @@ macro_rules! shared_lifelong_methods {
         ) -> Result<$crate::SearchStats, $crate::SearchError<N>>
         where
             G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+            H: $crate::Heuristic<G>,
         {
             self.planner.compute(graph, |_| {})
         }
@@ -428,18 +440,19 @@ macro_rules! shared_lifelong_methods {
         ) -> Result<$crate::SearchStats, $crate::SearchError<N>>
         where
             G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+            H: $crate::Heuristic<G>,
         {
             self.planner.compute(graph, trace)
         }
 
         /// Tells the planner that these edges changed cost (the graph already has the new
-        /// costs). All are checked before any is applied: a node that names nothing, or an old
-        /// cost that is negative, zero or NaN, is an error and the planner is left as it was.
+        /// costs). All are checked before any is applied: a node that names nothing, or a new
+        /// cost in the graph that is negative or NaN, is an error and the planner is left as it
+        /// was.
         ///
-        /// The repair does not rely on [`EdgeChange::old_cost`](crate::EdgeChange::old_cost): it
-        /// reads each edge's cost from the graph, and when the edge could have been the best way
-        /// out of its node before, recomputes that node's value from all of its edges. A wrong
-        /// (but valid) old cost therefore costs at most a little work, never a wrong path cost.
+        /// The old cost is not needed: the repair reads each edge's cost from the graph, and
+        /// when the edge could have been the best way out of its node before, recomputes that
+        /// node's value from all of its edges.
         pub fn update_edges<G>(
             &mut self,
             graph: &G,
@@ -447,6 +460,7 @@ macro_rules! shared_lifelong_methods {
         ) -> Result<(), $crate::SearchError<N>>
         where
             G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+            H: $crate::Heuristic<G>,
         {
             self.planner.update_edges(graph, changes)
         }

@@ -7,6 +7,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::{SearchError, check_endpoints};
+use crate::heuristic::Heuristic;
 use crate::incremental::EdgeChange;
 use crate::incremental::replanner::Replanner;
 use crate::one_shot::workspace::Search;
@@ -46,7 +47,6 @@ pub struct RepeatedAStar<N, H> {
 impl<N, H> RepeatedAStar<N, H>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
-    H: FnMut(N, N) -> Cost,
 {
     /// A planner from `start` to `goal`, with `heuristic(a, b)` an admissible estimate of the
     /// cost from `a` to `b`. Nothing is searched until [`plan`](Replanner::plan). Errors when
@@ -54,6 +54,7 @@ where
     pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
     where
         G: IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
     {
         check_endpoints(graph, start, goal)?;
         Ok(RepeatedAStar {
@@ -107,7 +108,7 @@ where
 impl<G, H> Replanner<G> for RepeatedAStar<G::Node, H>
 where
     G: Successors + Predecessors + IndexedGraph + ?Sized,
-    H: FnMut(G::Node, G::Node) -> Cost,
+    H: Heuristic<G>,
 {
     fn update_edges(
         &mut self,
@@ -131,7 +132,7 @@ where
 
     fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
         let (heuristic, goal) = (&mut self.heuristic, self.goal);
-        let found = self.search.astar(graph, self.start, goal, |n| heuristic(n, goal))?;
+        let found = self.search.astar(graph, self.start, goal, |n| heuristic.estimate(graph, n, goal))?;
         let stats = found.stats;
         self.path = found.path;
         self.totals += stats;

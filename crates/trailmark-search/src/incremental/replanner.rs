@@ -69,8 +69,9 @@ where
     G: Successors + Predecessors + IndexedGraph + ?Sized,
 {
     /// Tells the planner that these edges changed cost since its last plan (the graph already
-    /// has the new costs). Errors, applying nothing, when a change names no node of the graph
-    /// (and, for the incremental planners, when an old cost is not a positive number).
+    /// has the new costs; the old ones are not needed). Errors, applying nothing, when a change
+    /// names no node of the graph (and, for the incremental planners, when a new cost is negative
+    /// or NaN).
     fn update_edges(
         &mut self,
         graph: &G,
@@ -124,7 +125,7 @@ macro_rules! replanner_by_inherent_methods {
         impl<G, H> $crate::incremental::replanner::Replanner<G> for $planner<G::Node, H>
         where
             G: Successors + Predecessors + IndexedGraph + ?Sized,
-            H: FnMut(G::Node, G::Node) -> Cost,
+            H: $crate::Heuristic<G>,
         {
             fn update_edges(
                 &mut self,

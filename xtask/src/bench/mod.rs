@@ -162,7 +162,8 @@ impl MapInfo {
 impl BenchReport {
     /// The goals table's rows, each from its section.
     fn goals(&self) -> Vec<GoalRow> {
-        let mut goals = vec![grid::goal(&self.ratios), navigation::goal(&self.navigation_ratios)];
+        let mut goals = vec![grid::goal(&self.ratios)];
+        goals.extend(navigation::goals(&self.navigation_ratios));
         goals.extend(navigation::best_goals(&self.replanner_ratios));
         goals.push(rosmaps::goal(&self.rosmaps));
         goals.extend(sampling::goals(self.sampling.as_ref()));

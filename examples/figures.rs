@@ -111,6 +111,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     write("navigate-dstar-lite.svg", dstar.svg(&truth, Some(goal)))?;
 
     write("core-dubins.svg", dubins_words()?)?;
+    write("core-reeds-shepp.svg", reeds_shepp_parking()?)?;
     roadmaps()?;
     bridge_samples()?;
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -332,6 +333,96 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
 }
 
 /// The six Dubins words between two poses a few turning radii apart, the shortest drawn bold.
+/// A pose in a figure: a dot at pixel `(x, y)`, a stroke along `heading`, and its name.
+fn pose_marker((x, y): (f64, f64), heading: f64, name: &str) -> String {
+    let (tx, ty) = (x + 24.0 * heading.cos(), y - 24.0 * heading.sin());
+    format!(
+        "<circle cx=\"{x:.1}\" cy=\"{y:.1}\" r=\"5\"/><line x1=\"{x:.1}\" y1=\"{y:.1}\" x2=\"{tx:.1}\" y2=\"{ty:.1}\" stroke=\"black\" stroke-width=\"2.5\"/><text x=\"{:.1}\" y=\"{:.1}\">{name}</text>\n",
+        x + 8.0,
+        y + 18.0
+    )
+}
+
+/// Parallel parking: the shortest Reeds-Shepp path (forward pieces solid, reverse pieces dashed,
+/// cusps in red) beside the shortest Dubins path (grey) between the same poses.
+fn reeds_shepp_parking() -> Result<String, Box<dyn std::error::Error>> {
+    use std::fmt::Write;
+    use trailmark::core::dubins::DubinsPath;
+    use trailmark::core::geometry::{Pose, Vector};
+    use trailmark::core::reeds_shepp::{Gear, ReedsSheppPath};
+
+    let start = Pose::new(Vector::new(0.0, 0.0), 0.0);
+    let goal = Pose::new(Vector::new(0.6, 1.2), 0.0);
+    let path = ReedsSheppPath::shortest(&start, &goal, 1.0)?;
+    let dubins = DubinsPath::shortest(&start, &goal, 1.0)?;
+    // World window [-1.2, 3] x [-0.8, 3.3], 100 pixels a unit, y up.
+    let (scale, x0, y1) = (100.0, -1.2, 3.3);
+    let px = |x: f64, y: f64| ((x - x0) * scale, (y1 - y) * scale);
+    let mut svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0}\" height=\"{:.0}\" font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+        4.2 * scale + 250.0,
+        4.1 * scale
+    );
+    let polyline = |poses: &[Pose]| -> String {
+        poses
+            .iter()
+            .map(|p| {
+                let (x, y) = px(p.translation.vector.x, p.translation.vector.y);
+                format!("{x:.1},{y:.1}")
+            })
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    writeln!(
+        svg,
+        "<polyline fill=\"none\" stroke=\"#999\" stroke-width=\"1.6\" points=\"{}\"/>",
+        polyline(&dubins.sample(0.02)?)
+    )?;
+    // Each piece on its own, solid forward and dashed in reverse.
+    let mut driven = 0.0;
+    for segment in path.segments() {
+        let steps = (segment.length / 0.02).ceil().max(1.0) as usize;
+        let poses: Vec<Pose> = (0..=steps)
+            .map(|k| path.pose_at((driven + segment.length * k as f64 / steps as f64).min(path.length())))
+            .collect::<Result<_, _>>()?;
+        let dash = if segment.gear == Gear::Reverse { " stroke-dasharray=\"8 5\"" } else { "" };
+        writeln!(
+            svg,
+            "<polyline fill=\"none\" stroke=\"#1b6ac9\" stroke-width=\"3.5\"{dash} points=\"{}\"/>",
+            polyline(&poses)
+        )?;
+        driven += segment.length;
+    }
+    for s in path.cusps() {
+        let p = path.pose_at(s)?;
+        let (x, y) = px(p.translation.vector.x, p.translation.vector.y);
+        writeln!(svg, "<circle cx=\"{x:.1}\" cy=\"{y:.1}\" r=\"6\" fill=\"#d7301f\"/>")?;
+    }
+    for (pose, name) in [(&start, "start"), (&goal, "goal")] {
+        svg.push_str(&pose_marker(
+            px(pose.translation.vector.x, pose.translation.vector.y),
+            pose.rotation.angle(),
+            name,
+        ));
+    }
+    let legend = [
+        ("#1b6ac9", format!("Reeds-Shepp {path}, {:.3}", path.length())),
+        ("#d7301f", format!("{} cusp(s): the car changes gear", path.cusps().len())),
+        ("#999", format!("Dubins {}, {:.3}", dubins.word(), dubins.length())),
+    ];
+    for (i, (colour, text)) in legend.iter().enumerate() {
+        writeln!(
+            svg,
+            "<text x=\"{:.0}\" y=\"{:.0}\" fill=\"{colour}\">{text}</text>",
+            4.2 * scale + 10.0,
+            24.0 + 20.0 * i as f64
+        )?;
+    }
+    println!("reeds-shepp {path}: length {:.3}, dubins {:.3}", path.length(), dubins.length());
+    svg.push_str("</svg>\n");
+    Ok(svg)
+}
+
 fn dubins_words() -> Result<String, Box<dyn std::error::Error>> {
     use std::fmt::Write;
     use trailmark::core::dubins::{DubinsPath, DubinsWord};
@@ -381,15 +472,11 @@ fn dubins_words() -> Result<String, Box<dyn std::error::Error>> {
         )?;
     }
     for (pose, name) in [(&start, "start"), (&goal, "goal")] {
-        let (x, y) = px(pose.translation.vector.x, pose.translation.vector.y);
-        let h = pose.rotation.angle();
-        let (tx, ty) = (x + 24.0 * h.cos(), y - 24.0 * h.sin());
-        writeln!(
-            svg,
-            "<circle cx=\"{x:.1}\" cy=\"{y:.1}\" r=\"5\"/><line x1=\"{x:.1}\" y1=\"{y:.1}\" x2=\"{tx:.1}\" y2=\"{ty:.1}\" stroke=\"black\" stroke-width=\"2.5\"/><text x=\"{:.1}\" y=\"{:.1}\">{name}</text>",
-            x + 8.0,
-            y + 18.0
-        )?;
+        svg.push_str(&pose_marker(
+            px(pose.translation.vector.x, pose.translation.vector.y),
+            pose.rotation.angle(),
+            name,
+        ));
     }
     svg.push_str("</svg>\n");
     Ok(svg)

@@ -1,5 +1,5 @@
 //! The vocabulary shared by every trailmark crate: geometry, costs, graph traits, grids,
-//! polygon worlds and their free space, Dubins curves, MovingAI benchmark files, SVG
+//! polygon worlds and their free space, Dubins and Reeds-Shepp curves, MovingAI benchmark files, SVG
 //! pictures, and when a long-running planner stops ([`termination`]).
 //!
 //! Algorithms (`trailmark-search`) and graph builders (`trailmark-graph`) both depend on this
@@ -36,6 +36,7 @@ pub mod movingai;
 pub mod path;
 pub mod predicates;
 pub mod read;
+pub mod reeds_shepp;
 pub mod smooth;
 pub mod svg;
 pub mod termination;

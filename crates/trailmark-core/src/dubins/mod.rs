@@ -322,7 +322,7 @@ impl TryFrom<RawPath> for DubinsPath {
 /// the heading. The heading's angle is taken only when the path is evaluated, so finding a
 /// path costs no `atan2` for it. Serialized as `[x, y, heading]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Start {
+pub(crate) struct Start {
     x: f64,
     y: f64,
     cos: f64,
@@ -330,17 +330,17 @@ struct Start {
 }
 
 impl Start {
-    fn of(pose: &Pose) -> Self {
+    pub(crate) fn of(pose: &Pose) -> Self {
         let v = pose.translation.vector;
         Start { x: v.x, y: v.y, cos: pose.rotation.re, sin: pose.rotation.im }
     }
 
     /// `[x, y, heading]`, the heading in `[0, 2π)`.
-    fn array(&self) -> [f64; 3] {
+    pub(crate) fn array(&self) -> [f64; 3] {
         [self.x, self.y, mod_tau(self.sin.atan2(self.cos))]
     }
 
-    fn pose(&self) -> Pose {
+    pub(crate) fn pose(&self) -> Pose {
         let rotation = nalgebra::UnitComplex::from_cos_sin_unchecked(self.cos, self.sin);
         Pose::from_parts(nalgebra::Translation2::new(self.x, self.y), rotation)
     }
@@ -366,7 +366,7 @@ impl<'de> Deserialize<'de> for Start {
 /// a few turns of the range, where a loop of additions beats a division and a call to `floor`;
 /// others take the remainder, so no argument makes the loop long.
 #[inline]
-fn mod_tau(mut x: f64) -> f64 {
+pub(crate) fn mod_tau(mut x: f64) -> f64 {
     if x.is_nan() || x.abs() > 8.0 * TAU {
         let r = x.rem_euclid(TAU);
         return if r < TAU { r } else { 0.0 };
@@ -380,11 +380,11 @@ fn mod_tau(mut x: f64) -> f64 {
     x
 }
 
-fn check_radius(radius: f64) -> Result<(), DubinsError> {
+pub(crate) fn check_radius(radius: f64) -> Result<(), DubinsError> {
     if radius > 0.0 && radius <= MAX_MAGNITUDE { Ok(()) } else { Err(DubinsError::InvalidRadius(radius)) }
 }
 
-fn check_pose(which: &'static str, pose: &Pose) -> Result<(), DubinsError> {
+pub(crate) fn check_pose(which: &'static str, pose: &Pose) -> Result<(), DubinsError> {
     let (x, y) = (pose.translation.vector.x, pose.translation.vector.y);
     let (cos, sin) = (pose.rotation.re, pose.rotation.im);
     let in_range = x.abs() <= MAX_MAGNITUDE && y.abs() <= MAX_MAGNITUDE;
@@ -393,9 +393,26 @@ fn check_pose(which: &'static str, pose: &Pose) -> Result<(), DubinsError> {
     if in_range && unit { Ok(()) } else { Err(DubinsError::NonFinitePose { which, x, y, cos, sin }) }
 }
 
-/// The pose after driving `length` (world units) along `turn` from `(x, y, heading)`.
+/// The checks of a query between two poses (the radius, each pose, and their distance in
+/// radii), then the vector from the start to the goal and its length.
+pub(crate) fn checked_offset(start: &Pose, goal: &Pose, radius: f64) -> Result<(Vector, f64), DubinsError> {
+    check_radius(radius)?;
+    check_pose("start", start)?;
+    check_pose("goal", goal)?;
+    let delta = goal.translation.vector - start.translation.vector;
+    // Finite, both positions being within MAX_MAGNITUDE; by `hypot`, since the plain norm
+    // squares the components and overflows beyond 1e154.
+    let distance = delta.x.hypot(delta.y);
+    if distance / radius > MAX_NORMALISED_DISTANCE {
+        return Err(DubinsError::OutOfScale { distance, radius });
+    }
+    Ok((delta, distance))
+}
+
+/// The pose after driving `length` (world units, negative in reverse) along `turn` from
+/// `(x, y, heading)`.
 #[inline]
-fn advance(pose: [f64; 3], turn: Turn, length: f64, radius: f64) -> [f64; 3] {
+pub(crate) fn advance(pose: [f64; 3], turn: Turn, length: f64, radius: f64) -> [f64; 3] {
     let [x, y, h] = pose;
     match turn {
         Turn::Straight => [x + length * h.cos(), y + length * h.sin(), h],
@@ -410,8 +427,49 @@ fn advance(pose: [f64; 3], turn: Turn, length: f64, radius: f64) -> [f64; 3] {
     }
 }
 
-fn to_pose([x, y, h]: [f64; 3]) -> Pose {
+pub(crate) fn to_pose([x, y, h]: [f64; 3]) -> Pose {
     Pose::new(Vector::new(x, y), h)
+}
+
+/// Why a path of Dubins or Reeds-Shepp pieces could not be sampled.
+pub(crate) enum SampleFault {
+    /// The step is not positive and finite.
+    InvalidStep,
+    /// More than [`MAX_SAMPLES`] poses.
+    TooMany,
+}
+
+/// Poses every `step` world units along a path of `length` (`at(s)` the pose `[x, y, heading]`
+/// at arc length `s`), then `end`: `ceil(length / step) + 1` poses, counted before anything is
+/// allocated.
+pub(crate) fn sample_arc_length(
+    length: f64,
+    step: f64,
+    at: impl Fn(f64) -> [f64; 3],
+    end: Pose,
+) -> Result<Vec<Pose>, SampleFault> {
+    if !(step > 0.0 && step.is_finite()) {
+        return Err(SampleFault::InvalidStep);
+    }
+    let count = (length / step).ceil() + 1.0;
+    // The loop below makes at most one pose more than `count` (when `k * step` rounds below
+    // the length), so MAX_SAMPLES - 1 leaves room. (A path's length is finite.)
+    if count.is_nan() || count >= MAX_SAMPLES as f64 {
+        return Err(SampleFault::TooMany);
+    }
+    // In range: count < MAX_SAMPLES.
+    let mut poses = Vec::with_capacity(count as usize + 1);
+    let mut k = 0u64;
+    loop {
+        let s = k as f64 * step;
+        if s >= length {
+            break;
+        }
+        poses.push(to_pose(at(s)));
+        k += 1;
+    }
+    poses.push(end);
+    Ok(poses)
 }
 
 impl DubinsPath {
@@ -496,30 +554,13 @@ impl DubinsPath {
     /// [`DubinsError::TooManySamples`] when that would be more than [`MAX_SAMPLES`] poses
     /// (checked before anything is allocated).
     pub fn sample(&self, step: f64) -> Result<Vec<Pose>, DubinsError> {
-        if !(step > 0.0 && step.is_finite()) {
-            return Err(DubinsError::InvalidStep(step));
-        }
-        let length = self.length();
-        let count = (length / step).ceil() + 1.0;
-        // The loop below makes at most one pose more than `count` (when `k * step` rounds
-        // below the length), so MAX_SAMPLES - 1 leaves room. (A path's length is finite.)
-        if count.is_nan() || count >= MAX_SAMPLES as f64 {
-            return Err(DubinsError::TooManySamples { length, step });
-        }
         let start = self.start.array();
-        // In range: count < MAX_SAMPLES.
-        let mut poses = Vec::with_capacity(count as usize + 1);
-        let mut k = 0u64;
-        loop {
-            let s = k as f64 * step;
-            if s >= length {
-                break;
-            }
-            poses.push(to_pose(self.pose_array_at(start, s)));
-            k += 1;
-        }
-        poses.push(self.end());
-        Ok(poses)
+        sample_arc_length(self.length(), step, |s| self.pose_array_at(start, s), self.end()).map_err(
+            |fault| match fault {
+                SampleFault::InvalidStep => DubinsError::InvalidStep(step),
+                SampleFault::TooMany => DubinsError::TooManySamples { length: self.length(), step },
+            },
+        )
     }
 
     /// The first `s` world units of the path, `0 <= s <= length()`: a path with the same start,

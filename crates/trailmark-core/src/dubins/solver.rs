@@ -3,9 +3,7 @@
 
 use std::f64::consts::TAU;
 
-use super::{
-    DubinsError, DubinsPath, DubinsWord, MAX_NORMALISED_DISTANCE, Start, check_pose, check_radius, mod_tau,
-};
+use super::{DubinsError, DubinsPath, DubinsWord, Start, checked_offset, mod_tau};
 use crate::geometry::Pose;
 
 /// A query in the normalised frame of Shkel and Lumelsky: the start at the origin, the goal on
@@ -33,16 +31,7 @@ struct Normalised {
 
 impl Normalised {
     fn new(start: &Pose, goal: &Pose, radius: f64) -> Result<Self, DubinsError> {
-        check_radius(radius)?;
-        check_pose("start", start)?;
-        check_pose("goal", goal)?;
-        let delta = goal.translation.vector - start.translation.vector;
-        // Finite, both positions being within MAX_MAGNITUDE; by `hypot`, since the plain norm
-        // squares the components and overflows beyond 1e154.
-        let dist = delta.x.hypot(delta.y);
-        if dist / radius > MAX_NORMALISED_DISTANCE {
-            return Err(DubinsError::OutOfScale { distance: dist, radius });
-        }
+        let (delta, dist) = checked_offset(start, goal, radius)?;
         // The direction of the line from start to goal (+x when they coincide).
         let (cphi, sphi) = if dist > 0.0 { (delta.x / dist, delta.y / dist) } else { (1.0, 0.0) };
         // Headings relative to that line, through the rotations' cosines and sines: no sin or
@@ -300,7 +289,7 @@ impl DubinsPath {
     ///
     /// Errors outside the [supported range](crate::dubins#supported-range): a radius that is not
     /// positive or beyond [`MAX_MAGNITUDE`](super::MAX_MAGNITUDE), a pose that is not finite or beyond it, poses more
-    /// than [`MAX_NORMALISED_DISTANCE`] radii apart.
+    /// than [`MAX_NORMALISED_DISTANCE`](super::MAX_NORMALISED_DISTANCE) radii apart.
     pub fn shortest(start: &Pose, goal: &Pose, turning_radius: f64) -> Result<DubinsPath, DubinsError> {
         let n = Normalised::new(start, goal, turning_radius)?;
         let (word, params) = n.shortest().ok_or_else(|| n.unsolved(turning_radius))?;

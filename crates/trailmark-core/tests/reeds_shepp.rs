@@ -1,0 +1,148 @@
+//! Reeds-Shepp paths on random poses: each ends at the goal, no word that joins the poses is
+//! shorter, the length is the same driven either way and under the mirror symmetries, never
+//! longer than a Dubins path, cusps only where the gear changes, and bad input as typed errors.
+
+use std::f64::consts::{PI, TAU};
+
+use proptest::prelude::*;
+use trailmark_core::dubins::{DubinsError, DubinsPath};
+use trailmark_core::geometry::{Pose, Vector};
+use trailmark_core::reeds_shepp::{Gear, ReedsSheppError, ReedsSheppPath};
+
+fn pose() -> impl Strategy<Value = (f64, f64, f64)> {
+    (-8.0..8.0f64, -8.0..8.0f64, -PI..PI)
+}
+
+fn to_pose((x, y, h): (f64, f64, f64)) -> Pose {
+    Pose::new(Vector::new(x, y), h)
+}
+
+fn heading_gap(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(TAU);
+    d.min(TAU - d)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn the_shortest_path_ends_at_the_goal_and_no_word_is_shorter(
+        a in pose(), b in pose(), radius in prop_oneof![Just(1.0), 0.2..5.0f64],
+    ) {
+        let (start, goal) = (to_pose(a), to_pose(b));
+        let path = ReedsSheppPath::shortest(&start, &goal, radius).unwrap();
+        let end = path.end();
+        let scale = radius.max(1.0);
+        prop_assert!((end.translation.vector - goal.translation.vector).norm() <= 1e-9 * scale * 16.0, "{path}: ends at {end:?}");
+        prop_assert!(heading_gap(end.rotation.angle(), goal.rotation.angle()) <= 1e-9);
+        for other in ReedsSheppPath::candidates(&start, &goal, radius).unwrap() {
+            prop_assert!(path.length() <= other.length(), "{other} is shorter than {path}");
+            // Every word the closed forms give ends at the goal too.
+            let e = other.end();
+            prop_assert!((e.translation.vector - goal.translation.vector).norm() <= 1e-8 * scale * 16.0, "{other} misses the goal");
+        }
+        // The length alone is the path's.
+        prop_assert_eq!(ReedsSheppPath::shortest_length(&start, &goal, radius).unwrap(), path.length());
+    }
+
+    #[test]
+    fn the_length_keeps_the_symmetries_and_never_exceeds_dubins(a in pose(), b in pose(), radius in 0.2..5.0f64) {
+        let (start, goal) = (to_pose(a), to_pose(b));
+        let length = ReedsSheppPath::shortest_length(&start, &goal, radius).unwrap();
+        let tol = 1e-9 * (1.0 + length);
+        // Driven the other way (from the goal to the start).
+        let back = ReedsSheppPath::shortest_length(&goal, &start, radius).unwrap();
+        prop_assert!((length - back).abs() <= tol, "{length} against {back} backwards");
+        // Mirrored in the x axis (left and right turns swapped).
+        let mirror = |(x, y, h): (f64, f64, f64)| to_pose((x, -y, -h));
+        let mirrored = ReedsSheppPath::shortest_length(&mirror(a), &mirror(b), radius).unwrap();
+        prop_assert!((length - mirrored).abs() <= tol, "{length} against {mirrored} mirrored");
+        // Both headings turned around (every gear reversed).
+        let flip = |(x, y, h): (f64, f64, f64)| to_pose((x, y, h + PI));
+        let flipped = ReedsSheppPath::shortest_length(&flip(a), &flip(b), radius).unwrap();
+        prop_assert!((length - flipped).abs() <= tol, "{length} against {flipped} with the headings turned around");
+        // Never longer than driving forward only, nor shorter than the straight line.
+        let dubins = DubinsPath::shortest(&start, &goal, radius).unwrap().length();
+        prop_assert!(length <= dubins + tol, "{length} longer than Dubins' {dubins}");
+        let line = (goal.translation.vector - start.translation.vector).norm();
+        prop_assert!(length >= line - tol);
+    }
+
+    #[test]
+    fn cusps_are_where_the_gear_changes(a in pose(), b in pose()) {
+        let path = ReedsSheppPath::shortest(&to_pose(a), &to_pose(b), 1.0).unwrap();
+        let mut expected = Vec::new();
+        let (mut gear, mut driven) = (None, 0.0);
+        for segment in path.segments() {
+            if segment.length > 1e-12 {
+                if gear.is_some_and(|g| g != segment.gear) {
+                    expected.push(driven);
+                }
+                gear = Some(segment.gear);
+            }
+            driven += segment.length;
+        }
+        prop_assert_eq!(path.cusps(), expected);
+        // Between cusps the car moves along its heading (forward) or against it (reverse).
+        let step = 1e-4;
+        for segment_start in std::iter::once(0.0).chain(path.cusps()) {
+            let s = segment_start + 10.0 * step;
+            if s + step < path.length() {
+                let (p, q) = (path.pose_at(s).unwrap(), path.pose_at(s + step).unwrap());
+                let moved = q.translation.vector - p.translation.vector;
+                let heading = Vector::new(p.rotation.re, p.rotation.im);
+                let along = moved.dot(&heading) / step;
+                let gear = path.segments().scan(0.0, |acc, sg| { *acc += sg.length; Some((*acc, sg.gear)) })
+                    .find(|&(end, _)| end > s).map(|(_, g)| g).unwrap();
+                let sign = if gear == Gear::Forward { 1.0 } else { -1.0 };
+                prop_assert!(along * sign > 0.5, "at {s} the car moves {along} along its heading in {gear:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn parallel_parking_reverses_and_a_straight_line_does_not() {
+    let start = to_pose((0.0, 0.0, 0.0));
+    let parked = ReedsSheppPath::shortest(&start, &to_pose((0.0, 1.0, 0.0)), 1.0).unwrap();
+    assert!(!parked.cusps().is_empty(), "{parked}");
+    let ahead = ReedsSheppPath::shortest(&start, &to_pose((5.0, 0.0, 0.0)), 1.0).unwrap();
+    assert!(ahead.cusps().is_empty());
+    assert!((ahead.length() - 5.0).abs() < 1e-12, "{ahead}");
+    let behind = ReedsSheppPath::shortest(&start, &to_pose((-5.0, 0.0, 0.0)), 1.0).unwrap();
+    assert!((behind.length() - 5.0).abs() < 1e-12, "{behind}");
+    assert!(behind.segments().filter(|s| s.length > 0.0).all(|s| s.gear == Gear::Reverse));
+    // The same pose: a path of length 0.
+    let stay = ReedsSheppPath::shortest(&start, &start, 1.0).unwrap();
+    assert_eq!(stay.length(), 0.0);
+    assert_eq!(stay.sample(0.1).unwrap().len(), 1);
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    let (a, b) = (to_pose((0.0, 0.0, 0.0)), to_pose((1.0, 2.0, 0.5)));
+    for radius in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e301] {
+        assert!(matches!(
+            ReedsSheppPath::shortest(&a, &b, radius),
+            Err(ReedsSheppError::Query(DubinsError::InvalidRadius(_)))
+        ));
+        assert!(ReedsSheppPath::shortest_length(&a, &b, radius).is_err());
+    }
+    let nan = Pose::new(Vector::new(f64::NAN, 0.0), 0.0);
+    assert!(matches!(
+        ReedsSheppPath::shortest(&nan, &b, 1.0),
+        Err(ReedsSheppError::Query(DubinsError::NonFinitePose { which: "start", .. }))
+    ));
+    assert!(matches!(
+        ReedsSheppPath::shortest(&a, &to_pose((1e20, 0.0, 0.0)), 1e-3),
+        Err(ReedsSheppError::Query(DubinsError::OutOfScale { .. }))
+    ));
+    let path = ReedsSheppPath::shortest(&a, &b, 1.0).unwrap();
+    for s in [-1e-9, path.length() + 1e-9, f64::NAN] {
+        assert!(matches!(path.pose_at(s), Err(ReedsSheppError::Query(DubinsError::OutOfRange { .. }))));
+    }
+    for step in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(matches!(path.sample(step), Err(ReedsSheppError::Query(DubinsError::InvalidStep(_)))));
+    }
+    assert!(matches!(path.sample(1e-300), Err(ReedsSheppError::Query(DubinsError::TooManySamples { .. }))));
+}

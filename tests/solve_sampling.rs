@@ -7,6 +7,7 @@
 use trailmark::core::curve::Bezier;
 use trailmark::core::dubins::{DubinsPath, Piece};
 use trailmark::core::geometry::{Point, Pose};
+use trailmark::core::reeds_shepp::ReedsSheppPath;
 use trailmark::core::world::PolygonWorld;
 use trailmark::sample::{PlanError, SamplerError};
 use trailmark::solve::{DocumentError, SolveError, solve, solve_and_draw};
@@ -147,38 +148,59 @@ fn samplers_give_valid_reproducible_paths() {
     }
 }
 
+/// In the spaces of car poses, the path chains free shortest curves (Dubins, or Reeds-Shepp with
+/// pieces in reverse) of the turning radius, and costs their lengths.
 #[test]
-fn dubins_paths_chain_shortest_curves_of_the_turning_radius() {
+fn car_paths_chain_shortest_curves_of_the_turning_radius() {
     let radius = 0.6;
-    for (planner, iterations) in [("rrt", 20_000), ("rrt_connect", 20_000), ("rrt_star", 2_000)] {
-        let problem = document(&format!(
-            r#""space": "dubins", "turning_radius": {radius}, "seed": 2,
-               "start": [1, 1, 1.25], "goal": [9, 1, -1.25],
-               "planner": {{"name": "{planner}", "range": 2.0, "max_iterations": {iterations}, "simplify": true}}"#
-        ));
-        let result = solve(&problem, ".").unwrap();
-        assert_eq!(result.status, Status::Solved, "{planner}");
-        let poses: Vec<Pose> =
-            states(&result).iter().map(|c| Pose::new(Point::new(c[0], c[1]).coords, c[2])).collect();
-        assert_eq!(states(&result)[0], vec![1.0, 1.0, 1.25]);
-        assert_eq!(states(&result).last().unwrap(), &vec![9.0, 1.0, -1.25]);
-        let checker = world(&problem).checker();
-        let mut length = 0.0;
-        for pair in poses.windows(2) {
-            let curve = DubinsPath::shortest(&pair[0], &pair[1], radius).unwrap();
-            assert!(checker.dubins_is_free(&curve));
-            for piece in curve.pieces() {
-                if let Piece::Arc { radius: r, .. } = piece {
-                    assert!((r - radius).abs() <= 1e-12, "an arc of radius {r}");
+    for space in ["dubins", "reeds_shepp"] {
+        for (planner, iterations) in [("rrt", 20_000), ("rrt_connect", 20_000), ("rrt_star", 2_000)] {
+            let problem = document(&format!(
+                r#""space": "{space}", "turning_radius": {radius}, "seed": 2,
+                   "start": [1, 1, 1.25], "goal": [9, 1, -1.25],
+                   "planner": {{"name": "{planner}", "range": 2.0, "max_iterations": {iterations}, "simplify": true}}"#
+            ));
+            let (result, svg) = solve_and_draw(&problem, ".").unwrap();
+            assert_eq!(result.status, Status::Solved, "{space} {planner}");
+            assert!(svg.contains("polyline"), "{space} {planner}: the picture draws the curves");
+            let poses: Vec<Pose> =
+                states(&result).iter().map(|c| Pose::new(Point::new(c[0], c[1]).coords, c[2])).collect();
+            assert_eq!(states(&result)[0], vec![1.0, 1.0, 1.25]);
+            assert_eq!(states(&result).last().unwrap(), &vec![9.0, 1.0, -1.25]);
+            let checker = world(&problem).checker();
+            let mut length = 0.0;
+            for pair in poses.windows(2) {
+                let (free, pieces, samples, piece_length) = if space == "dubins" {
+                    let curve = DubinsPath::shortest(&pair[0], &pair[1], radius).unwrap();
+                    (
+                        checker.dubins_is_free(&curve),
+                        curve.pieces().to_vec(),
+                        curve.sample(1e-3).unwrap(),
+                        curve.length(),
+                    )
+                } else {
+                    let curve = ReedsSheppPath::shortest(&pair[0], &pair[1], radius).unwrap();
+                    (
+                        checker.reeds_shepp_is_free(&curve),
+                        curve.pieces(),
+                        curve.sample(1e-3).unwrap(),
+                        curve.length(),
+                    )
+                };
+                assert!(free, "{space} {planner}");
+                for piece in pieces {
+                    if let Piece::Arc { radius: r, .. } = piece {
+                        assert!((r - radius).abs() <= 1e-12, "an arc of radius {r}");
+                    }
                 }
+                for p in samples {
+                    assert!(world(&problem).reference_is_clear(Point::from(p.translation.vector), 1e-9));
+                }
+                length += piece_length;
             }
-            for p in curve.sample(1e-3).unwrap() {
-                assert!(world(&problem).reference_is_clear(Point::from(p.translation.vector), 1e-9));
-            }
-            length += curve.length();
+            assert!((result.cost.unwrap() - length).abs() <= 1e-9 * length);
+            assert!(length >= optimum("[1, 1]", "[9, 1]") * (std::f64::consts::PI / 16.0).cos());
         }
-        assert!((result.cost.unwrap() - length).abs() <= 1e-9 * length);
-        assert!(length >= optimum("[1, 1]", "[9, 1]") * (std::f64::consts::PI / 16.0).cos());
     }
 }
 
@@ -292,6 +314,20 @@ fn bad_sampling_documents_give_typed_errors() {
         (r#""space": "dubins", "turning_radius": 1, "start": [1, 1, 0], "goal": [9, 1], "planner": {"name": "rrt"}"#.into(), |e| {
             matches!(e, SolveError::Document(DocumentError::NotAState { which: "goal", space: "dubins", .. }))
         }),
+        (r#""space": "reeds_shepp", "turning_radius": 1, "start": [1, 1], "goal": [9, 1, 0], "planner": {"name": "rrt"}"#.into(), |e| {
+            matches!(e, SolveError::Document(DocumentError::NotAState { which: "start", space: "reeds_shepp", .. }))
+        }),
+        (r#""space": "reeds_shepp", "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt"}"#.into(), |e| {
+            matches!(e, SolveError::Document(DocumentError::NoTurningRadius))
+        }),
+        (
+            r#""space": "reeds_shepp", "turning_radius": 0, "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt"}"#.into(),
+            |e| matches!(e, SolveError::Space(_)),
+        ),
+        (
+            r#""space": "reeds_shepp", "turning_radius": 1, "start": [1, 1, 0], "goal": [9, 1, 0], "planner": {"name": "rrt", "smooth": "hermite"}"#.into(),
+            |e| matches!(e, SolveError::Document(DocumentError::NotForSpace { field: "smooth", space: "reeds_shepp" })),
+        ),
         (format!(r#"{ends}, "planner": {{"name": "rrt", "range": -1}}"#), |e| {
             matches!(e, SolveError::Plan(PlanError::InvalidOption { name: "range", .. }))
         }),

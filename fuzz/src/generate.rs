@@ -220,7 +220,8 @@ pub fn problem(u: &mut Unstructured) -> Result<Value> {
         }
         if planner.is_sampling() {
             if space_dubins || misplaced && u.ratio(1u8, 2)? {
-                doc.insert("space".into(), json!(if space_dubins { "dubins" } else { "r2" }));
+                let car = if u.ratio(1u8, 2)? { "dubins" } else { "reeds_shepp" };
+                doc.insert("space".into(), json!(if space_dubins { car } else { "r2" }));
             } else if u.ratio(1u8, 4)? {
                 doc.insert("space".into(), json!("r2"));
             }

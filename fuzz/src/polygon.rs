@@ -3,10 +3,12 @@
 //! [`PolygonWorld::reference_is_clear`], and the cost equal to the path's length.
 //!
 //! Straight motions for the visibility, trapezoid and PRM roadmaps and the `r2` sampling
-//! planners; shortest Dubins curves for the `dubins_prm` roadmap and the `dubins` space.
+//! planners; shortest Dubins curves for the `dubins_prm` roadmap and the `dubins` space,
+//! shortest Reeds-Shepp curves for the `reeds_shepp` space.
 
 use trailmark::solve::{GraphKind, PlannerSpec, ProblemSpec, SolveResult, SpaceKind, Status, Waypoint};
 use trailmark_core::dubins::DubinsPath;
+use trailmark_core::reeds_shepp::ReedsSheppPath;
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::world::PolygonWorld;
 
@@ -30,12 +32,17 @@ pub fn scale(world: &PolygonWorld) -> f64 {
     [lo.x, lo.y, hi.x, hi.y].iter().fold(side, |m, v| m.max(v.abs()))
 }
 
-/// Whether the result is over poses (Dubins curves) rather than points.
+/// Whether the result is over poses (Dubins or Reeds-Shepp curves) rather than points.
 fn is_dubins(problem: &ProblemSpec) -> bool {
     match problem.planner.sampling() {
-        Some(_) => problem.space == Some(SpaceKind::Dubins),
+        Some(_) => matches!(problem.space, Some(SpaceKind::Dubins | SpaceKind::ReedsShepp)),
         None => problem.graph == Some(GraphKind::DubinsPrm),
     }
+}
+
+/// Whether the poses are joined by Reeds-Shepp curves (the car reverses) rather than Dubins ones.
+fn is_reeds_shepp(problem: &ProblemSpec) -> bool {
+    problem.planner.sampling().is_some() && problem.space == Some(SpaceKind::ReedsShepp)
 }
 
 /// Checks the result of a polygon-world problem that `solve` accepted.
@@ -115,12 +122,18 @@ pub fn check_result(problem: &ProblemSpec, world: &PolygonWorld, result: &SolveR
         }
         let mut length = 0.0;
         for (i, pair) in poses.windows(2).enumerate() {
-            let curve = DubinsPath::shortest(&pair[0], &pair[1], radius)
-                .unwrap_or_else(|e| panic!("{planner}: no Dubins curve for motion {i}: {e}"));
-            let l = curve.length();
+            let (l, pose_at): (f64, Box<dyn Fn(f64) -> Result<Pose, String>>) = if is_reeds_shepp(problem) {
+                let curve = ReedsSheppPath::shortest(&pair[0], &pair[1], radius)
+                    .unwrap_or_else(|e| panic!("{planner}: no Reeds-Shepp curve for motion {i}: {e}"));
+                (curve.length(), Box::new(move |s| curve.pose_at(s).map_err(|e| e.to_string())))
+            } else {
+                let curve = DubinsPath::shortest(&pair[0], &pair[1], radius)
+                    .unwrap_or_else(|e| panic!("{planner}: no Dubins curve for motion {i}: {e}"));
+                (curve.length(), Box::new(move |s| curve.pose_at(s).map_err(|e| e.to_string())))
+            };
             for k in 0..=SAMPLES_PER_MOTION {
                 let s = (l * k as f64 / SAMPLES_PER_MOTION as f64).min(l);
-                let at = curve.pose_at(s).unwrap_or_else(|e| panic!("pose_at({s}) of a {l} curve: {e}"));
+                let at = pose_at(s).unwrap_or_else(|e| panic!("pose_at({s}) of a {l} curve: {e}"));
                 clear(onto_bounds(Point::from(at.translation.vector)), &format!("motion {i} at {s}"));
             }
             length += l;

@@ -242,7 +242,7 @@ pub enum DocumentError {
     #[error("the box world {0}")]
     InvalidBoxes(String),
     /// A start or goal of a sampling planner that is not a finite state of its space.
-    #[error("the {which} {value:?} is not a state of the \"{space}\" space: expected {}", match *space { "dubins" => "[x, y, heading]", "rn" => "one finite coordinate per axis of the box world", _ => "[x, y]" })]
+    #[error("the {which} {value:?} is not a state of the \"{space}\" space: expected {}", match *space { "dubins" | "reeds_shepp" => "[x, y, heading]", "rn" => "one finite coordinate per axis of the box world", _ => "[x, y]" })]
     NotAState {
         /// `"start"` or `"goal"`.
         which: &'static str,

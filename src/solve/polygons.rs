@@ -12,6 +12,7 @@ use trailmark_graph::prm::{Connection, PlanarSpace, PolygonPrm, PrmOptions, PrmS
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::{Edges, VisibilityError};
 use trailmark_graph::{Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
+use trailmark_sample::space::{Car, CarCurves};
 use trailmark_sample::{Dubins, StateSpace};
 
 use super::error::{DocumentError, SolveError};
@@ -143,7 +144,7 @@ fn solve_dubins(
         check_dubins(&world.checker(), &poses, radius, cost)?;
     }
     if let Some(picture) = picture {
-        let curve = dubins_curve(&poses, radius);
+        let curve = car_curve(&space, &poses);
         let title =
             format!("Dubins roadmap: {} poses, turning radius {radius}, and a path", prm.node_count());
         *picture = WorldSvg::new(world)
@@ -188,15 +189,25 @@ fn check_dubins(
     Ok(())
 }
 
-/// The positions along the shortest Dubins curves joining `poses` (a positive, finite turning
-/// `radius`), every `radius / 8`.
-pub(super) fn dubins_curve(poses: &[Pose], radius: f64) -> Vec<Point> {
+/// The positions along the shortest curves of `space` joining `poses`, every turning radius / 8
+/// (at most 10,000 points a curve), for a picture.
+pub(super) fn car_curve<C: CarCurves>(space: &Car<C>, poses: &[Pose]) -> Vec<Point> {
+    let radius = space.turning_radius();
     let mut curve = Vec::new();
     for pair in poses.windows(2) {
-        let Ok(piece) = DubinsPath::shortest(&pair[0], &pair[1], radius) else { continue };
-        // Every radius / 8, but no more than 10,000 points a piece for a picture.
-        let samples = piece.sample((radius / 8.0).max(piece.length() / 1e4)).unwrap_or_default();
-        curve.extend(samples.iter().map(|p| Point::from(p.translation.vector)));
+        let Some(piece) = C::path(&pair[0], &pair[1], radius) else { continue };
+        let length = C::path_length(&piece);
+        let step = (radius / 8.0).max(length / 1e4);
+        let mut s = 0.0_f64;
+        loop {
+            if let Some(p) = C::pose_along(&piece, s.min(length)) {
+                curve.push(Point::from(p.translation.vector));
+            }
+            if s >= length {
+                break;
+            }
+            s += step;
+        }
     }
     curve
 }

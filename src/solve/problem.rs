@@ -160,8 +160,8 @@ pub enum SamplerKind {
     Halton,
 }
 
-/// The state space of a sampling planner: over a polygon world, `r2` or `dubins`; over a box
-/// world, `rn`.
+/// The state space of a sampling planner: over a polygon world, `r2`, `dubins` or
+/// `reeds_shepp`; over a box world, `rn`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SpaceKind {
@@ -172,6 +172,9 @@ pub enum SpaceKind {
     Dubins,
     /// Points of a box world's dimension, joined by straight motions.
     Rn,
+    /// Poses `[x, y, θ]` of a car that also drives in reverse, joined by shortest Reeds-Shepp
+    /// curves of the problem's `turning_radius`.
+    ReedsShepp,
 }
 
 impl SpaceKind {
@@ -181,6 +184,7 @@ impl SpaceKind {
             SpaceKind::R2 => "r2",
             SpaceKind::Dubins => "dubins",
             SpaceKind::Rn => "rn",
+            SpaceKind::ReedsShepp => "reeds_shepp",
         }
     }
 }

@@ -1,5 +1,6 @@
 //! The sampling planners of [`solve`](super::solve): `rrt`, `rrt_connect` and `rrt_star` over
-//! a polygon world, in `"space": "r2"` (points) or `"dubins"` (poses of a car).
+//! a polygon world, in `"space": "r2"` (points), `"dubins"` (poses of a car that drives forward)
+//! or `"reeds_shepp"` (poses of a car that also reverses).
 
 use std::time::{Duration, Instant};
 
@@ -8,16 +9,17 @@ use trailmark_core::geometry::SVector;
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::termination::Termination;
-use trailmark_core::world::PolygonWorld;
+use trailmark_core::world::{CollisionChecker, PolygonWorld};
 use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
+use trailmark_sample::space::{Car, CarCurves, DubinsCurves, ReedsSheppCurves};
 use trailmark_sample::{
-    BoxWorld, Bridge, Dubins, Gaussian, KdNearest, NearestNeighbors, Plan, Problem as PlanningProblem, R2,
-    Rn, RrtOptions, Solution, StateSampler, StateSpace, shortcut,
+    BoxWorld, Bridge, Gaussian, KdNearest, NearestNeighbors, Plan, Problem as PlanningProblem, R2, Rn,
+    RrtOptions, Solution, StateSampler, StateSpace, shortcut,
 };
 
 use super::error::{DocumentError, SolveError};
 use super::planner::{SamplerSpec, SamplingSpec};
-use super::polygons::dubins_curve;
+use super::polygons::car_curve;
 use super::problem::{BoxesSpec, ProblemSpec, SpaceKind};
 use super::result::{
     Coordinates, ImprovementRecord, ResultStats, SamplingStats, SmoothedRecord, SolveResult, Status, Waypoint,
@@ -85,29 +87,41 @@ pub(super) fn solve_sampling(
             }
             Ok(result)
         }
-        SpaceKind::Dubins => {
-            if spec.smooth.is_some() {
-                return Err(DocumentError::NotForSpace { field: "smooth", space: "dubins" }.into());
-            }
-            let radius = problem.turning_radius.ok_or(DocumentError::NoTurningRadius)?;
-            let space = Dubins::new(world.bounds(), radius)?;
-            let state = |which, value: &[f64]| {
-                space.state_from_coordinates(value).ok_or_else(|| DocumentError::NotAState {
-                    which,
-                    value: value.to_vec(),
-                    space: "dubins",
-                })
-            };
-            let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
-            let (result, path) = run.plan(&space, KdNearest::<Dubins, 2>::new(&space)?, start, goal)?;
-            if let Some(picture) = picture {
-                let curve = dubins_curve(&path, radius);
-                let ends = (Point::from(start.translation.vector), Point::from(goal.translation.vector));
-                *picture = sketch(world, planner, &curve, ends.0, ends.1).poses(path).to_svg();
-            }
-            Ok(result)
-        }
+        SpaceKind::Dubins => solve_car::<DubinsCurves>(&run, world, planner, "dubins", picture),
+        SpaceKind::ReedsShepp => solve_car::<ReedsSheppCurves>(&run, world, planner, "reeds_shepp", picture),
     }
+}
+
+/// The sampling planners in a space of car poses (`space` its name in documents), joined by
+/// the shortest curves of the family `C` of the problem's turning radius.
+fn solve_car<C: CarCurves>(
+    run: &SamplingRun<'_, CollisionChecker>,
+    world: &PolygonWorld,
+    planner: &'static str,
+    space_name: &'static str,
+    picture: Option<&mut String>,
+) -> Result<SolveResult, SolveError> {
+    let problem = run.problem;
+    if run.spec.smooth.is_some() {
+        return Err(DocumentError::NotForSpace { field: "smooth", space: space_name }.into());
+    }
+    let radius = problem.turning_radius.ok_or(DocumentError::NoTurningRadius)?;
+    let space = Car::<C>::new(world.bounds(), radius)?;
+    let state = |which, value: &[f64]| {
+        space.state_from_coordinates(value).ok_or_else(|| DocumentError::NotAState {
+            which,
+            value: value.to_vec(),
+            space: space_name,
+        })
+    };
+    let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
+    let (result, path) = run.plan(&space, KdNearest::<Car<C>, 2>::new(&space)?, start, goal)?;
+    if let Some(picture) = picture {
+        let curve = car_curve(&space, &path);
+        let ends = (Point::from(start.translation.vector), Point::from(goal.translation.vector));
+        *picture = sketch(world, planner, &curve, ends.0, ends.1).poses(path).to_svg();
+    }
+    Ok(result)
 }
 
 /// The most axes of a box world.

@@ -5,7 +5,7 @@
 use std::f64::consts::{PI, TAU};
 
 use proptest::prelude::*;
-use trailmark_core::dubins::{DubinsError, DubinsPath};
+use trailmark_core::dubins::{DubinsError, DubinsPath, Piece};
 use trailmark_core::geometry::{Pose, Vector};
 use trailmark_core::reeds_shepp::{Gear, ReedsSheppError, ReedsSheppPath};
 
@@ -43,6 +43,40 @@ proptest! {
         }
         // The length alone is the path's.
         prop_assert_eq!(ReedsSheppPath::shortest_length(&start, &goal, radius).unwrap(), path.length());
+        // Saved and read back, the same path; cut anywhere, it ends where the path is there.
+        // (The heading is saved as an angle, so the start's cosine and sine come back within
+        // rounding; the pieces come back exactly.)
+        let json = serde_json::to_string(&path).unwrap();
+        let back: ReedsSheppPath = serde_json::from_str(&json).unwrap();
+        prop_assert!(back.segments().eq(path.segments()));
+        prop_assert_eq!(back.turning_radius(), path.turning_radius());
+        prop_assert_eq!(back.start().translation, start.translation);
+        prop_assert!(heading_gap(back.start().rotation.angle(), start.rotation.angle()) <= 1e-15);
+        for fraction in [0.0, 0.3, 0.7, 1.0] {
+            let s = fraction * path.length();
+            let sub = path.subpath(s).unwrap();
+            prop_assert!((sub.length() - s).abs() <= 1e-12 * scale * 16.0);
+            let (e, at) = (sub.end(), path.pose_at(s).unwrap());
+            prop_assert!((e.translation.vector - at.translation.vector).norm() <= 1e-9 * scale * 16.0);
+        }
+        // The pieces chain from the start to the goal, each ending where the path is after it.
+        let mut driven = 0.0;
+        let mut at = start.translation.vector;
+        for (piece, segment) in path.pieces().into_iter().zip(path.segments()) {
+            driven += segment.length;
+            let expected = path.pose_at(driven.min(path.length())).unwrap().translation.vector;
+            let (from, to) = match piece {
+                Piece::Segment { from, to } => (from.coords, to.coords),
+                Piece::Arc { center, radius: r, start_angle, sweep } => {
+                    prop_assert!((r - radius).abs() < 1e-12 && (sweep.abs() * r - segment.length).abs() <= 1e-9 * scale);
+                    let point = |a: f64| center.coords + Vector::new(a.cos(), a.sin()) * r;
+                    (point(start_angle), point(start_angle + sweep))
+                }
+            };
+            prop_assert!((from - at).norm() <= 1e-9 * scale * 16.0, "{path}: a piece starts at {from:?}, not {at:?}");
+            prop_assert!((to - expected).norm() <= 1e-9 * scale * 16.0, "{path}: a piece ends at {to:?}, not {expected:?}");
+            at = to;
+        }
     }
 
     #[test]
@@ -83,20 +117,20 @@ proptest! {
             driven += segment.length;
         }
         prop_assert_eq!(path.cusps(), expected);
-        // Between cusps the car moves along its heading (forward) or against it (reverse).
-        let step = 1e-4;
-        for segment_start in std::iter::once(0.0).chain(path.cusps()) {
-            let s = segment_start + 10.0 * step;
-            if s + step < path.length() {
+        // Within each piece the car moves along its heading (forward) or against it (reverse).
+        let step = 1e-5;
+        let mut start = 0.0;
+        for segment in path.segments() {
+            if segment.length > 1e-3 {
+                let s = start + 0.5 * segment.length;
                 let (p, q) = (path.pose_at(s).unwrap(), path.pose_at(s + step).unwrap());
                 let moved = q.translation.vector - p.translation.vector;
                 let heading = Vector::new(p.rotation.re, p.rotation.im);
                 let along = moved.dot(&heading) / step;
-                let gear = path.segments().scan(0.0, |acc, sg| { *acc += sg.length; Some((*acc, sg.gear)) })
-                    .find(|&(end, _)| end > s).map(|(_, g)| g).unwrap();
-                let sign = if gear == Gear::Forward { 1.0 } else { -1.0 };
-                prop_assert!(along * sign > 0.5, "at {s} the car moves {along} along its heading in {gear:?}");
+                let sign = if segment.gear == Gear::Forward { 1.0 } else { -1.0 };
+                prop_assert!(along * sign > 0.9, "at {s} the car moves {along} along its heading in {:?}", segment.gear);
             }
+            start += segment.length;
         }
     }
 }
@@ -145,4 +179,23 @@ fn bad_input_is_a_typed_error() {
         assert!(matches!(path.sample(step), Err(ReedsSheppError::Query(DubinsError::InvalidStep(_)))));
     }
     assert!(matches!(path.sample(1e-300), Err(ReedsSheppError::Query(DubinsError::TooManySamples { .. }))));
+    assert!(matches!(
+        path.subpath(path.length() * 2.0),
+        Err(ReedsSheppError::Query(DubinsError::OutOfRange { .. }))
+    ));
+    // Saved paths that no query could give.
+    let saved = serde_json::to_value(path).unwrap();
+    for (field, value) in [
+        ("turns", serde_json::json!("LXL")),
+        ("turns", serde_json::json!("")),
+        ("turns", serde_json::json!("LSLRLS")),
+        ("params", serde_json::json!([1.0])),
+        ("params", serde_json::json!([7.0, 0.5, 0.5])),
+        ("turning_radius", serde_json::json!(-1.0)),
+        ("start", serde_json::json!([1e301, 0.0, 0.0])),
+    ] {
+        let mut bad = saved.clone();
+        bad[field] = value.clone();
+        assert!(serde_json::from_value::<ReedsSheppPath>(bad).is_err(), "{field}: {value} accepted");
+    }
 }

@@ -1,5 +1,5 @@
 //! Sampling-based planners for continuous spaces: RRT, RRT-Connect and RRT* over pluggable state
-//! spaces (R², Rⁿ, SE(2), Dubins), with exact collision checks and seeded, reproducible runs.
+//! spaces (R², Rⁿ, SE(2), Dubins, Reeds-Shepp), with exact collision checks and seeded, reproducible runs.
 //!
 //! - [`space`]: the state spaces (sampling, distances, interpolation, steering);
 //! - [`nearest`]: exact nearest-neighbour structures for every space (a k-d tree over positions,
@@ -106,7 +106,7 @@ pub use sampler::{
     StateSampler, Uniform,
 };
 pub use simplify::shortcut;
-pub use space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace, UnitCube};
+pub use space::{Dubins, R2, ReedsShepp, Rn, Se2, SpaceError, StateSpace, UnitCube};
 #[allow(deprecated)]
 pub use termination::{Condition, Progress, Termination};
 pub use validity::{Sampled, Validity};

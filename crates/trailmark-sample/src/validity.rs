@@ -4,7 +4,7 @@
 //! do: may the robot be at this state, and may it move from this state to that one along the
 //! space's motion. For a `PolygonWorld`, the [`CollisionChecker`] answers both *exactly* in
 //! [`R2`], [`Se2`] (a disc robot: the heading does not matter, the position moves in a straight
-//! line) and [`Dubins`] (every arc and segment of the curve tested against the grown
+//! line), [`Dubins`](crate::space::Dubins) and [`ReedsShepp`](crate::space::ReedsShepp) (every arc and segment of the curve tested against the grown
 //! obstacles), with no sampling resolution. For any other space or world, [`Sampled`] wraps a
 //! state test and checks motions at a resolution, a fraction of the space's extent (OMPL's
 //! longest valid segment fraction).
@@ -31,7 +31,7 @@
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::CollisionChecker;
 
-use crate::space::{Dubins, R2, Se2, SpaceError, StateSpace};
+use crate::space::{Car, CarCurves, R2, Se2, SpaceError, StateSpace};
 
 /// Whether states and motions of a space are allowed.
 pub trait Validity<S: StateSpace> {
@@ -67,13 +67,13 @@ impl Validity<Se2> for CollisionChecker {
     }
 }
 
-impl Validity<Dubins> for CollisionChecker {
-    fn state_is_valid(&self, _: &Dubins, s: &Pose) -> bool {
+impl<C: CarCurves> Validity<Car<C>> for CollisionChecker {
+    fn state_is_valid(&self, _: &Car<C>, s: &Pose) -> bool {
         self.point_is_free(position(s))
     }
 
-    fn motion_is_valid(&self, space: &Dubins, a: &Pose, b: &Pose) -> bool {
-        self.dubins_is_free(&space.path(a, b))
+    fn motion_is_valid(&self, space: &Car<C>, a: &Pose, b: &Pose) -> bool {
+        C::is_free(self, &space.path(a, b))
     }
 }
 

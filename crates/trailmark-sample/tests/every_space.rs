@@ -16,8 +16,8 @@ use trailmark_core::termination::Termination;
 use trailmark_core::world::{Bounds, PolygonWorld};
 use trailmark_sample::arm::{ArmChecker, PlanarArm, densify};
 use trailmark_sample::{
-    Dubins, KdNearest, NearestNeighbors, PlanError, Planner, Prm, Problem, R2, Rejection, Rn, Rrt,
-    RrtConnect, RrtStar, Sampled, Se2, Solution, StateSpace, Validity,
+    Dubins, KdNearest, NearestNeighbors, PlanError, Planner, Prm, Problem, R2, ReedsShepp, Rejection, Rn,
+    Rrt, RrtConnect, RrtStar, Sampled, Se2, Solution, StateSpace, Validity,
 };
 
 /// RRT, RRT-Connect, RRT*, PRM and PRM* over clones of `nearest`.
@@ -180,6 +180,20 @@ proptest! {
         let heading = |h: u16| f64::from(h) / 65536.0 * std::f64::consts::TAU - PI;
         let (a, b) = (Pose::new(a.coords, heading(headings[0])), Pose::new(b.coords, heading(headings[1])));
         let kd = KdNearest::<Dubins, 2>::new(&space).unwrap();
+        let curve_clear = |s: &Pose, t: &Pose| {
+            let curve = space.path(s, t);
+            curve.sample(1e-2).unwrap().iter().all(|p| world.reference_is_clear(position(p), 1e-9))
+        };
+        every_path_is_valid(&space, &checker, kd, a, b, 1200, seed, |s| world.reference_is_clear(position(s), 1e-9), curve_clear)?;
+    }
+
+    #[test]
+    fn reeds_shepp_paths_are_valid((world, a, b) in (1usize..12, 0.0f64..0.5, any::<u64>()).prop_filter_map("free ends", |(c, r, s)| polygon_world(c, r, s)), seed in any::<u64>(), headings in any::<[u16; 2]>()) {
+        let checker = world.checker();
+        let space = ReedsShepp::new(world.bounds(), 1.5).unwrap();
+        let heading = |h: u16| f64::from(h) / 65536.0 * std::f64::consts::TAU - PI;
+        let (a, b) = (Pose::new(a.coords, heading(headings[0])), Pose::new(b.coords, heading(headings[1])));
+        let kd = KdNearest::<ReedsShepp, 2>::new(&space).unwrap();
         let curve_clear = |s: &Pose, t: &Pose| {
             let curve = space.path(s, t);
             curve.sample(1e-2).unwrap().iter().all(|p| world.reference_is_clear(position(p), 1e-9))

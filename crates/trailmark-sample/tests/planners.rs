@@ -12,7 +12,7 @@ use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::world::PolygonWorld;
 use trailmark_sample::nearest::{BruteForce, KdNearest, NearestNeighbors};
 use trailmark_sample::simplify::shortcut;
-use trailmark_sample::space::{Dubins, R2, StateSpace};
+use trailmark_sample::space::{Car, CarCurves, Dubins, DubinsCurves, R2, ReedsSheppCurves, StateSpace};
 use trailmark_sample::{
     Plan, PlanError, Planner, Problem, Rejection, Rrt, RrtConnect, RrtOptions, RrtStar, Solution,
 };
@@ -93,38 +93,68 @@ proptest! {
     }
 
     /// Dubins: each motion of the path is the shortest Dubins curve between its poses, free by
-    /// the exact checker and by its poses sampled every 1e-3; the path starts and ends at the
+    /// the exact checker and by its poses sampled every 1e-2; the path starts and ends at the
     /// requested poses.
     #[test]
     fn dubins_rrt_connect_paths_follow_free_dubins_curves((world, start, goal) in (1usize..15, 0.0f64..0.5, any::<u64>()).prop_filter_map("free ends", |(c, r, s)| world_and_ends(c, r, s)), seed in any::<u64>(), headings in any::<[u16; 2]>()) {
-        let space = Dubins::new(world.bounds(), 1.5).unwrap();
-        let checker = world.checker();
-        let heading = |h: u16| f64::from(h) / 65536.0 * std::f64::consts::TAU;
-        let (a, b) = (Pose::new(start.coords, heading(headings[0])), Pose::new(goal.coords, heading(headings[1])));
-        let kd = KdNearest::<Dubins, 2>::new(&space).unwrap();
-        let plan = RrtConnect::new(kd).with_seed(seed).solve(&Problem::new(&space, &checker, a, b), &Termination::iterations(4000)).unwrap();
-        let path = plan.solution.any_path().expect("a path, exact or approximate").to_vec();
-        prop_assert_eq!(path[0], a);
-        if plan.is_exact() {
-            prop_assert_eq!(*path.last().unwrap(), b);
-        }
-        for m in path.windows(2) {
-            let curve = space.path(&m[0], &m[1]);
-            prop_assert!(checker.dubins_is_free(&curve));
-            for p in curve.sample(1e-2).unwrap() {
-                prop_assert!(world.reference_is_clear(Point::from(p.translation.vector), 1e-9));
-            }
-        }
-        let cost: f64 = path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
-        let (Solution::Exact { cost: planned, .. } | Solution::Approximate { cost: planned, .. }) = plan.solution else { unreachable!() };
-        prop_assert!((cost - planned).abs() <= 1e-9 * cost.max(1.0));
-        // Shortcut Dubins paths stay chains of free curves between the same poses.
-        let short = shortcut(&space, &checker, &path, 50, seed);
-        prop_assert_eq!((short[0], short.last()), (a, path.last()));
-        prop_assert!(short.windows(2).all(|m| checker.dubins_is_free(&space.path(&m[0], &m[1]))));
-        let short_cost: f64 = short.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
-        prop_assert!(short_cost <= cost + 1e-9);
+        car_paths_follow_free_curves::<DubinsCurves>(&world, start, goal, seed, headings)?;
     }
+
+    /// Reeds-Shepp: the same, with pieces driven in reverse.
+    #[test]
+    fn reeds_shepp_rrt_connect_paths_follow_free_curves((world, start, goal) in (1usize..15, 0.0f64..0.5, any::<u64>()).prop_filter_map("free ends", |(c, r, s)| world_and_ends(c, r, s)), seed in any::<u64>(), headings in any::<[u16; 2]>()) {
+        car_paths_follow_free_curves::<ReedsSheppCurves>(&world, start, goal, seed, headings)?;
+    }
+}
+
+/// RRT-Connect in the car space of the curves `C`: each motion of the path is the shortest curve
+/// between its poses, free by the exact checker and by its poses sampled every 1e-2; the path
+/// starts and ends at the requested poses, costs what it says, and stays so when shortcut.
+fn car_paths_follow_free_curves<C: CarCurves>(
+    world: &PolygonWorld,
+    start: Point,
+    goal: Point,
+    seed: u64,
+    headings: [u16; 2],
+) -> Result<(), TestCaseError> {
+    let space = Car::<C>::new(world.bounds(), 1.5).unwrap();
+    let checker = world.checker();
+    let heading = |h: u16| f64::from(h) / 65536.0 * std::f64::consts::TAU;
+    let (a, b) =
+        (Pose::new(start.coords, heading(headings[0])), Pose::new(goal.coords, heading(headings[1])));
+    let kd = KdNearest::<Car<C>, 2>::new(&space).unwrap();
+    let plan = RrtConnect::new(kd)
+        .with_seed(seed)
+        .solve(&Problem::new(&space, &checker, a, b), &Termination::iterations(4000))
+        .unwrap();
+    let path = plan.solution.any_path().expect("a path, exact or approximate").to_vec();
+    prop_assert_eq!(path[0], a);
+    if plan.is_exact() {
+        prop_assert_eq!(*path.last().unwrap(), b);
+    }
+    for m in path.windows(2) {
+        let curve = space.path(&m[0], &m[1]);
+        prop_assert!(C::is_free(&checker, &curve));
+        let length = C::path_length(&curve);
+        let steps = (length / 1e-2).ceil() as u32;
+        for k in 0..=steps {
+            let p = C::pose_along(&curve, (f64::from(k) * 1e-2).min(length)).unwrap();
+            prop_assert!(world.reference_is_clear(Point::from(p.translation.vector), 1e-9));
+        }
+    }
+    let cost: f64 = path.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
+    let (Solution::Exact { cost: planned, .. } | Solution::Approximate { cost: planned, .. }) = plan.solution
+    else {
+        unreachable!()
+    };
+    prop_assert!((cost - planned).abs() <= 1e-9 * cost.max(1.0));
+    // Shortcut paths stay chains of free curves between the same poses.
+    let short = shortcut(&space, &checker, &path, 50, seed);
+    prop_assert_eq!((short[0], short.last()), (a, path.last()));
+    prop_assert!(short.windows(2).all(|m| C::is_free(&checker, &space.path(&m[0], &m[1]))));
+    let short_cost: f64 = short.windows(2).map(|m| space.distance(&m[0], &m[1])).sum();
+    prop_assert!(short_cost <= cost + 1e-9);
+    Ok(())
 }
 
 /// The same seed gives the same path and counts, with either nearest-neighbour structure.

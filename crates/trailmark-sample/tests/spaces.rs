@@ -6,7 +6,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use trailmark_core::world::Bounds;
 use trailmark_sample::nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
-use trailmark_sample::space::{Dubins, R2, Rn, Se2, SpaceError, StateSpace};
+use trailmark_sample::space::{Dubins, R2, ReedsShepp, Rn, Se2, SpaceError, StateSpace};
 
 fn bounds() -> Bounds {
     Bounds::new(-5.0, 0.0, 15.0, 10.0).unwrap()
@@ -81,6 +81,7 @@ proptest! {
         agree::<_, 3>(&Rn::new([0.0, -1.0, 2.0], [1.0, 1.0, 5.0]).unwrap(), seed, n, k, radius / 4.0)?;
         agree::<_, 2>(&Se2::new(bounds()), seed, n, k, radius)?;
         agree::<_, 2>(&Dubins::new(bounds(), 0.4 + radius / 4.0).unwrap(), seed, n, k, radius + 1.0)?;
+        agree::<_, 2>(&ReedsShepp::new(bounds(), 0.4 + radius / 4.0).unwrap(), seed, n, k, radius + 1.0)?;
     }
 
     /// Steering moves at most the step toward the target, along the motion; interpolation ends
@@ -100,6 +101,12 @@ proptest! {
     fn dubins_motions_stay_on_their_way(seed in any::<u64>(), step in 0.01f64..8.0) {
         check(&Dubins::new(bounds(), 1.0).unwrap(), seed, step)?;
     }
+
+    /// The same for Reeds-Shepp motions, which may reverse.
+    #[test]
+    fn reeds_shepp_motions_stay_on_their_way(seed in any::<u64>(), step in 0.01f64..8.0) {
+        check(&ReedsShepp::new(bounds(), 1.0).unwrap(), seed, step)?;
+    }
 }
 
 #[test]
@@ -108,6 +115,8 @@ fn bad_spaces_are_typed_errors() {
     assert!(matches!(Rn::new([f64::NAN], [1.0]), Err(SpaceError::InvalidBounds { axis: 0, .. })));
     assert!(matches!(Rn::new([-1e308], [1e308]), Err(SpaceError::InvalidBounds { axis: 0, .. }))); // infinite width
     assert!(matches!(Dubins::new(bounds(), 0.0), Err(SpaceError::NotPositive { .. })));
+    assert!(matches!(ReedsShepp::new(bounds(), f64::NAN), Err(SpaceError::NotPositive { .. })));
+    assert!(matches!(ReedsShepp::new(bounds(), 1e-20), Err(SpaceError::TurningRadiusOutOfScale(_))));
     assert!(matches!(Se2::with_heading_weight(bounds(), f64::INFINITY), Err(SpaceError::NotPositive { .. })));
     assert!(matches!(
         KdNearest::<R2, 3>::new(&R2::new(bounds())),
@@ -116,6 +125,16 @@ fn bad_spaces_are_typed_errors() {
     let space = Rn::new([0.0; 3], [1.0; 3]).unwrap();
     assert_eq!(space.measure(), 1.0);
     assert_eq!(R2::new(bounds()).measure(), 200.0);
+}
+
+#[test]
+fn the_reeds_shepp_space_is_symmetric_and_reverses() {
+    let space = ReedsShepp::new(bounds(), 1.0).unwrap();
+    let a = nalgebra::Isometry2::new(nalgebra::Vector2::new(0.0, 5.0), 0.0);
+    let b = nalgebra::Isometry2::new(nalgebra::Vector2::new(3.0, 5.0), 0.0);
+    assert!((space.distance(&a, &b) - 3.0).abs() < 1e-12); // straight ahead
+    assert!((space.distance(&b, &a) - 3.0).abs() < 1e-12); // straight back, in reverse
+    const { assert!(<ReedsShepp as StateSpace>::SYMMETRIC) };
 }
 
 #[test]

@@ -107,7 +107,7 @@ pub fn check_extent(turning_radius: f64, diagonal: f64) -> Result<(), RadiusOutO
 
 /// The largest normalised length of a straight piece: the distance between the poses plus at
 /// most four radii for the circles' offsets.
-const MAX_STRAIGHT_PARAM: f64 = MAX_NORMALISED_DISTANCE + 4.0;
+pub(crate) const MAX_STRAIGHT_PARAM: f64 = MAX_NORMALISED_DISTANCE + 4.0;
 
 /// What a piece of a Dubins path does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]

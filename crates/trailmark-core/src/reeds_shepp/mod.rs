@@ -7,7 +7,9 @@
 //! `CSC`, `CCu|CuC`, `C|CuCu|C`, `C|C(pi/2)SC`, `CSC(pi/2)|C`, `C|C(pi/2)SC(pi/2)|C`, and their
 //! reflections and reversals). [`ReedsSheppPath::shortest`] tries every word through the closed
 //! forms of the paper's section 8 and keeps the shortest; where the car changes gear the path
-//! has a *cusp* ([`ReedsSheppPath::cusps`]).
+//! has a *cusp* ([`ReedsSheppPath::cusps`]). A path is measured, evaluated at any arc length,
+//! sampled, cut ([`ReedsSheppPath::subpath`]) and taken apart into exact arcs and segments
+//! ([`ReedsSheppPath::pieces`]) as a Dubins path is.
 //!
 //! Poses are [`Pose`]s (nalgebra `Isometry2`), headings counter-clockwise from +x; lengths are
 //! in world units. The supported range is that of Dubins curves (see
@@ -41,8 +43,13 @@ mod solver;
 use thiserror::Error;
 
 pub use crate::dubins::Turn;
-use crate::dubins::{DubinsError, SampleFault, Start, advance, checked_offset, sample_arc_length, to_pose};
-use crate::geometry::Pose;
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+use crate::dubins::{
+    DubinsError, MAX_STRAIGHT_PARAM, Piece, SampleFault, Start, advance, check_pose, check_radius,
+    checked_offset, mod_tau, sample_arc_length, to_pose,
+};
+use crate::geometry::{Point, Pose};
 
 /// Which way the car drives along a piece.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
@@ -72,6 +79,75 @@ pub enum ReedsSheppError {
     /// A value out of range (never [`DubinsError::NoPath`] or [`DubinsError::InvalidPath`]).
     #[error(transparent)]
     Query(#[from] DubinsError),
+    /// A deserialized path that no query could give: a radius, start or piece out of range.
+    #[error("not a valid Reeds-Shepp path: {0}")]
+    InvalidPath(&'static str),
+}
+
+/// A [`ReedsSheppPath`] as written.
+#[derive(serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawPath {
+    start: Start,
+    turning_radius: f64,
+    turns: String,
+    params: Vec<f64>,
+}
+
+impl From<ReedsSheppPath> for RawPath {
+    fn from(path: ReedsSheppPath) -> Self {
+        let word = path.word;
+        let turns = word.turns[..word.len].iter().map(|&t| turn_letter(t)).collect();
+        RawPath {
+            start: path.start,
+            turning_radius: path.turning_radius,
+            turns,
+            params: word.params[..word.len].to_vec(),
+        }
+    }
+}
+
+impl TryFrom<RawPath> for ReedsSheppPath {
+    type Error = ReedsSheppError;
+
+    fn try_from(raw: RawPath) -> Result<Self, ReedsSheppError> {
+        let invalid = ReedsSheppError::InvalidPath;
+        check_radius(raw.turning_radius).map_err(|_| invalid("the turning radius is out of range"))?;
+        check_pose("start", &raw.start.pose()).map_err(|_| invalid("the start is out of range"))?;
+        let turns: Vec<Turn> = raw
+            .turns
+            .chars()
+            .map(|c| match c {
+                'L' => Ok(Turn::Left),
+                'S' => Ok(Turn::Straight),
+                'R' => Ok(Turn::Right),
+                _ => Err(invalid("a turn is not L, S or R")),
+            })
+            .collect::<Result<_, _>>()?;
+        if turns.is_empty() || turns.len() > 5 || turns.len() != raw.params.len() {
+            return Err(invalid("one to five pieces, a length for each"));
+        }
+        for (&turn, &param) in turns.iter().zip(&raw.params) {
+            let max = if turn == Turn::Straight { MAX_STRAIGHT_PARAM } else { TAU };
+            if !(-max..=max).contains(&param) {
+                return Err(invalid("a piece is not finite, or too long"));
+            }
+        }
+        Ok(ReedsSheppPath {
+            start: raw.start,
+            turning_radius: raw.turning_radius,
+            word: solver::Word::new(&turns, &raw.params),
+        })
+    }
+}
+
+/// The letter of a turn in a word: `L`, `S` or `R`.
+fn turn_letter(turn: Turn) -> char {
+    match turn {
+        Turn::Left => 'L',
+        Turn::Right => 'R',
+        Turn::Straight => 'S',
+    }
 }
 
 /// A piece shorter than this many turning radii is no change of gear: the closed forms leave
@@ -79,7 +155,15 @@ pub enum ReedsSheppError {
 const CUSP_SLACK: f64 = 1e-12;
 
 /// A Reeds-Shepp path: a start pose, a turning radius and up to five pieces.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// Serializes as `{"start": [x, y, heading], "turning_radius": r, "turns": "LRSL", "params": [t,
+/// u, v, w]}`, with `params` the pieces' lengths divided by the radius, negative for a piece
+/// driven in reverse (a turn's angle in radians). Deserializing checks what a query would: the
+/// start and radius in the supported range, one to five pieces, each turn within a full circle
+/// and each straight piece at most the supported distance plus four radii
+/// ([`ReedsSheppError::InvalidPath`] otherwise).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(try_from = "RawPath", into = "RawPath")]
 pub struct ReedsSheppPath {
     start: Start,
     turning_radius: f64,
@@ -175,6 +259,57 @@ impl ReedsSheppPath {
         cusps
     }
 
+    /// The first `s` world units of the path, `0 <= s <= length()`: a path with the same start,
+    /// radius and pieces, cut where [`pose_at(s)`](ReedsSheppPath::pose_at) is.
+    ///
+    /// Errors with [`DubinsError::OutOfRange`] for any other `s`.
+    pub fn subpath(&self, s: f64) -> Result<ReedsSheppPath, ReedsSheppError> {
+        let length = self.length();
+        if !(0.0..=length).contains(&s) {
+            return Err(DubinsError::OutOfRange { s, length }.into());
+        }
+        let mut left = s / self.turning_radius;
+        let mut word = self.word;
+        for p in &mut word.params[..word.len] {
+            let kept = left.min(p.abs());
+            left -= kept;
+            *p = kept.copysign(*p);
+        }
+        Ok(ReedsSheppPath { word, ..*self })
+    }
+
+    /// The pieces in world coordinates (a piece of length 0 included), for exact collision
+    /// checks: an arc driven in reverse sweeps the other way round its circle.
+    pub fn pieces(&self) -> Vec<Piece> {
+        let r = self.turning_radius;
+        let mut pose = self.start.array();
+        (0..self.word.len)
+            .map(|i| {
+                let (turn, p) = (self.word.turns[i], self.word.params[i]);
+                let [x, y, h] = pose;
+                let next = advance(pose, turn, p * r, r);
+                pose = next;
+                match turn {
+                    Turn::Straight => {
+                        Piece::Segment { from: Point::new(x, y), to: Point::new(next[0], next[1]) }
+                    }
+                    Turn::Left => Piece::Arc {
+                        center: Point::new(x - r * h.sin(), y + r * h.cos()),
+                        radius: r,
+                        start_angle: mod_tau(h - FRAC_PI_2),
+                        sweep: p,
+                    },
+                    Turn::Right => Piece::Arc {
+                        center: Point::new(x + r * h.sin(), y - r * h.cos()),
+                        radius: r,
+                        start_angle: mod_tau(h + FRAC_PI_2),
+                        sweep: -p,
+                    },
+                }
+            })
+            .collect()
+    }
+
     /// The pose after driving `s` world units along the path, `0 <= s <= length()`.
     ///
     /// Errors with [`DubinsError::OutOfRange`] for any other `s` (NaN included).
@@ -222,11 +357,7 @@ impl std::fmt::Display for ReedsSheppPath {
     /// The word with each piece's gear, as in the literature: `L+R-S-L-`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         for segment in self.segments() {
-            let turn = match segment.turn {
-                Turn::Left => 'L',
-                Turn::Right => 'R',
-                Turn::Straight => 'S',
-            };
+            let turn = turn_letter(segment.turn);
             let gear = if segment.gear == Gear::Forward { '+' } else { '-' };
             write!(f, "{turn}{gear}")?;
         }

@@ -22,7 +22,7 @@ pub(super) struct Word {
 }
 
 impl Word {
-    fn new(turns: &[Turn], params: &[f64]) -> Self {
+    pub fn new(turns: &[Turn], params: &[f64]) -> Self {
         debug_assert_eq!(turns.len(), params.len());
         let mut word = Word { turns: [Turn::Straight; 5], params: [0.0; 5], len: turns.len() };
         word.turns[..turns.len()].copy_from_slice(turns);

@@ -8,6 +8,7 @@ use crate::curve::Bezier;
 use crate::dubins::{DubinsPath, Piece};
 use crate::geometry::Point;
 use crate::predicates::{on_segment, orient};
+use crate::reeds_shepp::ReedsSheppPath;
 
 use super::PolygonWorld;
 use super::polygon::{Polygon, segments_touch};
@@ -127,7 +128,18 @@ impl CollisionChecker {
     /// Whether the robot following a Dubins path stays collision-free (every arc and segment
     /// tested exactly).
     pub fn dubins_is_free(&self, path: &DubinsPath) -> bool {
-        path.pieces().iter().all(|piece| match *piece {
+        self.pieces_are_free(&path.pieces())
+    }
+
+    /// Whether the robot following a Reeds-Shepp path, forward and in reverse, stays
+    /// collision-free (every arc and segment tested exactly).
+    pub fn reeds_shepp_is_free(&self, path: &ReedsSheppPath) -> bool {
+        self.pieces_are_free(&path.pieces())
+    }
+
+    /// Whether the robot along each arc and segment stays collision-free.
+    pub fn pieces_are_free(&self, pieces: &[Piece]) -> bool {
+        pieces.iter().all(|piece| match *piece {
             Piece::Segment { from, to } => self.segment_is_free(from, to),
             Piece::Arc { center, radius, start_angle, sweep } => {
                 self.arc_is_free(center, radius, start_angle, sweep)

@@ -196,18 +196,9 @@ pub(super) fn car_curve<C: CarCurves>(space: &Car<C>, poses: &[Pose]) -> Vec<Poi
     let mut curve = Vec::new();
     for pair in poses.windows(2) {
         let Some(piece) = C::path(&pair[0], &pair[1], radius) else { continue };
-        let length = C::path_length(&piece);
-        let step = (radius / 8.0).max(length / 1e4);
-        let mut s = 0.0_f64;
-        loop {
-            if let Some(p) = C::pose_along(&piece, s.min(length)) {
-                curve.push(Point::from(p.translation.vector));
-            }
-            if s >= length {
-                break;
-            }
-            s += step;
-        }
+        let step = (radius / 8.0).max(C::path_length(&piece) / 1e4);
+        let samples = C::sample(&piece, step).unwrap_or_default();
+        curve.extend(samples.iter().map(|p| Point::from(p.translation.vector)));
     }
     curve
 }

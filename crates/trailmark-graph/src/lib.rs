@@ -52,7 +52,7 @@ pub use dynamic::{DynamicError, DynamicRoadmap, NodeKey, Rebuild};
 pub use grid::{CornerCutting, GridGraph, Neighbours};
 pub use prm::{
     Connection, DubinsPrm, MAX_ROADMAP_NODES, PlanarSpace, PolygonPrm, PrmError, PrmOptions, PrmQuery,
-    PrmSampler,
+    PrmSampler, ReedsSheppPrm,
 };
 #[doc(hidden)]
 #[allow(deprecated)]

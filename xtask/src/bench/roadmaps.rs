@@ -5,7 +5,7 @@
 //! exponent of the fitted power law in the number of boundary vertices: Lee's sweep is
 //! O(n² log n)), the trapezoidal decomposition's, and PRM*'s (1,000 Halton samples); then
 //! seeded queries on each roadmap, whose costs are checked against the visibility graph's (the
-//! shortest paths: no roadmap may beat them) and reported as ratios. Last, Dubins shortest-path
+//! shortest paths: no roadmap may beat them) and reported as ratios. Last, Dubins and Reeds-Shepp shortest-path
 //! queries per second on one core.
 
 use std::time::Instant;
@@ -17,6 +17,7 @@ use trailmark::core::dubins::DubinsPath;
 use trailmark::core::freespace::Location;
 use trailmark::core::generate;
 use trailmark::core::geometry::{Point, Pose, Vector};
+use trailmark::core::reeds_shepp::ReedsSheppPath;
 use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::graph::{RoadmapQuery, Trapezoids};
@@ -88,6 +89,10 @@ pub struct RoadmapReport {
     pub dubins_paths_per_s: f64,
     /// Dubins shortest lengths per second on one core.
     pub dubins_lengths_per_s: f64,
+    /// Reeds-Shepp shortest paths per second on one core (the same pose pairs).
+    pub reeds_shepp_paths_per_s: f64,
+    /// Reeds-Shepp shortest lengths per second on one core.
+    pub reeds_shepp_lengths_per_s: f64,
 }
 
 /// The median of `runs` timings of `f`, in milliseconds, and its last output.
@@ -118,12 +123,15 @@ pub fn bench_roadmaps(suite: Suite, seed: u64, runs: u32) -> Result<RoadmapRepor
     }
     let samples: Vec<(f64, f64)> =
         rows.iter().map(|r| (r.vertices as f64, r.visibility_ms_one_thread)).collect();
-    let (dubins_paths_per_s, dubins_lengths_per_s) = dubins_rate(seed, runs)?;
+    let [dubins_paths_per_s, dubins_lengths_per_s, reeds_shepp_paths_per_s, reeds_shepp_lengths_per_s] =
+        curve_rates(seed, runs)?;
     Ok(RoadmapReport {
         visibility_exponent: fitted_exponent(&samples),
         rows,
         dubins_paths_per_s,
         dubins_lengths_per_s,
+        reeds_shepp_paths_per_s,
+        reeds_shepp_lengths_per_s,
     })
 }
 
@@ -205,9 +213,9 @@ fn bench_world(count: usize, seed: u64, runs: u32, queries: usize) -> Result<Roa
     })
 }
 
-/// Dubins shortest paths and lengths per second on one core: 100,000 seeded pose pairs in a
-/// 20 x 20 square, turning radius 1 (the best of the rounds).
-fn dubins_rate(seed: u64, runs: u32) -> Result<(f64, f64), String> {
+/// Dubins, then Reeds-Shepp, shortest paths and lengths per second on one core: 100,000 seeded
+/// pose pairs in a 20 x 20 square, turning radius 1 (the best of the rounds).
+fn curve_rates(seed: u64, runs: u32) -> Result<[f64; 4], String> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut pose = || {
         let (x, y, h) =
@@ -231,7 +239,15 @@ fn dubins_rate(seed: u64, runs: u32) -> Result<(f64, f64), String> {
     if !(a.is_finite() && (a - b).abs() <= 1e-9 * a) {
         return Err(format!("Dubins lengths disagree: paths sum to {a}, lengths to {b}"));
     }
-    Ok((paths, lengths))
+    let (rs_paths, c) =
+        rate(&pairs, runs, |a, b| ReedsSheppPath::shortest(a, b, 1.0).map_or(f64::NAN, |p| p.length()));
+    let (rs_lengths, d) =
+        rate(&pairs, runs, |a, b| ReedsSheppPath::shortest_length(a, b, 1.0).unwrap_or(f64::NAN));
+    // Reversing never lengthens a path: the Reeds-Shepp sum is at most the Dubins one.
+    if !(c.is_finite() && (c - d).abs() <= 1e-9 * c && c <= a * (1.0 + 1e-9)) {
+        return Err(format!("Reeds-Shepp lengths disagree: paths sum to {c}, lengths to {d}, Dubins {a}"));
+    }
+    Ok([paths, lengths, rs_paths, rs_lengths])
 }
 
 /// The section of the report.
@@ -292,6 +308,11 @@ pub fn markdown(report: &RoadmapReport) -> String {
         report.dubins_paths_per_s / DUBINS_GOAL,
         report.dubins_lengths_per_s / 1e6,
         met(report.dubins_paths_per_s >= DUBINS_GOAL)
+    ));
+    out.push_str(&format!(
+        "- Reeds-Shepp shortest paths on the same pose pairs: {:.2} M paths/s, {:.2} M lengths/s on one core.\n",
+        report.reeds_shepp_paths_per_s / 1e6,
+        report.reeds_shepp_lengths_per_s / 1e6,
     ));
     out
 }

@@ -9,7 +9,7 @@
 //! *backwards* `(x, y, phi) -> (x cos phi + y sin phi, x sin phi - y cos phi, phi)` drives the
 //! pieces in the reverse order.
 
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use crate::dubins::Turn;
 
@@ -60,14 +60,34 @@ impl Word {
     }
 }
 
-/// An angle in `(-pi, pi]`.
+/// An angle in `(-pi, pi]`: `x` modulo 2π as `rem_euclid` gives it, then shifted. Arguments
+/// within two turns (all but hostile ones) take the same steps without the division.
 #[inline]
 fn wrap(x: f64) -> f64 {
-    let mut v = x.rem_euclid(2.0 * PI);
+    let mut v = if x.abs() < 2.0 * TAU {
+        let mut r = if x >= TAU { x - TAU } else { x };
+        if r < 0.0 {
+            r = if r <= -TAU { r + TAU } else { r } + TAU;
+        }
+        r
+    } else {
+        x.rem_euclid(TAU)
+    };
     if v > PI {
-        v -= 2.0 * PI;
+        v -= TAU;
     }
     v
+}
+
+/// A problem in the start's frame: the goal at `(x, y)` facing `phi`, with `phi`'s sine and
+/// cosine (computed once for the four mirror images, whose sines differ only in sign).
+#[derive(Debug, Clone, Copy)]
+struct Goal {
+    x: f64,
+    y: f64,
+    phi: f64,
+    sin: f64,
+    cos: f64,
 }
 
 /// The polar coordinates `(r, theta)` of `(x, y)`.
@@ -83,8 +103,9 @@ const SLACK: f64 = 1e-10;
 use Turn::{Left as L, Right as R, Straight as S};
 
 /// `L+ S+ L+` (formula 8.1).
-fn lsl(x: f64, y: f64, phi: f64) -> Option<[f64; 3]> {
-    let (u, t) = polar(x - phi.sin(), y - 1.0 + phi.cos());
+fn lsl(g: Goal) -> Option<[f64; 3]> {
+    let Goal { x, y, phi, sin, cos } = g;
+    let (u, t) = polar(x - sin, y - 1.0 + cos);
     if t >= -SLACK {
         let v = wrap(phi - t);
         if v >= -SLACK {
@@ -95,8 +116,9 @@ fn lsl(x: f64, y: f64, phi: f64) -> Option<[f64; 3]> {
 }
 
 /// `L+ S+ R+` (formula 8.2).
-fn lsr(x: f64, y: f64, phi: f64) -> Option<[f64; 3]> {
-    let (u1, t1) = polar(x + phi.sin(), y - 1.0 - phi.cos());
+fn lsr(g: Goal) -> Option<[f64; 3]> {
+    let Goal { x, y, phi, sin, cos } = g;
+    let (u1, t1) = polar(x + sin, y - 1.0 - cos);
     let u1 = u1 * u1;
     if u1 >= 4.0 {
         let u = (u1 - 4.0).sqrt();
@@ -110,8 +132,9 @@ fn lsr(x: f64, y: f64, phi: f64) -> Option<[f64; 3]> {
 }
 
 /// `L+ R- L` (formula 8.3, the base of `C|C|C`, `C|CC` and `CC|C`).
-fn lrl(x: f64, y: f64, phi: f64) -> Option<[f64; 3]> {
-    let (u1, theta) = polar(x - phi.sin(), y - 1.0 + phi.cos());
+fn lrl(g: Goal) -> Option<[f64; 3]> {
+    let Goal { x, y, phi, sin, cos } = g;
+    let (u1, theta) = polar(x - sin, y - 1.0 + cos);
     if u1 <= 4.0 {
         let u = -2.0 * (0.25 * u1).asin();
         let t = wrap(theta + 0.5 * u + PI);
@@ -136,8 +159,9 @@ fn tau_omega(u: f64, v: f64, xi: f64, eta: f64, phi: f64) -> (f64, f64) {
 }
 
 /// `L+ R+u L-u R-` (formula 8.7).
-fn lrlr_same(x: f64, y: f64, phi: f64) -> Option<[f64; 4]> {
-    let (xi, eta) = (x + phi.sin(), y - 1.0 - phi.cos());
+fn lrlr_same(g: Goal) -> Option<[f64; 4]> {
+    let Goal { x, y, phi, sin, cos } = g;
+    let (xi, eta) = (x + sin, y - 1.0 - cos);
     let rho = 0.25 * (2.0 + xi.hypot(eta));
     if rho <= 1.0 {
         let u = rho.acos();
@@ -150,8 +174,9 @@ fn lrlr_same(x: f64, y: f64, phi: f64) -> Option<[f64; 4]> {
 }
 
 /// `L+ R-u L-u R+` (formula 8.8).
-fn lrlr_opposite(x: f64, y: f64, phi: f64) -> Option<[f64; 4]> {
-    let (xi, eta) = (x + phi.sin(), y - 1.0 - phi.cos());
+fn lrlr_opposite(g: Goal) -> Option<[f64; 4]> {
+    let Goal { x, y, phi, sin, cos } = g;
+    let (xi, eta) = (x + sin, y - 1.0 - cos);
     let rho = (20.0 - xi * xi - eta * eta) / 16.0;
     if (0.0..=1.0).contains(&rho) {
         let u = -rho.acos();
@@ -166,8 +191,9 @@ fn lrlr_opposite(x: f64, y: f64, phi: f64) -> Option<[f64; 4]> {
 }
 
 /// `L+ R-(pi/2) S- L-` (formula 8.9).
-fn lrsl(x: f64, y: f64, phi: f64) -> Option<[f64; 4]> {
-    let (rho, theta) = polar(x - phi.sin(), y - 1.0 + phi.cos());
+fn lrsl(g: Goal) -> Option<[f64; 4]> {
+    let Goal { x, y, phi, sin, cos } = g;
+    let (rho, theta) = polar(x - sin, y - 1.0 + cos);
     if rho >= 2.0 {
         let r = (rho * rho - 4.0).sqrt();
         let u = 2.0 - r;
@@ -181,8 +207,9 @@ fn lrsl(x: f64, y: f64, phi: f64) -> Option<[f64; 4]> {
 }
 
 /// `L+ R-(pi/2) S- R-` (formula 8.10).
-fn lrsr(x: f64, y: f64, phi: f64) -> Option<[f64; 4]> {
-    let (xi, eta) = (x + phi.sin(), y - 1.0 - phi.cos());
+fn lrsr(g: Goal) -> Option<[f64; 4]> {
+    let Goal { x, y, phi, sin, cos } = g;
+    let (xi, eta) = (x + sin, y - 1.0 - cos);
     let (rho, theta) = polar(-eta, xi);
     if rho >= 2.0 {
         let t = theta;
@@ -196,8 +223,9 @@ fn lrsr(x: f64, y: f64, phi: f64) -> Option<[f64; 4]> {
 }
 
 /// `L+ R-(pi/2) S- L-(pi/2) R+` (formula 8.11).
-fn lrslr(x: f64, y: f64, phi: f64) -> Option<[f64; 5]> {
-    let (xi, eta) = (x + phi.sin(), y - 1.0 - phi.cos());
+fn lrslr(g: Goal) -> Option<[f64; 5]> {
+    let Goal { x, y, phi, sin, cos } = g;
+    let (xi, eta) = (x + sin, y - 1.0 - cos);
     let (rho, _) = polar(xi, eta);
     if rho >= 2.0 {
         let u = 4.0 - (rho * rho - 4.0).sqrt();
@@ -212,24 +240,25 @@ fn lrslr(x: f64, y: f64, phi: f64) -> Option<[f64; 5]> {
     None
 }
 
-/// Tries `base` at `(x, y, phi)` and at its time flip, reflection, and both, and gives `found`
+/// Tries `base` at the goal `g` and at its time flip, reflection, and both, and gives `found`
 /// each word that joins the poses, built from `turns` and the lengths `base` returns (reversed
 /// when `reverse`: the problem was turned around).
 fn with_flips<const N: usize>(
     found: &mut impl FnMut(Word),
-    (x, y, phi): (f64, f64, f64),
+    g: Goal,
     turns: [Turn; N],
-    base: fn(f64, f64, f64) -> Option<[f64; N]>,
+    base: fn(Goal) -> Option<[f64; N]>,
     reverse: bool,
 ) {
-    let variants: [(f64, f64, f64, bool, bool); 4] = [
-        (x, y, phi, false, false),
-        (-x, y, -phi, true, false),
-        (x, -y, -phi, false, true),
-        (-x, -y, phi, true, true),
+    let Goal { x, y, phi, sin, cos } = g;
+    let variants: [(Goal, bool, bool); 4] = [
+        (g, false, false),
+        (Goal { x: -x, y, phi: -phi, sin: -sin, cos }, true, false),
+        (Goal { x, y: -y, phi: -phi, sin: -sin, cos }, false, true),
+        (Goal { x: -x, y: -y, phi, sin, cos }, true, true),
     ];
-    for (x, y, phi, flip, reflect) in variants {
-        if let Some(params) = base(x, y, phi) {
+    for (g, flip, reflect) in variants {
+        if let Some(params) = base(g) {
             let mut word = Word::new(&turns, &params);
             if flip {
                 word = word.flipped();
@@ -250,10 +279,10 @@ fn with_flips<const N: usize>(
 /// `C S C C`) and `C C S C C`, each base formula under the time flip, the reflection and (for
 /// the families that are not their own reverse) the reversal.
 pub(super) fn each_word(x: f64, y: f64, phi: f64, mut found: impl FnMut(Word)) {
-    let here = (x, y, phi);
+    let (sin, cos) = phi.sin_cos();
+    let here = Goal { x, y, phi, sin, cos };
     // The reversed problem: the start seen from the goal's frame, driven backwards.
-    let (s, c) = phi.sin_cos();
-    let back = (x * c + y * s, x * s - y * c, phi);
+    let back = Goal { x: x * cos + y * sin, y: x * sin - y * cos, phi, sin, cos };
     let found = &mut found;
     with_flips(found, here, [L, S, L], lsl, false);
     with_flips(found, here, [L, S, R], lsr, false);

@@ -128,6 +128,10 @@ pub const MAX_NODES: usize = MAX_ROADMAP_NODES;
 /// A probabilistic roadmap of Dubins paths between poses.
 pub type DubinsPrm = PolygonPrm<trailmark_sample::Dubins>;
 
+/// A probabilistic roadmap of Reeds-Shepp paths between poses (a car that reverses: each edge
+/// costs the same both ways).
+pub type ReedsSheppPrm = PolygonPrm<trailmark_sample::ReedsShepp>;
+
 /// A [`PolygonPrm`] with a start and a goal joined to it.
 pub type PrmQuery<'g, S = R2> = RoadmapQuery<'g, PolygonPrm<S>>;
 

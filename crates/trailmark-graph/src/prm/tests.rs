@@ -5,7 +5,7 @@ use std::collections::BTreeSet;
 use trailmark_core::generate::convex_obstacles;
 use trailmark_core::geometry::Vector;
 use trailmark_core::world::Bounds;
-use trailmark_sample::Dubins;
+use trailmark_sample::{Dubins, ReedsShepp};
 
 use trailmark_core::graph::{Predecessors, Successors};
 
@@ -214,6 +214,32 @@ fn obstacle_changes_report_exactly_the_changed_edges() {
 
 fn checker_free(checker: &CollisionChecker, prm: &PolygonPrm, [a, b]: [u32; 2]) -> bool {
     checker.segment_is_free(prm.position(a), prm.position(b))
+}
+
+/// Reeds-Shepp roadmaps: each edge's cost is its own shortest Reeds-Shepp path, free by the
+/// exact checker, and the reverse edge, where both are free, costs the same.
+#[test]
+fn reeds_shepp_edges_are_free_and_cost_the_same_both_ways() {
+    let w = world(9, 0.3);
+    let space = ReedsShepp::new(w.bounds(), 1.5).unwrap();
+    let o = PrmOptions { sampler: PrmSampler::Halton, ..options(Connection::Nearest { k: 8 }) };
+    let mut prm: ReedsSheppPrm = PolygonPrm::with_space(w, space, o).unwrap();
+    prm.grow(80).unwrap();
+    let checker = prm.world().checker();
+    let (mut edges, mut both_ways) = (0, 0);
+    for (a, b, cost) in prm.edges() {
+        edges += 1;
+        let path = space.path(&prm.position(a), &prm.position(b));
+        assert!(checker.reeds_shepp_is_free(&path));
+        assert!((cost - path.length()).abs() <= 1e-12 * cost.max(1.0), "{cost} vs {}", path.length());
+        prm.for_each_successor(b, |v, c| {
+            if v == a {
+                both_ways += 1;
+                assert!((c - cost).abs() <= 1e-9 * cost.max(1.0), "{a} -> {b}: {cost}, back {c}");
+            }
+        });
+    }
+    assert!(edges > 0 && both_ways > 0, "{edges} edges, {both_ways} with their reverse");
 }
 
 /// Dubins roadmaps are directed: each edge's cost is its own shortest Dubins path, free by

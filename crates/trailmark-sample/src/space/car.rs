@@ -32,6 +32,9 @@ pub trait CarCurves: Debug + Clone + Copy + PartialEq + Send + Sync + 'static {
     fn path_length(path: &Self::Path) -> f64;
     /// The pose `s` world units along the path (`0 <= s <= length`).
     fn pose_along(path: &Self::Path, s: f64) -> Option<Pose>;
+    /// Poses every `step` world units along the path, then its end (`None` for a step that is
+    /// not positive and finite, or too many poses).
+    fn sample(path: &Self::Path, step: f64) -> Option<Vec<Pose>>;
     /// Whether a disc robot following the path stays clear of a polygon world's obstacles,
     /// every arc and segment tested exactly.
     fn is_free(checker: &CollisionChecker, path: &Self::Path) -> bool;
@@ -61,6 +64,10 @@ impl CarCurves for DubinsCurves {
         path.pose_at(s).ok()
     }
 
+    fn sample(path: &DubinsPath, step: f64) -> Option<Vec<Pose>> {
+        path.sample(step).ok()
+    }
+
     fn is_free(checker: &CollisionChecker, path: &DubinsPath) -> bool {
         checker.dubins_is_free(path)
     }
@@ -88,6 +95,10 @@ impl CarCurves for ReedsSheppCurves {
 
     fn pose_along(path: &ReedsSheppPath, s: f64) -> Option<Pose> {
         path.pose_at(s).ok()
+    }
+
+    fn sample(path: &ReedsSheppPath, step: f64) -> Option<Vec<Pose>> {
+        path.sample(step).ok()
     }
 
     fn is_free(checker: &CollisionChecker, path: &ReedsSheppPath) -> bool {

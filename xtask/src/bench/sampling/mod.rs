@@ -31,6 +31,7 @@ use limits::LimitRow;
 use prm::PrmRow;
 use spaces::{DUBINS_WORLDS, SpaceRow};
 use star::{EqualTimeRow, STAR_ITERATIONS, StarRow};
+use trailmark::sample::space::{DubinsCurves, ReedsSheppCurves};
 use world::{DOOR, ROBOT_RADIUS, SIZE, SamplingWorld, worlds};
 
 /// The names `--only` can give the section: its single-query planners, RRT*, PRM*, and `boxes`
@@ -162,9 +163,15 @@ pub fn bench(
             connect.push(row);
         }
         if wanted(SingleQuery::RrtConnect.name()) && DUBINS_WORLDS.contains(&w.name.as_str()) {
+            let car_queries = &qs[..size.space_queries.min(qs.len())];
             progress
                 .note(format!("{}: RRT-Connect for a Dubins car, {} queries", w.name, size.space_queries));
-            spaces.push(spaces::bench_dubins(w, &qs[..size.space_queries.min(qs.len())], seed)?);
+            spaces.push(spaces::bench_car::<DubinsCurves>(w, car_queries, seed, "dubins")?);
+            progress.note(format!(
+                "{}: RRT-Connect for a Reeds-Shepp car, {} queries",
+                w.name, size.space_queries
+            ));
+            spaces.push(spaces::bench_car::<ReedsSheppCurves>(w, car_queries, seed, "reeds_shepp")?);
         }
         if with_prm {
             progress.note(format!("{}: PRM*, {} samples, {queries} queries", w.name, size.prm_samples));

@@ -1,8 +1,8 @@
-//! The sampling section's other state spaces: RRT-Connect for a Dubins car on two of the
-//! section's polygon worlds, and for a 3-link planar arm in its joint space (the scene of
-//! `examples/arm.rs`).
+//! The sampling section's other state spaces: RRT-Connect for a car (Dubins: forward only;
+//! Reeds-Shepp: forward and in reverse) on two of the section's polygon worlds, and for a 3-link
+//! planar arm in its joint space (the scene of `examples/arm.rs`).
 //!
-//! Dubins paths are re-checked twice: each motion's curve exactly (its arcs and segment against
+//! Car paths are re-checked twice: each motion's curve exactly (its arcs and segment against
 //! the grown obstacles), and the poses every 1e-3 along it by the point test, which also checks
 //! that the heading never turns faster than the turning radius allows. Arm paths are re-checked
 //! every 1e-3 rad of any joint with the true arm (no clearance). A path that fails, or that
@@ -18,9 +18,8 @@ use trailmark::core::geometry::{Point, Pose, Vector};
 use trailmark::core::termination::Termination;
 use trailmark::core::world::{Bounds, CollisionChecker, PolygonWorld};
 use trailmark::sample::arm::{ArmChecker, PlanarArm, densify};
-use trailmark::sample::{
-    Dubins, KdNearest, Plan, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace,
-};
+use trailmark::sample::space::{Car, CarCurves};
+use trailmark::sample::{KdNearest, Plan, Planner, Problem, Rn, RrtConnect, RrtOptions, Sampled, StateSpace};
 
 use crate::bench::sampling::tally::{ConnectStats, ConnectTally};
 use crate::bench::sampling::world::{PlaneQuery, SamplingWorld};
@@ -41,7 +40,7 @@ const ARM_RANGE: f64 = 0.5;
 /// RRT-Connect in one state space on one world.
 #[derive(Debug, Clone, Serialize)]
 pub struct SpaceRow {
-    /// `dubins` or `arm`.
+    /// `dubins`, `reeds_shepp` or `arm`.
     pub space: &'static str,
     /// The world.
     pub world: String,
@@ -66,13 +65,19 @@ fn add<T>(
     tally.add(Some(bound), counts, path.is_some(), |_| path.and_then(checked));
 }
 
-/// RRT-Connect for the Dubins car on `w`'s queries that have a path for the disc robot, each
-/// end given a seeded heading from which the car can drive a full circle (so neither end is a
-/// pose it cannot leave or reach, such as facing a wall at less than its turning radius).
-pub fn bench_dubins(w: &SamplingWorld, queries: &[PlaneQuery], seed: u64) -> Result<SpaceRow, String> {
-    let err = |e: &dyn std::fmt::Display| format!("{}: Dubins: {e}", w.name);
-    let space = Dubins::new(w.world.bounds(), TURNING_RADIUS).map_err(|e| err(&e))?;
-    let nearest = KdNearest::<Dubins, 2>::new(&space).map_err(|e| err(&e))?;
+/// RRT-Connect for the car of the curves `C` (`space` its name) on `w`'s queries that have a
+/// path for the disc robot, each end given a seeded heading from which the car can drive a full
+/// circle (so neither end is a pose it cannot leave or reach, such as facing a wall at less than
+/// its turning radius).
+pub fn bench_car<C: CarCurves>(
+    w: &SamplingWorld,
+    queries: &[PlaneQuery],
+    seed: u64,
+    space_name: &'static str,
+) -> Result<SpaceRow, String> {
+    let err = |e: &dyn std::fmt::Display| format!("{}: {space_name}: {e}", w.name);
+    let space = Car::<C>::new(w.world.bounds(), TURNING_RADIUS).map_err(|e| err(&e))?;
+    let nearest = KdNearest::<Car<C>, 2>::new(&space).map_err(|e| err(&e))?;
     let limit = Termination::iterations(ITERATIONS);
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xd0b1);
     let mut tally = ConnectTally::default();
@@ -95,17 +100,17 @@ pub fn bench_dubins(w: &SamplingWorld, queries: &[PlaneQuery], seed: u64) -> Res
             let mut cost = 0.0;
             for m in path.windows(2) {
                 let curve = space.path(&m[0], &m[1]);
-                if !(w.checker.dubins_is_free(&curve)
-                    && sampled_free(&w.checker, &curve.sample(RECHECK_STEP).ok()?))
+                if !(C::is_free(&w.checker, &curve)
+                    && sampled_free(&w.checker, &C::sample(&curve, RECHECK_STEP)?))
                 {
                     return None;
                 }
-                cost += curve.length();
+                cost += C::path_length(&curve);
             }
             ends.then_some(cost)
         });
     }
-    Ok(SpaceRow { space: "dubins", world: w.name.clone(), queries: tally.solvable, stats: tally.stats() })
+    Ok(SpaceRow { space: space_name, world: w.name.clone(), queries: tally.solvable, stats: tally.stats() })
 }
 
 /// Whether the car at `pose` can drive a full circle of the turning radius to its left or to
@@ -189,16 +194,17 @@ pub fn markdown(rows: &[SpaceRow]) -> String {
     }
     let mut s = format!(
         "### RRT-Connect in other state spaces ({ITERATIONS} iterations at most)\n\n\
-         - **Dubins**: a car of turning radius {TURNING_RADIUS} on the worlds above, on the queries that have a \
+         - **Dubins** and **Reeds-Shepp**: a car of turning radius {TURNING_RADIUS} (forward only, or in reverse \
+         too) on the worlds above, on the queries that have a \
          path for the disc robot, with seeded headings from which the car can drive a full circle (a query is \
-         skipped when 100 headings at an end give none); motions are Dubins curves checked exactly (arcs and \
-         segment against the grown obstacles). Cost is over the disc robot's shortest path in the plane, a \
+         skipped when 100 headings at an end give none); motions are the shortest curves checked exactly (arcs and \
+         segments against the grown obstacles). Cost is over the disc robot's shortest path in the plane, a \
          lower bound. Some queries may have no path for the car.\n\
          - **Arm**: the 3-link arm of `examples/arm.rs` (links 2.5, 2, 1.5, radius 0.15, among a shelf, a post \
          and a hanging block), between seeded pairs of free configurations; motions checked every {ARM_RESOLUTION} \
          of the joint space's extent with the links grown to make that safe, range {ARM_RANGE} rad. Cost is \
          over the straight line in joint space.\n\
-         - Re-checks: Dubins curves exactly and every {RECHECK_STEP} by the point test with the turning rate \
+         - Re-checks: the cars' curves exactly and every {RECHECK_STEP} by the point test with the turning rate \
          bounded; arm paths every {RECHECK_STEP} rad of any joint with the true arm.\n\n\
          | space | world | queries | solved | median ms | median iterations | median checks | median cost / lower bound | invalid |\n\
          |---|---|---:|---:|---:|---:|---:|---:|---:|\n"

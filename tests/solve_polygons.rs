@@ -6,6 +6,7 @@
 use proptest::prelude::*;
 use trailmark::core::dubins::DubinsPath;
 use trailmark::core::geometry::{Point, Pose, Vector};
+use trailmark::core::reeds_shepp::ReedsSheppPath;
 use trailmark::solve::{DocumentError, SolveError, solve};
 use trailmark::solve::{ProblemSpec, SolveResult, Status, Waypoint, WorldSpec};
 
@@ -122,35 +123,56 @@ fn grown_obstacles_keep_the_disc_clear() {
     }
 }
 
+/// Car roadmaps: the path is a chain of shortest curves of the family (Dubins, or Reeds-Shepp
+/// with pieces in reverse), each free by the exact checker, costing their lengths. (The two
+/// roadmaps join different neighbours: each takes the k nearest by its own distance.)
 #[test]
-fn dubins_roadmap_paths_are_chains_of_dubins_curves() {
-    let p = document(
-        0.25,
-        r#""graph": "dubins_prm", "turning_radius": 0.75, "samples": 1500, "sampler": "halton", "k": 15,
-           "start": [1, 1, 1.5707963267948966], "goal": [9, 1, -1.5707963267948966],
-           "planner": {"name": "astar"}"#,
-    );
-    let result = solve(&p, ".").unwrap();
-    assert_eq!(result.status, Status::Solved);
-    let poses: Vec<Pose> = result
-        .path
-        .iter()
-        .map(|w| match w {
-            Waypoint::Point(c) => {
-                assert_eq!(c.len(), 3, "a pose is [x, y, heading]");
-                Pose::new(Vector::new(c[0], c[1]), c[2])
+fn car_roadmap_paths_are_chains_of_shortest_curves() {
+    for graph in ["dubins_prm", "reeds_shepp_prm"] {
+        let p = document(
+            0.25,
+            &format!(
+                r#""graph": "{graph}", "turning_radius": 0.75, "samples": 1500, "sampler": "halton", "k": 15,
+                   "start": [1, 1, 1.5707963267948966], "goal": [9, 1, -1.5707963267948966],
+                   "planner": {{"name": "astar"}}"#
+            ),
+        );
+        let result = solve(&p, ".").unwrap();
+        assert_eq!(result.status, Status::Solved, "{graph}");
+        let poses: Vec<Pose> = result
+            .path
+            .iter()
+            .map(|w| match w {
+                Waypoint::Point(c) => {
+                    assert_eq!(c.len(), 3, "a pose is [x, y, heading]");
+                    Pose::new(Vector::new(c[0], c[1]), c[2])
+                }
+                Waypoint::Cell(_) => unreachable!(),
+            })
+            .collect();
+        assert_eq!(result.path.first(), Some(&Waypoint::Point(vec![1.0, 1.0, std::f64::consts::FRAC_PI_2])));
+        assert_eq!(result.path.last(), Some(&Waypoint::Point(vec![9.0, 1.0, -std::f64::consts::FRAC_PI_2])));
+        let checker = match &p.world {
+            WorldSpec::Polygons(world) => world.checker(),
+            _ => unreachable!(),
+        };
+        let mut chained = 0.0;
+        for w in poses.windows(2) {
+            if graph == "dubins_prm" {
+                let curve = DubinsPath::shortest(&w[0], &w[1], 0.75).unwrap();
+                assert!(checker.dubins_is_free(&curve));
+                chained += curve.length();
+            } else {
+                let curve = ReedsSheppPath::shortest(&w[0], &w[1], 0.75).unwrap();
+                assert!(checker.reeds_shepp_is_free(&curve));
+                chained += curve.length();
             }
-            Waypoint::Cell(_) => unreachable!(),
-        })
-        .collect();
-    assert_eq!(result.path.first(), Some(&Waypoint::Point(vec![1.0, 1.0, std::f64::consts::FRAC_PI_2])));
-    assert_eq!(result.path.last(), Some(&Waypoint::Point(vec![9.0, 1.0, -std::f64::consts::FRAC_PI_2])));
-    let chained: f64 =
-        poses.windows(2).map(|w| DubinsPath::shortest_length(&w[0], &w[1], 0.75).unwrap()).sum();
-    let cost = result.cost.unwrap();
-    assert!((chained - cost).abs() < 1e-9 * cost, "{chained} vs {cost}");
-    // At least over the grown wall (y = 8.25) and back.
-    assert!(cost >= 2.0 * 7.25 + 2.0, "{cost}");
+        }
+        let cost = result.cost.unwrap();
+        assert!((chained - cost).abs() < 1e-9 * cost, "{graph}: {chained} vs {cost}");
+        // At least over the grown wall (y = 8.25) and back.
+        assert!(cost >= 2.0 * 7.25 + 2.0, "{graph}: {cost}");
+    }
 }
 
 #[test]

@@ -12,7 +12,8 @@ pub const SAMPLES_PER_MOTION: usize = 200;
 /// Whether `q` is in the bounds and inside no box's interior.
 fn clear(world: &BoxesSpec, q: &[f64]) -> bool {
     let inside = |lo: &[f64], hi: &[f64]| q.iter().zip(lo.iter().zip(hi)).all(|(x, (l, h))| x > l && x < h);
-    let in_bounds = q.len() == world.bounds.len() && q.iter().zip(&world.bounds).all(|(x, [l, h])| x >= l && x <= h);
+    let in_bounds =
+        q.len() == world.bounds.len() && q.iter().zip(&world.bounds).all(|(x, [l, h])| x >= l && x <= h);
     in_bounds && !world.obstacles.iter().any(|[lo, hi]| inside(lo, hi))
 }
 
@@ -34,9 +35,17 @@ pub fn check_result(problem: &ProblemSpec, world: &BoxesSpec, result: &SolveResu
             Waypoint::Cell(_) => panic!("a cell in a box world's path"),
         })
         .collect();
-    assert_eq!(points.first().copied(), Some(problem.start.as_slice()), "the path does not begin at the start");
+    assert_eq!(
+        points.first().copied(),
+        Some(problem.start.as_slice()),
+        "the path does not begin at the start"
+    );
     if result.status == Status::Solved {
-        assert_eq!(points.last().copied(), Some(problem.goal.as_slice()), "a solved path does not end at the goal");
+        assert_eq!(
+            points.last().copied(),
+            Some(problem.goal.as_slice()),
+            "a solved path does not end at the goal"
+        );
     }
     let mut length = 0.0;
     for m in points.windows(2) {

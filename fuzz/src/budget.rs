@@ -115,7 +115,9 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
         let samples = problem.samples.unwrap_or(trailmark::solve::DEFAULT_SAMPLES);
         match problem.graph {
             Some(GraphKind::Prm) if samples > MAX_PRM_SAMPLES => return false,
-            Some(GraphKind::DubinsPrm) if samples > MAX_DUBINS_SAMPLES => return false,
+            Some(GraphKind::DubinsPrm | GraphKind::ReedsSheppPrm) if samples > MAX_DUBINS_SAMPLES => {
+                return false;
+            }
             _ => {}
         }
     }
@@ -125,12 +127,14 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
 /// A rough count of the nodes of the roadmap a polygon-world problem searches.
 fn roadmap_nodes(problem: &ProblemSpec) -> usize {
     match problem.graph {
-        Some(GraphKind::Prm | GraphKind::DubinsPrm) => {
+        Some(GraphKind::Prm | GraphKind::DubinsPrm | GraphKind::ReedsSheppPrm) => {
             problem.samples.unwrap_or(trailmark::solve::DEFAULT_SAMPLES) + 2
         }
         _ => match &problem.world {
             // Grown corners are arcs of up to 16 vertices.
-            WorldSpec::Polygons(w) => 16 * w.obstacles().iter().map(|o| o.vertices().len()).sum::<usize>() + 6,
+            WorldSpec::Polygons(w) => {
+                16 * w.obstacles().iter().map(|o| o.vertices().len()).sum::<usize>() + 6
+            }
             WorldSpec::Grid(_) | WorldSpec::Boxes(_) | WorldSpec::RosMap(_) => 0,
         },
     }

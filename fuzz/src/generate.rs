@@ -85,6 +85,7 @@ pub enum GraphName {
     Trapezoid,
     Prm,
     DubinsPrm,
+    ReedsSheppPrm,
 }
 
 /// Values at and beyond the edges of what the parameters take.
@@ -211,7 +212,8 @@ pub fn problem(u: &mut Unstructured) -> Result<Value> {
         let (world, frame) = polygon_world(u)?;
         let graph: GraphName = u.arbitrary()?;
         let space_dubins = planner.is_sampling() && u.ratio(1u8, 3)?;
-        let dubins = space_dubins || (!planner.is_sampling() && graph == GraphName::DubinsPrm);
+        let car_roadmap = matches!(graph, GraphName::DubinsPrm | GraphName::ReedsSheppPrm);
+        let dubins = space_dubins || (!planner.is_sampling() && car_roadmap);
         doc.insert("world".into(), world);
         doc.insert("start".into(), polygon_end(u, &frame, dubins)?);
         doc.insert("goal".into(), polygon_end(u, &frame, dubins)?);
@@ -252,7 +254,9 @@ fn box_world(u: &mut Unstructured, doc: &mut Map<String, Value>) -> Result<()> {
     let value = |u: &mut Unstructured, lo: f64, hi: f64| -> Result<f64> {
         if u.ratio(1u8, 32)? { hostile_f64(u) } else { float(u, lo, hi) }
     };
-    let bounds: Vec<Value> = (0..axes).map(|_| Ok(json!([num(value(u, -1.0, 0.0)?), num(value(u, 1.0, 2.0)?)]))).collect::<Result<_>>()?;
+    let bounds: Vec<Value> = (0..axes)
+        .map(|_| Ok(json!([num(value(u, -1.0, 0.0)?), num(value(u, 1.0, 2.0)?)])))
+        .collect::<Result<_>>()?;
     let mut obstacles = Vec::new();
     for _ in 0..u.int_in_range(0u8..=6)? {
         let lo: Vec<Value> = (0..axes).map(|_| value(u, -0.5, 1.0).map(num)).collect::<Result<_>>()?;
@@ -481,9 +485,10 @@ fn roadmap_fields(
         GraphName::Trapezoid => Some("trapezoid"),
         GraphName::Prm => Some("prm"),
         GraphName::DubinsPrm => Some("dubins_prm"),
+        GraphName::ReedsSheppPrm => Some("reeds_shepp_prm"),
     };
     insert(doc, "graph", name.map(|n| json!(n)));
-    if matches!(graph, GraphName::Prm | GraphName::DubinsPrm) {
+    if matches!(graph, GraphName::Prm | GraphName::DubinsPrm | GraphName::ReedsSheppPrm) {
         let most = if graph == GraphName::Prm { 300 } else { 100 };
         doc.insert("samples".into(), json!(u.int_in_range(0..=most)?));
         match u.int_in_range(0u8..=7)? {

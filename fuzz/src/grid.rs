@@ -273,7 +273,12 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         // Straight lines between cell centres: each clear, and the whole no dearer than the
         // least-cost grid path (Theta* with a consistent heuristic never is).
         for pair in cells.windows(2) {
-            assert!(grid.line_clear(pair[0], pair[1]), "the line {} -> {} crosses a blocked cell", pair[0], pair[1]);
+            assert!(
+                grid.line_clear(pair[0], pair[1]),
+                "the line {} -> {} crosses a blocked cell",
+                pair[0],
+                pair[1]
+            );
         }
         assert!(
             cost <= optimum * (1.0 + COST_TOLERANCE) + 16.0 * f64::MIN_POSITIVE,

@@ -4,12 +4,12 @@
 //!
 //! Straight motions for the visibility, trapezoid and PRM roadmaps and the `r2` sampling
 //! planners; shortest Dubins curves for the `dubins_prm` roadmap and the `dubins` space,
-//! shortest Reeds-Shepp curves for the `reeds_shepp` space.
+//! shortest Reeds-Shepp curves for the `reeds_shepp_prm` roadmap and the `reeds_shepp` space.
 
 use trailmark::solve::{GraphKind, PlannerSpec, ProblemSpec, SolveResult, SpaceKind, Status, Waypoint};
 use trailmark_core::dubins::DubinsPath;
-use trailmark_core::reeds_shepp::ReedsSheppPath;
 use trailmark_core::geometry::{Point, Pose, Vector};
+use trailmark_core::reeds_shepp::ReedsSheppPath;
 use trailmark_core::world::PolygonWorld;
 
 use crate::close;
@@ -36,20 +36,24 @@ pub fn scale(world: &PolygonWorld) -> f64 {
 fn is_dubins(problem: &ProblemSpec) -> bool {
     match problem.planner.sampling() {
         Some(_) => matches!(problem.space, Some(SpaceKind::Dubins | SpaceKind::ReedsShepp)),
-        None => problem.graph == Some(GraphKind::DubinsPrm),
+        None => matches!(problem.graph, Some(GraphKind::DubinsPrm | GraphKind::ReedsSheppPrm)),
     }
 }
 
 /// Whether the poses are joined by Reeds-Shepp curves (the car reverses) rather than Dubins ones.
 fn is_reeds_shepp(problem: &ProblemSpec) -> bool {
-    problem.planner.sampling().is_some() && problem.space == Some(SpaceKind::ReedsShepp)
+    match problem.planner.sampling() {
+        Some(_) => problem.space == Some(SpaceKind::ReedsShepp),
+        None => problem.graph == Some(GraphKind::ReedsSheppPrm),
+    }
 }
 
 /// Checks the result of a polygon-world problem that `solve` accepted.
 pub fn check_result(problem: &ProblemSpec, world: &PolygonWorld, result: &SolveResult) {
     let planner = problem.planner.name();
     let sampling = problem.planner.sampling().is_some();
-    let sampled_roadmap = !sampling && matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm));
+    let sampled_roadmap = !sampling
+        && matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm | GraphKind::ReedsSheppPrm));
     match result.status {
         Status::Solved => {}
         Status::Approximate => assert!(sampling, "{planner} (a search) gave an approximate path"),
@@ -174,9 +178,10 @@ pub fn check_result(problem: &ProblemSpec, world: &PolygonWorld, result: &SolveR
     // Dubins waypoints come back through their headings' angles, a rounding off the planner's
     // own poses: each motion's length, taken again, may differ by that rounding times the radius
     // (more where the curve is ill-conditioned), on top of the relative tolerance.
-    let allowance = problem.turning_radius.filter(|_| is_dubins(problem)).map_or(0.0, |r| {
-        r * DUBINS_ROUNDING * coordinates.len() as f64
-    });
+    let allowance = problem
+        .turning_radius
+        .filter(|_| is_dubins(problem))
+        .map_or(0.0, |r| r * DUBINS_ROUNDING * coordinates.len() as f64);
     assert!(
         close(cost, length, LENGTH_TOLERANCE) || (cost - length).abs() <= allowance,
         "{planner}: cost {cost} but the path is {length} long"

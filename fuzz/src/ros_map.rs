@@ -50,7 +50,11 @@ fn check_image(which: u8, data: &[u8]) {
     }
     let raw = SaveOptions { mode: MapMode::Raw, ..SaveOptions::default() };
     let (meta, bytes) = encode_map(&map, "fuzz.pgm", &raw).expect("a loaded map saves");
-    assert_eq!(decode_map(&meta, &bytes, Path::new("fuzz.pgm")).expect("a saved map loads"), map, "raw round trip");
+    assert_eq!(
+        decode_map(&meta, &bytes, Path::new("fuzz.pgm")).expect("a saved map loads"),
+        map,
+        "raw round trip"
+    );
 }
 
 fn check_message(data: &[u8]) {

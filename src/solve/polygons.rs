@@ -3,7 +3,6 @@
 
 use std::time::{Duration, Instant};
 
-use trailmark_core::dubins::DubinsPath;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::grid::GridHeuristic;
 use trailmark_core::svg::WorldSvg;
@@ -12,8 +11,8 @@ use trailmark_graph::prm::{Connection, PlanarSpace, PolygonPrm, PrmOptions, PrmS
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::{Edges, VisibilityError};
 use trailmark_graph::{Roadmap, RoadmapQuery, Trapezoids, VisibilityGraph};
-use trailmark_sample::space::{Car, CarCurves};
-use trailmark_sample::{Dubins, StateSpace};
+use trailmark_sample::StateSpace;
+use trailmark_sample::space::{Car, CarCurves, DubinsCurves, ReedsSheppCurves};
 
 use super::error::{DocumentError, SolveError};
 use super::problem::{GraphKind, ProblemSpec, SamplerKind};
@@ -27,11 +26,11 @@ pub(super) fn solve_polygons(
     picture: Option<&mut String>,
 ) -> Result<SolveResult, SolveError> {
     let kind = problem.graph.unwrap_or(GraphKind::Visibility);
-    let sampled = matches!(kind, GraphKind::Prm | GraphKind::DubinsPrm);
+    let sampled = matches!(kind, GraphKind::Prm | GraphKind::DubinsPrm | GraphKind::ReedsSheppPrm);
     for field in problem.roadmap_fields() {
         let applies = match field {
             "graph" => true,
-            "turning_radius" => kind == GraphKind::DubinsPrm,
+            "turning_radius" => matches!(kind, GraphKind::DubinsPrm | GraphKind::ReedsSheppPrm),
             _ => sampled,
         };
         if !applies {
@@ -42,8 +41,12 @@ pub(super) fn solve_polygons(
     if let Some(heuristic) = asked.filter(|&h| h != GridHeuristic::Euclidean) {
         return Err(DocumentError::NotEuclidean { heuristic }.into());
     }
-    if kind == GraphKind::DubinsPrm {
-        return solve_dubins(problem, world, picture);
+    match kind {
+        GraphKind::DubinsPrm => return solve_car_roadmap::<DubinsCurves>(problem, world, kind, picture),
+        GraphKind::ReedsSheppPrm => {
+            return solve_car_roadmap::<ReedsSheppCurves>(problem, world, kind, picture);
+        }
+        _ => {}
     }
     let point = |which, value: &[f64]| match *value {
         [x, y] if x.is_finite() && y.is_finite() => Ok(Point::new(x, y)),
@@ -120,14 +123,16 @@ pub(super) fn solve_polygons(
     Ok(result)
 }
 
-/// [`solve_polygons`] on a Dubins roadmap: poses, directed Dubins edges.
-fn solve_dubins(
+/// [`solve_polygons`] on a roadmap of car poses (`kind`): edges along the shortest curves of
+/// the family `C` (Dubins: directed; Reeds-Shepp: the same both ways).
+fn solve_car_roadmap<C: CarCurves>(
     problem: &ProblemSpec,
     world: &PolygonWorld,
+    kind: GraphKind,
     picture: Option<&mut String>,
 ) -> Result<SolveResult, SolveError> {
     let radius = problem.turning_radius.ok_or(DocumentError::NoTurningRadius)?;
-    let space = Dubins::new(world.bounds(), radius)?;
+    let space = Car::<C>::new(world.bounds(), radius)?;
     let pose = |which, value: &[f64]| {
         space
             .state_from_coordinates(value)
@@ -141,12 +146,15 @@ fn solve_dubins(
         search_roadmap(problem, &prm.query(start, goal)?, built, clock.elapsed().saturating_sub(built))?;
     let poses: Vec<Pose> = states_of(&space, &result);
     if let Some(cost) = result.cost {
-        check_dubins(&world.checker(), &poses, radius, cost)?;
+        check_car_path(&world.checker(), &space, kind, &poses, cost)?;
     }
     if let Some(picture) = picture {
         let curve = car_curve(&space, &poses);
-        let title =
-            format!("Dubins roadmap: {} poses, turning radius {radius}, and a path", prm.node_count());
+        let title = format!(
+            "{} roadmap: {} poses, turning radius {radius}, and a path",
+            kind.name(),
+            prm.node_count()
+        );
         *picture = WorldSvg::new(world)
             .free_space(&world.free_space())
             .poses((0u32..).take(prm.node_count()).map(|u| prm.position(u)))
@@ -159,16 +167,16 @@ fn solve_dubins(
     Ok(result)
 }
 
-/// The exact re-check of a Dubins roadmap's path: each shortest Dubins curve between
-/// consecutive poses collision-free, and their lengths adding up to `cost`.
-fn check_dubins(
+/// The exact re-check of a car roadmap's path: each shortest curve between consecutive poses
+/// collision-free, and their lengths adding up to `cost`.
+fn check_car_path<C: CarCurves>(
     checker: &CollisionChecker,
+    space: &Car<C>,
+    kind: GraphKind,
     poses: &[Pose],
-    radius: f64,
     cost: f64,
 ) -> Result<(), SolveError> {
-    let rejected =
-        |segment, reason| SolveError::PathRejected { graph: GraphKind::DubinsPrm.name(), segment, reason };
+    let rejected = |segment, reason| SolveError::PathRejected { graph: kind.name(), segment, reason };
     if let [pose] = poses
         && !checker.point_is_free(Point::from(pose.translation.vector))
     {
@@ -176,12 +184,12 @@ fn check_dubins(
     }
     let mut length = 0.0;
     for (segment, pair) in poses.windows(2).enumerate() {
-        let piece = DubinsPath::shortest(&pair[0], &pair[1], radius)
-            .map_err(|_| rejected(segment, "no Dubins curve joins the poses"))?;
-        if !checker.dubins_is_free(&piece) {
+        let piece = C::path(&pair[0], &pair[1], space.turning_radius())
+            .ok_or_else(|| rejected(segment, "no curve joins the poses"))?;
+        if !C::is_free(checker, &piece) {
             return Err(rejected(segment, "the robot collides"));
         }
-        length += piece.length();
+        length += C::path_length(&piece);
     }
     if !same_length(cost, length) {
         return Err(rejected(0, "the cost is not the path's length"));
@@ -255,7 +263,8 @@ where
         None,
     )?;
     // A sampled roadmap without a path proves nothing: more samples may find one.
-    let sampled = matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm));
+    let sampled =
+        matches!(problem.graph, Some(GraphKind::Prm | GraphKind::DubinsPrm | GraphKind::ReedsSheppPrm));
     if sampled && result.status == Status::NoPath {
         result.status = Status::Stopped;
     }

@@ -136,6 +136,9 @@ pub enum GraphKind {
     /// A probabilistic roadmap of poses joined by Dubins curves (a car that turns no tighter
     /// than `turning_radius`).
     DubinsPrm,
+    /// A probabilistic roadmap of poses joined by Reeds-Shepp curves (the same car, driving in
+    /// reverse too).
+    ReedsSheppPrm,
 }
 
 impl GraphKind {
@@ -146,6 +149,7 @@ impl GraphKind {
             GraphKind::Trapezoid => "trapezoid",
             GraphKind::Prm => "prm",
             GraphKind::DubinsPrm => "dubins_prm",
+            GraphKind::ReedsSheppPrm => "reeds_shepp_prm",
         }
     }
 }

@@ -87,8 +87,10 @@ pub(super) fn solve_sampling(
             }
             Ok(result)
         }
-        SpaceKind::Dubins => solve_car::<DubinsCurves>(&run, world, planner, "dubins", picture),
-        SpaceKind::ReedsShepp => solve_car::<ReedsSheppCurves>(&run, world, planner, "reeds_shepp", picture),
+        SpaceKind::Dubins => solve_car::<DubinsCurves>(&run, world, planner, space_kind.name(), picture),
+        SpaceKind::ReedsShepp => {
+            solve_car::<ReedsSheppCurves>(&run, world, planner, space_kind.name(), picture)
+        }
     }
 }
 

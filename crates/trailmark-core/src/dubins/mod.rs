@@ -583,29 +583,37 @@ impl DubinsPath {
     pub fn pieces(&self) -> [Piece; 3] {
         let r = self.turning_radius;
         let mut pose = self.start.array();
-        let lengths = self.segment_lengths();
         let turns = self.word.turns();
         std::array::from_fn(|i| {
-            let [x, y, h] = pose;
-            let next = advance(pose, turns[i], lengths[i], r);
+            let (piece, next) = piece_along(pose, turns[i], self.params[i], r);
             pose = next;
-            match turns[i] {
-                Turn::Straight => Piece::Segment { from: Point::new(x, y), to: Point::new(next[0], next[1]) },
-                Turn::Left => Piece::Arc {
-                    center: Point::new(x - r * h.sin(), y + r * h.cos()),
-                    radius: r,
-                    start_angle: mod_tau(h - std::f64::consts::FRAC_PI_2),
-                    sweep: self.params[i],
-                },
-                Turn::Right => Piece::Arc {
-                    center: Point::new(x + r * h.sin(), y - r * h.cos()),
-                    radius: r,
-                    start_angle: mod_tau(h + std::f64::consts::FRAC_PI_2),
-                    sweep: -self.params[i],
-                },
-            }
+            piece
         })
     }
+}
+
+/// The piece that driving `param` turning radii (negative in reverse) along `turn` from `pose`
+/// (`[x, y, heading]`) traces in world coordinates, and the pose where it ends: the pieces of
+/// Dubins and Reeds-Shepp paths. An arc driven in reverse sweeps the other way round its circle.
+pub(crate) fn piece_along(pose: [f64; 3], turn: Turn, param: f64, r: f64) -> (Piece, [f64; 3]) {
+    let [x, y, h] = pose;
+    let next = advance(pose, turn, param * r, r);
+    let piece = match turn {
+        Turn::Straight => Piece::Segment { from: Point::new(x, y), to: Point::new(next[0], next[1]) },
+        Turn::Left => Piece::Arc {
+            center: Point::new(x - r * h.sin(), y + r * h.cos()),
+            radius: r,
+            start_angle: mod_tau(h - std::f64::consts::FRAC_PI_2),
+            sweep: param,
+        },
+        Turn::Right => Piece::Arc {
+            center: Point::new(x + r * h.sin(), y - r * h.cos()),
+            radius: r,
+            start_angle: mod_tau(h + std::f64::consts::FRAC_PI_2),
+            sweep: -param,
+        },
+    };
+    (piece, next)
 }
 
 mod solver;

@@ -17,7 +17,6 @@
 //! [`MAX_MAGNITUDE`](crate::dubins::MAX_MAGNITUDE), poses at most [`MAX_NORMALISED_DISTANCE`](crate::dubins::MAX_NORMALISED_DISTANCE) radii apart.
 //!
 //! ```
-//! use std::f64::consts::PI;
 //! use trailmark_core::dubins::DubinsPath;
 //! use trailmark_core::geometry::{Pose, Vector};
 //! use trailmark_core::reeds_shepp::ReedsSheppPath;
@@ -34,7 +33,6 @@
 //! assert!(path.length() <= forward.length());
 //! // The length alone, for a heuristic.
 //! assert_eq!(ReedsSheppPath::shortest_length(&start, &goal, 1.0)?, path.length());
-//! # let _ = PI;
 //! # Ok::<(), trailmark_core::reeds_shepp::ReedsSheppError>(())
 //! ```
 
@@ -43,13 +41,13 @@ mod solver;
 use thiserror::Error;
 
 pub use crate::dubins::Turn;
-use std::f64::consts::{FRAC_PI_2, TAU};
+use std::f64::consts::TAU;
 
 use crate::dubins::{
     DubinsError, MAX_STRAIGHT_PARAM, Piece, SampleFault, Start, advance, check_pose, check_radius,
-    checked_offset, mod_tau, sample_arc_length, to_pose,
+    checked_offset, piece_along, sample_arc_length, to_pose,
 };
-use crate::geometry::{Point, Pose};
+use crate::geometry::Pose;
 
 /// Which way the car drives along a piece.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
@@ -264,10 +262,7 @@ impl ReedsSheppPath {
     ///
     /// Errors with [`DubinsError::OutOfRange`] for any other `s`.
     pub fn subpath(&self, s: f64) -> Result<ReedsSheppPath, ReedsSheppError> {
-        let length = self.length();
-        if !(0.0..=length).contains(&s) {
-            return Err(DubinsError::OutOfRange { s, length }.into());
-        }
+        self.check_arc_length(s)?;
         let mut left = s / self.turning_radius;
         let mut word = self.word;
         for p in &mut word.params[..word.len] {
@@ -281,31 +276,13 @@ impl ReedsSheppPath {
     /// The pieces in world coordinates (a piece of length 0 included), for exact collision
     /// checks: an arc driven in reverse sweeps the other way round its circle.
     pub fn pieces(&self) -> Vec<Piece> {
-        let r = self.turning_radius;
         let mut pose = self.start.array();
         (0..self.word.len)
             .map(|i| {
-                let (turn, p) = (self.word.turns[i], self.word.params[i]);
-                let [x, y, h] = pose;
-                let next = advance(pose, turn, p * r, r);
+                let (piece, next) =
+                    piece_along(pose, self.word.turns[i], self.word.params[i], self.turning_radius);
                 pose = next;
-                match turn {
-                    Turn::Straight => {
-                        Piece::Segment { from: Point::new(x, y), to: Point::new(next[0], next[1]) }
-                    }
-                    Turn::Left => Piece::Arc {
-                        center: Point::new(x - r * h.sin(), y + r * h.cos()),
-                        radius: r,
-                        start_angle: mod_tau(h - FRAC_PI_2),
-                        sweep: p,
-                    },
-                    Turn::Right => Piece::Arc {
-                        center: Point::new(x + r * h.sin(), y - r * h.cos()),
-                        radius: r,
-                        start_angle: mod_tau(h + FRAC_PI_2),
-                        sweep: -p,
-                    },
-                }
+                piece
             })
             .collect()
     }
@@ -314,11 +291,14 @@ impl ReedsSheppPath {
     ///
     /// Errors with [`DubinsError::OutOfRange`] for any other `s` (NaN included).
     pub fn pose_at(&self, s: f64) -> Result<Pose, ReedsSheppError> {
-        let length = self.length();
-        if !(0.0..=length).contains(&s) {
-            return Err(DubinsError::OutOfRange { s, length }.into());
-        }
+        self.check_arc_length(s)?;
         Ok(to_pose(self.pose_array_at(s)))
+    }
+
+    /// `Ok` when `0 <= s <= length()`, else [`DubinsError::OutOfRange`].
+    fn check_arc_length(&self, s: f64) -> Result<(), ReedsSheppError> {
+        let length = self.length();
+        if (0.0..=length).contains(&s) { Ok(()) } else { Err(DubinsError::OutOfRange { s, length }.into()) }
     }
 
     /// The pose at arc length `s` in `[0, length]`, as `[x, y, heading]`.

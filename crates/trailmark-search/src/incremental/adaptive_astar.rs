@@ -11,6 +11,8 @@
 //! on it, cheapest first, before the next plan. Each plan is an A* search with a consistent
 //! heuristic: its path costs what A* from scratch finds.
 
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
 use std::fmt::Debug;
 
 use trailmark_core::cost::Cost;
@@ -23,7 +25,7 @@ use crate::incremental::EdgeChange;
 use crate::incremental::path_reuse::PathReuse;
 use crate::incremental::repeated_astar::RepeatedAStar;
 use crate::incremental::replanner::Replanner;
-use crate::queue::IndexedHeap;
+use crate::incremental::values::grow_zeroed;
 use crate::stats::SearchStats;
 
 /// Adaptive A* from a moving start to a fixed goal, behind the [`Replanner`] interface.
@@ -53,12 +55,17 @@ use crate::stats::SearchStats;
 pub struct AdaptiveAStar<N, H> {
     /// A* from scratch: its workspace, heuristic, ends, last path and totals.
     base: RepeatedAStar<N, H>,
-    /// The learned heuristic per node index; 0 where nothing was learned.
+    /// The learned heuristic per node index; 0 where nothing was learned. Empty until a plan
+    /// finds a path: the first search needs nothing learned, and a planner made for a large
+    /// graph then pays for the table only once it has something to keep in it.
     learned: Vec<Cost>,
     /// The indices of the nodes whose edges may have changed since the last plan.
     touched: Vec<usize>,
-    /// The open list of the consistency repair (by heuristic value).
-    repair: IndexedHeap<Cost>,
+    /// The open list of the consistency repair: (the bits of a lowered learned value, which
+    /// order as the values do for costs not negative, node index), smallest first. A node
+    /// lowered again is queued again; an entry whose value is no longer the node's is passed
+    /// over. No table as large as the graph: the repair stays near the changes.
+    repair: BinaryHeap<Reverse<(u64, usize)>>,
     /// The paths of earlier plans, when they are reused (MPGAA*).
     pub(crate) reuse: Option<PathReuse>,
     /// Where the last plan's search ended on a kept path (its path goes on along it).
@@ -81,9 +88,9 @@ where
         base.search.expanded_log = Some(Vec::new());
         Ok(AdaptiveAStar {
             base,
-            learned: vec![0.0; graph.node_bound()],
+            learned: Vec::new(),
             touched: Vec::new(),
-            repair: IndexedHeap::new(),
+            repair: BinaryHeap::new(),
             reuse: None,
             tail: None,
         })
@@ -113,7 +120,7 @@ where
     pub fn memory_bytes(&self) -> usize {
         self.base.memory_bytes()
             + self.learned.capacity() * 8
-            + self.repair.memory_bytes()
+            + self.repair.capacity() * std::mem::size_of::<Reverse<(u64, usize)>>()
             + self.reuse.as_ref().map_or(0, PathReuse::memory_bytes)
     }
 
@@ -201,15 +208,23 @@ where
     /// exactly `c + h(v)`, and the way to the goal is through that edge.
     fn lower_in(
         learned: &mut [Cost],
-        repair: &mut IndexedHeap<Cost>,
+        repair: &mut BinaryHeap<Reverse<(u64, usize)>>,
         reuse: &mut Option<PathReuse>,
         i: usize,
         (value, j, c): (Cost, usize, Cost),
     ) {
         learned[i] = value;
-        repair.push(i, value);
+        repair.push(Reverse((value.to_bits(), i)));
         if let Some(reuse) = reuse.as_mut() {
             reuse.point(i, j, c);
+        }
+    }
+
+    /// Room in the learned values and the kept paths for `bound` node indices.
+    fn make_room(learned: &mut Vec<Cost>, reuse: &mut Option<PathReuse>, bound: usize) {
+        grow_zeroed(learned, bound);
+        if let Some(reuse) = reuse.as_mut() {
+            reuse.resize(bound);
         }
     }
 
@@ -220,20 +235,16 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
         H: Heuristic<G>,
     {
-        if self.learned.len() < graph.node_bound() {
-            self.learned.resize(graph.node_bound(), 0.0);
-        }
-        if let Some(reuse) = self.reuse.as_mut() {
-            reuse.resize(graph.node_bound());
-        }
-        if self.touched.is_empty() {
+        if self.learned.is_empty() || self.touched.is_empty() {
+            // Nothing learned and no path kept: the given heuristic is consistent by itself.
+            self.touched.clear();
             return;
         }
+        Self::make_room(&mut self.learned, &mut self.reuse, graph.node_bound());
         // Neighbouring changes name the same nodes: each is looked at once.
         self.touched.sort_unstable();
         self.touched.dedup();
         let touched = std::mem::take(&mut self.touched);
-        self.repair.reserve_items(graph.node_bound());
         self.repair.clear();
         for &i in &touched {
             // The edges out of x and into x may have become cheaper, or changed under a kept
@@ -244,7 +255,10 @@ where
         }
         self.touched = touched;
         self.touched.clear();
-        while let Some((i, _)) = self.repair.pop() {
+        while let Some(Reverse((value, i))) = self.repair.pop() {
+            if self.learned[i].to_bits() != value {
+                continue; // lowered again since: queued again with that value
+            }
             self.relax_into(graph, graph.node_at(i), i, false);
         }
     }
@@ -285,7 +299,7 @@ where
         let (learned, base) = (&self.learned, &mut self.base);
         let heuristic = &mut base.heuristic;
         let h = |n| Self::h_at(graph, learned, heuristic, n, graph.index_of(n), goal);
-        let found = match self.reuse.as_mut() {
+        let found = match self.reuse.as_mut().filter(|_| !learned.is_empty()) {
             None => base.search.astar(graph, start, goal, h)?,
             Some(reuse) => base
                 .search
@@ -297,6 +311,7 @@ where
             // Where the search stopped on a kept path, the path goes on along it (read out when
             // asked for), and so does its cost.
             let end = graph.index_of(path.nodes[path.nodes.len() - 1]);
+            Self::make_room(&mut self.learned, &mut self.reuse, graph.node_bound());
             if end != goal_slot {
                 path.cost += self.learned[end];
                 self.tail = Some(end);

@@ -64,7 +64,7 @@ where
         H: Heuristic<G>,
     {
         let mut planner = AdaptiveAStar::new(graph, start, goal, heuristic)?;
-        planner.reuse = Some(PathReuse::new(graph.node_bound()));
+        planner.reuse = Some(PathReuse::new());
         Ok(MpgaaStar(planner))
     }
 

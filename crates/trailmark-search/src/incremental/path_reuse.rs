@@ -15,6 +15,7 @@ use trailmark_core::graph::{IndexedGraph, Successors};
 use trailmark_core::path::Path;
 
 use crate::incremental::planner::edge_cost;
+use crate::incremental::values::grow_zeroed;
 
 /// No pointer. Pointers are stored as the index plus one, so that fresh state is all zeros
 /// (memory the system hands out zeroed, touched only where used).
@@ -38,24 +39,16 @@ pub(crate) struct PathReuse {
 }
 
 impl PathReuse {
-    /// No kept path, room for `bound` node indices.
-    pub fn new(bound: usize) -> Self {
-        PathReuse {
-            next: vec![NONE; bound],
-            step: vec![0.0; bound],
-            verified: vec![0; bound],
-            era: 1,
-            walked: Vec::new(),
-        }
+    /// No kept path, and no room yet: see [`resize`](Self::resize).
+    pub fn new() -> Self {
+        PathReuse { next: Vec::new(), step: Vec::new(), verified: Vec::new(), era: 1, walked: Vec::new() }
     }
 
     /// Room for `bound` node indices.
     pub fn resize(&mut self, bound: usize) {
-        if self.next.len() < bound {
-            self.next.resize(bound, NONE);
-            self.step.resize(bound, 0.0);
-            self.verified.resize(bound, 0);
-        }
+        grow_zeroed(&mut self.next, bound);
+        grow_zeroed(&mut self.step, bound);
+        grow_zeroed(&mut self.verified, bound);
     }
 
     /// Forgets what was verified: a cost or a learned value along a kept path changed.

@@ -292,6 +292,9 @@ pub enum DocumentError {
     /// A ROS-map world with both a robot radius and a footprint.
     #[error("give \"robot_radius\" or \"footprint\", not both")]
     RadiusAndFootprint,
+    /// A footprint that is not a simple polygon.
+    #[error("the footprint: {0}")]
+    Footprint(trailmark_core::world::PolygonError),
     /// A graph search where a sampling planner is run.
     #[error("the \"{planner}\" planner searches a graph; it does not sample states")]
     NotASamplingPlanner {

@@ -27,6 +27,7 @@
 pub mod cost;
 pub mod curve;
 pub mod dubins;
+pub mod footprint;
 pub mod freespace;
 pub mod generate;
 pub mod geometry;

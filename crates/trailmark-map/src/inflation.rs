@@ -8,58 +8,10 @@
 //! obstacles, which is exact in most cells and an estimate in some.
 
 use serde::{Deserialize, Serialize};
-use trailmark_core::geometry::Point;
+use trailmark_core::footprint::{Footprint, FootprintError};
 
 use crate::error::MapError;
 use crate::values::{INSCRIBED, LETHAL, MAX_NON_OBSTACLE};
-
-/// The robot's shape on the map, for its inscribed radius.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Footprint {
-    /// A disc of this radius in metres, centred on the robot's origin.
-    Radius(f64),
-    /// A polygon of points in metres around the robot's origin (Nav2's `footprint`).
-    Polygon(Vec<[f64; 2]>),
-}
-
-impl Footprint {
-    /// The radius of the largest circle about the robot's origin inside the footprint: the
-    /// radius itself, or for a polygon the smallest distance from the origin to an edge (as
-    /// Nav2's `calculateMinAndMaxDistances`).
-    ///
-    /// Errors: a negative or non-finite radius, a polygon of fewer than three points or with a
-    /// non-finite point.
-    pub fn inscribed_radius(&self) -> Result<f64, MapError> {
-        match self {
-            Footprint::Radius(r) => non_negative("robot_radius", *r),
-            Footprint::Polygon(points) => {
-                if points.len() < 3 || points.iter().flatten().any(|v| !v.is_finite()) {
-                    return Err(MapError::Setting {
-                        setting: "footprint",
-                        expected: "a polygon of at least three finite points",
-                        value: points.len() as f64,
-                    });
-                }
-                let origin = Point::origin();
-                let mut min = f64::INFINITY;
-                for (i, a) in points.iter().enumerate() {
-                    let b = points[(i + 1) % points.len()];
-                    let (a, b) = (Point::new(a[0], a[1]), Point::new(b[0], b[1]));
-                    min = min.min(segment_distance(origin, a, b));
-                }
-                Ok(min)
-            }
-        }
-    }
-}
-
-fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
-    let ab = b - a;
-    let t =
-        if ab.norm_squared() > 0.0 { ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0) } else { 0.0 };
-    (p - (a + ab * t)).norm()
-}
 
 /// How far costs spread from lethal cells.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -77,7 +29,9 @@ impl Inflation {
     /// Nav2's defaults around a robot: inflation radius 0.55 m, cost scaling factor 10.
     pub fn around(footprint: &Footprint) -> Result<Self, MapError> {
         let inflation = Inflation {
-            inscribed_radius: footprint.inscribed_radius()?,
+            inscribed_radius: footprint.inscribed_radius().map_err(|FootprintError::Radius(r)| {
+                MapError::Setting { setting: "robot_radius", expected: "finite and not negative", value: r }
+            })?,
             inflation_radius: 0.55,
             cost_scaling_factor: 10.0,
         };
@@ -146,10 +100,11 @@ mod tests {
 
     #[test]
     fn inscribed_radius_of_a_footprint() {
-        let rectangle = Footprint::Polygon(vec![[-0.3, -0.2], [0.5, -0.2], [0.5, 0.2], [-0.3, 0.2]]);
+        let corners = [[-0.3, -0.2], [0.5, -0.2], [0.5, 0.2], [-0.3, 0.2]];
+        let corners = corners.iter().map(|p| trailmark_core::geometry::Point::new(p[0], p[1])).collect();
+        let rectangle = Footprint::Polygon(trailmark_core::world::Polygon::new(corners).unwrap());
         assert!((rectangle.inscribed_radius().unwrap() - 0.2).abs() < 1e-12);
         assert_eq!(Footprint::Radius(0.22).inscribed_radius().unwrap(), 0.22);
         assert!(Footprint::Radius(-1.0).inscribed_radius().is_err());
-        assert!(Footprint::Polygon(vec![[0.0, 0.0], [1.0, 0.0]]).inscribed_radius().is_err());
     }
 }

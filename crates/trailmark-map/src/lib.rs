@@ -57,10 +57,11 @@ pub use files::{
     save_map,
 };
 pub use frame::MapFrame;
-pub use inflation::{Footprint, Inflation};
+pub use inflation::Inflation;
 pub use message::MAX_MESSAGE_BYTES;
 pub use metadata::{MapMetadata, MapMode};
 pub use occupancy::{FREE, OCCUPIED, OccupancyCounts, OccupancyGrid, UNKNOWN};
 pub use picture::{CostmapSvg, cost_colour};
 pub use pixels::MAX_IMAGE_SIDE;
+pub use trailmark_core::footprint::Footprint;
 pub use values::{FREE_SPACE, INSCRIBED, LETHAL, MAX_NON_OBSTACLE, NO_INFORMATION};

@@ -427,6 +427,25 @@ pub(crate) fn advance(pose: [f64; 3], turn: Turn, length: f64, radius: f64) -> [
     }
 }
 
+/// The pose after driving `length` (world units, negative in reverse) from `pose` along `turn`
+/// at `turning_radius`: the one motion every Dubins and Reeds-Shepp piece is made of, for
+/// planners that build paths of such pieces themselves (lattices, Hybrid A*). The heading of
+/// the result is in `[0, 2π)`.
+///
+/// ```
+/// use trailmark_core::dubins::{Turn, drive};
+/// use trailmark_core::geometry::Pose;
+///
+/// // A quarter turn to the left at radius 2 from the origin facing +x ends at (2, 2) facing +y.
+/// let end = drive(&Pose::identity(), Turn::Left, std::f64::consts::PI, 2.0);
+/// assert!((end.translation.x - 2.0).abs() < 1e-12 && (end.translation.y - 2.0).abs() < 1e-12);
+/// assert!((end.rotation.angle() - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+/// ```
+pub fn drive(pose: &Pose, turn: Turn, length: f64, turning_radius: f64) -> Pose {
+    let start = [pose.translation.x, pose.translation.y, pose.rotation.angle()];
+    to_pose(advance(start, turn, length, turning_radius))
+}
+
 pub(crate) fn to_pose([x, y, h]: [f64; 3]) -> Pose {
     Pose::new(Vector::new(x, y), h)
 }

@@ -237,7 +237,7 @@ impl Margin {
 
 /// The distance from `p` to the closed segment `a-b`. Written out rather than parry's, whose
 /// tolerances are absolute and give wrong distances in worlds measured in micrometres.
-pub(super) fn point_segment_distance(p: Point, a: Point, b: Point) -> f64 {
+pub(crate) fn point_segment_distance(p: Point, a: Point, b: Point) -> f64 {
     let ab = b - a;
     let len2 = ab.norm_squared();
     let t = if len2 > 0.0 { ((p - a).dot(&ab) / len2).clamp(0.0, 1.0) } else { 0.0 };

@@ -38,7 +38,7 @@ use crate::freespace::FreeSpace;
 use crate::geometry::Point;
 
 mod bounds;
-mod checker;
+pub(crate) mod checker;
 mod error;
 mod polygon;
 

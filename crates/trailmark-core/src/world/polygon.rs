@@ -80,7 +80,7 @@ impl Polygon {
             .fold(f64::INFINITY, f64::min)
     }
 
-    pub(super) fn edges(&self) -> impl Iterator<Item = (Point, Point)> + '_ {
+    pub(crate) fn edges(&self) -> impl Iterator<Item = (Point, Point)> + '_ {
         let n = self.vertices.len();
         (0..n).map(move |i| (self.vertices[i], self.vertices[(i + 1) % n]))
     }

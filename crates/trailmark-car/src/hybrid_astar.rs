@@ -1,0 +1,432 @@
+//! Hybrid A* (Dolgov, Thrun, Montemerlo and Diebel, "Path Planning for Autonomous Vehicles in
+//! Unknown Semi-structured Environments", IJRR 2010): A* over cells and heading bins, where
+//! each state keeps the continuous pose that reached it, expanded by the car's own motions, and
+//! finished by a Reeds-Shepp (or Dubins) curve shot to the exact goal pose when one is free.
+//!
+//! As in Nav2's Smac Hybrid-A*: motions turn by whole heading bins, so states' headings lie on
+//! bins; a state once expanded is not reopened (a cheaper way into its cell and bin later is
+//! ignored), which keeps the search fast and makes its paths good rather than optimal.
+
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+use std::collections::hash_map::Entry;
+use std::time::Instant;
+
+use foldhash::HashMap;
+use trailmark_core::dubins::{DubinsPath, Turn};
+use trailmark_core::footprint::Footprint;
+use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::reeds_shepp::{Gear, ReedsSheppPath};
+use trailmark_core::termination::{Stop, Termination, Watch};
+
+use crate::collision::FootprintChecker;
+use crate::error::CarError;
+use crate::heuristic::{ObstacleHeuristic, curve_length};
+use crate::map::CarMap;
+use crate::motion::{Motion, Motions};
+use crate::path::{CarPath, Stretch};
+use crate::settings::HybridSettings;
+use crate::stats::HybridStats;
+
+/// No parent: the start state.
+const ROOT: u32 = u32::MAX;
+
+/// The poses along a motion or a shot are checked this many to a cell.
+const CHECKS_PER_CELL: f64 = 2.0;
+
+/// Hybrid A* for one car on one map: made once, asked for many queries.
+///
+/// ```
+/// use trailmark_car::{CarMap, HybridAStar, HybridSettings};
+/// use trailmark_core::footprint::Footprint;
+/// use trailmark_core::geometry::Pose;
+/// use trailmark_core::grid::Grid;
+/// use trailmark_core::termination::Termination;
+///
+/// // A 12 m x 8 m yard of 0.1 m cells with a wall across its middle, open at the top.
+/// let mut rows = vec![".".repeat(120); 80];
+/// for row in rows.iter_mut().skip(30) {
+///     row.replace_range(60..62, "@@");
+/// }
+/// let map = CarMap::from_grid(&Grid::from_rows(&rows)?, 0.1)?;
+/// let settings = HybridSettings { turning_radius: 1.0, ..HybridSettings::default() };
+/// let planner = HybridAStar::new(&map, &Footprint::Radius(0.3), settings)?;
+/// let start = Pose::new(nalgebra::Vector2::new(2.0, 1.0), 0.0);
+/// let goal = Pose::new(nalgebra::Vector2::new(10.0, 1.0), std::f64::consts::PI);
+/// let plan = planner.plan(&start, &goal, &Termination::unlimited())?;
+/// let end = plan.path.end().unwrap();
+/// assert!((end.translation.vector - goal.translation.vector).norm() < 1e-6);
+/// assert!(plan.path.length() > 8.0); // around the wall's top end
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct HybridAStar<'m> {
+    map: &'m CarMap,
+    settings: HybridSettings,
+    motions: Motions,
+    checker: FootprintChecker,
+    /// The longest step between two checked poses.
+    step: f64,
+    /// The footprint's inscribed radius (for the obstacle heuristic).
+    inscribed: f64,
+    /// The cheapest price of a metre on the map.
+    least_price: f64,
+}
+
+/// A path and what the search did to find it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CarPlan {
+    /// The path, in the world's frame.
+    pub path: CarPath,
+    /// Counters and times.
+    pub stats: HybridStats,
+}
+
+/// A state of the search.
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    /// The continuous pose, in map coordinates; its heading is on bin `bin`.
+    pose: Pose,
+    bin: u32,
+    g: f64,
+    f: f64,
+    parent: u32,
+    /// The motion that reached it from its parent.
+    motion: Option<Motion>,
+    closed: bool,
+}
+
+impl<'m> HybridAStar<'m> {
+    /// A planner for a car with `footprint` on `map`.
+    ///
+    /// Errors: a setting out of range ([`HybridSettings::check`]), a footprint radius that is
+    /// negative or not finite.
+    pub fn new(map: &'m CarMap, footprint: &Footprint, settings: HybridSettings) -> Result<Self, CarError> {
+        settings.check(map.resolution())?;
+        let inscribed = footprint.inscribed_radius()?;
+        let reach = footprint.circumscribed_radius()?;
+        let step = map.resolution() / CHECKS_PER_CELL;
+        // Between two poses `step` apart along an arc, a point of the robot `reach` from its
+        // reference point moves at most `step (1 + reach / radius)`: a pose in between is within
+        // half of that of one of them.
+        let margin = 0.5 * step * (1.0 + reach / settings.turning_radius);
+        let motions =
+            Motions::new(settings.turning_radius, settings.heading_bins, map.resolution(), settings.reverse);
+        Ok(HybridAStar {
+            map,
+            settings,
+            motions,
+            checker: FootprintChecker::new(footprint, margin),
+            step,
+            inscribed,
+            least_price: map.least_price(),
+        })
+    }
+
+    /// The settings.
+    pub fn settings(&self) -> &HybridSettings {
+        &self.settings
+    }
+
+    /// Whether the footprint at `pose` (the world's frame) is clear of obstacles and on the map,
+    /// as the planner checks it (with its margin).
+    pub fn is_free(&self, pose: &Pose) -> bool {
+        self.checker.is_free(self.map, &self.map.to_map(pose), &mut 0)
+    }
+
+    /// A path from `start` to `goal` (poses in the world's frame), within `termination`.
+    ///
+    /// Errors: a pose with a non-finite value; a start or goal whose footprint touches an
+    /// obstacle or leaves the map; [`CarError::NoPath`] when every reachable state was
+    /// expanded without a free shot to the goal, or the termination stopped the search.
+    pub fn plan(&self, start: &Pose, goal: &Pose, termination: &Termination) -> Result<CarPlan, CarError> {
+        let clock = Instant::now();
+        let mut stats = HybridStats::default();
+        for (which, pose) in [("start", start), ("goal", goal)] {
+            let v = [pose.translation.x, pose.translation.y, pose.rotation.re, pose.rotation.im];
+            if !v.iter().all(|x| x.is_finite()) {
+                return Err(CarError::Pose { which, pose: as_array(pose) });
+            }
+            if !self.is_free(pose) {
+                return Err(CarError::InCollision { which, pose: as_array(pose) });
+            }
+        }
+        let (start_m, goal_m) = (self.map.to_map(start), self.map.to_map(goal));
+        let heuristic_clock = Instant::now();
+        let obstacles = ObstacleHeuristic::new(self.map, point(&goal_m), self.inscribed)?;
+        stats.heuristic_time = heuristic_clock.elapsed();
+        let mut search = Run {
+            planner: self,
+            obstacles,
+            goal: goal_m,
+            start_heading: start_m.rotation.angle(),
+            nodes: Vec::new(),
+            index: HashMap::default(),
+            open: BinaryHeap::new(),
+            stats,
+        };
+        let found = search.run(start_m, termination);
+        let mut stats = search.stats;
+        stats.time = clock.elapsed();
+        match found {
+            Ok((end, shot, cost)) => {
+                let path = search.path(end, shot, cost);
+                Ok(CarPlan { path, stats })
+            }
+            Err(stop) => Err(CarError::NoPath { stop, stats }),
+        }
+    }
+}
+
+/// The state of one query.
+struct Run<'p, 'm> {
+    planner: &'p HybridAStar<'m>,
+    obstacles: ObstacleHeuristic,
+    goal: Pose,
+    start_heading: f64,
+    nodes: Vec<Node>,
+    /// The node of each (cell, bin).
+    index: HashMap<u64, u32>,
+    /// (the bits of f, which order as f does for costs not negative, node).
+    open: BinaryHeap<Reverse<(u64, u32)>>,
+    stats: HybridStats,
+}
+
+/// A shot to the goal: its stretches (map coordinates, no start pose yet) and cost.
+type Shot = Vec<(Turn, Gear, f64)>;
+
+impl Run<'_, '_> {
+    /// Searches from `start`: the node where a free shot to the goal was found, the shot and the
+    /// path's cost; or why it stopped (`None`: the open list ran out).
+    fn run(&mut self, start: Pose, termination: &Termination) -> Result<(u32, Shot, f64), Option<Stop>> {
+        let p = self.planner;
+        let start_cell = p.map.cell_index(point(&start)).ok_or(None)?;
+        let h = self.estimate(&start, start_cell);
+        if !h.is_finite() {
+            return Err(None);
+        }
+        self.nodes.push(Node {
+            pose: start,
+            bin: 0,
+            g: 0.0,
+            f: h,
+            parent: ROOT,
+            motion: None,
+            closed: false,
+        });
+        self.index.insert(self.key(start_cell, 0), 0);
+        self.open.push(Reverse((h.to_bits(), 0)));
+        let mut watch = Watch::start(termination);
+        let mut countdown = 0u64;
+        while let Some(Reverse((f_bits, id))) = self.open.pop() {
+            let node = self.nodes[id as usize];
+            if node.closed || node.f.to_bits() != f_bits {
+                continue; // expanded already, or reached more cheaply since this entry
+            }
+            self.nodes[id as usize].closed = true;
+            self.stats.expansions += 1;
+            if self.stats.expansions.is_multiple_of(64) {
+                watch.set_expansions(self.stats.expansions);
+                if let Some(stop) = watch.interrupted() {
+                    return Err(Some(stop));
+                }
+            }
+            // Shots to the goal: every h / ratio expansions (h in cells), when close enough.
+            if countdown == 0 {
+                let near = (point(&node.pose) - point(&self.goal)).norm()
+                    <= p.settings.analytic_expansion_max_length;
+                if near && let Some((shot, cost)) = self.shot(&node) {
+                    return Ok((id, shot, node.g + cost));
+                }
+                let h_cells = (node.f - node.g) / p.least_price / p.map.resolution();
+                countdown = (h_cells / p.settings.analytic_expansion_ratio).floor().max(0.0) as u64;
+            } else {
+                countdown -= 1;
+            }
+            self.expand(id, node);
+        }
+        Err(None)
+    }
+
+    fn key(&self, cell: usize, bin: u32) -> u64 {
+        cell as u64 * u64::from(self.planner.settings.heading_bins) + u64::from(bin)
+    }
+
+    /// The estimate from `pose` (in cell `cell`) to the goal.
+    fn estimate(&self, pose: &Pose, cell: usize) -> f64 {
+        let p = self.planner;
+        let around = self.obstacles.at(cell);
+        if !around.is_finite() {
+            return around;
+        }
+        let turning = curve_length(pose, &self.goal, p.settings.turning_radius, p.settings.reverse);
+        around.max(turning * p.least_price)
+    }
+
+    /// Tries every motion from `node` (index `id`).
+    fn expand(&mut self, id: u32, node: Node) {
+        let p = self.planner;
+        let bins = p.settings.heading_bins as i64;
+        for k in 0..p.motions.all.len() {
+            let motion = p.motions.all[k];
+            self.stats.motions += 1;
+            let Some((end, price)) = self.drive(&node.pose, motion) else { continue };
+            let bin = (i64::from(node.bin) + i64::from(motion.bins)).rem_euclid(bins) as u32;
+            let heading = self.start_heading + f64::from(bin) * p.motions.bin_angle;
+            let end = Pose::new(end.translation.vector, heading);
+            let Some(cell) = p.map.cell_index(point(&end)) else { continue };
+            let g = node.g + self.motion_cost(node.motion.map(|m| m.gear), motion, p.motions.length, price);
+            let key = self.key(cell, bin);
+            let reached = match self.index.entry(key) {
+                Entry::Occupied(e) => {
+                    let other = &self.nodes[*e.get() as usize];
+                    if other.closed || other.g <= g {
+                        continue;
+                    }
+                    Some(*e.get())
+                }
+                Entry::Vacant(_) => None,
+            };
+            let h = match reached {
+                Some(other) => self.nodes[other as usize].f - self.nodes[other as usize].g,
+                None => self.estimate(&end, cell),
+            };
+            if !h.is_finite() {
+                continue;
+            }
+            let fresh = Node { pose: end, bin, g, f: g + h, parent: id, motion: Some(motion), closed: false };
+            let slot = match reached {
+                Some(other) => {
+                    self.nodes[other as usize] = fresh;
+                    other
+                }
+                None => {
+                    self.nodes.push(fresh);
+                    let slot = (self.nodes.len() - 1) as u32;
+                    self.index.insert(key, slot);
+                    slot
+                }
+            };
+            self.open.push(Reverse((fresh.f.to_bits(), slot)));
+        }
+    }
+
+    /// Drives `motion` from `pose`, checking the footprint every step: the end pose and the
+    /// mean price of a metre over the checked poses, or `None` on a collision.
+    fn drive(&mut self, pose: &Pose, motion: Motion) -> Option<(Pose, f64)> {
+        let p = self.planner;
+        let length = p.motions.length;
+        let n = (length / p.step).ceil().max(1.0) as usize;
+        let mut price = 0.0;
+        let mut end = *pose;
+        for i in 1..=n {
+            end = p.motions.pose_along(pose, motion, length * i as f64 / n as f64);
+            self.stats.footprint_checks += 1;
+            if !p.checker.is_free(p.map, &end, &mut self.stats.footprint_rasters) {
+                return None;
+            }
+            price += p.map.price(p.map.cell_index(point(&end))?);
+        }
+        Some((end, price / n as f64))
+    }
+
+    /// The cost of driving `length` by `motion` at a mean `price` per metre, after a motion in
+    /// gear `before` (`None` at the start).
+    fn motion_cost(&self, before: Option<Gear>, motion: Motion, length: f64, price: f64) -> f64 {
+        let s = &self.planner.settings;
+        let mut factor = price;
+        if motion.turn != Turn::Straight {
+            factor *= s.non_straight_penalty;
+        }
+        if motion.gear == Gear::Reverse {
+            factor *= s.reverse_penalty;
+        }
+        let change = if before.is_some_and(|g| g != motion.gear) { s.gear_change_penalty } else { 0.0 };
+        length * factor + change
+    }
+
+    /// The shortest curve from `node` to the goal, if the footprint stays free along it: its
+    /// stretches and cost.
+    fn shot(&mut self, node: &Node) -> Option<(Shot, f64)> {
+        let p = self.planner;
+        self.stats.analytic_attempts += 1;
+        let r = p.settings.turning_radius;
+        let stretches: Shot = if p.settings.reverse {
+            let path = ReedsSheppPath::shortest(&node.pose, &self.goal, r).ok()?;
+            path.segments().map(|s| (s.turn, s.gear, s.length)).collect()
+        } else {
+            let path = DubinsPath::shortest(&node.pose, &self.goal, r).ok()?;
+            path.word()
+                .turns()
+                .into_iter()
+                .zip(path.segment_lengths())
+                .map(|(t, l)| (t, Gear::Forward, l))
+                .collect()
+        };
+        let mut at = node.pose;
+        let mut before = node.motion.map(|m| m.gear);
+        let mut cost = 0.0;
+        for &(turn, gear, length) in &stretches {
+            if length <= 0.0 {
+                continue;
+            }
+            let motion = Motion { gear, turn, bins: 0 };
+            let stretch = Stretch { start: at, turn, gear, length };
+            let n = (length / p.step).ceil().max(1.0) as usize;
+            let mut price = 0.0;
+            for i in 1..=n {
+                let pose = stretch.pose_at(length * i as f64 / n as f64, r);
+                self.stats.footprint_checks += 1;
+                if !p.checker.is_free(p.map, &pose, &mut self.stats.footprint_rasters) {
+                    return None;
+                }
+                price += p.map.price(p.map.cell_index(point(&pose))?);
+            }
+            cost += self.motion_cost(before, motion, length, price / n as f64);
+            before = Some(gear);
+            at = stretch.pose_at(length, r);
+        }
+        Some((stretches, cost))
+    }
+
+    /// The path to node `end` followed by `shot`, in the world's frame.
+    fn path(&self, end: u32, shot: Shot, cost: f64) -> CarPath {
+        let p = self.planner;
+        let r = p.settings.turning_radius;
+        let mut chain = Vec::new();
+        let mut id = end;
+        while id != ROOT {
+            let node = &self.nodes[id as usize];
+            if let Some(motion) = node.motion {
+                let from = self.nodes[node.parent as usize].pose;
+                chain.push(Stretch {
+                    start: from,
+                    turn: motion.turn,
+                    gear: motion.gear,
+                    length: p.motions.length,
+                });
+            }
+            id = node.parent;
+        }
+        chain.reverse();
+        let mut at = self.nodes[end as usize].pose;
+        for (turn, gear, length) in shot {
+            if length <= 0.0 {
+                continue;
+            }
+            let stretch = Stretch { start: at, turn, gear, length };
+            at = stretch.pose_at(length, r);
+            chain.push(stretch);
+        }
+        let stretches = chain.into_iter().map(|s| Stretch { start: p.map.to_world(&s.start), ..s }).collect();
+        CarPath { stretches, turning_radius: r, cost }
+    }
+}
+
+fn point(pose: &Pose) -> Point {
+    Point::from(pose.translation.vector)
+}
+
+fn as_array(pose: &Pose) -> [f64; 3] {
+    [pose.translation.x, pose.translation.y, pose.rotation.angle()]
+}

@@ -1,0 +1,168 @@
+//! The map a car plans on: which cells its footprint may not touch, what a metre costs in each
+//! cell, and how far each cell lies from the nearest obstacle (so that most footprint checks
+//! end without looking at the footprint's cells).
+//!
+//! Positions inside the planner are in map coordinates: metres from the map's lower-left corner
+//! along its own axes (x right, y up), so that a ROS map turned by a yaw plans as if it were
+//! not, and headings keep their sense. [`CarMap::to_map`] and [`CarMap::to_world`] convert.
+
+use trailmark_core::geometry::{Point, Pose, Vector};
+use trailmark_core::grid::Grid;
+use trailmark_map::{Costmap, LETHAL, MAX_NON_OBSTACLE, MapError, MapFrame, TravelCost, squared_distances};
+
+use crate::error::CarError;
+
+/// A map for car planning: obstacle cells, the price of a metre per cell, and the distance from
+/// each cell to the nearest obstacle cell.
+#[derive(Debug, Clone)]
+pub struct CarMap {
+    frame: MapFrame,
+    width: usize,
+    height: usize,
+    resolution: f64,
+    /// Per cell, in the grid's order (row 0 at the top): the price of a metre, `+inf` on an
+    /// obstacle.
+    price: Vec<f64>,
+    /// Per cell: metres from its centre to the centre of the nearest obstacle cell (`+inf`
+    /// without obstacles).
+    clearance: Vec<f64>,
+}
+
+impl CarMap {
+    /// A costmap as a car sees it: lethal cells (254) and unknown ones (255) are obstacles
+    /// that no part of the footprint may touch; inscribed cells (253) are not, the footprint
+    /// itself being checked. A metre costs `travel.neutral + travel.factor * cost / 252`
+    /// (inscribed cells as 252), as Smac prices it.
+    ///
+    /// Errors: a `travel` out of range.
+    pub fn from_costmap(costmap: &Costmap, travel: &TravelCost) -> Result<Self, CarError> {
+        travel.check()?;
+        let price = costmap
+            .costs()
+            .iter()
+            .map(|&c| {
+                if c >= LETHAL {
+                    f64::INFINITY
+                } else {
+                    travel.neutral + travel.factor * f64::from(c.min(MAX_NON_OBSTACLE)) / 252.0
+                }
+            })
+            .collect();
+        Ok(Self::with_prices(*costmap.frame(), price))
+    }
+
+    /// A grid as a car sees it, each cell `resolution` wide with the grid's top-left corner
+    /// at `(0, height * resolution)` (the map frame's convention: y up): blocked cells are
+    /// obstacles, and a metre costs the cell's cost.
+    ///
+    /// Errors: a resolution that is not positive and finite.
+    pub fn from_grid(grid: &Grid, resolution: f64) -> Result<Self, CarError> {
+        let frame = MapFrame::new(grid.width() as usize, grid.height() as usize, resolution, [0.0; 3])?;
+        Ok(Self::with_prices(frame, grid.costs().to_vec()))
+    }
+
+    fn with_prices(frame: MapFrame, price: Vec<f64>) -> Self {
+        let (width, height) = (frame.width() as usize, frame.height() as usize);
+        let resolution = frame.resolution();
+        let clearance = squared_distances(width, height, |i| price[i].is_infinite())
+            .into_iter()
+            .map(|d| d.sqrt() * resolution)
+            .collect();
+        CarMap { frame, width, height, resolution, price, clearance }
+    }
+
+    /// The map's frame.
+    pub fn frame(&self) -> &MapFrame {
+        &self.frame
+    }
+
+    /// The width of a cell.
+    pub fn resolution(&self) -> f64 {
+        self.resolution
+    }
+
+    /// The width and height in cells.
+    pub fn size(&self) -> (usize, usize) {
+        (self.width, self.height)
+    }
+
+    /// A pose of the world in map coordinates.
+    pub fn to_map(&self, pose: &Pose) -> Pose {
+        self.origin().inverse() * pose
+    }
+
+    /// A pose in map coordinates in the world.
+    pub fn to_world(&self, pose: &Pose) -> Pose {
+        self.origin() * pose
+    }
+
+    fn origin(&self) -> Pose {
+        let [x, y, yaw] = self.frame.origin();
+        Pose::new(Vector::new(x, y), yaw)
+    }
+
+    /// The index of the cell holding `p` (map coordinates), or `None` outside the map.
+    #[inline]
+    pub(crate) fn cell_index(&self, p: Point) -> Option<usize> {
+        let (i, j) = ((p.x / self.resolution).floor(), (p.y / self.resolution).floor());
+        let inside = i >= 0.0 && j >= 0.0 && i < self.width as f64 && j < self.height as f64;
+        // NaN fails every comparison.
+        inside.then(|| (self.height - 1 - j as usize) * self.width + i as usize)
+    }
+
+    /// The index of the cell in column `i`, row `j` counted from the bottom, if inside.
+    #[inline]
+    pub(crate) fn index_at(&self, i: i64, j: i64) -> Option<usize> {
+        let inside = i >= 0 && j >= 0 && (i as usize) < self.width && (j as usize) < self.height;
+        inside.then(|| (self.height - 1 - j as usize) * self.width + i as usize)
+    }
+
+    /// The price of a metre in cell `index`, `+inf` on an obstacle.
+    #[inline]
+    pub(crate) fn price(&self, index: usize) -> f64 {
+        self.price[index]
+    }
+
+    /// Whether cell `index` is an obstacle.
+    #[inline]
+    pub(crate) fn is_obstacle(&self, index: usize) -> bool {
+        self.price[index].is_infinite()
+    }
+
+    /// Whether the disc of radius `r` about `p` lies on the map and off every obstacle cell, as
+    /// far as the distances between cell centres tell (`false` when they cannot tell): the
+    /// nearest obstacle cell's square is at least its centre's distance from `p`'s cell centre,
+    /// less `p`'s offset from that centre, less half a cell's diagonal.
+    #[inline]
+    pub(crate) fn is_clear_around(&self, p: Point, r: f64) -> bool {
+        let res = self.resolution;
+        let on_map =
+            p.x >= r && p.y >= r && p.x + r < self.width as f64 * res && p.y + r < self.height as f64 * res;
+        if !on_map {
+            return false;
+        }
+        let (i, j) = ((p.x / res).floor(), (p.y / res).floor());
+        let index = (self.height - 1 - j as usize) * self.width + i as usize;
+        let offset = ((i + 0.5) * res - p.x).hypot((j + 0.5) * res - p.y);
+        self.clearance[index] - offset - std::f64::consts::FRAC_1_SQRT_2 * res > r
+    }
+
+    /// An upper bound on the distance from every point of cell `index` to the nearest obstacle
+    /// cell (the distance between centres plus half a diagonal).
+    #[inline]
+    pub(crate) fn clearance_at_most(&self, index: usize) -> f64 {
+        self.clearance[index] + std::f64::consts::FRAC_1_SQRT_2 * self.resolution
+    }
+
+    /// The cheapest price of a metre anywhere off the obstacles (1 on a map of free cells).
+    pub(crate) fn least_price(&self) -> f64 {
+        self.price.iter().copied().filter(|p| p.is_finite()).fold(f64::INFINITY, f64::min)
+    }
+
+    /// The grid of the map's prices, obstacles and the cells `blocked` names blocked.
+    pub(crate) fn grid_with(&self, blocked: impl Fn(usize) -> bool) -> Result<Grid, CarError> {
+        let costs =
+            (0..self.price.len()).map(|i| if blocked(i) { f64::INFINITY } else { self.price[i] }).collect();
+        Ok(Grid::from_costs(self.width, self.height, costs).map_err(MapError::from)?)
+    }
+}

@@ -1,0 +1,80 @@
+//! The motions Hybrid A* expands a state with: forward and (when allowed) in reverse, straight
+//! or at the turning radius to either side, each long enough to leave its cell and turning by
+//! a whole number of heading bins, so that every state the search reaches has a heading on a
+//! bin (counted from the start's heading) and the footprint's cells depend only on the bin.
+
+use std::f64::consts::{SQRT_2, TAU};
+
+use trailmark_core::dubins::{Turn, drive};
+use trailmark_core::geometry::Pose;
+use trailmark_core::reeds_shepp::Gear;
+
+/// One motion: a gear, a turn, and the bins the heading moves by (signed: counter-clockwise
+/// positive).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Motion {
+    pub gear: Gear,
+    pub turn: Turn,
+    pub bins: i32,
+}
+
+/// The motions of a search, all of the same length.
+#[derive(Debug, Clone)]
+pub(crate) struct Motions {
+    pub all: Vec<Motion>,
+    /// The length of every motion.
+    pub length: f64,
+    /// The turning radius.
+    pub radius: f64,
+    /// The angle of one heading bin.
+    pub bin_angle: f64,
+}
+
+impl Motions {
+    /// The motions for a car of `radius` on cells of `resolution` with `bins` headings:
+    /// a turn of the fewest bins whose arc is at least 1.5 cells long (out of its cell whatever
+    /// the direction), and straight motions of the same length.
+    pub fn new(radius: f64, bins: u32, resolution: f64, reverse: bool) -> Self {
+        let bin_angle = TAU / f64::from(bins);
+        let least = 1.5f64.max(SQRT_2) * resolution;
+        let per_turn = ((least / (radius * bin_angle)).ceil() as i32).max(1);
+        let length = f64::from(per_turn) * bin_angle * radius;
+        let gears: &[Gear] = if reverse { &[Gear::Forward, Gear::Reverse] } else { &[Gear::Forward] };
+        let mut all = Vec::new();
+        for &gear in gears {
+            // Reversing with the wheels to the left turns the heading clockwise.
+            let sign = if gear == Gear::Forward { 1 } else { -1 };
+            all.push(Motion { gear, turn: Turn::Straight, bins: 0 });
+            all.push(Motion { gear, turn: Turn::Left, bins: sign * per_turn });
+            all.push(Motion { gear, turn: Turn::Right, bins: -sign * per_turn });
+        }
+        Motions { all, length, radius, bin_angle }
+    }
+
+    /// The pose `s` along `motion` from `pose` (`0 <= s <= length`).
+    pub fn pose_along(&self, pose: &Pose, motion: Motion, s: f64) -> Pose {
+        let signed = if motion.gear == Gear::Forward { s } else { -s };
+        drive(pose, motion.turn, signed, self.radius)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn turns_move_whole_bins_and_leave_the_cell() {
+        let m = Motions::new(0.4, 72, 0.05, true);
+        assert_eq!(m.all.len(), 6);
+        assert!(m.length >= 1.5 * 0.05);
+        let start = Pose::new(nalgebra::Vector2::new(1.0, 1.0), 0.3);
+        for motion in &m.all {
+            let end = m.pose_along(&start, *motion, m.length);
+            let turned = f64::from(motion.bins) * m.bin_angle;
+            let d = (end.rotation.angle() - (0.3 + turned)).rem_euclid(TAU);
+            assert!(d.min(TAU - d) < 1e-9, "{motion:?}: {d}");
+            let moved = (end.translation.vector - start.translation.vector).norm();
+            assert!(moved > 0.05 * 1.4, "{motion:?} moved {moved}");
+        }
+    }
+}

@@ -1,0 +1,215 @@
+//! Hybrid A* on the Nav2 example maps in `../shared/rosmaps`: seeded parking and corridor
+//! queries for a car with a rectangular footprint. Every path is checked by code that shares
+//! nothing with the planner's checks: the exact footprint at poses every 1/8 cell along the
+//! path, each cell tested against the footprint's rectangle by separating axes; the curvature
+//! between cusps from the sampled headings; the ends against the asked poses.
+//!
+//! Skipped with a message when the maps are absent. Planning times are printed (run with
+//! `--nocapture`); the figures are in docs/car.md.
+
+use std::path::PathBuf;
+use std::time::Duration;
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use trailmark_car::{CarError, CarMap, CarPath, HybridAStar, HybridSettings};
+use trailmark_core::footprint::Footprint;
+use trailmark_core::geometry::{Point, Pose};
+use trailmark_core::reeds_shepp::Gear;
+use trailmark_core::termination::Termination;
+use trailmark_core::world::Polygon;
+use trailmark_map::{Costmap, CostmapSettings, Inflation, LETHAL, load_map};
+
+fn data() -> Option<PathBuf> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/rosmaps");
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        eprintln!("skipped: {} not found (the Nav2 example maps)", dir.display());
+        None
+    }
+}
+
+/// A 0.6 m x 0.4 m car, its reference point (the rear axle) 0.15 m from the back.
+const CAR: [[f64; 2]; 4] = [[-0.15, -0.2], [0.45, -0.2], [0.45, 0.2], [-0.15, 0.2]];
+const TURNING_RADIUS: f64 = 0.5;
+
+fn footprint() -> Footprint {
+    Footprint::Polygon(Polygon::new(CAR.iter().map(|p| Point::new(p[0], p[1])).collect()).unwrap())
+}
+
+/// Whether the rectangle `CAR` at `pose` (world frame) overlaps no lethal or unknown cell and
+/// stays on the map: every cell near the pose tested by the separating axis theorem (the cell's
+/// two axes and the rectangle's two).
+fn independently_free(costmap: &Costmap, pose: &Pose) -> bool {
+    let frame = costmap.frame();
+    let res = frame.resolution();
+    let corners: Vec<Point> = CAR.iter().map(|p| pose * Point::new(p[0], p[1])).collect();
+    // Corners in grid units (x right, y down from the top-left), where cells are unit squares.
+    let g: Vec<(f64, f64)> = corners.iter().map(|&p| frame.point_to_grid(p)).collect();
+    let (w, h) = (f64::from(frame.width()), f64::from(frame.height()));
+    if g.iter().any(|&(x, y)| x < 0.0 || y < 0.0 || x > w || y > h) {
+        return false;
+    }
+    let (x0, x1) = g.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.0), b.max(p.0)));
+    let (y0, y1) = g.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let _ = res;
+    let axes = [(g[1].0 - g[0].0, g[1].1 - g[0].1), (g[3].0 - g[0].0, g[3].1 - g[0].1)];
+    for cy in y0.floor() as i64..=y1.floor() as i64 {
+        for cx in x0.floor() as i64..=x1.floor() as i64 {
+            if cx < 0 || cy < 0 || cx as f64 >= w || cy as f64 >= h {
+                continue;
+            }
+            let square = [
+                (cx as f64, cy as f64),
+                (cx as f64 + 1.0, cy as f64),
+                (cx as f64 + 1.0, cy as f64 + 1.0),
+                (cx as f64, cy as f64 + 1.0),
+            ];
+            let separated = |axis: (f64, f64)| {
+                let proj = |p: &(f64, f64)| p.0 * axis.0 + p.1 * axis.1;
+                let (a0, a1) = g
+                    .iter()
+                    .map(proj)
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+                let (b0, b1) = square
+                    .iter()
+                    .map(proj)
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+                a1 <= b0 || b1 <= a0
+            };
+            let overlaps = ![(1.0, 0.0), (0.0, 1.0), axes[0], axes[1]].into_iter().any(separated);
+            if overlaps {
+                let cell = trailmark_core::grid::Cell::new(cx as u32, cy as u32);
+                if costmap.cost(cell).is_none_or(|c| c >= LETHAL) {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+fn heading_gap(a: f64, b: f64) -> f64 {
+    let d = (b - a).rem_euclid(std::f64::consts::TAU);
+    d.min(std::f64::consts::TAU - d)
+}
+
+/// The checks every path passes; panics with the query on a failure.
+fn check_path(costmap: &Costmap, path: &CarPath, start: &Pose, goal: &Pose, what: &str) {
+    let res = costmap.frame().resolution();
+    let first = path.start().unwrap();
+    let last = path.end().unwrap();
+    assert!((first.translation.vector - start.translation.vector).norm() < 1e-9, "{what}: start");
+    assert!((last.translation.vector - goal.translation.vector).norm() < 1e-6, "{what}: end {last:?}");
+    assert!(heading_gap(last.rotation.angle(), goal.rotation.angle()) < 1e-6, "{what}: end heading");
+    // Stretches join end to start, position and heading.
+    for pair in path.stretches.windows(2) {
+        let end = pair[0].pose_at(pair[0].length, path.turning_radius);
+        assert!((end.translation.vector - pair[1].start.translation.vector).norm() < 1e-9, "{what}: gap");
+        assert!(heading_gap(end.rotation.angle(), pair[1].start.rotation.angle()) < 1e-9, "{what}: kink");
+    }
+    // Dense poses: the footprint free at every one, the curvature at most 1 / radius between
+    // consecutive poses of one gear, cusps only where the gear changes (and then the car
+    // stands: no turn without travel).
+    let samples = path.sample(res / 8.0);
+    for (pose, _) in &samples {
+        assert!(independently_free(costmap, pose), "{what}: footprint hits at {pose:?}");
+    }
+    for pair in samples.windows(2) {
+        let ((a, _), (b, gear)) = (pair[0], pair[1]);
+        let ds = (b.translation.vector - a.translation.vector).norm();
+        let turn = heading_gap(a.rotation.angle(), b.rotation.angle());
+        // On an arc of the turning radius a chord `ds` turns the heading by 2 asin(ds / 2r).
+        let most = 2.0 * (ds / (2.0 * TURNING_RADIUS)).min(1.0).asin();
+        assert!(turn <= most * (1.0 + 1e-9) + 1e-12, "{what}: curvature {turn} over {ds}");
+        // Moving in the direction of the heading forward, against it in reverse.
+        if ds > 1e-9 {
+            let heading = nalgebra::Vector2::new(a.rotation.angle().cos(), a.rotation.angle().sin());
+            let along = (b.translation.vector - a.translation.vector).dot(&heading);
+            match gear {
+                Gear::Forward => assert!(along > 0.0, "{what}: forward stretch moving back"),
+                Gear::Reverse => assert!(along < 0.0, "{what}: reverse stretch moving forward"),
+            }
+        }
+    }
+    let cusps = path.stretches.windows(2).filter(|w| w[0].gear != w[1].gear).count();
+    assert_eq!(cusps, path.cusps().len());
+}
+
+/// A random pose on the map whose footprint is free, with at most `max_clearance` metres
+/// between its cell and the nearest lethal cell when given (a parking pose, near walls).
+fn random_pose(costmap: &Costmap, planner: &HybridAStar, rng: &mut ChaCha8Rng, near_walls: bool) -> Pose {
+    let frame = costmap.frame();
+    let (w, h) = (f64::from(frame.width()), f64::from(frame.height()));
+    loop {
+        let (gx, gy) = (rng.random::<f64>() * w, rng.random::<f64>() * h);
+        let p = frame.point_from_grid(gx, gy);
+        let pose = Pose::new(p.coords, rng.random::<f64>() * std::f64::consts::TAU);
+        let cell = trailmark_core::grid::Cell::new(gx as u32, gy as u32);
+        // Inflated cells (cost over 128) lie within about 0.3 m of a wall.
+        let tight = costmap.cost(cell).is_some_and(|c| c > 128);
+        if planner.is_free(&pose) && independently_free(costmap, &pose) && tight == near_walls {
+            return pose;
+        }
+    }
+}
+
+fn quantile(sorted: &[f64], q: f64) -> f64 {
+    sorted[((sorted.len() - 1) as f64 * q).round() as usize]
+}
+
+#[test]
+fn hybrid_astar_paths_on_the_nav2_maps_pass_an_independent_check() {
+    let Some(dir) = data() else { return };
+    let car = footprint();
+    for (name, queries) in [("tb3_sandbox", 12), ("depot", 12), ("warehouse", 8)] {
+        let map = load_map(dir.join(format!("{name}.yaml"))).unwrap();
+        let settings = CostmapSettings {
+            inflation: Some(Inflation::around(&car).unwrap()),
+            ..CostmapSettings::default()
+        };
+        let costmap = Costmap::from_occupancy(&map, &settings).unwrap();
+        let car_map = CarMap::from_costmap(&costmap, &Default::default()).unwrap();
+        let hybrid = HybridSettings { turning_radius: TURNING_RADIUS, ..HybridSettings::default() };
+        let planner = HybridAStar::new(&car_map, &car, hybrid).unwrap();
+        let mut rng = ChaCha8Rng::seed_from_u64(7);
+        let (mut times, mut solved, mut unreachable, mut stopped, mut cusps) = (Vec::new(), 0, 0, 0, 0);
+        for q in 0..queries {
+            let start = random_pose(&costmap, &planner, &mut rng, false);
+            let goal = random_pose(&costmap, &planner, &mut rng, q % 2 == 0);
+            let what = format!("{name} query {q}: {start:?} -> {goal:?}");
+            let limit = Termination::time(Duration::from_secs(10));
+            match planner.plan(&start, &goal, &limit) {
+                Ok(plan) => {
+                    if std::env::var_os("CARDBG").is_some() {
+                        println!("{q} ok {:.1} m {:?}", plan.path.length(), plan.stats);
+                    }
+                    check_path(&costmap, &plan.path, &start, &goal, &what);
+                    times.push(plan.stats.time.as_secs_f64() * 1e3);
+                    cusps += plan.path.cusps().len();
+                    solved += 1;
+                }
+                Err(CarError::NoPath { stop: None, stats }) => {
+                    if std::env::var_os("CARDBG").is_some() {
+                        println!("{q} none {stats:?}");
+                    }
+                    unreachable += 1
+                }
+                Err(CarError::NoPath { stop: Some(_), stats }) => {
+                    println!("{q} stopped {stats:?}");
+                    stopped += 1
+                }
+                Err(e) => panic!("{what}: {e}"),
+            }
+        }
+        times.sort_by(f64::total_cmp);
+        let (w, h) = (costmap.frame().width(), costmap.frame().height());
+        println!(
+            "{name} ({w} x {h} cells): {solved} solved, {unreachable} proven unreachable, {stopped} stopped at 10 s; planning median {:.1} ms, 90th percentile {:.1} ms; {cusps} cusps",
+            quantile(&times, 0.5),
+            quantile(&times, 0.9)
+        );
+        assert!(solved >= queries / 2, "{name}: only {solved} of {queries} solved");
+    }
+}

@@ -28,6 +28,9 @@ use crate::path::{CarPath, Stretch};
 use crate::settings::HybridSettings;
 use crate::stats::HybridStats;
 
+/// How near the goal, in turning radii, the estimate asks for the curve's length.
+const CURVE_RADII: f64 = 10.0;
+
 /// No parent: the start state.
 const ROOT: u32 = u32::MAX;
 
@@ -187,8 +190,9 @@ struct Run<'p, 'm> {
     nodes: Vec<Node>,
     /// The node of each (cell, bin).
     index: HashMap<u64, u32>,
-    /// (the bits of f, which order as f does for costs not negative, node).
-    open: BinaryHeap<Reverse<(u64, u32)>>,
+    /// (the bits of f, which order as f does for costs not negative; the bits of g inverted,
+    /// so that among equal f the deeper state comes first; node).
+    open: BinaryHeap<Reverse<(u64, u64, u32)>>,
     stats: HybridStats,
 }
 
@@ -215,10 +219,10 @@ impl Run<'_, '_> {
             closed: false,
         });
         self.index.insert(self.key(start_cell, 0), 0);
-        self.open.push(Reverse((h.to_bits(), 0)));
+        self.open.push(Reverse((h.to_bits(), !0.0f64.to_bits(), 0)));
         let mut watch = Watch::start(termination);
         let mut countdown = 0u64;
-        while let Some(Reverse((f_bits, id))) = self.open.pop() {
+        while let Some(Reverse((f_bits, _, id))) = self.open.pop() {
             let node = self.nodes[id as usize];
             if node.closed || node.f.to_bits() != f_bits {
                 continue; // expanded already, or reached more cheaply since this entry
@@ -252,14 +256,21 @@ impl Run<'_, '_> {
         cell as u64 * u64::from(self.planner.settings.heading_bins) + u64::from(bin)
     }
 
-    /// The estimate from `pose` (in cell `cell`) to the goal.
+    /// The estimate from `pose` (in cell `cell`) to the goal. The curve's length is asked only
+    /// within [`CURVE_RADII`] turning radii of the goal: farther away it exceeds the straight
+    /// distance by less than the obstacle estimate does in all but open space, and it is the
+    /// dearest part of an expansion.
     fn estimate(&self, pose: &Pose, cell: usize) -> f64 {
         let p = self.planner;
         let around = self.obstacles.at(cell);
         if !around.is_finite() {
             return around;
         }
-        let turning = curve_length(pose, &self.goal, p.settings.turning_radius, p.settings.reverse);
+        let r = p.settings.turning_radius;
+        if (point(pose) - point(&self.goal)).norm() > CURVE_RADII * r {
+            return around;
+        }
+        let turning = curve_length(pose, &self.goal, r, p.settings.reverse);
         around.max(turning * p.least_price)
     }
 
@@ -307,7 +318,7 @@ impl Run<'_, '_> {
                     slot
                 }
             };
-            self.open.push(Reverse((fresh.f.to_bits(), slot)));
+            self.open.push(Reverse((fresh.f.to_bits(), !fresh.g.to_bits(), slot)));
         }
     }
 

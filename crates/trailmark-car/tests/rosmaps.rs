@@ -137,79 +137,113 @@ fn check_path(costmap: &Costmap, path: &CarPath, start: &Pose, goal: &Pose, what
     assert_eq!(cusps, path.cusps().len());
 }
 
-/// A random pose on the map whose footprint is free, with at most `max_clearance` metres
-/// between its cell and the nearest lethal cell when given (a parking pose, near walls).
-fn random_pose(costmap: &Costmap, planner: &HybridAStar, rng: &mut ChaCha8Rng, near_walls: bool) -> Pose {
+/// A random pose on the map whose footprint is free: in the open (no lethal cell within
+/// [`NEAR_WALL`] of its reference point, any heading), or parked (a lethal cell that near, the
+/// car facing along the wall: across the line to the nearest lethal cell, either way).
+fn random_pose(costmap: &Costmap, planner: &HybridAStar, rng: &mut ChaCha8Rng, parked: bool) -> Pose {
     let frame = costmap.frame();
-    let (w, h) = (f64::from(frame.width()), f64::from(frame.height()));
-    loop {
-        let (gx, gy) = (rng.random::<f64>() * w, rng.random::<f64>() * h);
-        let p = frame.point_from_grid(gx, gy);
-        let pose = Pose::new(p.coords, rng.random::<f64>() * std::f64::consts::TAU);
+    let (w, h) = (frame.width(), frame.height());
+    let reach = (NEAR_WALL / frame.resolution()).ceil() as i64;
+    for _ in 0..1_000_000 {
+        let (gx, gy) = (rng.random::<f64>() * f64::from(w), rng.random::<f64>() * f64::from(h));
         let cell = trailmark_core::grid::Cell::new(gx as u32, gy as u32);
-        // Inflated cells (cost over 128) lie within about 0.3 m of a wall.
-        let tight = costmap.cost(cell).is_some_and(|c| c > 128);
-        if planner.is_free(&pose) && independently_free(costmap, &pose) && tight == near_walls {
+        if costmap.cost(cell).is_none_or(|c| c >= LETHAL) {
+            continue;
+        }
+        let p = frame.point_from_grid(gx, gy);
+        let mut nearest: Option<(f64, Point)> = None;
+        for dy in -reach..=reach {
+            for dx in -reach..=reach {
+                let (x, y) = (i64::from(cell.x) + dx, i64::from(cell.y) + dy);
+                if x < 0 || y < 0 || x >= i64::from(w) || y >= i64::from(h) {
+                    continue;
+                }
+                let c = trailmark_core::grid::Cell::new(x as u32, y as u32);
+                if costmap.cost(c).is_some_and(|v| v >= LETHAL) {
+                    let q = frame.centre(c);
+                    let d = (q - p).norm();
+                    if d <= NEAR_WALL && nearest.is_none_or(|(best, _)| d < best) {
+                        nearest = Some((d, q));
+                    }
+                }
+            }
+        }
+        let heading = match (nearest, parked) {
+            (Some((_, q)), true) => {
+                let to_wall = q - p;
+                let along = to_wall.y.atan2(to_wall.x) + std::f64::consts::FRAC_PI_2;
+                if rng.random::<bool>() { along } else { along + std::f64::consts::PI }
+            }
+            (None, false) => rng.random::<f64>() * std::f64::consts::TAU,
+            _ => continue,
+        };
+        let pose = Pose::new(p.coords, heading);
+        if planner.is_free(&pose) && independently_free(costmap, &pose) {
             return pose;
         }
     }
+    panic!("no {} pose found", if parked { "parked" } else { "open" });
 }
+
+/// How near a wall a parked car's reference point is, in metres.
+const NEAR_WALL: f64 = 0.5;
 
 fn quantile(sorted: &[f64], q: f64) -> f64 {
     sorted[((sorted.len() - 1) as f64 * q).round() as usize]
 }
 
-#[test]
-fn hybrid_astar_paths_on_the_nav2_maps_pass_an_independent_check() {
-    let Some(dir) = data() else { return };
+/// Plans `queries` seeded queries on the map `name` (half of them to a parked pose), checks
+/// every path, prints the planning times, and asserts that at least `least` were solved.
+fn queries_on(dir: &std::path::Path, name: &str, queries: usize, least: usize) {
     let car = footprint();
-    for (name, queries) in [("tb3_sandbox", 12), ("depot", 12), ("warehouse", 8)] {
-        let map = load_map(dir.join(format!("{name}.yaml"))).unwrap();
-        let settings = CostmapSettings {
-            inflation: Some(Inflation::around(&car).unwrap()),
-            ..CostmapSettings::default()
-        };
-        let costmap = Costmap::from_occupancy(&map, &settings).unwrap();
-        let car_map = CarMap::from_costmap(&costmap, &Default::default()).unwrap();
-        let hybrid = HybridSettings { turning_radius: TURNING_RADIUS, ..HybridSettings::default() };
-        let planner = HybridAStar::new(&car_map, &car, hybrid).unwrap();
-        let mut rng = ChaCha8Rng::seed_from_u64(7);
-        let (mut times, mut solved, mut unreachable, mut stopped, mut cusps) = (Vec::new(), 0, 0, 0, 0);
-        for q in 0..queries {
-            let start = random_pose(&costmap, &planner, &mut rng, false);
-            let goal = random_pose(&costmap, &planner, &mut rng, q % 2 == 0);
-            let what = format!("{name} query {q}: {start:?} -> {goal:?}");
-            let limit = Termination::time(Duration::from_secs(10));
-            match planner.plan(&start, &goal, &limit) {
-                Ok(plan) => {
-                    if std::env::var_os("CARDBG").is_some() {
-                        println!("{q} ok {:.1} m {:?}", plan.path.length(), plan.stats);
-                    }
-                    check_path(&costmap, &plan.path, &start, &goal, &what);
-                    times.push(plan.stats.time.as_secs_f64() * 1e3);
-                    cusps += plan.path.cusps().len();
-                    solved += 1;
-                }
-                Err(CarError::NoPath { stop: None, stats }) => {
-                    if std::env::var_os("CARDBG").is_some() {
-                        println!("{q} none {stats:?}");
-                    }
-                    unreachable += 1
-                }
-                Err(CarError::NoPath { stop: Some(_), stats }) => {
-                    println!("{q} stopped {stats:?}");
-                    stopped += 1
-                }
-                Err(e) => panic!("{what}: {e}"),
+    let map = load_map(dir.join(format!("{name}.yaml"))).unwrap();
+    let settings =
+        CostmapSettings { inflation: Some(Inflation::around(&car).unwrap()), ..CostmapSettings::default() };
+    let costmap = Costmap::from_occupancy(&map, &settings).unwrap();
+    let car_map = CarMap::from_costmap(&costmap, &Default::default()).unwrap();
+    let hybrid = HybridSettings { turning_radius: TURNING_RADIUS, ..HybridSettings::default() };
+    let planner = HybridAStar::new(&car_map, &car, hybrid).unwrap();
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let (mut times, mut solved, mut unreachable, mut stopped, mut cusps) = (Vec::new(), 0, 0, 0, 0);
+    for q in 0..queries {
+        let start = random_pose(&costmap, &planner, &mut rng, false);
+        let goal = random_pose(&costmap, &planner, &mut rng, q % 2 == 0);
+        let what = format!("{name} query {q}: {start:?} -> {goal:?}");
+        let limit = Termination::time(Duration::from_secs(10));
+        match planner.plan(&start, &goal, &limit) {
+            Ok(plan) => {
+                check_path(&costmap, &plan.path, &start, &goal, &what);
+                times.push(plan.stats.time.as_secs_f64() * 1e3);
+                cusps += plan.path.cusps().len();
+                solved += 1;
             }
+            Err(CarError::NoPath { stop: None, .. }) => unreachable += 1,
+            Err(CarError::NoPath { stop: Some(_), .. }) => stopped += 1,
+            Err(e) => panic!("{what}: {e}"),
         }
-        times.sort_by(f64::total_cmp);
-        let (w, h) = (costmap.frame().width(), costmap.frame().height());
-        println!(
-            "{name} ({w} x {h} cells): {solved} solved, {unreachable} proven unreachable, {stopped} stopped at 10 s; planning median {:.1} ms, 90th percentile {:.1} ms; {cusps} cusps",
-            quantile(&times, 0.5),
-            quantile(&times, 0.9)
-        );
-        assert!(solved >= queries / 2, "{name}: only {solved} of {queries} solved");
     }
+    times.sort_by(f64::total_cmp);
+    let (w, h) = (costmap.frame().width(), costmap.frame().height());
+    println!(
+        "{name} ({w} x {h} cells): {solved} solved, {unreachable} proven unreachable, {stopped} stopped at 10 s; \
+         planning median {:.1} ms, 90th percentile {:.1} ms; {cusps} cusps",
+        quantile(&times, 0.5),
+        quantile(&times, 0.9)
+    );
+    assert!(solved >= least, "{name}: only {solved} of {queries} solved");
+}
+
+#[test]
+fn hybrid_astar_paths_on_the_sandbox_and_the_depot_pass_an_independent_check() {
+    let Some(dir) = data() else { return };
+    queries_on(&dir, "tb3_sandbox", 12, 10);
+    queries_on(&dir, "depot", 12, 10);
+}
+
+/// The warehouse: 1.7 million cells of 3 cm, queries of 20-50 m (about 30 s in all).
+#[test]
+#[ignore = "heavy: run with --release -- --ignored"]
+fn hybrid_astar_paths_on_the_warehouse_pass_an_independent_check() {
+    let Some(dir) = data() else { return };
+    queries_on(&dir, "warehouse", 8, 6);
 }

@@ -122,7 +122,127 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     } else {
         println!("skipped docs/img/map-warehouse.svg: {} not found", warehouse.display());
     }
+    let depot = root.join("../shared/rosmaps/depot.yaml");
+    if depot.is_file() {
+        write("car-hybrid-astar.svg", car_parking(&depot)?)?;
+    } else {
+        println!("skipped docs/img/car-hybrid-astar.svg: {} not found", depot.display());
+    }
     Ok(())
+}
+
+/// Hybrid A* backing a 0.6 m x 0.4 m car into the gap between two pallet stacks of Nav2's depot
+/// map: the path forward in blue, in reverse in orange, the footprint every 0.4 m, the cusps in
+/// red.
+fn car_parking(yaml: &Path) -> Result<String, Box<dyn std::error::Error>> {
+    use std::fmt::Write as _;
+    use trailmark::car::{CarMap, HybridAStar, HybridSettings};
+    use trailmark::core::footprint::Footprint;
+    use trailmark::core::geometry::{Point, Pose, Vector};
+    use trailmark::core::reeds_shepp::Gear;
+    use trailmark::core::termination::Termination;
+    use trailmark::core::world::Polygon;
+    use trailmark::map::{Costmap, CostmapSettings, CostmapSvg, Inflation, load_map};
+    let corners = [(-0.15, -0.2), (0.45, -0.2), (0.45, 0.2), (-0.15, 0.2)];
+    let car = Footprint::Polygon(Polygon::new(corners.iter().map(|&(x, y)| Point::new(x, y)).collect())?);
+    let settings =
+        CostmapSettings { inflation: Some(Inflation::around(&car)?), ..CostmapSettings::default() };
+    let costmap = Costmap::from_occupancy(&load_map(yaml)?, &settings)?;
+    let map = CarMap::from_costmap(&costmap, &Default::default())?;
+    let planner =
+        HybridAStar::new(&map, &car, HybridSettings { turning_radius: 0.5, ..HybridSettings::default() })?;
+    let start = Pose::new(Vector::new(13.0, 8.5), 0.0);
+    let goal = Pose::new(Vector::new(19.7, 3.1), std::f64::consts::FRAC_PI_2);
+    let plan = planner.plan(&start, &goal, &Termination::unlimited())?;
+    let path = &plan.path;
+    println!(
+        "depot parking: {:.2} m, {} cusps, {} expansions, {:.1} ms",
+        path.length(),
+        path.cusps().len(),
+        plan.stats.expansions,
+        plan.stats.time.as_secs_f64() * 1e3
+    );
+    let frame = *costmap.frame();
+    let grid = |p: Point| frame.point_to_grid(p);
+    let mut extra = String::new();
+    // The footprint every 0.4 m of travel, and at the cusps.
+    let dense = path.sample(0.02);
+    let mut travelled = 0.0;
+    let mut shown = Vec::new();
+    for pair in dense.windows(2) {
+        travelled += (pair[1].0.translation.vector - pair[0].0.translation.vector).norm();
+        if travelled >= 0.4 || pair[0].1 != pair[1].1 {
+            shown.push(pair[0].0);
+            travelled = 0.0;
+        }
+    }
+    shown.push(goal);
+    for pose in shown {
+        let outline: Vec<String> = corners
+            .iter()
+            .map(|&(x, y)| {
+                let (gx, gy) = grid(pose * Point::new(x, y));
+                format!("{gx:.2},{gy:.2}")
+            })
+            .collect();
+        let _ = writeln!(
+            extra,
+            r##"<polygon points="{}" fill="#7f8c8d" fill-opacity="0.15" stroke="#555" stroke-width="0.25"/>"##,
+            outline.join(" ")
+        );
+    }
+    for stretch in &path.stretches {
+        let points: Vec<String> = (0..=8)
+            .map(|i| {
+                let (gx, gy) = grid(Point::from(
+                    stretch
+                        .pose_at(stretch.length * f64::from(i) / 8.0, path.turning_radius)
+                        .translation
+                        .vector,
+                ));
+                format!("{gx:.2},{gy:.2}")
+            })
+            .collect();
+        let colour = if stretch.gear == Gear::Forward { "#0b62d6" } else { "#e67e22" };
+        let _ = writeln!(
+            extra,
+            r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-width="0.9" stroke-linecap="round"/>"#,
+            points.join(" ")
+        );
+    }
+    for cusp in path.cusps() {
+        let (gx, gy) = grid(Point::from(cusp.translation.vector));
+        let _ = writeln!(extra, r##"<circle cx="{gx:.2}" cy="{gy:.2}" r="2" fill="#c0392b"/>"##);
+    }
+    let svg = CostmapSvg::new(&costmap)
+        .pixels_per_cell(2.0)
+        .start(Point::from(start.translation.vector))
+        .goal(Point::from(goal.translation.vector))
+        .title(format!(
+            "Hybrid A* on Nav2's depot map: a 0.6 m x 0.4 m car, turning radius 0.5 m, backs into a gap; \
+             forward (blue), reverse (orange), cusps (red); {:.1} m",
+            path.length()
+        ))
+        .to_svg()?;
+    // Only the part of the map around the path: 40 cells beyond it on every side.
+    let (mut lo, mut hi) = ((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY));
+    for (pose, _) in &dense {
+        let (x, y) = grid(Point::from(pose.translation.vector));
+        lo = (lo.0.min(x - 40.0), lo.1.min(y - 40.0));
+        hi = (hi.0.max(x + 40.0), hi.1.max(y + 40.0));
+    }
+    let (w, h) = (frame.width(), frame.height());
+    let whole = format!(r#"width="{}" height="{}" viewBox="0 0 {w} {h}""#, 2 * w, 2 * h);
+    let part = format!(
+        r#"width="{:.0}" height="{:.0}" viewBox="{:.1} {:.1} {:.1} {:.1}""#,
+        4.0 * (hi.0 - lo.0),
+        4.0 * (hi.1 - lo.1),
+        lo.0,
+        lo.1,
+        hi.0 - lo.0,
+        hi.1 - lo.1
+    );
+    Ok(svg.replace(&whole, &part).replace("</svg>\n", &format!("{extra}</svg>\n")))
 }
 
 /// A ROS map made a costmap around a 0.2 m robot, with A* (blue), A* shortcut (green) and

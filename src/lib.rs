@@ -35,6 +35,7 @@
 pub mod navigate;
 pub mod solve;
 
+pub use trailmark_car as car;
 pub use trailmark_contingency as contingency;
 pub use trailmark_core as core;
 pub use trailmark_graph as graph;

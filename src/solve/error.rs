@@ -66,6 +66,9 @@ pub enum SolveError {
     /// A path could not be smoothed.
     #[error(transparent)]
     Curve(#[from] CurveError),
+    /// Hybrid A* refused its settings, the footprint or a pose.
+    #[error(transparent)]
+    Car(trailmark_car::CarError),
     /// A roadmap over a box world that could not draw the samples asked for: the free space is
     /// empty or very small.
     #[error("found only {added} of {requested} free samples for the roadmap")]

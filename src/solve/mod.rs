@@ -24,6 +24,7 @@
 #![deny(clippy::cast_possible_truncation)]
 
 mod box_roadmap;
+mod car;
 mod error;
 mod grid;
 mod planner;
@@ -35,14 +36,14 @@ mod sampling;
 
 pub use error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
 pub use grid::{grid_graph, load_grid};
-pub use planner::{AnytimeSpec, PlannerSpec, SamplerSpec, SamplingSpec};
+pub use planner::{AnytimeSpec, HybridSpec, PlannerSpec, SamplerSpec, SamplingSpec};
 pub use polygons::DEFAULT_SAMPLES;
 pub use problem::{
     BoxesSpec, GraphKind, GridSpec, ProblemSpec, RosMapSpec, SamplerKind, SpaceKind, WorldSpec,
 };
 pub use result::{
-    ErrorReport, GraphStats, ImprovementRecord, IterationRecord, ResultStats, SamplingStats, SmoothedRecord,
-    SolveResult, Status, Waypoint, anytime_result_of, result_of,
+    CarRecord, ErrorReport, GraphStats, ImprovementRecord, IterationRecord, ResultStats, SamplingStats,
+    SmoothedRecord, SolveResult, Status, Waypoint, anytime_result_of, result_of,
 };
 pub use ros_map::{
     DEFAULT_COST_FACTOR, DEFAULT_COST_SCALING_FACTOR, DEFAULT_INFLATION_RADIUS, DEFAULT_ROBOT_RADIUS,
@@ -105,6 +106,9 @@ fn solve_inner(
         (WorldSpec::RosMap(_), Some(_)) => {
             Err(DocumentError::NeedsPolygons { planner: planner.name() }.into())
         }
-        (WorldSpec::RosMap(world), None) => ros_map::solve_ros_map(problem, world, base_dir, picture),
+        (WorldSpec::RosMap(world), None) => match planner {
+            PlannerSpec::HybridAStar(spec) => car::solve_car(problem, world, spec, base_dir, picture),
+            _ => ros_map::solve_ros_map(problem, world, base_dir, picture),
+        },
     }
 }

@@ -4,6 +4,7 @@
 use std::time::Duration;
 
 use serde::{Deserialize, Serialize};
+use trailmark_car::HybridSettings;
 use trailmark_core::Cost;
 use trailmark_core::graph::{IndexedGraph, Lines, Predecessors, Successors};
 use trailmark_core::grid::{Connectivity, GridHeuristic};
@@ -104,6 +105,10 @@ pub enum PlannerSpec {
     /// RRT* over a polygon world: rewiring toward the least cost until its limit.
     #[serde(rename = "rrt_star")]
     RrtStar(SamplingSpec),
+    /// Hybrid A* for a car-like robot on a ROS map: poses `[x, y, heading]`, forward and
+    /// reverse arcs, the footprint checked at every pose.
+    #[serde(rename = "hybrid_astar")]
+    HybridAStar(HybridSpec),
 }
 
 impl PlannerSpec {
@@ -122,7 +127,8 @@ impl PlannerSpec {
             | PlannerSpec::MpgaaStar { .. }
             | PlannerSpec::DStarLite { .. }
             | PlannerSpec::AraStar(_)
-            | PlannerSpec::AdStar(_) => None,
+            | PlannerSpec::AdStar(_)
+            | PlannerSpec::HybridAStar(_) => None,
         }
     }
 
@@ -144,6 +150,7 @@ impl PlannerSpec {
             PlannerSpec::Rrt(_) => "rrt",
             PlannerSpec::RrtConnect(_) => "rrt_connect",
             PlannerSpec::RrtStar(_) => "rrt_star",
+            PlannerSpec::HybridAStar(_) => "hybrid_astar",
         }
     }
 
@@ -164,7 +171,10 @@ impl PlannerSpec {
     pub(crate) fn heuristic(&self) -> (Option<GridHeuristic>, bool) {
         match self {
             PlannerSpec::Bfs {} | PlannerSpec::Dfs {} | PlannerSpec::Dijkstra {} => (None, true),
-            PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => (None, false),
+            PlannerSpec::Rrt(_)
+            | PlannerSpec::RrtConnect(_)
+            | PlannerSpec::RrtStar(_)
+            | PlannerSpec::HybridAStar(_) => (None, false),
             PlannerSpec::WeightedAStar { heuristic, .. } => (*heuristic, false),
             // Lines may be shorter than any path of the grid: only the straight line is a
             // lower bound.
@@ -200,6 +210,7 @@ impl PlannerSpec {
     fn time_limit_s(&self) -> Option<f64> {
         match self {
             PlannerSpec::AraStar(spec) | PlannerSpec::AdStar(spec) => spec.time_limit_s,
+            PlannerSpec::HybridAStar(spec) => spec.time_limit_s,
             planner => planner.sampling().and_then(|spec| spec.time_limit_s),
         }
     }
@@ -249,7 +260,10 @@ impl PlannerSpec {
                     .and_then(|mut planner| planner.improve(graph, spec.budget()));
                 return Ok(anytime_result_of(&found.map_err(searched)?, waypoint));
             }
-            PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => {
+            PlannerSpec::Rrt(_)
+            | PlannerSpec::RrtConnect(_)
+            | PlannerSpec::RrtStar(_)
+            | PlannerSpec::HybridAStar(_) => {
                 return Err(DocumentError::NotAGraphSearch { planner: self.name() }.into());
             }
         };
@@ -299,7 +313,8 @@ impl PlannerSpec {
             | PlannerSpec::AraStar(_)
             | PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)
-            | PlannerSpec::RrtStar(_) => return None,
+            | PlannerSpec::RrtStar(_)
+            | PlannerSpec::HybridAStar(_) => return None,
         })
     }
 
@@ -390,6 +405,63 @@ impl AnytimeSpec {
     fn budget(&self) -> Termination {
         // Checked by solve: a limit too large for a Duration has been refused already.
         let time = self.time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
+        Termination { time_limit: time, max_expansions: self.max_expansions, ..Termination::default() }
+    }
+}
+
+/// The settings of Hybrid A*: `turning_radius` (metres) is required, the others default to
+/// Nav2 Smac Hybrid-A*'s (see [`HybridSettings`]); the footprint to the world's.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HybridSpec {
+    /// The smallest turning radius, in metres.
+    pub turning_radius: f64,
+    /// Headings told apart (default 72).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heading_bins: Option<u32>,
+    /// Whether the car may reverse (default true).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reverse: Option<bool>,
+    /// The cost of a metre in reverse over one forward (default 2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reverse_penalty: Option<f64>,
+    /// The cost of a metre turning over one straight (default 1.2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub non_straight_penalty: Option<f64>,
+    /// Added at each change of gear, in metres (default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gear_change_penalty: Option<f64>,
+    /// The robot's polygon `[[x, y], ...]` in metres about its reference point, x forward
+    /// (default: the world's `footprint`, else a disc of its `robot_radius`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub footprint: Option<Vec<[f64; 2]>>,
+    /// Stop after this many seconds (default 5, Smac's `max_planning_time`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time_limit_s: Option<f64>,
+    /// Stop after this many expansions (default: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_expansions: Option<u64>,
+}
+
+impl HybridSpec {
+    /// Smac's defaults where the document says nothing.
+    pub(super) fn settings(&self) -> HybridSettings {
+        let d = HybridSettings::default();
+        HybridSettings {
+            turning_radius: self.turning_radius,
+            heading_bins: self.heading_bins.unwrap_or(d.heading_bins),
+            reverse: self.reverse.unwrap_or(d.reverse),
+            reverse_penalty: self.reverse_penalty.unwrap_or(d.reverse_penalty),
+            non_straight_penalty: self.non_straight_penalty.unwrap_or(d.non_straight_penalty),
+            gear_change_penalty: self.gear_change_penalty.unwrap_or(d.gear_change_penalty),
+            ..d
+        }
+    }
+
+    /// The limits of the search.
+    pub(super) fn termination(&self) -> Termination {
+        // Checked by solve: a limit too large for a Duration has been refused already.
+        let time = Duration::try_from_secs_f64(self.time_limit_s.unwrap_or(5.0)).ok();
         Termination { time_limit: time, max_expansions: self.max_expansions, ..Termination::default() }
     }
 }

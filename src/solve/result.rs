@@ -97,6 +97,21 @@ pub struct ResultStats {
     /// Sampling planners: what the run did.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sampling: Option<SamplingStats>,
+    /// Car planners (Hybrid A*): the path's length, the part in reverse, the cusps.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub car: Option<CarRecord>,
+}
+
+/// A car's path in a result: how far it drives, how much of that in reverse, and where it
+/// changes gear.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct CarRecord {
+    /// The length driven, forward and in reverse.
+    pub length: f64,
+    /// The length driven in reverse.
+    pub reverse_length: f64,
+    /// The poses `[x, y, heading]` where the gear changes.
+    pub cusps: Vec<[f64; 3]>,
 }
 
 /// What a sampling planner's run did (`time` fields aside, the same seed gives the same

@@ -47,6 +47,8 @@ pub struct CostmapSvg<'a> {
     costmap: &'a Costmap,
     pixels_per_cell: f64,
     paths: Vec<Vec<Point>>,
+    outlines: Vec<Vec<Point>>,
+    marks: Vec<Point>,
     start: Option<Point>,
     goal: Option<Point>,
     title: Option<String>,
@@ -61,6 +63,8 @@ impl<'a> CostmapSvg<'a> {
             costmap,
             pixels_per_cell: (1000.0 / side).clamp(1.0, 24.0),
             paths: Vec::new(),
+            outlines: Vec::new(),
+            marks: Vec::new(),
             start: None,
             goal: None,
             title: None,
@@ -76,6 +80,18 @@ impl<'a> CostmapSvg<'a> {
     /// A path to draw, in metres (several may be drawn, in turn's colours).
     pub fn path(mut self, points: &[Point]) -> Self {
         self.paths.push(points.to_vec());
+        self
+    }
+
+    /// A closed outline to draw under the paths, in metres: the robot's footprint at a pose.
+    pub fn outline(mut self, corners: &[Point]) -> Self {
+        self.outlines.push(corners.to_vec());
+        self
+    }
+
+    /// A point to mark in red, in metres: where a car changes gear.
+    pub fn mark(mut self, p: Point) -> Self {
+        self.marks.push(p);
         self
     }
 
@@ -129,15 +145,22 @@ impl<'a> CostmapSvg<'a> {
             r#"<image width="{w}" height="{h}" image-rendering="pixelated" style="image-rendering:pixelated" href="data:image/png;base64,{png}"/>"#
         );
         let stroke = (f64::from(w.max(h)) / 250.0).clamp(0.3, 3.0);
+        let grid = |p: &Point| {
+            let (x, y) = frame.point_to_grid(*p);
+            format!("{x:.3},{y:.3}")
+        };
+        for outline in &self.outlines {
+            let points: Vec<String> = outline.iter().map(grid).collect();
+            let _ = writeln!(
+                out,
+                r##"<polygon points="{}" fill="#7f8c8d" fill-opacity="0.15" stroke="#555" stroke-width="{:.3}"/>"##,
+                points.join(" "),
+                stroke / 4.0
+            );
+        }
         const COLOURS: [&str; 4] = ["#0b62d6", "#f39c12", "#16a085", "#d6245f"];
         for (k, path) in self.paths.iter().enumerate() {
-            let points: Vec<String> = path
-                .iter()
-                .map(|&p| {
-                    let (x, y) = frame.point_to_grid(p);
-                    format!("{x:.3},{y:.3}")
-                })
-                .collect();
+            let points: Vec<String> = path.iter().map(grid).collect();
             let _ = writeln!(
                 out,
                 r#"<polyline points="{}" fill="none" stroke="{}" stroke-width="{stroke:.3}" stroke-linejoin="round" stroke-linecap="round"/>"#,
@@ -146,6 +169,11 @@ impl<'a> CostmapSvg<'a> {
             );
         }
         let r = stroke * 2.0;
+        for p in &self.marks {
+            let (x, y) = frame.point_to_grid(*p);
+            let _ =
+                writeln!(out, r##"<circle cx="{x:.3}" cy="{y:.3}" r="{:.3}" fill="#c0392b"/>"##, r * 0.75);
+        }
         if let Some(p) = self.start {
             let (x, y) = frame.point_to_grid(p);
             let _ = writeln!(out, r##"<circle cx="{x:.3}" cy="{y:.3}" r="{r:.3}" fill="#27ae60"/>"##);

@@ -5,6 +5,7 @@ use std::collections::VecDeque;
 use std::time::{Duration, Instant};
 
 use trailmark_core::cost::Cost;
+use trailmark_core::graph::EdgeChange;
 use trailmark_core::grid::{Cell, Grid};
 use trailmark_search::{Replanner, SearchError};
 
@@ -14,6 +15,38 @@ use crate::navigate::graph::{NavGraph, VIRTUAL_GOAL, estimate};
 use crate::navigate::report::{NavigationOutcome, NavigationReport};
 use crate::navigate::world::SimulatedWorld;
 use crate::solve::PlannerSpec;
+
+/// What changed since the last plan, told to a planner as it handles changes best: the edges
+/// at the cells whose cost changed (and, in greedy mapping, from the cells just visited to the
+/// virtual goal) for the planners that relax each changed edge alone (Adaptive A*, MPGAA*);
+/// every node with a changed edge, for the others.
+#[derive(Default)]
+struct Changes {
+    nodes: Vec<Cell>,
+    edges: Vec<EdgeChange<Cell>>,
+}
+
+impl Changes {
+    /// The changes of the cells `costs` (their cost changed) and `visited` (their edge to the
+    /// virtual goal went).
+    fn new(graph: &NavGraph, costs: &[Cell], visited: &[Cell]) -> Self {
+        let mut nodes: Vec<Cell> = visited.to_vec();
+        let mut edges: Vec<EdgeChange<Cell>> =
+            visited.iter().map(|&c| EdgeChange::new(c, VIRTUAL_GOAL)).collect();
+        for &cell in costs {
+            nodes.extend(graph.grid.cells_affected_by(cell));
+            edges.extend(graph.grid.edges_affected_by(cell));
+        }
+        nodes.sort_unstable_by_key(|c| (c.y, c.x));
+        nodes.dedup();
+        Changes { nodes, edges }
+    }
+}
+
+/// Whether `planner` is told the changed edges themselves rather than the nodes they leave.
+fn told_edges(planner: &PlannerSpec) -> bool {
+    matches!(planner, PlannerSpec::AdaptiveAStar { .. } | PlannerSpec::MpgaaStar { .. })
+}
 
 /// What one plan produced: the next cell (`None`: no path), the plan's cost, expansions, and
 /// the inflation it was made with (1 unless AD* stopped early).
@@ -25,17 +58,21 @@ struct Plan {
 }
 
 /// Plans from `robot` on `graph` with `planner`, told first (unless it was just made there)
-/// that the robot moved and that the out-edges of `changed` changed since the last plan.
+/// that the robot moved and what `changed` since the last plan, as edges when `edges`.
 fn plan_step(
     planner: &mut dyn Replanner<NavGraph>,
     fresh: bool,
     graph: &NavGraph,
     robot: Cell,
-    changed: &[Cell],
+    (changed, edges): (&Changes, bool),
 ) -> Result<Plan, SearchError<Cell>> {
     if !fresh {
         planner.move_start(graph, robot)?;
-        planner.update_nodes(graph, changed)?;
+        if edges {
+            planner.update_edges(graph, &changed.edges)?;
+        } else {
+            planner.update_nodes(graph, &changed.nodes)?;
+        }
     }
     let stats = planner.plan(graph)?;
     Ok(Plan {
@@ -146,7 +183,8 @@ fn run(
     };
     let mut robot = start;
     let mut trail: VecDeque<Cell> = VecDeque::new();
-    let mut changed = world.sense(robot, config.sensor_radius);
+    let mut changed = Changes::default();
+    world.sense(robot, config.sensor_radius);
     // Made on what the robot knows once it has looked around, and timed as part of its first plan.
     let clock = Instant::now();
     let mut replanner = planner
@@ -162,7 +200,8 @@ fn run(
             break;
         }
         let clock = Instant::now();
-        let plan = plan_step(&mut *replanner, making.is_some(), &world.known, robot, &changed)?;
+        let told = (&changed, told_edges(planner));
+        let plan = plan_step(&mut *replanner, making.is_some(), &world.known, robot, told)?;
         let spent = clock.elapsed() + making.take().unwrap_or_default();
         report.plans += 1;
         report.expansions += plan.expansions;
@@ -187,14 +226,13 @@ fn run(
         robot = next;
         report.steps += 1;
         report.trajectory.push(robot);
-        changed = world.visit(robot, explore);
+        let visited = world.visit(robot, explore);
         if let Some(lag) = config.follower_lag {
             let behind = trail.len().checked_sub(lag.max(1) as usize).map(|i| trail[i]);
             world.move_follower(behind.filter(|&c| c != robot && Target::Cell(c) != target));
         }
-        changed.extend(world.sense(robot, config.sensor_radius));
-        changed.sort_unstable_by_key(|c| (c.y, c.x));
-        changed.dedup();
+        let costs = world.sense(robot, config.sensor_radius);
+        changed = Changes::new(&world.known, &costs, &visited);
     }
     report.discoveries = world.discoveries;
     report.sensed = std::mem::take(&mut world.sensed);
@@ -225,6 +263,9 @@ mod tests {
             PlannerSpec::AStar { heuristic: None },
             PlannerSpec::LpaStar { heuristic: None },
             PlannerSpec::DStarLite { heuristic: None },
+            // Told the changed edges themselves (see `told_edges`).
+            PlannerSpec::AdaptiveAStar { heuristic: None },
+            PlannerSpec::MpgaaStar { heuristic: None },
             ad_star(2.5, 0.5, Some(30)),
             ad_star(2.0, 1.0, None),
             ad_star(3.0, 0.5, Some(0)),

@@ -36,7 +36,7 @@ impl SimulatedWorld {
     }
 
     /// Senses the window around `robot`: updates the map where it differs from the truth and
-    /// returns the cells whose edges changed.
+    /// returns the cells whose cost changed.
     pub(super) fn sense(&mut self, robot: Cell, radius: u32) -> Vec<Cell> {
         let (w, h) = (self.truth.width(), self.truth.height());
         let mut changed = Vec::new();
@@ -48,7 +48,7 @@ impl SimulatedWorld {
                 if self.known.grid.cost(cell) != Some(truth) {
                     self.known.grid.set_cost(cell, truth).expect("a cost of a valid grid");
                     self.discoveries += 1;
-                    changed.extend(self.known.grid.cells_affected_by(cell));
+                    changed.push(cell);
                 }
             }
         }

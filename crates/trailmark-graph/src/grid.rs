@@ -29,7 +29,7 @@
 use serde::{Deserialize, Serialize};
 
 use trailmark_core::cost::{Cost, SQRT_2};
-use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
+use trailmark_core::graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_core::grid::{Cell, Connectivity, Grid, GridError, GridHeuristic, is_cell_cost};
 
 /// When a diagonal move between two cells is allowed, given their two common orthogonal
@@ -250,6 +250,56 @@ impl GridGraph {
         let xs = cell.x.saturating_sub(1)..=(cell.x + 1).min(w.saturating_sub(1));
         let ys = cell.y.saturating_sub(1)..=(cell.y + 1).min(h.saturating_sub(1));
         ys.filter(move |_| inside).flat_map(move |y| xs.clone().map(move |x| Cell::new(x, y)))
+    }
+
+    /// Every move whose cost may change when `cell`'s cost changes, as the changes a replanner
+    /// is told: the moves into and out of `cell`, and with 8-connectivity the diagonal moves
+    /// between two of its orthogonal neighbours, which pass `cell`'s corner. Fewer than
+    /// [`cells_affected_by`](Self::cells_affected_by) names: the planners that relax each
+    /// changed edge (Adaptive A*, MPGAA*) look at these alone.
+    ///
+    /// ```
+    /// use trailmark_core::{Cell, Connectivity, Grid};
+    /// use trailmark_graph::GridGraph;
+    ///
+    /// let graph = GridGraph::new(&Grid::new(4, 4)?, Connectivity::Eight);
+    /// assert_eq!(graph.edges_affected_by(Cell::new(1, 1)).len(), 16 + 8);
+    /// assert_eq!(graph.edges_affected_by(Cell::new(0, 0)).len(), 6 + 2);
+    /// let four = GridGraph::new(&Grid::new(4, 4)?, Connectivity::Four);
+    /// assert_eq!(four.edges_affected_by(Cell::new(1, 1)).len(), 8);
+    /// assert!(graph.edges_affected_by(Cell::new(9, 9)).is_empty());
+    /// # Ok::<(), trailmark_core::GridError>(())
+    /// ```
+    pub fn edges_affected_by(&self, cell: Cell) -> Vec<EdgeChange<Cell>> {
+        let mut edges = Vec::new();
+        if !(cell.x < self.width && cell.y < self.height) {
+            return edges;
+        }
+        let eight = self.connectivity == Connectivity::Eight;
+        let at = |dx: i64, dy: i64| {
+            let (x, y) = (i64::from(cell.x) + dx, i64::from(cell.y) + dy);
+            (x >= 0 && y >= 0 && x < i64::from(self.width) && y < i64::from(self.height))
+                .then(|| Cell::new(x as u32, y as u32))
+        };
+        for (dx, dy) in [(1, 0), (0, 1), (-1, 0), (0, -1), (1, 1), (-1, 1), (-1, -1), (1, -1)] {
+            if !eight && dx != 0 && dy != 0 {
+                continue;
+            }
+            if let Some(n) = at(dx, dy) {
+                edges.push(EdgeChange::new(cell, n));
+                edges.push(EdgeChange::new(n, cell));
+            }
+        }
+        if eight {
+            // The orthogonal neighbours on either side of each corner of `cell`.
+            for (a, b) in [((1, 0), (0, 1)), ((0, 1), (-1, 0)), ((-1, 0), (0, -1)), ((0, -1), (1, 0))] {
+                if let (Some(a), Some(b)) = (at(a.0, a.1), at(b.0, b.1)) {
+                    edges.push(EdgeChange::new(a, b));
+                    edges.push(EdgeChange::new(b, a));
+                }
+            }
+        }
+        edges
     }
 
     /// The cost of the move `from -> to` between neighbouring cells, or `None` when it is not an

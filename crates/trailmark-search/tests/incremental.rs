@@ -78,8 +78,8 @@ fn world() -> impl Strategy<Value = (Grid, Connectivity, Cell, Cell, Vec<Vec<Cha
 
 /// What a planner is told after a change of the world.
 enum Told {
-    /// These cells' edges changed.
-    Cells(Vec<Cell>),
+    /// This cell's cost changed, and with it the edges of these cells.
+    Cells(Cell, Vec<Cell>),
     /// The robot moved here.
     Moved(Cell),
 }
@@ -99,7 +99,7 @@ fn apply(
                 let cell = Cell::new(x, y);
                 graph.set_cost(cell, cost.unwrap_or(f64::INFINITY)).unwrap();
                 let cells = graph.cells_affected_by(cell).collect();
-                tell(graph, Told::Cells(cells));
+                tell(graph, Told::Cells(cell, cells));
             }
             Change::Step(k) => {
                 let next: Vec<Cell> = graph.neighbours(*robot).map(|(c, _)| c).collect();
@@ -119,16 +119,20 @@ fn apply(
 fn replanner_matches_astar(
     mut graph: GridGraph,
     mut planner: impl Replanner<GridGraph>,
-    start: Cell,
-    goal: Cell,
+    (start, goal): (Cell, Cell),
     batches: &[Vec<Change>],
     name: &str,
+    by_edges: bool,
 ) -> Result<(), TestCaseError> {
     let mut robot = start;
     for batch in std::iter::once(&vec![]).chain(batches) {
         let planned = planner.next_step(&graph);
         apply(batch, &mut graph, &mut robot, planned, |graph, told| match told {
-            Told::Cells(cells) => planner.update_nodes(graph, &cells).unwrap(),
+            // Told the changed edges alone, or every edge of the cells around the change.
+            Told::Cells(cell, _) if by_edges => {
+                planner.update_edges(graph, &graph.edges_affected_by(cell)).unwrap()
+            }
+            Told::Cells(_, cells) => planner.update_nodes(graph, &cells).unwrap(),
             Told::Moved(to) => planner.move_start(graph, to).unwrap(),
         });
         let expected = reference(&graph, robot, goal);
@@ -163,21 +167,21 @@ proptest! {
     fn dstar_lite_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
         let graph = GridGraph::new(&grid, connectivity);
         let planner = DStarLite::new(&graph, start, goal, octile).unwrap();
-        replanner_matches_astar(graph, planner, start, goal, &batches, "D* Lite")?;
+        replanner_matches_astar(graph, planner, (start, goal), &batches, "D* Lite", false)?;
     }
 
     #[test]
-    fn adaptive_astar_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
+    fn adaptive_astar_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world(), by_edges in any::<bool>()) {
         let graph = GridGraph::new(&grid, connectivity);
         let planner = AdaptiveAStar::new(&graph, start, goal, octile).unwrap();
-        replanner_matches_astar(graph, planner, start, goal, &batches, "Adaptive A*")?;
+        replanner_matches_astar(graph, planner, (start, goal), &batches, "Adaptive A*", by_edges)?;
     }
 
     #[test]
-    fn mpgaa_star_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world()) {
+    fn mpgaa_star_matches_astar_after_every_change((grid, connectivity, start, goal, batches) in world(), by_edges in any::<bool>()) {
         let graph = GridGraph::new(&grid, connectivity);
         let planner = MpgaaStar::new(&graph, start, goal, octile).unwrap();
-        replanner_matches_astar(graph, planner, start, goal, &batches, "MPGAA*")?;
+        replanner_matches_astar(graph, planner, (start, goal), &batches, "MPGAA*", by_edges)?;
     }
 
     #[test]
@@ -232,7 +236,7 @@ proptest! {
         let mut robot = start;
         for batch in std::iter::once(&vec![]).chain(&batches) {
             apply(batch, &mut graph, &mut robot, None, |graph, told| match told {
-                Told::Cells(cells) => planner.update_nodes(graph, cells).unwrap(),
+                Told::Cells(_, cells) => planner.update_nodes(graph, cells).unwrap(),
                 Told::Moved(to) => planner.move_start(graph, to).unwrap(),
             });
             let expected = reference(&graph, robot, goal);
@@ -517,7 +521,7 @@ proptest! {
         let mut robot = start;
         for batch in batches.iter().take(1) {
             apply(batch, &mut graph, &mut robot, None, |graph, told| {
-                if let Told::Cells(cells) = told {
+                if let Told::Cells(_, cells) = told {
                     dstar.update_nodes(graph, cells.iter().copied()).unwrap();
                     lpa.update_nodes(graph, cells.iter().copied()).unwrap();
                     ad.update_nodes(graph, cells).unwrap();

@@ -30,6 +30,10 @@ use crate::stats::SearchStats;
 
 /// Adaptive A* from a moving start to a fixed goal, behind the [`Replanner`] interface.
 ///
+/// Changes told as edges ([`update_edges`](Replanner::update_edges)) are relaxed one by one;
+/// a node told ([`update_nodes`](Replanner::update_nodes)) has every edge in and out looked
+/// at. On a grid, telling `GridGraph::edges_affected_by(cell)` is the cheaper of the two.
+///
 /// ```
 /// use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
 /// use trailmark_graph::GridGraph;
@@ -61,6 +65,9 @@ pub struct AdaptiveAStar<N, H> {
     learned: Vec<Cost>,
     /// The indices of the nodes whose edges may have changed since the last plan.
     touched: Vec<usize>,
+    /// The edges told changed since the last plan, as (from, to) indices: each is looked at
+    /// alone, where a touched node has all its edges looked at.
+    changed: Vec<(usize, usize)>,
     /// The open list of the consistency repair: (the bits of a lowered learned value, which
     /// order as the values do for costs not negative, node index), smallest first. A node
     /// lowered again is queued again; an entry whose value is no longer the node's is passed
@@ -90,6 +97,7 @@ where
             base,
             learned: Vec::new(),
             touched: Vec::new(),
+            changed: Vec::new(),
             repair: BinaryHeap::new(),
             reuse: None,
             tail: None,
@@ -173,6 +181,46 @@ where
         }
     }
 
+    /// What [`relax_out`](Self::relax_out) does for the one edge `u -> v` (indices) that changed:
+    /// cuts `u`'s kept step if it took this edge and its cost changed, lowers `u`'s learned value
+    /// if the edge makes it too large. The edge's cost is read from the graph only when one of
+    /// the two may happen.
+    fn relax_edge<G>(&mut self, graph: &G, u: usize, v: usize)
+    where
+        G: Successors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
+    {
+        let goal = self.base.goal();
+        let x = graph.node_at(u);
+        let kept = self.reuse.as_ref().is_some_and(|r| r.next_of(u) == Some(v));
+        let lu = self.learned[u];
+        // Only a learned value above the estimate at `v` can exceed `c + h(v)`, as `c >= 0`.
+        let hv = if x != goal && lu != 0.0 {
+            Self::h_at(graph, &self.learned, &mut self.base.heuristic, graph.node_at(v), v, goal)
+        } else {
+            f64::INFINITY
+        };
+        if !kept && lu <= hv {
+            return;
+        }
+        let mut c = f64::INFINITY;
+        graph.for_each_successor_index(u, |j, _, cost| {
+            if j == v && cost < c {
+                c = cost;
+            }
+        });
+        if let Some(reuse) = self.reuse.as_mut()
+            && kept
+            && !reuse.step_is(u, c)
+            && !reuse.step_kept(graph, u)
+        {
+            reuse.cut(u);
+        }
+        if lu > c + hv {
+            self.lower(u, (c + hv, v, c));
+        }
+    }
+
     /// Lowers the learned values of the predecessors of `x` (index `i`) that the edge into `x`
     /// makes too large (`h(p) > c + h(x)`, which for a consistent given heuristic is the learned
     /// value of `p` exceeding `c + h(x)`), queueing each. With `check`, a kept step into `x`
@@ -235,9 +283,10 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
         H: Heuristic<G>,
     {
-        if self.learned.is_empty() || self.touched.is_empty() {
-            // Nothing learned and no path kept: the given heuristic is consistent by itself.
+        if self.learned.is_empty() || (self.touched.is_empty() && self.changed.is_empty()) {
+            // Nothing learned and no path kept, or nothing changed: the heuristic is consistent.
             self.touched.clear();
+            self.changed.clear();
             return;
         }
         Self::make_room(&mut self.learned, &mut self.reuse, graph.node_bound());
@@ -255,6 +304,12 @@ where
         }
         self.touched = touched;
         self.touched.clear();
+        let changed = std::mem::take(&mut self.changed);
+        for &(u, v) in &changed {
+            self.relax_edge(graph, u, v);
+        }
+        self.changed = changed;
+        self.changed.clear();
         while let Some(Reverse((value, i))) = self.repair.pop() {
             if self.learned[i].to_bits() != value {
                 continue; // lowered again since: queued again with that value
@@ -275,7 +330,7 @@ where
         changes: &[EdgeChange<G::Node>],
     ) -> Result<(), SearchError<G::Node>> {
         self.base.update_edges(graph, changes)?;
-        self.touched.extend(changes.iter().flat_map(|c| [c.from, c.to]).map(|n| graph.index_of(n)));
+        self.changed.extend(changes.iter().map(|c| (graph.index_of(c.from), graph.index_of(c.to))));
         Ok(())
     }
 

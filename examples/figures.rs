@@ -177,20 +177,6 @@ fn car_parking(yaml: &Path) -> Result<String, Box<dyn std::error::Error>> {
         }
     }
     shown.push(goal);
-    for pose in shown {
-        let outline: Vec<String> = corners
-            .iter()
-            .map(|&(x, y)| {
-                let (gx, gy) = grid(pose * Point::new(x, y));
-                format!("{gx:.2},{gy:.2}")
-            })
-            .collect();
-        let _ = writeln!(
-            extra,
-            r##"<polygon points="{}" fill="#7f8c8d" fill-opacity="0.15" stroke="#555" stroke-width="0.25"/>"##,
-            outline.join(" ")
-        );
-    }
     for stretch in &path.stretches {
         let points: Vec<String> = (0..=8)
             .map(|i| {
@@ -210,12 +196,14 @@ fn car_parking(yaml: &Path) -> Result<String, Box<dyn std::error::Error>> {
             points.join(" ")
         );
     }
-    for cusp in path.cusps() {
-        let (gx, gy) = grid(Point::from(cusp.translation.vector));
-        let _ = writeln!(extra, r##"<circle cx="{gx:.2}" cy="{gy:.2}" r="2" fill="#c0392b"/>"##);
+    let mut picture = CostmapSvg::new(&costmap).pixels_per_cell(2.0);
+    for pose in &shown {
+        picture = picture.outline(&car.corners_at(pose));
     }
-    let svg = CostmapSvg::new(&costmap)
-        .pixels_per_cell(2.0)
+    for cusp in path.cusps() {
+        picture = picture.mark(Point::from(cusp.translation.vector));
+    }
+    let svg = picture
         .start(Point::from(start.translation.vector))
         .goal(Point::from(goal.translation.vector))
         .title(format!(

@@ -16,30 +16,30 @@ use crate::navigate::report::{NavigationOutcome, NavigationReport};
 use crate::navigate::world::SimulatedWorld;
 use crate::solve::PlannerSpec;
 
-/// What changed since the last plan, told to a planner as it handles changes best: the edges
-/// at the cells whose cost changed (and, in greedy mapping, from the cells just visited to the
-/// virtual goal) for the planners that relax each changed edge alone (Adaptive A*, MPGAA*);
-/// every node with a changed edge, for the others.
-#[derive(Default)]
-struct Changes {
-    nodes: Vec<Cell>,
-    edges: Vec<EdgeChange<Cell>>,
+/// What changed since the last plan, in the form the planner is told it: the edges at the cells
+/// whose cost changed (and, in greedy mapping, from the cells just visited to the virtual goal)
+/// for the planners that relax each changed edge alone (Adaptive A*, MPGAA*); every node with a
+/// changed edge for the others.
+enum Changes {
+    Nodes(Vec<Cell>),
+    Edges(Vec<EdgeChange<Cell>>),
 }
 
 impl Changes {
     /// The changes of the cells `costs` (their cost changed) and `visited` (their edge to the
-    /// virtual goal went).
-    fn new(graph: &NavGraph, costs: &[Cell], visited: &[Cell]) -> Self {
-        let mut nodes: Vec<Cell> = visited.to_vec();
-        let mut edges: Vec<EdgeChange<Cell>> =
-            visited.iter().map(|&c| EdgeChange::new(c, VIRTUAL_GOAL)).collect();
-        for &cell in costs {
-            nodes.extend(graph.grid.cells_affected_by(cell));
-            edges.extend(graph.grid.edges_affected_by(cell));
+    /// virtual goal went), as edges when `edges`.
+    fn new(graph: &NavGraph, costs: &[Cell], visited: &[Cell], edges: bool) -> Self {
+        if edges {
+            let mut told: Vec<EdgeChange<Cell>> =
+                visited.iter().map(|&c| EdgeChange::new(c, VIRTUAL_GOAL)).collect();
+            told.extend(costs.iter().flat_map(|&cell| graph.grid.edges_affected_by(cell)));
+            return Changes::Edges(told);
         }
+        let mut nodes: Vec<Cell> = visited.to_vec();
+        nodes.extend(costs.iter().flat_map(|&cell| graph.grid.cells_affected_by(cell)));
         nodes.sort_unstable_by_key(|c| (c.y, c.x));
         nodes.dedup();
-        Changes { nodes, edges }
+        Changes::Nodes(nodes)
     }
 }
 
@@ -58,20 +58,19 @@ struct Plan {
 }
 
 /// Plans from `robot` on `graph` with `planner`, told first (unless it was just made there)
-/// that the robot moved and what `changed` since the last plan, as edges when `edges`.
+/// that the robot moved and what `changed` since the last plan.
 fn plan_step(
     planner: &mut dyn Replanner<NavGraph>,
     fresh: bool,
     graph: &NavGraph,
     robot: Cell,
-    (changed, edges): (&Changes, bool),
+    changed: &Changes,
 ) -> Result<Plan, SearchError<Cell>> {
     if !fresh {
         planner.move_start(graph, robot)?;
-        if edges {
-            planner.update_edges(graph, &changed.edges)?;
-        } else {
-            planner.update_nodes(graph, &changed.nodes)?;
+        match changed {
+            Changes::Edges(edges) => planner.update_edges(graph, edges)?,
+            Changes::Nodes(nodes) => planner.update_nodes(graph, nodes)?,
         }
     }
     let stats = planner.plan(graph)?;
@@ -183,7 +182,8 @@ fn run(
     };
     let mut robot = start;
     let mut trail: VecDeque<Cell> = VecDeque::new();
-    let mut changed = Changes::default();
+    let edges = told_edges(planner);
+    let mut changed = Changes::new(&world.known, &[], &[], edges);
     world.sense(robot, config.sensor_radius);
     // Made on what the robot knows once it has looked around, and timed as part of its first plan.
     let clock = Instant::now();
@@ -200,8 +200,7 @@ fn run(
             break;
         }
         let clock = Instant::now();
-        let told = (&changed, told_edges(planner));
-        let plan = plan_step(&mut *replanner, making.is_some(), &world.known, robot, told)?;
+        let plan = plan_step(&mut *replanner, making.is_some(), &world.known, robot, &changed)?;
         let spent = clock.elapsed() + making.take().unwrap_or_default();
         report.plans += 1;
         report.expansions += plan.expansions;
@@ -232,7 +231,7 @@ fn run(
             world.move_follower(behind.filter(|&c| c != robot && Target::Cell(c) != target));
         }
         let costs = world.sense(robot, config.sensor_radius);
-        changed = Changes::new(&world.known, &costs, &visited);
+        changed = Changes::new(&world.known, &costs, &visited, edges);
     }
     report.discoveries = world.discoveries;
     report.sensed = std::mem::take(&mut world.sensed);

@@ -150,13 +150,11 @@ fn clip_to_strip(a: Point, b: Point, lo: f64, hi: f64) -> Option<(f64, f64)> {
     if b.y < lo || a.y > hi {
         return None;
     }
-    let x_at = |y: f64| {
-        if b.y == a.y { a.x } else { a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y)).clamp(0.0, 1.0) }
-    };
-    let (y0, y1) = (a.y.max(lo), b.y.min(hi));
     if b.y == a.y {
         return Some((a.x, b.x));
     }
+    let x_at = |y: f64| a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y)).clamp(0.0, 1.0);
+    let (y0, y1) = (a.y.max(lo), b.y.min(hi));
     Some((x_at(y0), x_at(y1)))
 }
 

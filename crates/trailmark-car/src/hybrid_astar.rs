@@ -281,7 +281,9 @@ impl Run<'_, '_> {
         for k in 0..p.motions.all.len() {
             let motion = p.motions.all[k];
             self.stats.motions += 1;
-            let Some((end, price)) = self.drive(&node.pose, motion) else { continue };
+            let stretch =
+                Stretch { start: node.pose, turn: motion.turn, gear: motion.gear, length: p.motions.length };
+            let Some((end, price)) = self.drive(&stretch) else { continue };
             let bin = (i64::from(node.bin) + i64::from(motion.bins)).rem_euclid(bins) as u32;
             let heading = self.start_heading + f64::from(bin) * p.motions.bin_angle;
             let end = Pose::new(end.translation.vector, heading);
@@ -322,16 +324,15 @@ impl Run<'_, '_> {
         }
     }
 
-    /// Drives `motion` from `pose`, checking the footprint every step: the end pose and the
-    /// mean price of a metre over the checked poses, or `None` on a collision.
-    fn drive(&mut self, pose: &Pose, motion: Motion) -> Option<(Pose, f64)> {
+    /// Drives `stretch`, checking the footprint every step: the end pose and the mean price of
+    /// a metre over the checked poses, or `None` on a collision.
+    fn drive(&mut self, stretch: &Stretch) -> Option<(Pose, f64)> {
         let p = self.planner;
-        let length = p.motions.length;
-        let n = (length / p.step).ceil().max(1.0) as usize;
+        let n = (stretch.length / p.step).ceil().max(1.0) as usize;
         let mut price = 0.0;
-        let mut end = *pose;
+        let mut end = stretch.start;
         for i in 1..=n {
-            end = p.motions.pose_along(pose, motion, length * i as f64 / n as f64);
+            end = stretch.pose_at(stretch.length * i as f64 / n as f64, p.settings.turning_radius);
             self.stats.footprint_checks += 1;
             if !p.checker.is_free(p.map, &end, &mut self.stats.footprint_rasters) {
                 return None;
@@ -381,21 +382,10 @@ impl Run<'_, '_> {
             if length <= 0.0 {
                 continue;
             }
-            let motion = Motion { gear, turn, bins: 0 };
-            let stretch = Stretch { start: at, turn, gear, length };
-            let n = (length / p.step).ceil().max(1.0) as usize;
-            let mut price = 0.0;
-            for i in 1..=n {
-                let pose = stretch.pose_at(length * i as f64 / n as f64, r);
-                self.stats.footprint_checks += 1;
-                if !p.checker.is_free(p.map, &pose, &mut self.stats.footprint_rasters) {
-                    return None;
-                }
-                price += p.map.price(p.map.cell_index(point(&pose))?);
-            }
-            cost += self.motion_cost(before, motion, length, price / n as f64);
+            let (end, price) = self.drive(&Stretch { start: at, turn, gear, length })?;
+            cost += self.motion_cost(before, Motion { gear, turn, bins: 0 }, length, price);
             before = Some(gear);
-            at = stretch.pose_at(length, r);
+            at = end;
         }
         Some((stretches, cost))
     }

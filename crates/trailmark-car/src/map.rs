@@ -142,7 +142,7 @@ impl CarMap {
             return false;
         }
         let (i, j) = ((p.x / res).floor(), (p.y / res).floor());
-        let index = (self.height - 1 - j as usize) * self.width + i as usize;
+        let Some(index) = self.index_at(i as i64, j as i64) else { return false };
         let offset = ((i + 0.5) * res - p.x).hypot((j + 0.5) * res - p.y);
         self.clearance[index] - offset - std::f64::consts::FRAC_1_SQRT_2 * res > r
     }

@@ -5,8 +5,7 @@
 
 use std::f64::consts::{SQRT_2, TAU};
 
-use trailmark_core::dubins::{Turn, drive};
-use trailmark_core::geometry::Pose;
+use trailmark_core::dubins::Turn;
 use trailmark_core::reeds_shepp::Gear;
 
 /// One motion: a gear, a turn, and the bins the heading moves by (signed: counter-clockwise
@@ -24,8 +23,6 @@ pub(crate) struct Motions {
     pub all: Vec<Motion>,
     /// The length of every motion.
     pub length: f64,
-    /// The turning radius.
-    pub radius: f64,
     /// The angle of one heading bin.
     pub bin_angle: f64,
 }
@@ -48,19 +45,15 @@ impl Motions {
             all.push(Motion { gear, turn: Turn::Left, bins: sign * per_turn });
             all.push(Motion { gear, turn: Turn::Right, bins: -sign * per_turn });
         }
-        Motions { all, length, radius, bin_angle }
-    }
-
-    /// The pose `s` along `motion` from `pose` (`0 <= s <= length`).
-    pub fn pose_along(&self, pose: &Pose, motion: Motion, s: f64) -> Pose {
-        let signed = if motion.gear == Gear::Forward { s } else { -s };
-        drive(pose, motion.turn, signed, self.radius)
+        Motions { all, length, bin_angle }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::path::Stretch;
+    use trailmark_core::geometry::Pose;
 
     #[test]
     fn turns_move_whole_bins_and_leave_the_cell() {
@@ -69,7 +62,8 @@ mod tests {
         assert!(m.length >= 1.5 * 0.05);
         let start = Pose::new(nalgebra::Vector2::new(1.0, 1.0), 0.3);
         for motion in &m.all {
-            let end = m.pose_along(&start, *motion, m.length);
+            let stretch = Stretch { start, turn: motion.turn, gear: motion.gear, length: m.length };
+            let end = stretch.pose_at(m.length, 0.4);
             let turned = f64::from(motion.bins) * m.bin_angle;
             let d = (end.rotation.angle() - (0.3 + turned)).rem_euclid(TAU);
             assert!(d.min(TAU - d) < 1e-9, "{motion:?}: {d}");

@@ -23,6 +23,7 @@ use crate::error::SearchError;
 use crate::heuristic::Heuristic;
 use crate::incremental::EdgeChange;
 use crate::incremental::path_reuse::PathReuse;
+use crate::incremental::planner::edge_cost;
 use crate::incremental::repeated_astar::RepeatedAStar;
 use crate::incremental::replanner::Replanner;
 use crate::incremental::values::grow_zeroed;
@@ -203,12 +204,7 @@ where
         if !kept && lu <= hv {
             return;
         }
-        let mut c = f64::INFINITY;
-        graph.for_each_successor_index(u, |j, _, cost| {
-            if j == v && cost < c {
-                c = cost;
-            }
-        });
+        let c = edge_cost(graph, x, graph.node_at(v));
         if let Some(reuse) = self.reuse.as_mut()
             && kept
             && !reuse.step_is(u, c)

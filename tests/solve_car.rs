@@ -72,14 +72,115 @@ fn documents_name_what_is_wrong() {
         SolveError::Car(CarError::InCollision { which: "start", .. }) => {}
         other => panic!("{other:?}"),
     }
-    // Hybrid A* plans on ROS maps, not on grids of cells.
-    let grid: ProblemSpec = serde_json::from_str(
-        r#"{"world": {"grid": {"rows": ["....", "...."]}}, "start": [0, 0], "goal": [3, 1],
+    // The resolution of a ROS map is its YAML's.
+    let fine = format!("{CAR}, \"resolution\": 0.01");
+    match err(office("[-4.2, -2.2, 0.0]", "[4.3, 2.3, 0.0]", &fine)) {
+        SolveError::Document(DocumentError::NotForRosMaps { field: "resolution" }) => {}
+        other => panic!("{other:?}"),
+    }
+    // A roadmap's field.
+    let mut roadmap = office("[-4.2, -2.2, 0.0]", "[4.3, 2.3, 0.0]", CAR);
+    roadmap.samples = Some(100);
+    match err(roadmap) {
+        SolveError::Document(DocumentError::NotForPlanner { field: "samples", planner: "hybrid_astar" }) => {}
+        other => panic!("{other:?}"),
+    }
+    // A polygon world's robot radius beside a footprint; a resolution that is not one; a box
+    // world.
+    let polygons = |world: &str, planner: &str| -> ProblemSpec {
+        let json = format!(
+            r#"{{"world": {{"polygons": {{"bounds": [0, 0, 10, 6], "obstacles": [], {world}}}}},
+                 "start": [1, 1, 0], "goal": [8, 4, 0], "planner": {{"name": "hybrid_astar", {planner}}}}}"#
+        );
+        serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}: {json}"))
+    };
+    match err(polygons(r#""robot_radius": 0.3"#, CAR)) {
+        SolveError::Document(DocumentError::RadiusAndFootprint) => {}
+        other => panic!("{other:?}"),
+    }
+    for resolution in ["0", "-1", "1e-300"] {
+        let planner = format!(r#""turning_radius": 1, "resolution": {resolution}"#);
+        match err(polygons(r#""robot_radius": 0.3"#, &planner)) {
+            SolveError::Car(CarError::Map(_)) => {}
+            other => panic!("{resolution}: {other:?}"),
+        }
+    }
+    let boxes: ProblemSpec = serde_json::from_str(
+        r#"{"world": {"boxes": {"bounds": [[0, 4], [0, 4], [0, 4]]}}, "start": [1, 1, 1], "goal": [3, 3, 3],
             "planner": {"name": "hybrid_astar", "turning_radius": 1}}"#,
     )
     .unwrap();
-    match err(grid) {
-        SolveError::Document(DocumentError::NotAGraphSearch { planner: "hybrid_astar" }) => {}
+    match err(boxes) {
+        SolveError::Document(DocumentError::InvalidBoxes(why)) if why.contains("hybrid_astar") => {}
         other => panic!("{other:?}"),
     }
+}
+
+/// The pose a result ends at.
+fn last_pose(path: &[Waypoint]) -> [f64; 3] {
+    match path.last() {
+        Some(Waypoint::Point(p)) => [p[0], p[1], p[2]],
+        other => panic!("{other:?}"),
+    }
+}
+
+/// Whether two headings agree within `tolerance` radians.
+fn same_heading(a: f64, b: f64, tolerance: f64) -> bool {
+    let turn = (a - b).rem_euclid(std::f64::consts::TAU);
+    turn.min(std::f64::consts::TAU - turn) < tolerance
+}
+
+#[test]
+fn a_car_turns_around_in_a_grid_world() {
+    // A 30 x 12 grid of 0.5 m cells, a wall down the middle from the top leaving a 2 m gap at
+    // the bottom; the car starts facing up on the left and must end facing up on the right.
+    let mut rows = vec![".".repeat(30); 12];
+    for row in rows.iter_mut().take(8) {
+        row.replace_range(14..16, "@@");
+    }
+    let json = format!(
+        r#"{{"world": {{"grid": {{"rows": {rows:?}}}}}, "start": [3, 4, 1.5707963267948966],
+             "goal": [12, 4, 1.5707963267948966],
+             "planner": {{"name": "hybrid_astar", "turning_radius": 1.0, "resolution": 0.5,
+                         "footprint": [[-0.3, -0.3], [0.6, -0.3], [0.6, 0.3], [-0.3, 0.3]]}}}}"#
+    );
+    let problem: ProblemSpec = serde_json::from_str(&json).unwrap();
+    let (result, svg) = solve_and_draw(&problem, EXAMPLES).unwrap();
+    assert_eq!(result.status, Status::Solved);
+    let [x, y, heading] = last_pose(&result.path);
+    assert!((x - 12.0).abs() < 1e-6 && (y - 4.0).abs() < 1e-6, "{x} {y}");
+    assert!(same_heading(heading, std::f64::consts::FRAC_PI_2, 1e-6));
+    // Through the gap at the bottom (y below 2 m), at least twice the wall's distance.
+    let car = result.stats.car.expect("the car's record");
+    assert!(car.length >= 9.0, "{}", car.length);
+    let lowest = result
+        .path
+        .iter()
+        .filter_map(|w| match w {
+            Waypoint::Point(p) => Some(p[1]),
+            Waypoint::Cell(_) => None,
+        })
+        .fold(f64::INFINITY, f64::min);
+    assert!(lowest < 2.0, "{lowest}");
+    assert!(svg.contains("<polygon") && svg.contains("<polyline"));
+}
+
+#[test]
+fn a_car_parks_between_polygons() {
+    // Two parked cars 2.4 m apart along the bottom of a 12 x 8 lot; the car parks between them
+    // facing +x.
+    let json = r#"{"world": {"polygons": {"bounds": [0, 0, 12, 8],
+                    "obstacles": [[[1, 0.5], [5, 0.5], [5, 2.3], [1, 2.3]], [[7.4, 0.5], [11, 0.5], [11, 2.3], [7.4, 2.3]]]}},
+                   "start": [2, 5.5, 0], "goal": [5.6, 1.4, 0],
+                   "planner": {"name": "hybrid_astar", "turning_radius": 1.2,
+                               "footprint": [[-0.2, -0.4], [1.0, -0.4], [1.0, 0.4], [-0.2, 0.4]]}}"#;
+    let problem: ProblemSpec = serde_json::from_str(json).unwrap();
+    let (result, svg) = solve_and_draw(&problem, EXAMPLES).unwrap();
+    assert_eq!(result.status, Status::Solved);
+    let [x, y, heading] = last_pose(&result.path);
+    assert!((x - 5.6).abs() < 1e-6 && (y - 1.4).abs() < 1e-6 && same_heading(heading, 0.0, 1e-6));
+    let car = result.stats.car.expect("the car's record");
+    assert!(car.length >= (3.6f64).hypot(4.1) - 1e-9);
+    // The world's obstacles, the footprints and the path are drawn.
+    assert!(svg.matches("<polygon").count() > 5 && svg.contains("<polyline"));
 }

@@ -292,7 +292,13 @@ pub enum DocumentError {
         /// The cell's cost in the costmap (253 inscribed, 254 lethal, 255 unknown).
         cost: u8,
     },
-    /// A ROS-map world with both a robot radius and a footprint.
+    /// A field a ROS map sets itself.
+    #[error("\"{field}\" does not apply to ROS-map worlds: the map's YAML gives it")]
+    NotForRosMaps {
+        /// The field.
+        field: &'static str,
+    },
+    /// A world with both a robot radius and a footprint.
     #[error("give \"robot_radius\" or \"footprint\", not both")]
     RadiusAndFootprint,
     /// A footprint that is not a simple polygon.

@@ -95,6 +95,9 @@ fn solve_inner(
     }
     let undrawable =
         || DocumentError::InvalidBoxes("cannot be drawn: pictures are of grid and polygon worlds".into());
+    if let PlannerSpec::HybridAStar(spec) = planner {
+        return car::solve_car(problem, &problem.world, spec, base_dir, picture);
+    }
     match (&problem.world, planner.sampling()) {
         (WorldSpec::Grid(_), Some(_)) => Err(DocumentError::NeedsPolygons { planner: planner.name() }.into()),
         (WorldSpec::Grid(world), None) => grid::solve_grid(problem, world, base_dir, picture),
@@ -106,9 +109,6 @@ fn solve_inner(
         (WorldSpec::RosMap(_), Some(_)) => {
             Err(DocumentError::NeedsPolygons { planner: planner.name() }.into())
         }
-        (WorldSpec::RosMap(world), None) => match planner {
-            PlannerSpec::HybridAStar(spec) => car::solve_car(problem, world, spec, base_dir, picture),
-            _ => ros_map::solve_ros_map(problem, world, base_dir, picture),
-        },
+        (WorldSpec::RosMap(world), None) => ros_map::solve_ros_map(problem, world, base_dir, picture),
     }
 }

@@ -432,9 +432,15 @@ pub struct HybridSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gear_change_penalty: Option<f64>,
     /// The robot's polygon `[[x, y], ...]` in metres about its reference point, x forward
-    /// (default: the world's `footprint`, else a disc of its `robot_radius`).
+    /// (default: on ROS maps the world's `footprint`, else a disc of its `robot_radius`; on
+    /// polygon worlds a disc of the world's `robot_radius`; on grids a point).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub footprint: Option<Vec<[f64; 2]>>,
+    /// The width of a cell in metres: on grid worlds, of the grid's cells (default 1); on
+    /// polygon worlds, of the cells the obstacles are laid on (default an eighth of the
+    /// turning radius). ROS maps give their own.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub resolution: Option<f64>,
     /// Stop after this many seconds (default 5, Smac's `max_planning_time`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub time_limit_s: Option<f64>,

@@ -131,6 +131,11 @@ impl<'m> HybridAStar<'m> {
         &self.settings
     }
 
+    /// The cheapest price of a metre on the map.
+    pub(crate) fn least_price(&self) -> f64 {
+        self.least_price
+    }
+
     /// Whether the footprint at `pose` (the world's frame) is clear of obstacles and on the map,
     /// as the planner checks it (with its margin).
     pub fn is_free(&self, pose: &Pose) -> bool {
@@ -173,11 +178,95 @@ impl<'m> HybridAStar<'m> {
         stats.time = clock.elapsed();
         match found {
             Ok((end, shot, cost)) => {
-                let path = search.path(end, shot, cost);
+                let mut stretches = search.path(end, shot);
+                let mut cost = cost;
+                stats.search_cost = cost;
+                if self.settings.smooth {
+                    let smoothing = Instant::now();
+                    (stretches, cost) = self.smooth(stretches, &mut stats);
+                    stats.smoothing_time = smoothing.elapsed();
+                    stats.time = clock.elapsed();
+                }
+                let stretches = stretches
+                    .into_iter()
+                    .map(|s| Stretch { start: self.map.to_world(&s.start), ..s })
+                    .collect();
+                let path = CarPath { stretches, turning_radius: self.settings.turning_radius, cost };
                 Ok(CarPlan { path, stats })
             }
             Err(stop) => Err(CarError::NoPath { stop, stats }),
         }
+    }
+
+    /// Drives `stretch` (map coordinates), checking the footprint every step: the end pose and
+    /// the mean price of a metre over the checked poses, or `None` on a collision.
+    pub(crate) fn drive(&self, stretch: &Stretch, stats: &mut HybridStats) -> Option<(Pose, f64)> {
+        let n = (stretch.length / self.step).ceil().max(1.0) as usize;
+        let mut price = 0.0;
+        let mut end = stretch.start;
+        for i in 1..=n {
+            end = stretch.pose_at(stretch.length * i as f64 / n as f64, self.settings.turning_radius);
+            stats.footprint_checks += 1;
+            if !self.checker.is_free(self.map, &end, &mut stats.footprint_rasters) {
+                return None;
+            }
+            price += self.map.price(self.map.cell_index(point(&end))?);
+        }
+        Some((end, price / n as f64))
+    }
+
+    /// The cost of driving `length` by `motion` at a mean `price` per metre, after a motion in
+    /// gear `before` (`None` at the start).
+    pub(crate) fn motion_cost(&self, before: Option<Gear>, motion: Motion, length: f64, price: f64) -> f64 {
+        let s = &self.settings;
+        let mut factor = price;
+        if motion.turn != Turn::Straight {
+            factor *= s.non_straight_penalty;
+        }
+        if motion.gear == Gear::Reverse {
+            factor *= s.reverse_penalty;
+        }
+        let change = if before.is_some_and(|g| g != motion.gear) { s.gear_change_penalty } else { 0.0 };
+        length * factor + change
+    }
+
+    /// The shortest curve the car can drive from `from` to `to` (map coordinates):
+    /// Reeds-Shepp with reverse, Dubins without; its pieces, empty ones left out.
+    pub(crate) fn curve(&self, from: &Pose, to: &Pose) -> Option<Shot> {
+        let r = self.settings.turning_radius;
+        let pieces: Shot = if self.settings.reverse {
+            let path = ReedsSheppPath::shortest(from, to, r).ok()?;
+            path.segments().map(|s| (s.turn, s.gear, s.length)).collect()
+        } else {
+            let path = DubinsPath::shortest(from, to, r).ok()?;
+            path.word()
+                .turns()
+                .into_iter()
+                .zip(path.segment_lengths())
+                .map(|(t, l)| (t, Gear::Forward, l))
+                .collect()
+        };
+        Some(pieces.into_iter().filter(|&(_, _, length)| length > 0.0).collect())
+    }
+
+    /// The cost of driving `pieces` from `from` after a motion in gear `before`, if the
+    /// footprint stays free along them.
+    pub(crate) fn curve_cost(
+        &self,
+        from: &Pose,
+        pieces: &Shot,
+        mut before: Option<Gear>,
+        stats: &mut HybridStats,
+    ) -> Option<f64> {
+        let mut at = *from;
+        let mut cost = 0.0;
+        for &(turn, gear, length) in pieces {
+            let (end, price) = self.drive(&Stretch { start: at, turn, gear, length }, stats)?;
+            cost += self.motion_cost(before, Motion { gear, turn, bins: 0 }, length, price);
+            before = Some(gear);
+            at = end;
+        }
+        Some(cost)
     }
 }
 
@@ -196,8 +285,8 @@ struct Run<'p, 'm> {
     stats: HybridStats,
 }
 
-/// A shot to the goal: its stretches (map coordinates, no start pose yet) and cost.
-type Shot = Vec<(Turn, Gear, f64)>;
+/// A curve's pieces: turn, gear and length each (no start pose yet).
+pub(crate) type Shot = Vec<(Turn, Gear, f64)>;
 
 impl Run<'_, '_> {
     /// Searches from `start`: the node where a free shot to the goal was found, the shot and the
@@ -283,12 +372,12 @@ impl Run<'_, '_> {
             self.stats.motions += 1;
             let stretch =
                 Stretch { start: node.pose, turn: motion.turn, gear: motion.gear, length: p.motions.length };
-            let Some((end, price)) = self.drive(&stretch) else { continue };
+            let Some((end, price)) = p.drive(&stretch, &mut self.stats) else { continue };
             let bin = (i64::from(node.bin) + i64::from(motion.bins)).rem_euclid(bins) as u32;
             let heading = self.start_heading + f64::from(bin) * p.motions.bin_angle;
             let end = Pose::new(end.translation.vector, heading);
             let Some(cell) = p.map.cell_index(point(&end)) else { continue };
-            let g = node.g + self.motion_cost(node.motion.map(|m| m.gear), motion, p.motions.length, price);
+            let g = node.g + p.motion_cost(node.motion.map(|m| m.gear), motion, p.motions.length, price);
             let key = self.key(cell, bin);
             let reached = match self.index.entry(key) {
                 Entry::Occupied(e) => {
@@ -324,74 +413,18 @@ impl Run<'_, '_> {
         }
     }
 
-    /// Drives `stretch`, checking the footprint every step: the end pose and the mean price of
-    /// a metre over the checked poses, or `None` on a collision.
-    fn drive(&mut self, stretch: &Stretch) -> Option<(Pose, f64)> {
-        let p = self.planner;
-        let n = (stretch.length / p.step).ceil().max(1.0) as usize;
-        let mut price = 0.0;
-        let mut end = stretch.start;
-        for i in 1..=n {
-            end = stretch.pose_at(stretch.length * i as f64 / n as f64, p.settings.turning_radius);
-            self.stats.footprint_checks += 1;
-            if !p.checker.is_free(p.map, &end, &mut self.stats.footprint_rasters) {
-                return None;
-            }
-            price += p.map.price(p.map.cell_index(point(&end))?);
-        }
-        Some((end, price / n as f64))
-    }
-
-    /// The cost of driving `length` by `motion` at a mean `price` per metre, after a motion in
-    /// gear `before` (`None` at the start).
-    fn motion_cost(&self, before: Option<Gear>, motion: Motion, length: f64, price: f64) -> f64 {
-        let s = &self.planner.settings;
-        let mut factor = price;
-        if motion.turn != Turn::Straight {
-            factor *= s.non_straight_penalty;
-        }
-        if motion.gear == Gear::Reverse {
-            factor *= s.reverse_penalty;
-        }
-        let change = if before.is_some_and(|g| g != motion.gear) { s.gear_change_penalty } else { 0.0 };
-        length * factor + change
-    }
-
     /// The shortest curve from `node` to the goal, if the footprint stays free along it: its
     /// stretches and cost.
     fn shot(&mut self, node: &Node) -> Option<(Shot, f64)> {
         let p = self.planner;
         self.stats.analytic_attempts += 1;
-        let r = p.settings.turning_radius;
-        let stretches: Shot = if p.settings.reverse {
-            let path = ReedsSheppPath::shortest(&node.pose, &self.goal, r).ok()?;
-            path.segments().map(|s| (s.turn, s.gear, s.length)).collect()
-        } else {
-            let path = DubinsPath::shortest(&node.pose, &self.goal, r).ok()?;
-            path.word()
-                .turns()
-                .into_iter()
-                .zip(path.segment_lengths())
-                .map(|(t, l)| (t, Gear::Forward, l))
-                .collect()
-        };
-        let mut at = node.pose;
-        let mut before = node.motion.map(|m| m.gear);
-        let mut cost = 0.0;
-        for &(turn, gear, length) in &stretches {
-            if length <= 0.0 {
-                continue;
-            }
-            let (end, price) = self.drive(&Stretch { start: at, turn, gear, length })?;
-            cost += self.motion_cost(before, Motion { gear, turn, bins: 0 }, length, price);
-            before = Some(gear);
-            at = end;
-        }
+        let stretches = p.curve(&node.pose, &self.goal)?;
+        let cost = p.curve_cost(&node.pose, &stretches, node.motion.map(|m| m.gear), &mut self.stats)?;
         Some((stretches, cost))
     }
 
-    /// The path to node `end` followed by `shot`, in the world's frame.
-    fn path(&self, end: u32, shot: Shot, cost: f64) -> CarPath {
+    /// The stretches to node `end` followed by `shot` (map coordinates).
+    fn path(&self, end: u32, shot: Shot) -> Vec<Stretch> {
         let p = self.planner;
         let r = p.settings.turning_radius;
         let mut chain = Vec::new();
@@ -412,15 +445,11 @@ impl Run<'_, '_> {
         chain.reverse();
         let mut at = self.nodes[end as usize].pose;
         for (turn, gear, length) in shot {
-            if length <= 0.0 {
-                continue;
-            }
             let stretch = Stretch { start: at, turn, gear, length };
             at = stretch.pose_at(length, r);
             chain.push(stretch);
         }
-        let stretches = chain.into_iter().map(|s| Stretch { start: p.map.to_world(&s.start), ..s }).collect();
-        CarPath { stretches, turning_radius: r, cost }
+        chain
     }
 }
 

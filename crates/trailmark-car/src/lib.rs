@@ -48,7 +48,9 @@ mod hybrid_astar;
 mod map;
 mod motion;
 mod path;
+mod raster;
 mod settings;
+mod smooth;
 mod stats;
 
 pub use error::CarError;

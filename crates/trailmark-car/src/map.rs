@@ -8,9 +8,11 @@
 
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::grid::Grid;
+use trailmark_core::world::PolygonWorld;
 use trailmark_map::{Costmap, LETHAL, MAX_NON_OBSTACLE, MapError, MapFrame, TravelCost, squared_distances};
 
 use crate::error::CarError;
+use crate::raster::Cells;
 
 /// A map for car planning: obstacle cells, the price of a metre per cell, and the distance from
 /// each cell to the nearest obstacle cell.
@@ -59,6 +61,43 @@ impl CarMap {
     pub fn from_grid(grid: &Grid, resolution: f64) -> Result<Self, CarError> {
         let frame = MapFrame::new(grid.width() as usize, grid.height() as usize, resolution, [0.0; 3])?;
         Ok(Self::with_prices(frame, grid.costs().to_vec()))
+    }
+
+    /// A polygon world as a car sees it, laid on cells `resolution` wide from the bounds'
+    /// lower-left corner: a cell any point of which lies in an obstacle (boundary included) or
+    /// outside the bounds is an obstacle, so a footprint clear of the cells is clear of the
+    /// polygons and inside the bounds; a metre costs 1 elsewhere. The world's robot radius is
+    /// not used: the car's footprint is checked itself.
+    ///
+    /// Errors: a resolution that is not positive and finite, or so fine that the map would
+    /// exceed [`Grid::MAX_CELLS`].
+    pub fn from_world(world: &PolygonWorld, resolution: f64) -> Result<Self, CarError> {
+        let (min, max) = (world.bounds().min(), world.bounds().max());
+        let cells = |extent: f64| {
+            let n = extent / resolution;
+            // A side within rounding of a whole number of cells is that number.
+            if (n - n.round()).abs() <= 1e-9 * n.max(1.0) { n.round() } else { n.ceil() }
+        };
+        // The resolution is checked before the size it sets.
+        MapFrame::new(1, 1, resolution, [min.x, min.y, 0.0])?;
+        let (w, h) = (cells(max.x - min.x), cells(max.y - min.y));
+        // Saturating casts: a size too large for the map is refused by the frame.
+        let frame = MapFrame::new(w as usize, h as usize, resolution, [min.x, min.y, 0.0])?;
+        let (width, height) = (w as usize, h as usize);
+        let mut raster = Cells::new(width, height, min, resolution);
+        for obstacle in world.obstacles() {
+            raster.mark(obstacle);
+        }
+        let outside_x = w * resolution > max.x - min.x;
+        let outside_y = h * resolution > max.y - min.y;
+        let price = (0..width * height)
+            .map(|k| {
+                let (i, row) = (k % width, k / width);
+                let out = (outside_x && i == width - 1) || (outside_y && row == 0);
+                if raster.marked[k] || out { f64::INFINITY } else { 1.0 }
+            })
+            .collect();
+        Ok(Self::with_prices(frame, price))
     }
 
     fn with_prices(frame: MapFrame, price: Vec<f64>) -> Self {

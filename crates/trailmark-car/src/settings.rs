@@ -34,12 +34,16 @@ pub struct HybridSettings {
     /// The longest shot to the goal tried, in the map's units (Smac's
     /// `analytic_expansion_max_length`); positive.
     pub analytic_expansion_max_length: f64,
+    /// Whether the path found is smoothed: runs of motions replaced by the car's shortest curve
+    /// between their ends where that is free and cheaper (see [`HybridAStar`](crate::HybridAStar)).
+    pub smooth: bool,
 }
 
 impl Default for HybridSettings {
     /// Nav2 Smac Hybrid-A*'s defaults: turning radius 0.4 m, 72 heading bins, reverse allowed
     /// with penalty 2, turning penalty 1.2, analytic shots every `h / 3.5` expansions up to
-    /// 3 m. Smac has no penalty for a change of gear beyond the reverse penalty: 0.
+    /// 3 m. Smac has no penalty for a change of gear beyond the reverse penalty: 0. Paths are
+    /// smoothed, as Smac smooths them.
     fn default() -> Self {
         HybridSettings {
             turning_radius: 0.4,
@@ -50,6 +54,7 @@ impl Default for HybridSettings {
             gear_change_penalty: 0.0,
             analytic_expansion_ratio: 3.5,
             analytic_expansion_max_length: 3.0,
+            smooth: true,
         }
     }
 }

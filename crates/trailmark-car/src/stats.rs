@@ -20,6 +20,10 @@ pub struct HybridStats {
     pub analytic_attempts: u64,
     /// Time spent on the obstacle heuristic (a Dijkstra from the goal over the map's cells).
     pub heuristic_time: Duration,
+    /// The cost of the path the search found, before smoothing.
+    pub search_cost: f64,
+    /// Time spent smoothing the path.
+    pub smoothing_time: Duration,
     /// Time of the whole query.
     pub time: Duration,
 }

@@ -84,6 +84,8 @@ fn queries_on(dir: &std::path::Path, name: &str, queries: usize, least: usize) {
     let planner = HybridAStar::new(&car_map, &car, hybrid).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     let (mut times, mut solved, mut unreachable, mut stopped, mut cusps) = (Vec::new(), 0, 0, 0, 0);
+    // The costs before and after smoothing, and the smoothing's times.
+    let (mut searched, mut smoothed, mut smoothing) = (0.0, 0.0, Vec::new());
     for q in 0..queries {
         let start = random_pose(&costmap, &planner, &mut rng, false);
         let goal = random_pose(&costmap, &planner, &mut rng, q % 2 == 0);
@@ -95,6 +97,11 @@ fn queries_on(dir: &std::path::Path, name: &str, queries: usize, least: usize) {
                 times.push(plan.stats.time.as_secs_f64() * 1e3);
                 cusps += plan.path.cusps().len();
                 solved += 1;
+                // Smoothing never makes a path dearer.
+                assert!(plan.path.cost <= plan.stats.search_cost * (1.0 + 1e-12), "{what}");
+                searched += plan.stats.search_cost;
+                smoothed += plan.path.cost;
+                smoothing.push(plan.stats.smoothing_time.as_secs_f64() * 1e3);
             }
             Err(CarError::NoPath { stop: None, .. }) => unreachable += 1,
             Err(CarError::NoPath { stop: Some(_), .. }) => stopped += 1,
@@ -102,14 +109,19 @@ fn queries_on(dir: &std::path::Path, name: &str, queries: usize, least: usize) {
         }
     }
     times.sort_by(f64::total_cmp);
+    smoothing.sort_by(f64::total_cmp);
     let (w, h) = (costmap.frame().width(), costmap.frame().height());
     println!(
         "{name} ({w} x {h} cells): {solved} solved, {unreachable} proven unreachable, {stopped} stopped at 10 s; \
-         planning median {:.1} ms, 90th percentile {:.1} ms; {cusps} cusps",
+         planning median {:.1} ms, 90th percentile {:.1} ms; {cusps} cusps; smoothing {:.1}% off the cost, \
+         median {:.2} ms",
         quantile(&times, 0.5),
-        quantile(&times, 0.9)
+        quantile(&times, 0.9),
+        100.0 * (1.0 - smoothed / searched),
+        quantile(&smoothing, 0.5)
     );
     assert!(solved >= least, "{name}: only {solved} of {queries} solved");
+    assert!(smoothed < searched, "{name}: smoothing shortened no path");
 }
 
 #[test]

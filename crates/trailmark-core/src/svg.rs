@@ -250,6 +250,8 @@ pub struct WorldSvg<'a> {
     nodes: Vec<Point>,
     paths: Vec<Vec<Point>>,
     poses: Vec<Pose>,
+    outlines: Vec<Vec<Point>>,
+    marks: Vec<Point>,
     start: Option<Point>,
     goal: Option<Point>,
     title: Option<String>,
@@ -267,6 +269,8 @@ impl<'a> WorldSvg<'a> {
             nodes: Vec::new(),
             paths: Vec::new(),
             poses: Vec::new(),
+            outlines: Vec::new(),
+            marks: Vec::new(),
             start: None,
             goal: None,
             title: None,
@@ -312,6 +316,18 @@ impl<'a> WorldSvg<'a> {
     /// Draws poses as short arrows.
     pub fn poses(mut self, poses: impl IntoIterator<Item = Pose>) -> Self {
         self.poses.extend(poses);
+        self
+    }
+
+    /// Draws a closed outline under the paths: the robot's footprint at a pose.
+    pub fn outline(mut self, corners: &[Point]) -> Self {
+        self.outlines.push(corners.to_vec());
+        self
+    }
+
+    /// Marks a point in red: where a car changes gear.
+    pub fn mark(mut self, p: Point) -> Self {
+        self.marks.push(p);
         self
     }
 
@@ -397,6 +413,14 @@ impl<'a> WorldSvg<'a> {
                 at(tip)
             );
         }
+        for outline in &self.outlines {
+            let points: Vec<String> = outline.iter().map(|&p| at(p)).collect();
+            let _ = writeln!(
+                out,
+                r##"<polygon points="{}" fill="#7f8c8d" fill-opacity="0.15" stroke="#555" stroke-width="0.7"/>"##,
+                points.join(" ")
+            );
+        }
         for (i, path) in self.paths.iter().enumerate() {
             let points: Vec<String> = path.iter().map(|&p| at(p)).collect();
             let _ = writeln!(
@@ -405,6 +429,11 @@ impl<'a> WorldSvg<'a> {
                 points.join(" "),
                 PATH_COLOURS[i % PATH_COLOURS.len()]
             );
+        }
+        for &p in &self.marks {
+            let c = at(p);
+            let (x, y) = c.split_once(',').unwrap_or(("0", "0"));
+            let _ = writeln!(out, r##"<circle cx="{x}" cy="{y}" r="3" fill="#c0392b"/>"##);
         }
         for (p, style) in [
             (self.start, r##"fill="#27ae60""##),

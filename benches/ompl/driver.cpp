@@ -15,6 +15,13 @@
 // and every run prints as {"query", "run", "status": "exact" | "approximate" | "none",
 // "time_s", "iterations", "collision_checks", "states", "cost", "path", "improvements"}.
 //
+// A car instead: "space": "reeds_shepp" | "dubins" and "turning_radius": r beside a polygon
+// world, queries of 6 numbers (start pose [x, y, heading], then goal pose), paths of poses. The
+// planners (rrt_connect, rrt_star) run in OMPL's ReedsSheppStateSpace or DubinsStateSpace; a
+// state is checked by the point test and a motion by trailmark's exact test of the shortest
+// curve between its ends (tm_reeds_shepp_is_free, tm_dubins_is_free), as trailmark's car spaces
+// check them.
+//
 // A box world instead: {"boxes": {"low": [...], "high": [...], "obstacles": [[[lo...], [hi...]],
 // ...]}} in place of "world", queries of 2n numbers (start, then goal), paths of n-vectors.
 // States and motions are then checked by the same tests trailmark's BoxWorld makes, written here
@@ -49,7 +56,9 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/StateValidityChecker.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/config.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -68,6 +77,8 @@ TmChecker *tm_checker_new(const char *json);
 void tm_checker_free(TmChecker *checker);
 bool tm_point_is_free(const TmChecker *checker, double x, double y);
 bool tm_segment_is_free(const TmChecker *checker, double ax, double ay, double bx, double by);
+bool tm_reeds_shepp_is_free(const TmChecker *checker, const double *a, const double *b, double r);
+bool tm_dubins_is_free(const TmChecker *checker, const double *a, const double *b, double r);
 }
 
 namespace ob = ompl::base;
@@ -133,29 +144,29 @@ struct Boxes {
 
 
 
-// A state test and an exact segment test, the same questions trailmark's planners ask (no
+// A state test and an exact motion test, the same questions trailmark's planners ask (no
 // fixed-resolution sampling of motions).
-using StateTest = std::function<bool(const double *)>;
-using SegmentTest = std::function<bool(const double *, const double *)>;
+using StateTest = std::function<bool(const ob::State *)>;
+using MotionTest = std::function<bool(const ob::State *, const ob::State *)>;
 
 class StateChecker : public ob::StateValidityChecker {
   public:
     StateChecker(const ob::SpaceInformationPtr &si, StateTest test) : ob::StateValidityChecker(si), test_(std::move(test)) {}
     bool isValid(const ob::State *s) const override {
         ++g_checks;
-        return test_(xy(s));
+        return test_(s);
     }
 
   private:
     StateTest test_;
 };
 
-class SegmentValidator : public ob::MotionValidator {
+class MotionChecker : public ob::MotionValidator {
   public:
-    SegmentValidator(const ob::SpaceInformationPtr &si, SegmentTest test) : ob::MotionValidator(si), test_(std::move(test)) {}
+    MotionChecker(const ob::SpaceInformationPtr &si, MotionTest test) : ob::MotionValidator(si), test_(std::move(test)) {}
     bool checkMotion(const ob::State *s1, const ob::State *s2) const override {
         ++g_checks;
-        bool ok = test_(xy(s1), xy(s2));
+        bool ok = test_(s1, s2);
         if (ok) {
             ++valid_;
         } else {
@@ -176,8 +187,16 @@ class SegmentValidator : public ob::MotionValidator {
     }
 
   private:
-    SegmentTest test_;
+    MotionTest test_;
 };
+
+// A car's pose: x, y and heading.
+void pose_of(const ob::State *s, double *q) {
+    const auto *p = s->as<ob::SE2StateSpace::StateType>();
+    q[0] = p->getX();
+    q[1] = p->getY();
+    q[2] = p->getYaw();
+}
 
 // PRMstar with its query steps public: what PRM::solve does for one start and one goal, without
 // the polling thread.
@@ -234,10 +253,14 @@ void print(const json &runs, const json *build) {
     std::cout << doc.dump() << "\n";
 }
 
-json path_of(og::PathGeometric &path, unsigned n) {
+json path_of(og::PathGeometric &path, const ob::StateSpacePtr &space) {
     json points = json::array();
     for (const ob::State *s : path.getStates()) {
-        points.push_back(std::vector<double>(xy(s), xy(s) + n));
+        std::vector<double> q;
+        for (unsigned i = 0; i < space->getDimension(); ++i) {
+            q.push_back(*space->getValueAddressAtIndex(s, i));
+        }
+        points.push_back(q);
     }
     return points;
 }
@@ -292,7 +315,7 @@ int run_prm(const json &input, const ob::SpaceInformationPtr &si, const ob::Stat
         if (path) {
             auto *geometric = path->as<og::PathGeometric>();
             row["cost"] = geometric->length();
-            row["path"] = path_of(*geometric, n);
+            row["path"] = path_of(*geometric, space);
         } else {
             row["cost"] = nullptr;
             row["path"] = json::array();
@@ -327,7 +350,9 @@ int main(int argc, char **argv) {
 
     TmChecker *checker = nullptr;
     Boxes boxes;
-    std::shared_ptr<ob::RealVectorStateSpace> space;
+    std::shared_ptr<ob::RealVectorStateSpace> region;
+    ob::StateSpacePtr space;
+    std::string car = input.value("space", std::string());
     if (input.contains("boxes")) {
         const auto &w = input.at("boxes");
         std::vector<double> low = w.at("low").get<std::vector<double>>();
@@ -337,13 +362,14 @@ int main(int argc, char **argv) {
             boxes.lo.push_back(o.at(0).get<std::vector<double>>());
             boxes.hi.push_back(o.at(1).get<std::vector<double>>());
         }
-        space = std::make_shared<ob::RealVectorStateSpace>(boxes.n);
+        region = std::make_shared<ob::RealVectorStateSpace>(boxes.n);
         ob::RealVectorBounds b(boxes.n);
         for (unsigned i = 0; i < boxes.n; ++i) {
             b.setLow(i, low[i]);
             b.setHigh(i, high[i]);
         }
-        space->setBounds(b);
+        region->setBounds(b);
+        space = region;
     } else {
         std::string world_text = input.at("world").dump();
         checker = tm_checker_new(world_text.c_str());
@@ -352,26 +378,55 @@ int main(int argc, char **argv) {
             return 2;
         }
         std::vector<double> bounds = input.at("world").at("bounds").get<std::vector<double>>();
-        space = std::make_shared<ob::RealVectorStateSpace>(2);
         ob::RealVectorBounds b(2);
         b.setLow(0, bounds[0]);
         b.setLow(1, bounds[1]);
         b.setHigh(0, bounds[2]);
         b.setHigh(1, bounds[3]);
-        space->setBounds(b);
+        double radius = input.value("turning_radius", 1.0);
+        if (car == "reeds_shepp" || car == "dubins") {
+            auto se2 = car == "reeds_shepp" ? ob::StateSpacePtr(std::make_shared<ob::ReedsSheppStateSpace>(radius))
+                                            : ob::StateSpacePtr(std::make_shared<ob::DubinsStateSpace>(radius));
+            se2->as<ob::SE2StateSpace>()->setBounds(b);
+            space = se2;
+        } else if (!car.empty()) {
+            std::cerr << "unknown space " << car << "\n";
+            return 2;
+        } else {
+            region = std::make_shared<ob::RealVectorStateSpace>(2);
+            region->setBounds(b);
+            space = region;
+        }
     }
     const unsigned n = space->getDimension();
     auto si = std::make_shared<ob::SpaceInformation>(space);
-    if (checker != nullptr) {
+    if (!car.empty()) {
+        // A car's state: its reference point by the point test; its motion: the shortest curve
+        // between its ends, checked exactly.
+        si->setStateValidityChecker(std::make_shared<StateChecker>(si, [checker](const ob::State *s) {
+            double q[3];
+            pose_of(s, q);
+            return tm_point_is_free(checker, q[0], q[1]);
+        }));
+        bool reverse = car == "reeds_shepp";
+        double radius = input.value("turning_radius", 1.0);
+        si->setMotionValidator(std::make_shared<MotionChecker>(si, [checker, reverse, radius](const ob::State *s1, const ob::State *s2) {
+            double a[3], b[3];
+            pose_of(s1, a);
+            pose_of(s2, b);
+            return reverse ? tm_reeds_shepp_is_free(checker, a, b, radius) : tm_dubins_is_free(checker, a, b, radius);
+        }));
+    } else if (checker != nullptr) {
         si->setStateValidityChecker(std::make_shared<StateChecker>(
-            si, [checker](const double *p) { return tm_point_is_free(checker, p[0], p[1]); }));
-        si->setMotionValidator(std::make_shared<SegmentValidator>(si, [checker](const double *a, const double *b) {
+            si, [checker](const ob::State *s) { return tm_point_is_free(checker, xy(s)[0], xy(s)[1]); }));
+        si->setMotionValidator(std::make_shared<MotionChecker>(si, [checker](const ob::State *s1, const ob::State *s2) {
+            const double *a = xy(s1), *b = xy(s2);
             return tm_segment_is_free(checker, a[0], a[1], b[0], b[1]);
         }));
     } else {
         // In the region (trailmark's planners refuse what is not), outside every box.
-        auto in_region = [space](const double *q) {
-            const auto &b = space->getBounds();
+        auto in_region = [region](const double *q) {
+            const auto &b = region->getBounds();
             for (size_t i = 0; i < b.low.size(); ++i) {
                 if (!(q[i] >= b.low[i] && q[i] <= b.high[i])) {
                     return false;
@@ -379,9 +434,11 @@ int main(int argc, char **argv) {
             }
             return true;
         };
-        si->setStateValidityChecker(std::make_shared<StateChecker>(
-            si, [&boxes, in_region](const double *q) { return in_region(q) && boxes.state_free(q); }));
-        si->setMotionValidator(std::make_shared<SegmentValidator>(si, [&boxes, in_region](const double *a, const double *b) {
+        si->setStateValidityChecker(std::make_shared<StateChecker>(si, [&boxes, in_region](const ob::State *s) {
+            return in_region(xy(s)) && boxes.state_free(xy(s));
+        }));
+        si->setMotionValidator(std::make_shared<MotionChecker>(si, [&boxes, in_region](const ob::State *s1, const ob::State *s2) {
+            const double *a = xy(s1), *b = xy(s2);
             return in_region(a) && in_region(b) && boxes.segment_free(a, b);
         }));
     }
@@ -450,7 +507,7 @@ int main(int argc, char **argv) {
             json path = json::array();
             if (exact || approximate) {
                 auto *geometric = pdef->getSolutionPath()->as<og::PathGeometric>();
-                path = path_of(*geometric, n);
+                path = path_of(*geometric, space);
                 row["cost"] = geometric->length();
             } else {
                 row["cost"] = nullptr;

@@ -83,7 +83,9 @@ fn world() -> impl Strategy<Value = (PolygonWorld, [f64; 6], bool)> {
                     let (s, c) = a.sin_cos();
                     [(-w, -h), (w, -h), (w, h), (-w, h)]
                         .iter()
-                        .map(|&(x, y)| Point::new(cx + c * x / 2.0 - s * y / 2.0, cy + s * x / 2.0 + c * y / 2.0))
+                        .map(|&(x, y)| {
+                            Point::new(cx + c * x / 2.0 - s * y / 2.0, cy + s * x / 2.0 + c * y / 2.0)
+                        })
                         .collect()
                 })
                 .collect();

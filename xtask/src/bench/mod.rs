@@ -5,8 +5,8 @@
 //! uses: the suite and its maps ([`suite`]), the statistics ([`stats`]), the report's writing
 //! ([`report`], [`plots`]), the progress display and the peers (OMPL, [`peer`] for
 //! `pathfinding`). Above it, one module per
-//! section ([`grid`], [`navigation`], [`anytime`], [`roadmaps`], [`sampling`], [`contingency`],
-//! [`rosmaps`]),
+//! section ([`grid`], [`navigation`], [`anytime`], [`roadmaps`], [`sampling`], [`cars`],
+//! [`contingency`], [`rosmaps`]),
 //! none of which uses another. At the top, this module: the options, which sections run, and the
 //! report assembled from each section's part.
 //!
@@ -15,6 +15,7 @@
 //! and [`times`] records both for the report's time line.
 
 mod anytime;
+mod cars;
 mod contingency;
 mod grid;
 mod navigation;
@@ -36,6 +37,7 @@ use std::process::ExitCode;
 use serde::Serialize;
 
 use anytime::{AnytimePart, AnytimeRow};
+use cars::CarReport;
 use contingency::ContingencyRow;
 use grid::{GridPlanner, GridRow, PeerRatio};
 use navigation::{NavRatio, NavRow, ReplannerRatio};
@@ -74,15 +76,15 @@ pub struct Args {
     json: bool,
     /// The sections to run: grid search beside the peers, unknown-terrain navigation
     /// (incremental planners), anytime planners, geometric roadmaps, sampling planners,
-    /// contingency plans over choke points, ROS maps (comma-separated).
+    /// car-like robots, contingency plans over choke points, ROS maps (comma-separated).
     #[arg(
         long,
         value_enum,
         value_delimiter = ',',
-        default_value = "grid,navigation,anytime,roadmaps,sampling,contingency,rosmaps"
+        default_value = "grid,navigation,anytime,roadmaps,sampling,cars,contingency,rosmaps"
     )]
     sections: Vec<Section>,
-    /// Also run OMPL's planners on the sampling section's problems (needs libompl-dev and
+    /// Also run OMPL's planners on the sampling and car sections' problems (needs libompl-dev and
     /// nlohmann-json3-dev; compiles benches/ompl/driver.cpp). Without them: a message, and
     /// the OMPL runs are skipped.
     #[arg(long)]
@@ -102,6 +104,8 @@ pub enum Section {
     Roadmaps,
     /// RRT's and RRT-Connect's success and speed, RRT*'s convergence, on generated polygon worlds.
     Sampling,
+    /// Car-like robots: Hybrid A*, RRT-Connect and RRT* in the Reeds-Shepp and Dubins spaces.
+    Cars,
     /// Contingency plans over choke points against D* Lite replanning, on river terrains and a
     /// MovingAI rooms map.
     Contingency,
@@ -131,6 +135,8 @@ struct BenchReport {
     roadmaps: Option<RoadmapReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     sampling: Option<SamplingReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    cars: Option<CarReport>,
     contingency: Vec<ContingencyRow>,
     rosmaps: Vec<RosMapRow>,
 }
@@ -175,6 +181,7 @@ impl BenchReport {
         self.results.iter().map(|r| r.cost_errors).sum::<usize>()
             + self.roadmaps.iter().flat_map(|r| &r.rows).map(|r| r.cost_errors).sum::<usize>()
             + self.sampling.as_ref().map_or(0, |s| s.errors())
+            + self.cars.as_ref().map_or(0, |c| c.errors())
             + self.contingency.iter().filter(|r| r.error).count()
             + self.rosmaps.iter().map(|r| r.cost_errors).sum::<usize>()
     }
@@ -219,6 +226,10 @@ impl BenchReport {
         if let Some(sampling) = &self.sampling {
             out.push('\n');
             out.push_str(&sampling::markdown(sampling));
+        }
+        if let Some(cars) = &self.cars {
+            out.push('\n');
+            out.push_str(&cars::markdown(cars));
         }
         if !self.contingency.is_empty() {
             out.push('\n');
@@ -267,6 +278,7 @@ struct Parts {
     anytime: Option<AnytimePart>,
     roadmaps: Option<RoadmapReport>,
     sampling: Option<SamplingReport>,
+    cars: Option<CarReport>,
     contingency: Vec<ContingencyRow>,
     rosmaps: Vec<RosMapRow>,
     date: String,
@@ -327,12 +339,18 @@ fn run_parts<'scope>(
         roadmaps =
             Some(times.section("roadmaps", || roadmaps::bench_roadmaps(args.suite, args.seed, args.runs))?);
     }
+    let driver = (wants(Section::Sampling) && sampling_named || wants(Section::Cars) && args.only.is_empty())
+        .then(|| ompl_driver(args))
+        .flatten();
     let mut sampling = None;
     if wants(Section::Sampling) && sampling_named {
-        let driver = ompl_driver(args);
         sampling = Some(times.section("sampling", || {
             sampling::bench(args.suite, args.seed, driver.as_ref(), &date, &args.only)
         })?);
+    }
+    let mut cars = None;
+    if wants(Section::Cars) && args.only.is_empty() {
+        cars = Some(times.section("cars", || cars::bench(args.suite, args.seed, driver.as_ref()))?);
     }
     let mut rosmaps = Vec::new();
     if wants(Section::Rosmaps) && args.only.is_empty() {
@@ -346,6 +364,7 @@ fn run_parts<'scope>(
         anytime,
         roadmaps,
         sampling,
+        cars,
         contingency,
         rosmaps,
         date,
@@ -390,6 +409,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         mut anytime,
         roadmaps,
         sampling,
+        cars,
         contingency,
         rosmaps,
         date,
@@ -412,6 +432,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         anytime: anytime.as_mut().map_or(Vec::new(), |a| std::mem::take(&mut a.rows)),
         roadmaps,
         sampling,
+        cars,
         contingency,
         rosmaps,
     };

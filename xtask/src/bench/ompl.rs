@@ -30,6 +30,12 @@ pub struct OmplInput<'a> {
     /// Or a box world.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub boxes: Option<OmplBoxes>,
+    /// For a car in the polygon world: `reeds_shepp` or `dubins` (queries and paths of poses).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub space: Option<&'static str>,
+    /// The car's turning radius.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub turning_radius: Option<f64>,
     /// `rrt`, `rrt_connect`, `rrt_star` or `prm_star`; in a box world also `informed_rrt_star`
     /// and `bit_star`.
     pub planner: &'a str,

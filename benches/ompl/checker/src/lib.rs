@@ -21,7 +21,9 @@
 
 use std::ffi::{CStr, c_char};
 
-use trailmark_core::geometry::Point;
+use trailmark_core::dubins::DubinsPath;
+use trailmark_core::geometry::{Point, Pose, Vector};
+use trailmark_core::reeds_shepp::ReedsSheppPath;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
 
 /// The checker of the world given as a JSON document
@@ -96,6 +98,64 @@ pub unsafe extern "C" fn tm_segment_is_free(
     unsafe { checker.as_ref() }.is_some_and(|c| c.segment_is_free(Point::new(ax, ay), Point::new(bx, by)))
 }
 
+/// Whether the robot driving the shortest Reeds-Shepp curve of turning radius `r` from pose
+/// `a` to pose `b` (`[x, y, heading]` each) stays collision-free, its arcs and segments checked
+/// exactly ([`CollisionChecker::reeds_shepp_is_free`], as trailmark's Reeds-Shepp space checks a
+/// motion); false for a null pointer or a curve that cannot be made.
+///
+/// # Safety
+///
+/// `checker` is null or a live checker from [`tm_checker_new`]; `a` and `b` are null or point
+/// to three numbers each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tm_reeds_shepp_is_free(
+    checker: *const CollisionChecker,
+    a: *const [f64; 3],
+    b: *const [f64; 3],
+    r: f64,
+) -> bool {
+    // SAFETY: null or live pointers, by the caller's contract.
+    unsafe { curve_is_free(checker, a, b) }.is_some_and(|(c, a, b)| {
+        ReedsSheppPath::shortest(&a, &b, r).is_ok_and(|path| c.reeds_shepp_is_free(&path))
+    })
+}
+
+/// As [`tm_reeds_shepp_is_free`] for the shortest Dubins curve (forward only).
+///
+/// # Safety
+///
+/// As for [`tm_reeds_shepp_is_free`].
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tm_dubins_is_free(
+    checker: *const CollisionChecker,
+    a: *const [f64; 3],
+    b: *const [f64; 3],
+    r: f64,
+) -> bool {
+    // SAFETY: null or live pointers, by the caller's contract.
+    unsafe { curve_is_free(checker, a, b) }
+        .is_some_and(|(c, a, b)| DubinsPath::shortest(&a, &b, r).is_ok_and(|path| c.dubins_is_free(&path)))
+}
+
+/// The checker and the two poses behind the pointers, or `None` if one is null.
+///
+/// # Safety
+///
+/// Each pointer is null or valid.
+unsafe fn curve_is_free<'c>(
+    checker: *const CollisionChecker,
+    a: *const [f64; 3],
+    b: *const [f64; 3],
+) -> Option<(&'c CollisionChecker, Pose, Pose)> {
+    // SAFETY: null or valid, by the caller's contract.
+    let (c, a, b) = unsafe { (checker.as_ref()?, a.as_ref()?, b.as_ref()?) };
+    Some((c, pose(a), pose(b)))
+}
+
+fn pose(p: &[f64; 3]) -> Pose {
+    Pose::new(Vector::new(p[0], p[1]), p[2])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -110,6 +170,9 @@ mod tests {
         assert!(unsafe { tm_checker_new(std::ptr::null()) }.is_null());
         assert!(!unsafe { tm_point_is_free(std::ptr::null(), 1.0, 1.0) });
         assert!(!unsafe { tm_segment_is_free(std::ptr::null(), 1.0, 1.0, 2.0, 2.0) });
+        let (a, b) = ([1.0, 1.0, 0.0], [2.0, 2.0, 0.0]);
+        assert!(!unsafe { tm_reeds_shepp_is_free(std::ptr::null(), &a, &b, 1.0) });
+        assert!(!unsafe { tm_dubins_is_free(std::ptr::null(), &a, &b, 1.0) });
         unsafe { tm_checker_free(std::ptr::null_mut()) };
     }
 
@@ -130,6 +193,17 @@ mod tests {
                 assert_eq!(
                     unsafe { tm_segment_is_free(checker, x, y, q.x, q.y) },
                     reference.segment_is_free(p, q)
+                );
+                let (a, b) = ([x, y, 0.3 * i as f64], [q.x, q.y, -0.2 * j as f64]);
+                let rs = ReedsSheppPath::shortest(&pose(&a), &pose(&b), 0.7).unwrap();
+                let dubins = DubinsPath::shortest(&pose(&a), &pose(&b), 0.7).unwrap();
+                assert_eq!(
+                    unsafe { tm_reeds_shepp_is_free(checker, &a, &b, 0.7) },
+                    reference.reeds_shepp_is_free(&rs)
+                );
+                assert_eq!(
+                    unsafe { tm_dubins_is_free(checker, &a, &b, 0.7) },
+                    reference.dubins_is_free(&dubins)
                 );
             }
         }

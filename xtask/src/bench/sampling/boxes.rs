@@ -160,6 +160,8 @@ fn ompl_input<'a, const N: usize>(
     roadmap_size: usize,
 ) -> OmplInput<'a> {
     OmplInput {
+        space: None,
+        turning_radius: None,
         world: None,
         boxes: Some(ompl_boxes(world)),
         planner,

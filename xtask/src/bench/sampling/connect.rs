@@ -153,6 +153,8 @@ pub fn ompl_connect(
     log: &mut Vec<PlannerRuns>,
 ) -> Result<ConnectStats, String> {
     let input = OmplInput {
+        space: None,
+        turning_radius: None,
         world: Some(&w.world),
         boxes: None,
         planner: planner.name(),

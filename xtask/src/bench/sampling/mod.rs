@@ -1,6 +1,6 @@
 //! The sampling section: RRT's and RRT-Connect's success rate and speed, RRT*'s convergence and
 //! PRM*'s roadmaps on generated polygon worlds, each path checked against the visibility graph's
-//! shortest one (see [`world`]); RRT-Connect for a Dubins car and a planar arm; Rⁿ among random
+//! shortest one (see [`world`]); RRT-Connect for a planar arm; Rⁿ among random
 //! boxes; and how far past a time limit every planner returns. With `--with-ompl`, OMPL's
 //! planners beside trailmark's on the same problems.
 //!
@@ -29,9 +29,8 @@ use boxes::BoxRow;
 use connect::{CONNECT_ITERATIONS, ConnectRow, SingleQuery};
 use limits::LimitRow;
 use prm::PrmRow;
-use spaces::{DUBINS_WORLDS, SpaceRow};
+use spaces::SpaceRow;
 use star::{EqualTimeRow, STAR_ITERATIONS, StarRow};
-use trailmark::sample::space::{DubinsCurves, ReedsSheppCurves};
 use world::{DOOR, ROBOT_RADIUS, SIZE, SamplingWorld, worlds};
 
 /// The names `--only` can give the section: its single-query planners, RRT*, PRM*, and `boxes`
@@ -49,7 +48,7 @@ pub struct SamplingReport {
     pub star: Vec<StarRow>,
     /// PRM* per world.
     pub prm: Vec<PrmRow>,
-    /// RRT-Connect for the Dubins car and the arm.
+    /// RRT-Connect for the arm.
     pub spaces: Vec<SpaceRow>,
     /// RRT* of trailmark and OMPL with equal time (with `--with-ompl`).
     pub equal_time: Vec<EqualTimeRow>,
@@ -161,17 +160,6 @@ pub fn bench(
                 row.ompl = Some(connect::ompl_connect(planner, w, &qs, seed, driver, &mut planners)?);
             }
             connect.push(row);
-        }
-        if wanted(SingleQuery::RrtConnect.name()) && DUBINS_WORLDS.contains(&w.name.as_str()) {
-            let car_queries = &qs[..size.space_queries.min(qs.len())];
-            progress
-                .note(format!("{}: RRT-Connect for a Dubins car, {} queries", w.name, size.space_queries));
-            spaces.push(spaces::bench_car::<DubinsCurves>(w, car_queries, seed, "dubins")?);
-            progress.note(format!(
-                "{}: RRT-Connect for a Reeds-Shepp car, {} queries",
-                w.name, size.space_queries
-            ));
-            spaces.push(spaces::bench_car::<ReedsSheppCurves>(w, car_queries, seed, "reeds_shepp")?);
         }
         if with_prm {
             progress.note(format!("{}: PRM*, {} samples, {queries} queries", w.name, size.prm_samples));

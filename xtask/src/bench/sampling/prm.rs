@@ -164,6 +164,8 @@ fn ompl_prm(
     driver: &OmplDriver,
 ) -> Result<PrmStats, String> {
     let input = OmplInput {
+        space: None,
+        turning_radius: None,
         world: Some(&w.world),
         boxes: None,
         planner: NAME,

@@ -136,6 +136,8 @@ pub fn star_equal_time(
         our_log.push(logged);
     }
     let input = OmplInput {
+        space: None,
+        turning_radius: None,
         world: Some(&w.world),
         boxes: None,
         planner: "rrt_star",

@@ -122,6 +122,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     } else {
         println!("skipped docs/img/map-warehouse.svg: {} not found", warehouse.display());
     }
+    write("car-polygon-lot.svg", car_lot()?)?;
     let depot = root.join("../shared/rosmaps/depot.yaml");
     if depot.is_file() {
         write("car-hybrid-astar.svg", car_parking(&depot)?)?;
@@ -231,6 +232,59 @@ fn car_parking(yaml: &Path) -> Result<String, Box<dyn std::error::Error>> {
         hi.1 - lo.1
     );
     Ok(svg.replace(&whole, &part).replace("</svg>\n", &format!("{extra}</svg>\n")))
+}
+
+/// Hybrid A* parking a 1.2 m x 0.8 m car between two parked ones in a polygon world, the world
+/// laid on cells of an eighth of the turning radius: the path, the footprint every 0.5 m, the
+/// cusps in red.
+fn car_lot() -> Result<String, Box<dyn std::error::Error>> {
+    use std::f64::consts::FRAC_PI_2;
+    use trailmark::car::{CarMap, HybridAStar, HybridSettings};
+    use trailmark::core::footprint::Footprint;
+    use trailmark::core::geometry::{Point, Pose, Vector};
+    use trailmark::core::svg::WorldSvg;
+    use trailmark::core::termination::Termination;
+    use trailmark::core::world::{Bounds, Polygon, PolygonWorld};
+    let rect = |x0: f64, y0: f64, x1: f64, y1: f64| {
+        vec![Point::new(x0, y0), Point::new(x1, y0), Point::new(x1, y1), Point::new(x0, y1)]
+    };
+    let obstacles = vec![rect(1.0, 0.5, 5.0, 2.3), rect(7.4, 0.5, 11.0, 2.3), rect(3.0, 6.5, 9.0, 7.5)];
+    let world = PolygonWorld::new(Bounds::new(0.0, 0.0, 12.0, 8.0)?, obstacles, 0.0)?;
+    let corners = [(-0.2, -0.4), (1.0, -0.4), (1.0, 0.4), (-0.2, 0.4)];
+    let car = Footprint::Polygon(Polygon::new(corners.iter().map(|&(x, y)| Point::new(x, y)).collect())?);
+    let settings = HybridSettings { turning_radius: 1.2, ..HybridSettings::default() };
+    let map = CarMap::from_world(&world, settings.turning_radius / 8.0)?;
+    let planner = HybridAStar::new(&map, &car, settings)?;
+    let (start, goal) = (Pose::new(Vector::new(2.0, 5.0), 0.0), Pose::new(Vector::new(6.2, 1.2), FRAC_PI_2));
+    let plan = planner.plan(&start, &goal, &Termination::unlimited())?;
+    let path = &plan.path;
+    println!(
+        "polygon lot: {:.2} m, {} cusps, {} expansions, {:.1} ms",
+        path.length(),
+        path.cusps().len(),
+        plan.stats.expansions,
+        plan.stats.time.as_secs_f64() * 1e3
+    );
+    let dense = path.sample(0.02);
+    let points: Vec<Point> = dense.iter().map(|(p, _)| Point::from(p.translation.vector)).collect();
+    let mut picture = WorldSvg::new(&world).scale(60.0).path(&points);
+    let mut travelled = f64::INFINITY;
+    for pair in dense.windows(2) {
+        if travelled >= 0.5 {
+            picture = picture.outline(&car.corners_at(&pair[0].0));
+            travelled = 0.0;
+        }
+        travelled += (pair[1].0.translation.vector - pair[0].0.translation.vector).norm();
+    }
+    picture = picture.outline(&car.corners_at(&goal));
+    for cusp in path.cusps() {
+        picture = picture.outline(&car.corners_at(&cusp)).mark(Point::from(cusp.translation.vector));
+    }
+    Ok(picture
+        .start(Point::from(start.translation.vector))
+        .goal(Point::from(goal.translation.vector))
+        .title(format!("Hybrid A* parking a 1.2 m x 0.8 m car between polygons: {:.1} m", path.length()))
+        .to_svg())
 }
 
 /// A ROS map made a costmap around a 0.2 m robot, with A* (blue), A* shortcut (green) and

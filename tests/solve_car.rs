@@ -101,7 +101,7 @@ fn documents_name_what_is_wrong() {
     for resolution in ["0", "-1", "1e-300"] {
         let planner = format!(r#""turning_radius": 1, "resolution": {resolution}"#);
         match err(polygons(r#""robot_radius": 0.3"#, &planner)) {
-            SolveError::Car(CarError::Map(_)) => {}
+            SolveError::Car(CarError::Map(_) | CarError::Setting { setting: "resolution", .. }) => {}
             other => panic!("{resolution}: {other:?}"),
         }
     }
@@ -167,20 +167,23 @@ fn a_car_turns_around_in_a_grid_world() {
 
 #[test]
 fn a_car_parks_between_polygons() {
-    // Two parked cars 2.4 m apart along the bottom of a 12 x 8 lot; the car parks between them
-    // facing +x.
+    // Two parked cars 2.4 m apart along the bottom of a 12 x 8 lot; the car backs in between
+    // them, facing out.
     let json = r#"{"world": {"polygons": {"bounds": [0, 0, 12, 8],
                     "obstacles": [[[1, 0.5], [5, 0.5], [5, 2.3], [1, 2.3]], [[7.4, 0.5], [11, 0.5], [11, 2.3], [7.4, 2.3]]]}},
-                   "start": [2, 5.5, 0], "goal": [5.6, 1.4, 0],
+                   "start": [2, 5.5, 0], "goal": [6.2, 1.2, 1.5707963267948966],
                    "planner": {"name": "hybrid_astar", "turning_radius": 1.2,
                                "footprint": [[-0.2, -0.4], [1.0, -0.4], [1.0, 0.4], [-0.2, 0.4]]}}"#;
     let problem: ProblemSpec = serde_json::from_str(json).unwrap();
     let (result, svg) = solve_and_draw(&problem, EXAMPLES).unwrap();
     assert_eq!(result.status, Status::Solved);
     let [x, y, heading] = last_pose(&result.path);
-    assert!((x - 5.6).abs() < 1e-6 && (y - 1.4).abs() < 1e-6 && same_heading(heading, 0.0, 1e-6));
+    assert!((x - 6.2).abs() < 1e-6 && (y - 1.2).abs() < 1e-6);
+    assert!(same_heading(heading, std::f64::consts::FRAC_PI_2, 1e-6));
     let car = result.stats.car.expect("the car's record");
-    assert!(car.length >= (3.6f64).hypot(4.1) - 1e-9);
+    assert!(car.length >= (4.2f64).hypot(4.3) - 1e-9);
+    // Facing out of the bay at the end, it must have reversed into it.
+    assert!(car.reverse_length > 0.0 && !car.cusps.is_empty());
     // The world's obstacles, the footprints and the path are drawn.
     assert!(svg.matches("<polygon").count() > 5 && svg.contains("<polyline"));
 }

@@ -26,6 +26,8 @@ pub const MAX_SAMPLING_ITERATIONS: u64 = 3000;
 pub const MAX_TIME_LIMIT_S: f64 = 0.5;
 /// The most tries of a bridge or Gaussian sampler per sample (the default is 100).
 pub const MAX_SAMPLER_ATTEMPTS: u32 = 100;
+/// The most expansions of a Hybrid A* run without a smaller time limit.
+pub const MAX_CAR_EXPANSIONS: u64 = 20_000;
 /// The most (cells x anytime iterations) of an ARA* or AD* run without a smaller limit.
 pub const MAX_ANYTIME_WORK: u64 = 5_000_000;
 
@@ -67,6 +69,20 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
     };
     let time_ok = |t: Option<f64>| t.is_some_and(|t| t <= MAX_TIME_LIMIT_S);
     match &problem.planner {
+        PlannerSpec::HybridAStar(spec) => {
+            if !(spec.max_expansions.is_some_and(|e| e <= MAX_CAR_EXPANSIONS) || time_ok(spec.time_limit_s)) {
+                return false;
+            }
+            // A polygon world laid on cells: no more than a grid world's.
+            if let WorldSpec::Polygons(world) = &problem.world {
+                let resolution = spec.resolution.unwrap_or(spec.turning_radius / 8.0);
+                let size = world.bounds().max() - world.bounds().min();
+                let cells = (size.x / resolution).ceil() * (size.y / resolution).ceil();
+                if cells.is_nan() || cells > MAX_GRID_CELLS as f64 {
+                    return false;
+                }
+            }
+        }
         PlannerSpec::AraStar(AnytimeSpec { epsilon, epsilon_step, time_limit_s, max_expansions, .. })
         | PlannerSpec::AdStar(AnytimeSpec { epsilon, epsilon_step, time_limit_s, max_expansions, .. }) => {
             let schedule =

@@ -332,7 +332,7 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => {
             panic!("a sampling planner solved a grid problem")
         }
-        PlannerSpec::HybridAStar(_) => panic!("hybrid_astar solved a grid problem"),
+        PlannerSpec::HybridAStar(_) => unreachable!("checked by car::check_result"),
         PlannerSpec::ThetaStar {} => unreachable!("checked above"),
     }
 }

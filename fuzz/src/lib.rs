@@ -11,6 +11,7 @@
 
 pub mod boxes;
 pub mod budget;
+pub mod car;
 pub mod generate;
 pub mod grid;
 pub mod movingai;
@@ -20,7 +21,7 @@ pub mod terrain;
 
 use std::path::Path;
 
-use trailmark::solve::{ProblemSpec, WorldSpec};
+use trailmark::solve::{PlannerSpec, ProblemSpec, WorldSpec};
 
 /// The folder relative map paths are resolved against: one that does not exist, so that no
 /// map file is ever read (absolute paths are skipped by [`budget::problem_is_quick`]).
@@ -39,6 +40,22 @@ pub fn solve_and_check(problem: &ProblemSpec) {
     let Ok(result) = trailmark::solve::solve(problem, Path::new(NO_DIR)) else {
         return;
     };
+    if let PlannerSpec::HybridAStar(spec) = &problem.planner {
+        let grid = match &problem.world {
+            WorldSpec::Grid(world) => Some(
+                grid::RefGrid::from_world(world)
+                    .unwrap_or_else(|why| panic!("solve accepted a grid world the reference rejects: {why}")),
+            ),
+            _ => None,
+        };
+        let world = match (&problem.world, &grid) {
+            (WorldSpec::Polygons(world), _) => car::CarWorld::Polygons(world),
+            (_, Some(grid)) => car::CarWorld::Grid(grid),
+            _ => panic!("hybrid_astar solved a {:?} world", problem.world),
+        };
+        car::check_result(problem, spec, world, &result);
+        return;
+    }
     match &problem.world {
         WorldSpec::Grid(world) => grid::check_result(problem, world, &result),
         WorldSpec::Polygons(world) => polygon::check_result(problem, world, &result),

@@ -431,6 +431,9 @@ pub struct HybridSpec {
     /// Added at each change of gear, in metres (default 0).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gear_change_penalty: Option<f64>,
+    /// Whether the path is smoothed (default true).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub smooth: Option<bool>,
     /// The robot's polygon `[[x, y], ...]` in metres about its reference point, x forward
     /// (default: on ROS maps the world's `footprint`, else a disc of its `robot_radius`; on
     /// polygon worlds a disc of the world's `robot_radius`; on grids a point).
@@ -460,6 +463,7 @@ impl HybridSpec {
             reverse_penalty: self.reverse_penalty.unwrap_or(d.reverse_penalty),
             non_straight_penalty: self.non_straight_penalty.unwrap_or(d.non_straight_penalty),
             gear_change_penalty: self.gear_change_penalty.unwrap_or(d.gear_change_penalty),
+            smooth: self.smooth.unwrap_or(d.smooth),
             ..d
         }
     }

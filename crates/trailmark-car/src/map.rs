@@ -31,6 +31,10 @@ pub struct CarMap {
 }
 
 impl CarMap {
+    /// The most cells a polygon world is laid on (4096 x 4096), about 300 MB with the
+    /// planner's tables.
+    pub const MAX_WORLD_CELLS: usize = 1 << 24;
+
     /// A costmap as a car sees it: lethal cells (254) and unknown ones (255) are obstacles
     /// that no part of the footprint may touch; inscribed cells (253) are not, the footprint
     /// itself being checked. A metre costs `travel.neutral + travel.factor * cost / 252`
@@ -69,8 +73,8 @@ impl CarMap {
     /// polygons and inside the bounds; a metre costs 1 elsewhere. The world's robot radius is
     /// not used: the car's footprint is checked itself.
     ///
-    /// Errors: a resolution that is not positive and finite, or so fine that the map would
-    /// exceed [`Grid::MAX_CELLS`].
+    /// Errors: a resolution that is not positive and finite ([`CarError::Map`]), or so fine
+    /// that the map would exceed [`CarMap::MAX_WORLD_CELLS`] ([`CarError::Setting`]).
     pub fn from_world(world: &PolygonWorld, resolution: f64) -> Result<Self, CarError> {
         let (min, max) = (world.bounds().min(), world.bounds().max());
         let cells = |extent: f64| {
@@ -81,6 +85,10 @@ impl CarMap {
         // The resolution is checked before the size it sets.
         MapFrame::new(1, 1, resolution, [min.x, min.y, 0.0])?;
         let (w, h) = (cells(max.x - min.x), cells(max.y - min.y));
+        if w * h > Self::MAX_WORLD_CELLS as f64 {
+            let expected = "coarse enough for at most 16,777,216 cells over the world's bounds";
+            return Err(CarError::Setting { setting: "resolution", expected, value: resolution });
+        }
         // Saturating casts: a size too large for the map is refused by the frame.
         let frame = MapFrame::new(w as usize, h as usize, resolution, [min.x, min.y, 0.0])?;
         let (width, height) = (w as usize, h as usize);

@@ -144,12 +144,20 @@ proptest! {
 #[test]
 fn a_polygon_world_refuses_resolutions_that_are_not_cell_widths() {
     let world = PolygonWorld::new(Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap(), Vec::new(), 0.0).unwrap();
-    for resolution in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e-9] {
+    for resolution in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         match CarMap::from_world(&world, resolution) {
             Err(CarError::Map(_)) => {}
             other => panic!("{resolution}: {other:?}"),
         }
     }
+    // Too fine: more cells than the bound, refused before anything is allocated.
+    for resolution in [1e-9, 10.0 / 4097.0] {
+        match CarMap::from_world(&world, resolution) {
+            Err(CarError::Setting { setting: "resolution", .. }) => {}
+            other => panic!("{resolution}: {other:?}"),
+        }
+    }
+    assert!(CarMap::from_world(&world, 10.0 / 4096.0).is_ok());
     // Cells past the bounds are obstacles: a 10 m world of 3 m cells has four columns, the
     // last beyond the bounds.
     let map = CarMap::from_world(&world, 3.0).unwrap();

@@ -1,9 +1,9 @@
 //! Car-like robots for trailmark: a footprint that turns with the car, checked on a costmap's
 //! cells, and Hybrid A*, which plans forward and reverse arcs at the car's turning radius to an
-//! exact goal pose.
+//! exact goal pose and smooths them with the car's shortest curves.
 //!
-//! Start from the map you have: a ROS costmap ([`CarMap::from_costmap`]) or any grid
-//! ([`CarMap::from_grid`]); the robot's [`Footprint`](trailmark_core::footprint::Footprint),
+//! Start from the map you have: a ROS costmap ([`CarMap::from_costmap`]), any grid
+//! ([`CarMap::from_grid`]) or a polygon world laid on cells ([`CarMap::from_world`]); the robot's [`Footprint`](trailmark_core::footprint::Footprint),
 //! a disc or a polygon about its reference point (for a car, the middle of the rear axle); and
 //! its turning radius. Poses are in the world's frame, `[x, y, heading]` as nalgebra's `Pose`.
 //!

@@ -98,7 +98,8 @@ fn disc_is_free(map: &CarMap, p: Point, r: f64) -> bool {
             // The nearest point of the cell's square to p.
             let qx = p.x.clamp(i as f64 * res, (i + 1) as f64 * res);
             let qy = p.y.clamp(j as f64 * res, (j + 1) as f64 * res);
-            if (qx - p.x).hypot(qy - p.y) > r {
+            let (dx, dy) = (qx - p.x, qy - p.y);
+            if dx * dx + dy * dy > r * r {
                 continue;
             }
             match map.index_at(i, j) {

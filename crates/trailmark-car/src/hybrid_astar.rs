@@ -113,8 +113,13 @@ impl<'m> HybridAStar<'m> {
         // reference point moves at most `step (1 + reach / radius)`: a pose in between is within
         // half of that of one of them.
         let margin = 0.5 * step * (1.0 + reach / settings.turning_radius);
-        let motions =
-            Motions::new(settings.turning_radius, settings.heading_bins, map.resolution(), settings.reverse);
+        let motions = Motions::new(
+            settings.turning_radius,
+            settings.heading_bins,
+            map.resolution(),
+            settings.reverse,
+            step,
+        );
         Ok(HybridAStar {
             map,
             settings,
@@ -213,6 +218,23 @@ impl<'m> HybridAStar<'m> {
             price += self.map.price(self.map.cell_index(point(&end))?);
         }
         Some((end, price / n as f64))
+    }
+
+    /// Drives motion `k` from `start` (map coordinates) as [`drive`](Self::drive) does, its
+    /// checked poses composed from the motion's precomputed ones.
+    fn drive_motion(&self, start: &Pose, k: usize, stats: &mut HybridStats) -> Option<(Pose, f64)> {
+        let checks = &self.motions.checks[k];
+        let mut price = 0.0;
+        let mut end = *start;
+        for offset in checks {
+            end = start * offset;
+            stats.footprint_checks += 1;
+            if !self.checker.is_free(self.map, &end, &mut stats.footprint_rasters) {
+                return None;
+            }
+            price += self.map.price(self.map.cell_index(point(&end))?);
+        }
+        Some((end, price / checks.len() as f64))
     }
 
     /// The cost of driving `length` by `motion` at a mean `price` per metre, after a motion in
@@ -370,9 +392,7 @@ impl Run<'_, '_> {
         for k in 0..p.motions.all.len() {
             let motion = p.motions.all[k];
             self.stats.motions += 1;
-            let stretch =
-                Stretch { start: node.pose, turn: motion.turn, gear: motion.gear, length: p.motions.length };
-            let Some((end, price)) = p.drive(&stretch, &mut self.stats) else { continue };
+            let Some((end, price)) = p.drive_motion(&node.pose, k, &mut self.stats) else { continue };
             let bin = (i64::from(node.bin) + i64::from(motion.bins)).rem_euclid(bins) as u32;
             let heading = self.start_heading + f64::from(bin) * p.motions.bin_angle;
             let end = Pose::new(end.translation.vector, heading);

@@ -151,10 +151,10 @@ impl CarMap {
     /// The index of the cell holding `p` (map coordinates), or `None` outside the map.
     #[inline]
     pub(crate) fn cell_index(&self, p: Point) -> Option<usize> {
-        let (i, j) = ((p.x / self.resolution).floor(), (p.y / self.resolution).floor());
-        let inside = i >= 0.0 && j >= 0.0 && i < self.width as f64 && j < self.height as f64;
-        // NaN fails every comparison.
-        inside.then(|| (self.height - 1 - j as usize) * self.width + i as usize)
+        let (x, y) = (p.x / self.resolution, p.y / self.resolution);
+        let inside = x >= 0.0 && y >= 0.0 && x < self.width as f64 && y < self.height as f64;
+        // NaN fails every comparison; inside, truncation is the floor (and no call to libm's).
+        inside.then(|| (self.height - 1 - y as usize) * self.width + x as usize)
     }
 
     /// The index of the cell in column `i`, row `j` counted from the bottom, if inside.
@@ -188,10 +188,14 @@ impl CarMap {
         if !on_map {
             return false;
         }
-        let (i, j) = ((p.x / res).floor(), (p.y / res).floor());
-        let Some(index) = self.index_at(i as i64, j as i64) else { return false };
-        let offset = ((i + 0.5) * res - p.x).hypot((j + 0.5) * res - p.y);
-        self.clearance[index] - offset - std::f64::consts::FRAC_1_SQRT_2 * res > r
+        // On the map, the coordinates are not negative: truncation is the floor.
+        let (i, j) = ((p.x / res) as i64, (p.y / res) as i64);
+        let Some(index) = self.index_at(i, j) else { return false };
+        let (i, j) = (i as f64, j as f64);
+        // offset < room, compared squared: no square root on the planner's hottest path.
+        let (dx, dy) = ((i + 0.5) * res - p.x, (j + 0.5) * res - p.y);
+        let room = self.clearance[index] - std::f64::consts::FRAC_1_SQRT_2 * res - r;
+        room > 0.0 && dx * dx + dy * dy < room * room
     }
 
     /// An upper bound on the distance from every point of cell `index` to the nearest obstacle

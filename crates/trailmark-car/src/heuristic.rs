@@ -8,19 +8,45 @@
 //!   Smac, the grid's costs are taken as they are, although a grid path runs up to 8.2% longer
 //!   than the straight line at its angle (moves at 0 and 45 degrees only): divided by 1.0824
 //!   they would never overestimate, but the search then expanded 2-5 times more states on the
-//!   Nav2 maps (docs/car.md), and Hybrid A*'s paths are good rather than optimal anyway.
+//!   Nav2 maps (docs/car.md), and Hybrid A*'s paths are good rather than optimal anyway. Merged
+//!   two by two, as Smac downsamples, the Dijkstra took a fifth of the time, but a merged cell
+//!   open wherever one of its cells is opens gaps the car cannot pass, and the hard queries
+//!   expanded up to 5.7 times more states (docs/car.md).
 //! - **Without obstacles**: the length of the shortest Reeds-Shepp (or, forward only, Dubins)
 //!   path to the goal, times the cheapest price of a metre on the map.
 
 use trailmark_core::dubins::DubinsPath;
-use trailmark_core::geometry::{Point, Pose};
-use trailmark_core::grid::{Cell, Connectivity};
+use trailmark_core::geometry::Pose;
+use trailmark_core::grid::{Cell, Connectivity, Grid};
 use trailmark_core::reeds_shepp::ReedsSheppPath;
 use trailmark_graph::GridGraph;
 use trailmark_search::Search;
 
+use trailmark_map::MapError;
+
 use crate::error::CarError;
 use crate::map::CarMap;
+
+/// The grid the estimate around the obstacles is computed on, made once per planner: the map's
+/// prices, with the cells closed where every point lies closer to an obstacle than the
+/// footprint's inscribed radius.
+#[derive(Debug, Clone)]
+pub(crate) struct HeuristicGrid {
+    grid: Grid,
+    resolution: f64,
+}
+
+impl HeuristicGrid {
+    /// The grid of `map` for a footprint of `inscribed` radius.
+    pub fn new(map: &CarMap, inscribed: f64) -> Result<Self, CarError> {
+        let (w, h) = map.size();
+        let costs = (0..w * h)
+            .map(|i| if map.clearance_at_most(i) < inscribed { f64::INFINITY } else { map.price(i) })
+            .collect();
+        let grid = Grid::from_costs(w, h, costs).map_err(MapError::from)?;
+        Ok(HeuristicGrid { grid, resolution: map.resolution() })
+    }
+}
 
 /// The cost from each cell to the goal's cell around the obstacles, per cell index.
 #[derive(Debug, Clone)]
@@ -29,28 +55,24 @@ pub(crate) struct ObstacleHeuristic {
 }
 
 impl ObstacleHeuristic {
-    /// The costs to the cell holding `goal` (map coordinates), for a footprint of `inscribed`
-    /// radius.
-    pub fn new(map: &CarMap, goal: Point, inscribed: f64) -> Result<Self, CarError> {
-        let grid = map.grid_with(|i| map.clearance_at_most(i) < inscribed)?;
-        let (w, h) = map.size();
-        let mut cost = vec![f64::INFINITY; w * h];
-        let Some(goal_index) = map.cell_index(goal) else { return Ok(ObstacleHeuristic { cost }) };
-        let graph = GridGraph::new(&grid, Connectivity::Eight);
-        let goal_cell = Cell::new((goal_index % w) as u32, (goal_index / w) as u32);
+    /// The costs to the map's cell `goal` (a cell index): a Dijkstra from it over `grid`.
+    pub fn new(grid: &HeuristicGrid, goal: usize) -> Self {
+        let w = grid.grid.width() as usize;
+        let mut cost = vec![f64::INFINITY; w * grid.grid.height() as usize];
+        let graph = GridGraph::new(&grid.grid, Connectivity::Eight);
         let mut search = Search::new();
         // The goal's cell is open whenever the goal pose is valid; were it closed, no cell
         // would have a cost and the planner would report no path.
-        if search.dijkstra_all(&graph, goal_cell).is_ok() {
-            let scale = map.resolution();
+        let goal = Cell::new((goal % w) as u32, (goal / w) as u32);
+        if search.dijkstra_all(&graph, goal).is_ok() {
             for (i, slot) in cost.iter_mut().enumerate() {
                 let cell = Cell::new((i % w) as u32, (i / w) as u32);
                 if let Some(c) = search.cost_to(&graph, cell) {
-                    *slot = c * scale;
+                    *slot = c * grid.resolution;
                 }
             }
         }
-        Ok(ObstacleHeuristic { cost })
+        ObstacleHeuristic { cost }
     }
 
     /// The estimate at cell `index`, `+inf` where the goal cannot be reached.

@@ -21,7 +21,7 @@ use trailmark_core::termination::{Stop, Termination, Watch};
 
 use crate::collision::FootprintChecker;
 use crate::error::CarError;
-use crate::heuristic::{ObstacleHeuristic, curve_length};
+use crate::heuristic::{HeuristicGrid, ObstacleHeuristic, curve_length};
 use crate::map::CarMap;
 use crate::motion::{Motion, Motions};
 use crate::path::{CarPath, Stretch};
@@ -70,8 +70,8 @@ pub struct HybridAStar<'m> {
     checker: FootprintChecker,
     /// The longest step between two checked poses.
     step: f64,
-    /// The footprint's inscribed radius (for the obstacle heuristic).
-    inscribed: f64,
+    /// The grid the estimate around the obstacles is computed on.
+    heuristic: HeuristicGrid,
     /// The cheapest price of a metre on the map.
     least_price: f64,
 }
@@ -126,7 +126,7 @@ impl<'m> HybridAStar<'m> {
             motions,
             checker: FootprintChecker::new(footprint, margin),
             step,
-            inscribed,
+            heuristic: HeuristicGrid::new(map, inscribed)?,
             least_price: map.least_price(),
         })
     }
@@ -166,7 +166,12 @@ impl<'m> HybridAStar<'m> {
         }
         let (start_m, goal_m) = (self.map.to_map(start), self.map.to_map(goal));
         let heuristic_clock = Instant::now();
-        let obstacles = ObstacleHeuristic::new(self.map, point(&goal_m), self.inscribed)?;
+        // The goal is on the map: its footprint was checked there.
+        let goal_cell = self
+            .map
+            .cell_index(point(&goal_m))
+            .ok_or(CarError::InCollision { which: "goal", pose: as_array(goal) })?;
+        let obstacles = ObstacleHeuristic::new(&self.heuristic, goal_cell);
         stats.heuristic_time = heuristic_clock.elapsed();
         let mut search = Run {
             planner: self,

@@ -9,7 +9,7 @@
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::grid::Grid;
 use trailmark_core::world::PolygonWorld;
-use trailmark_map::{Costmap, LETHAL, MAX_NON_OBSTACLE, MapError, MapFrame, TravelCost, squared_distances};
+use trailmark_map::{Costmap, LETHAL, MAX_NON_OBSTACLE, MapFrame, TravelCost, squared_distances};
 
 use crate::error::CarError;
 use crate::raster::Cells;
@@ -208,12 +208,5 @@ impl CarMap {
     /// The cheapest price of a metre anywhere off the obstacles (1 on a map of free cells).
     pub(crate) fn least_price(&self) -> f64 {
         self.price.iter().copied().filter(|p| p.is_finite()).fold(f64::INFINITY, f64::min)
-    }
-
-    /// The grid of the map's prices, obstacles and the cells `blocked` names blocked.
-    pub(crate) fn grid_with(&self, blocked: impl Fn(usize) -> bool) -> Result<Grid, CarError> {
-        let costs =
-            (0..self.price.len()).map(|i| if blocked(i) { f64::INFINITY } else { self.price[i] }).collect();
-        Ok(Grid::from_costs(self.width, self.height, costs).map_err(MapError::from)?)
     }
 }

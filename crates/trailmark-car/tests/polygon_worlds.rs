@@ -9,6 +9,8 @@ use trailmark_core::footprint::Footprint;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::termination::Termination;
 use trailmark_core::world::{Bounds, Polygon, PolygonWorld};
+use trailmark_sample::space::ReedsShepp;
+use trailmark_sample::{FootprintValidity, KdNearest, Planner, Problem, RrtConnect};
 
 /// A 1 m x 0.6 m car, its reference point 0.2 m from the back.
 const CAR: [[f64; 2]; 4] = [[-0.2, -0.3], [0.8, -0.3], [0.8, 0.3], [-0.2, 0.3]];
@@ -137,6 +139,56 @@ proptest! {
             }
             Err(CarError::NoPath { .. }) => {}
             Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+}
+
+fn car() -> Footprint {
+    Footprint::Polygon(Polygon::new(CAR.iter().map(|c| Point::new(c[0], c[1])).collect()).unwrap())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, max_global_rejects: 100_000, ..ProptestConfig::default() })]
+
+    /// The exact polygon check of the world's checker agrees with the test written here, at
+    /// random poses (touching, where the two differ, has probability zero).
+    #[test]
+    fn the_checker_places_the_car_as_the_exact_test_does((world, _, _) in world(), seed in any::<u64>()) {
+        let checker = world.checker();
+        let mut state = seed | 1;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..200 {
+            let pose = Pose::new(nalgebra::Vector2::new(next() * SIZE.0, next() * SIZE.1), next() * 6.3);
+            let corners: Vec<Point> = CAR.iter().map(|c| pose * Point::new(c[0], c[1])).collect();
+            prop_assert_eq!(checker.polygon_is_free(&corners), car_free(&world, &pose), "{:?}", pose);
+        }
+    }
+
+    /// RRT-Connect in the Reeds-Shepp space with the car's rectangle: every pose of every path,
+    /// every 0.01 along its curves, keeps the car off the polygons by the exact test here.
+    #[test]
+    fn sampling_planners_keep_the_rectangle_off_the_polygons((world, e, _) in world()) {
+        let space = ReedsShepp::new(world.bounds(), TURNING_RADIUS).unwrap();
+        let validity = FootprintValidity::new(&world, &car(), &space, RESOLUTION / 2.0).unwrap();
+        let tau = std::f64::consts::TAU;
+        let start = Pose::new(nalgebra::Vector2::new(e[0] * SIZE.0, e[1] * SIZE.1), e[2] * tau);
+        let goal = Pose::new(nalgebra::Vector2::new(e[3] * SIZE.0, e[4] * SIZE.1), e[5] * tau);
+        prop_assume!(car_free(&world, &start) && car_free(&world, &goal));
+        let problem = Problem::new(&space, &validity, start, goal);
+        let nearest = KdNearest::<ReedsShepp, 2>::new(&space).unwrap();
+        let plan = RrtConnect::new(nearest).with_seed(e[5].to_bits()).solve(&problem, &Termination::iterations(3000)).unwrap();
+        if let Some(path) = plan.path() {
+            prop_assert!(path.first() == Some(&start) && path.last() == Some(&goal));
+            for m in path.windows(2) {
+                for pose in space.path(&m[0], &m[1]).sample(0.01).unwrap() {
+                    prop_assert!(car_free(&world, &pose), "{:?} hits", pose);
+                }
+            }
         }
     }
 }

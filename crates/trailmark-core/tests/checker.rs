@@ -88,3 +88,28 @@ proptest! {
         prop_assert_eq!(checker.segment_is_free(a, b), reference_segment_is_free(world, a, b));
     }
 }
+
+/// A polygon robot: touching is allowed, overlapping is not, whichever way it overlaps (an edge
+/// crossing, an obstacle wholly inside it, it wholly inside an obstacle, or lying exactly on an
+/// obstacle with no edge crossing), and it must stay in the bounds.
+#[test]
+fn a_polygon_robot_is_free_only_apart_from_every_obstacle() {
+    use trailmark_core::world::Bounds;
+    let square = |x: f64, y: f64, s: f64| {
+        vec![Point::new(x, y), Point::new(x + s, y), Point::new(x + s, y + s), Point::new(x, y + s)]
+    };
+    let bounds = Bounds::new(0.0, 0.0, 20.0, 20.0).unwrap();
+    let world = PolygonWorld::new(bounds, vec![square(5.0, 5.0, 2.0)], 0.0).unwrap();
+    let checker = world.checker();
+    assert!(checker.polygon_is_free(&square(1.0, 1.0, 2.0)));
+    assert!(checker.polygon_is_free(&square(3.0, 5.0, 2.0)), "touching along a side");
+    assert!(!checker.polygon_is_free(&square(4.0, 4.0, 2.0)), "edges crossing");
+    assert!(!checker.polygon_is_free(&square(4.0, 4.0, 4.0)), "the obstacle wholly inside");
+    assert!(!checker.polygon_is_free(&square(5.5, 5.5, 1.0)), "wholly inside the obstacle");
+    assert!(!checker.polygon_is_free(&square(5.0, 5.0, 2.0)), "exactly on the obstacle");
+    assert!(!checker.polygon_is_free(&square(19.0, 1.0, 2.0)), "past the bounds");
+    // Grown by the world's radius.
+    let grown = PolygonWorld::new(bounds, vec![square(5.0, 5.0, 2.0)], 0.5).unwrap().checker();
+    assert!(!grown.polygon_is_free(&square(2.7, 5.0, 2.0)));
+    assert!(grown.polygon_is_free(&square(2.4, 5.0, 2.0)));
+}

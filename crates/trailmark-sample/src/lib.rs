@@ -109,4 +109,4 @@ pub use simplify::shortcut;
 pub use space::{Dubins, R2, ReedsShepp, Rn, Se2, SpaceError, StateSpace, UnitCube};
 #[allow(deprecated)]
 pub use termination::{Condition, Progress, Termination};
-pub use validity::{Sampled, Validity};
+pub use validity::{FootprintValidity, Sampled, Validity};

@@ -7,7 +7,7 @@ use parry2d_f64::partitioning::{Bvh, BvhBuildStrategy};
 use crate::curve::Bezier;
 use crate::dubins::{DubinsPath, Piece};
 use crate::geometry::Point;
-use crate::predicates::{on_segment, orient};
+use crate::predicates::{on_segment, orient, winding_number};
 use crate::reeds_shepp::ReedsSheppPath;
 
 use super::PolygonWorld;
@@ -86,6 +86,36 @@ impl CollisionChecker {
                 !(o.contains_strictly(a) || o.contains_strictly(b) || segment_enters(o, a, b))
             }
         })
+    }
+
+    /// Whether a polygon robot whose outline has the corners `outline` (a simple polygon, in
+    /// order, as [`Footprint::corners_at`](crate::footprint::Footprint::corners_at) places it)
+    /// is collision-free, its outline grown by the world's robot radius: every edge free as
+    /// [`segment_is_free`](Self::segment_is_free) tests it (its ends in the bounds, no obstacle
+    /// crossed or nearer than the radius), no obstacle vertex strictly inside the outline (an
+    /// obstacle wholly inside crosses no edge), and the outline's centroid, when inside it, not
+    /// inside an obstacle (an outline lying exactly on an obstacle's boundary crosses nothing
+    /// either). Touching is allowed, as for the disc. Exact; fewer than three corners are tested
+    /// as their segment or point.
+    pub fn polygon_is_free(&self, outline: &[Point]) -> bool {
+        let n = outline.len();
+        if n < 3 {
+            return self.first_blocked_segment(outline).is_none() && n > 0;
+        }
+        if !(0..n).all(|k| self.segment_is_free(outline[k], outline[(k + 1) % n])) {
+            return false;
+        }
+        let edges = || (0..n).map(|k| (outline[k], outline[(k + 1) % n]));
+        let inside = |p: Point| winding_number(p, edges()).is_some_and(|w| w != 0);
+        let (mut min, mut max) = (outline[0], outline[0]);
+        for p in outline {
+            min = Point::new(min.x.min(p.x), min.y.min(p.y));
+            max = Point::new(max.x.max(p.x), max.y.max(p.y));
+        }
+        let centroid =
+            Point::from(outline.iter().map(|p| p.coords).sum::<nalgebra::Vector2<f64>>() / n as f64);
+        (!inside(centroid) || self.point_is_free(centroid))
+            && self.all_near(min, max, |o| o.vertices().iter().all(|&v| !inside(v)))
     }
 
     /// Whether the robot moving along the circular arc with `center`, `radius`, starting at

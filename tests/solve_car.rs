@@ -166,6 +166,20 @@ fn a_car_turns_around_in_a_grid_world() {
 }
 
 #[test]
+fn a_start_at_the_goal_is_a_path_of_one_pose() {
+    let problem: ProblemSpec = serde_json::from_str(
+        r#"{"world": {"grid": {"rows": ["........"]}}, "start": [4.8, 0.6, 2.35], "goal": [4.8, 0.6, 2.35],
+            "planner": {"name": "hybrid_astar", "turning_radius": 1.2}}"#,
+    )
+    .unwrap();
+    let result = solve(&problem, EXAMPLES).unwrap();
+    assert_eq!(result.status, Status::Solved);
+    assert_eq!(result.path, vec![Waypoint::Point(vec![4.8, 0.6, 2.35])]);
+    let car = result.stats.car.expect("the car's record");
+    assert!(car.length == 0.0 && car.length.is_sign_positive() && car.cusps.is_empty());
+}
+
+#[test]
 fn a_car_parks_between_polygons() {
     // Two parked cars 2.4 m apart along the bottom of a 12 x 8 lot; the car backs in between
     // them, facing out.

@@ -160,9 +160,11 @@ pub(super) fn solve_car(
     let as_waypoint = |p: &Pose| Waypoint::Point(vec![p.translation.x, p.translation.y, p.rotation.angle()]);
     let (waypoints, record) = match &path {
         Some(path) => {
+            // The start of every stretch and the end; the start alone when it is the goal.
             let mut poses: Vec<Pose> = path.stretches.iter().map(|s| s.start).collect();
-            poses.extend(path.end());
-            let reverse = path.stretches.iter().filter(|s| s.gear == Gear::Reverse).map(|s| s.length).sum();
+            poses.push(path.end().unwrap_or(start));
+            let reverse = 0.0
+                + path.stretches.iter().filter(|s| s.gear == Gear::Reverse).map(|s| s.length).sum::<f64>();
             let cusps =
                 path.cusps().iter().map(|p| [p.translation.x, p.translation.y, p.rotation.angle()]).collect();
             let record = CarRecord { length: path.length(), reverse_length: reverse, cusps };

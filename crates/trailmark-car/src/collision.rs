@@ -91,6 +91,12 @@ fn disc_cover(hull: &[Point]) -> Vec<(Point, f64)> {
 /// Whether no obstacle cell and no cell off the map lies within `r` of `p`.
 fn disc_is_free(map: &CarMap, p: Point, r: f64) -> bool {
     let res = map.resolution();
+    // Off the map (or not finite): refused before any cell is counted, so that no cell index
+    // overflows.
+    let (w, h) = (map.size().0 as f64 * res, map.size().1 as f64 * res);
+    if !(p.x - r >= 0.0 && p.y - r >= 0.0 && p.x + r < w && p.y + r < h) {
+        return false;
+    }
     let (i0, i1) = (((p.x - r) / res).floor() as i64, ((p.x + r) / res).floor() as i64);
     let (j0, j1) = (((p.y - r) / res).floor() as i64, ((p.y + r) / res).floor() as i64);
     for j in j0..=j1 {
@@ -115,6 +121,11 @@ fn disc_is_free(map: &CarMap, p: Point, r: f64) -> bool {
 /// for each row of cells, the span of x the polygon covers within the row's strip.
 fn convex_is_free(map: &CarMap, v: &[Point]) -> bool {
     let res = map.resolution();
+    // A corner off the map (or not finite) touches a cell off it.
+    let (w, h) = (map.size().0 as f64 * res, map.size().1 as f64 * res);
+    if !v.iter().all(|p| p.x >= 0.0 && p.y >= 0.0 && p.x < w && p.y < h) {
+        return false;
+    }
     let (ymin, ymax) =
         v.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
     if !(ymin.is_finite() && ymax.is_finite()) {

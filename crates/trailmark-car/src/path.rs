@@ -42,7 +42,8 @@ pub struct CarPath {
 impl CarPath {
     /// The length driven, forward and in reverse.
     pub fn length(&self) -> f64 {
-        self.stretches.iter().map(|s| s.length).sum()
+        // An empty sum of floats is -0; a path of no stretches has length 0.
+        0.0 + self.stretches.iter().map(|s| s.length).sum::<f64>()
     }
 
     /// The start pose (`None` for an empty path).

@@ -89,6 +89,23 @@ fn poses_with_non_finite_values_or_in_collision_are_errors_and_the_planner_goes_
     assert!(matches!(planner.plan(&on_wall, &ok, &never), Err(CarError::InCollision { which: "start", .. })));
     let off_map = pose(-1.0, 1.0, 0.0);
     assert!(matches!(planner.plan(&ok, &off_map, &never), Err(CarError::InCollision { which: "goal", .. })));
+    // Far off the map, where a cell index would overflow; a polygon footprint too.
+    let car = Footprint::Polygon(
+        Polygon::new(vec![
+            Point::new(-0.1, -0.1),
+            Point::new(0.3, -0.1),
+            Point::new(0.3, 0.1),
+            Point::new(-0.1, 0.1),
+        ])
+        .unwrap(),
+    );
+    let boxy = HybridAStar::new(&map, &car, HybridSettings::default()).unwrap();
+    for far in [pose(1e308, -4.9e237, 3.9), pose(-1e300, 1e300, 0.0), pose(9e18, 9e18, 1.0)] {
+        for p in [&planner, &boxy] {
+            assert!(matches!(p.plan(&far, &ok, &never), Err(CarError::InCollision { which: "start", .. })));
+            assert!(!p.is_free(&far));
+        }
+    }
     // Still usable.
     let plan = planner.plan(&ok, &pose(5.0, 3.0, 1.0), &never).unwrap();
     assert!(plan.path.length() > 4.0);

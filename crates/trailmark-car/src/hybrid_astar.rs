@@ -258,7 +258,7 @@ impl<'m> HybridAStar<'m> {
     }
 
     /// The shortest curve the car can drive from `from` to `to` (map coordinates):
-    /// Reeds-Shepp with reverse, Dubins without; its pieces, empty ones left out.
+    /// Reeds-Shepp with reverse, Dubins without; its pieces, those of no length left out.
     pub(crate) fn curve(&self, from: &Pose, to: &Pose) -> Option<Shot> {
         let r = self.settings.turning_radius;
         let pieces: Shot = if self.settings.reverse {
@@ -273,7 +273,9 @@ impl<'m> HybridAStar<'m> {
                 .map(|(t, l)| (t, Gear::Forward, l))
                 .collect()
         };
-        Some(pieces.into_iter().filter(|&(_, _, length)| length > 0.0).collect())
+        // Pieces of a billionth of the radius are rounding, not motions: kept, they would be
+        // cusps of no length.
+        Some(pieces.into_iter().filter(|&(_, _, length)| length > 1e-9 * r).collect())
     }
 
     /// The cost of driving `pieces` from `from` after a motion in gear `before`, if the

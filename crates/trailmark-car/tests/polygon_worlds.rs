@@ -117,6 +117,8 @@ proptest! {
                 let end = path.end().unwrap_or(start);
                 prop_assert!((end.translation.vector - goal.translation.vector).norm() < 1e-6);
                 prop_assert!(heading_gap(end.rotation.angle(), goal.rotation.angle()) < 1e-6);
+                // No stretch of no length (a cusp of no motion).
+                prop_assert!(path.stretches.iter().all(|s| s.length > 1e-9 * TURNING_RADIUS));
                 for pair in path.stretches.windows(2) {
                     let joint = pair[0].pose_at(pair[0].length, TURNING_RADIUS);
                     prop_assert!((joint.translation.vector - pair[1].start.translation.vector).norm() < 1e-6);

@@ -12,6 +12,7 @@ use trailmark::graph::trapezoid::Trapezoids;
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::movingai::{self, Scenario};
 use trailmark::prelude::*;
+use trailmark::search::Jps;
 
 use crate::reference::tolerance;
 
@@ -22,6 +23,8 @@ pub enum VerifyAlgo {
     Astar,
     /// Dijkstra's algorithm.
     Dijkstra,
+    /// Jump point search.
+    Jps,
 }
 
 /// One map and its scenario file.
@@ -86,9 +89,17 @@ fn check(job: &ScenarioFile, algos: &[VerifyAlgo], every: u64) -> MapCheck {
     };
     let graph = GridGraph::new(&grid, Connectivity::Eight);
     let mut search = Search::new();
+    let mut jps = match algos.contains(&VerifyAlgo::Jps).then(|| Jps::new(&grid)).transpose() {
+        Ok(jps) => jps,
+        Err(e) => {
+            out.failed += 1;
+            out.messages.push(format!("jps: {e}"));
+            return out;
+        }
+    };
     for (i, scenario) in scenarios.iter().enumerate().filter(|(i, _)| (*i as u64).is_multiple_of(every)) {
         for &algo in algos {
-            match solve_one(&graph, &grid, &mut search, scenario, algo) {
+            match solve_one(&graph, &grid, &mut search, jps.as_mut(), scenario, algo) {
                 Ok(()) => out.passed += 1,
                 Err(why) => {
                     out.failed += 1;
@@ -105,6 +116,7 @@ fn solve_one(
     graph: &GridGraph,
     grid: &Grid,
     search: &mut Search,
+    jps: Option<&mut Jps>,
     s: &Scenario,
     algo: VerifyAlgo,
 ) -> Result<(), String> {
@@ -122,9 +134,24 @@ fn solve_one(
             search.astar(graph, s.start, s.goal, graph.heuristic(GridHeuristic::Octile, s.goal))
         }
         VerifyAlgo::Dijkstra => search.dijkstra(graph, s.start, s.goal),
+        VerifyAlgo::Jps => jps.ok_or("no jump point search for this map")?.search(s.start, s.goal),
     }
     .map_err(|e| e.to_string())?;
-    let cost = found.cost().ok_or_else(|| format!("{} -> {}: no path found", s.start, s.goal))?;
+    let path = found.path.as_ref().ok_or_else(|| format!("{} -> {}: no path found", s.start, s.goal))?;
+    let cost = path.cost;
+    // The path itself: moves of the grid graph whose costs add up to the cost reported.
+    let mut sum = 0.0;
+    for pair in path.nodes.windows(2) {
+        sum += graph.edge_cost(pair[0], pair[1]).ok_or_else(|| {
+            format!("{} -> {}: the path's step {} -> {} is no move", s.start, s.goal, pair[0], pair[1])
+        })?;
+    }
+    if (sum - cost).abs() > tolerance(cost) {
+        return Err(format!(
+            "{} -> {}: the path's moves add up to {sum}, its cost is {cost}",
+            s.start, s.goal
+        ));
+    }
     let diff = (cost - s.optimal_length).abs();
     if diff > tolerance(s.optimal_length) {
         return Err(format!("{} -> {}: cost {cost:.6}, published {}", s.start, s.goal, s.optimal_length));

@@ -94,6 +94,19 @@ pub enum SearchError<N: Debug> {
         /// The first node whose cost or priority overflowed.
         node: N,
     },
+    /// A passable cell whose cost differs from the others', on a search that needs every cell to
+    /// cost the same (jump point search).
+    #[error(
+        "the cell {cell:?} costs {cost:?} where the others cost {expected:?}; jump point search needs uniform costs"
+    )]
+    NonUniformCost {
+        /// The first cell found with another cost.
+        cell: N,
+        /// Its cost.
+        cost: f64,
+        /// The cost of the cells before it.
+        expected: f64,
+    },
     /// The graph has more nodes than a search can number.
     #[error("the graph has {0} node indices; a search supports at most {max}", max = MAX_NODES)]
     TooManyNodes(usize),
@@ -121,6 +134,9 @@ impl<N: Debug> SearchError<N> {
             SearchError::InvalidEpsilon { initial, step } => SearchError::InvalidEpsilon { initial, step },
             SearchError::CostOverflow { node } => SearchError::CostOverflow { node: f(node) },
             SearchError::TooManyNodes(n) => SearchError::TooManyNodes(n),
+            SearchError::NonUniformCost { cell, cost, expected } => {
+                SearchError::NonUniformCost { cell: f(cell), cost, expected }
+            }
         }
     }
 }

@@ -4,7 +4,7 @@
 //! - **one-shot searches** answer one query from scratch: [`bfs`], [`dfs`], [`dijkstra`],
 //!   [`astar`], [`weighted_astar`] and the any-angle [`theta_star`], each a function and a method of the reusable [`Search`]
 //!   workspace, which keeps its per-node state in dense vectors across queries, returning a
-//!   [`SearchResult`];
+//!   [`SearchResult`]; and on uniform-cost grids, jump point search ([`Jps`], [`jps`]);
 //! - **anytime searches** return an inflated solution fast and improve it while their
 //!   [`Termination`](trailmark_core::termination::Termination) allows: [`ara_star`] and
 //!   [`AdStar`], with an [`EpsilonSchedule`], reporting every [`Iteration`] in an
@@ -120,6 +120,7 @@ pub use index::{Dense, Hashed, NodeIndex};
 pub use limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_NODES, MAX_WEIGHT};
 pub use one_shot::SearchResult;
 pub use one_shot::astar::{astar, dijkstra, weighted_astar};
+pub use one_shot::jps::{Jps, jps};
 pub use one_shot::theta_star::theta_star;
 pub use one_shot::uninformed::{bfs, dfs};
 pub use one_shot::workspace::Search;

@@ -1,4 +1,5 @@
-//! One-shot searches: breadth-first, depth-first, Dijkstra, A*, weighted A* and Theta*, each a function
+//! One-shot searches: breadth-first, depth-first, Dijkstra, A*, weighted A*, Theta* and jump point
+//! search ([`Jps`](crate::Jps), on uniform-cost grids), each a function
 //! and a method of the reusable [`Search`](crate::Search) workspace, answering one query from
 //! scratch with a [`SearchResult`].
 //!
@@ -13,6 +14,7 @@ use crate::stats::SearchStats;
 
 pub(crate) mod astar;
 pub(crate) mod edges;
+pub(crate) mod jps;
 pub(crate) mod key;
 pub(crate) mod theta_star;
 pub(crate) mod uninformed;

@@ -212,34 +212,31 @@ impl<'m> HybridAStar<'m> {
     /// the mean price of a metre over the checked poses, or `None` on a collision.
     pub(crate) fn drive(&self, stretch: &Stretch, stats: &mut HybridStats) -> Option<(Pose, f64)> {
         let n = (stretch.length / self.step).ceil().max(1.0) as usize;
-        let mut price = 0.0;
-        let mut end = stretch.start;
-        for i in 1..=n {
-            end = stretch.pose_at(stretch.length * i as f64 / n as f64, self.settings.turning_radius);
-            stats.footprint_checks += 1;
-            if !self.checker.is_free(self.map, &end, &mut stats.footprint_rasters) {
-                return None;
-            }
-            price += self.map.price(self.map.cell_index(point(&end))?);
-        }
-        Some((end, price / n as f64))
+        let r = self.settings.turning_radius;
+        self.check_poses((1..=n).map(|i| stretch.pose_at(stretch.length * i as f64 / n as f64, r)), stats)
     }
 
     /// Drives motion `k` from `start` (map coordinates) as [`drive`](Self::drive) does, its
     /// checked poses composed from the motion's precomputed ones.
     fn drive_motion(&self, start: &Pose, k: usize, stats: &mut HybridStats) -> Option<(Pose, f64)> {
-        let checks = &self.motions.checks[k];
-        let mut price = 0.0;
-        let mut end = *start;
-        for offset in checks {
-            end = start * offset;
+        self.check_poses(self.motions.checks[k].iter().map(|offset| start * offset), stats)
+    }
+
+    /// Checks the footprint at each of `poses` in turn: the last pose and the mean price of a
+    /// metre over them, or `None` on a collision (or no pose).
+    #[inline]
+    fn check_poses(&self, poses: impl Iterator<Item = Pose>, stats: &mut HybridStats) -> Option<(Pose, f64)> {
+        let (mut price, mut count, mut end) = (0.0, 0usize, None);
+        for pose in poses {
             stats.footprint_checks += 1;
-            if !self.checker.is_free(self.map, &end, &mut stats.footprint_rasters) {
+            if !self.checker.is_free(self.map, &pose, &mut stats.footprint_rasters) {
                 return None;
             }
-            price += self.map.price(self.map.cell_index(point(&end))?);
+            price += self.map.price(self.map.cell_index(point(&pose))?);
+            count += 1;
+            end = Some(pose);
         }
-        Some((end, price / checks.len() as f64))
+        end.map(|end| (end, price / count as f64))
     }
 
     /// The cost of driving `length` by `motion` at a mean `price` per metre, after a motion in

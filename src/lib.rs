@@ -91,7 +91,7 @@ pub mod prelude {
     #[allow(deprecated)]
     pub use trailmark_search::Budget;
     pub use trailmark_search::{
-        AdStar, DStarLite, EdgeChange, EpsilonSchedule, Jps, LpaStar, Search, SearchError, SearchResult,
-        ara_star, astar, bfs, dfs, dijkstra, jps, weighted_astar,
+        AdStar, DStarLite, EdgeChange, EpsilonSchedule, Jps, JpsPlus, LpaStar, Search, SearchError,
+        SearchResult, ara_star, astar, bfs, dfs, dijkstra, jps, weighted_astar,
     };
 }

@@ -12,7 +12,7 @@ use trailmark::graph::trapezoid::Trapezoids;
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::movingai::{self, Scenario};
 use trailmark::prelude::*;
-use trailmark::search::Jps;
+use trailmark::search::{Jps, JpsPlus};
 
 use crate::reference::tolerance;
 
@@ -25,6 +25,9 @@ pub enum VerifyAlgo {
     Dijkstra,
     /// Jump point search.
     Jps,
+    /// JPS+, its table made once per map.
+    #[value(name = "jps_plus")]
+    JpsPlus,
 }
 
 /// One map and its scenario file.
@@ -89,17 +92,22 @@ fn check(job: &ScenarioFile, algos: &[VerifyAlgo], every: u64) -> MapCheck {
     };
     let graph = GridGraph::new(&grid, Connectivity::Eight);
     let mut search = Search::new();
-    let mut jps = match algos.contains(&VerifyAlgo::Jps).then(|| Jps::new(&grid)).transpose() {
-        Ok(jps) => jps,
+    let rule = CornerCutting::Forbidden;
+    let made = algos.contains(&VerifyAlgo::Jps).then(|| Jps::new(&grid, rule)).transpose().and_then(|jps| {
+        Ok((jps, algos.contains(&VerifyAlgo::JpsPlus).then(|| JpsPlus::new(&grid, rule)).transpose()?))
+    });
+    let (mut jps, mut plus) = match made {
+        Ok(made) => made,
         Err(e) => {
             out.failed += 1;
-            out.messages.push(format!("jps: {e}"));
+            out.messages.push(format!("jump point search: {e}"));
             return out;
         }
     };
     for (i, scenario) in scenarios.iter().enumerate().filter(|(i, _)| (*i as u64).is_multiple_of(every)) {
         for &algo in algos {
-            match solve_one(&graph, &grid, &mut search, jps.as_mut(), scenario, algo) {
+            let jumps = Jumps { jps: jps.as_mut(), plus: plus.as_mut() };
+            match solve_one(&graph, &grid, &mut search, jumps, scenario, algo) {
                 Ok(()) => out.passed += 1,
                 Err(why) => {
                     out.failed += 1;
@@ -112,11 +120,17 @@ fn check(job: &ScenarioFile, algos: &[VerifyAlgo], every: u64) -> MapCheck {
     out
 }
 
+/// The jump point searches made for a map, if asked for.
+struct Jumps<'a> {
+    jps: Option<&'a mut Jps>,
+    plus: Option<&'a mut JpsPlus>,
+}
+
 fn solve_one(
     graph: &GridGraph,
     grid: &Grid,
     search: &mut Search,
-    jps: Option<&mut Jps>,
+    jumps: Jumps<'_>,
     s: &Scenario,
     algo: VerifyAlgo,
 ) -> Result<(), String> {
@@ -134,7 +148,8 @@ fn solve_one(
             search.astar(graph, s.start, s.goal, graph.heuristic(GridHeuristic::Octile, s.goal))
         }
         VerifyAlgo::Dijkstra => search.dijkstra(graph, s.start, s.goal),
-        VerifyAlgo::Jps => jps.ok_or("no jump point search for this map")?.search(s.start, s.goal),
+        VerifyAlgo::Jps => jumps.jps.ok_or("no jump point search for this map")?.search(s.start, s.goal),
+        VerifyAlgo::JpsPlus => jumps.plus.ok_or("no JPS+ table for this map")?.search(s.start, s.goal),
     }
     .map_err(|e| e.to_string())?;
     let path = found.path.as_ref().ok_or_else(|| format!("{} -> {}: no path found", s.start, s.goal))?;
@@ -203,7 +218,11 @@ pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
         passed += o.passed;
         failed += o.failed;
     }
-    let algos: Vec<String> = algos.iter().map(|a| format!("{a:?}").to_lowercase()).collect();
+    let algos: Vec<String> = algos
+        .iter()
+        .filter_map(clap::ValueEnum::to_possible_value)
+        .map(|v| v.get_name().to_string())
+        .collect();
     outln!(
         "checked every {} scenario(s) with {} in {:.1}s",
         if every == 1 { "1".to_string() } else { format!("{every}th") },

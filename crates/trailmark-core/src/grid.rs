@@ -69,6 +69,20 @@ impl From<Cell> for [u32; 2] {
     }
 }
 
+/// When a diagonal move between two cells is allowed, given their two common orthogonal
+/// neighbours (the "corners").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CornerCutting {
+    /// Both corners must be passable: the MovingAI benchmark rule, and the default.
+    #[default]
+    Forbidden,
+    /// At least one corner must be passable: the move may clip one blocked corner.
+    Allowed,
+    /// Only the target matters: the move may pass between two blocked corners.
+    Squeeze,
+}
+
 /// Which neighbours of a grid cell are adjacent to it.
 ///
 /// In JSON a connectivity is the number `4` or `8`.

@@ -51,7 +51,7 @@ pub use cost::Cost;
 #[doc(hidden)]
 pub use graph::{EdgeChange, Graph, IndexedGraph, Lines, Predecessors, Successors};
 #[doc(hidden)]
-pub use grid::{Cell, Connectivity, Grid, GridError, GridHeuristic};
+pub use grid::{Cell, Connectivity, CornerCutting, Grid, GridError, GridHeuristic};
 #[doc(hidden)]
 pub use path::Path;
 #[doc(hidden)]

@@ -26,25 +26,10 @@
 //! # Ok::<(), trailmark_core::GridError>(())
 //! ```
 
-use serde::{Deserialize, Serialize};
-
 use trailmark_core::cost::{Cost, SQRT_2};
 use trailmark_core::graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
+pub use trailmark_core::grid::CornerCutting;
 use trailmark_core::grid::{Cell, Connectivity, Grid, GridError, GridHeuristic, is_cell_cost};
-
-/// When a diagonal move between two cells is allowed, given their two common orthogonal
-/// neighbours (the "corners").
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum CornerCutting {
-    /// Both corners must be passable: the MovingAI benchmark rule, and the default.
-    #[default]
-    Forbidden,
-    /// At least one corner must be passable: the move may clip one blocked corner.
-    Allowed,
-    /// Only the target matters: the move may pass between two blocked corners.
-    Squeeze,
-}
 
 /// One of the eight moves: its offset in the padded array is `dy * stride + dx`.
 #[derive(Clone, Copy)]

@@ -110,6 +110,15 @@ pub enum SearchError<N: Debug> {
     /// The graph has more nodes than a search can number.
     #[error("the graph has {0} node indices; a search supports at most {max}", max = MAX_NODES)]
     TooManyNodes(usize),
+    /// The grid is too large for a table made per cell (JPS+: at most 2^24 cells, and 32,766
+    /// a side).
+    #[error("a {width} x {height} grid is too large for a JPS+ table (at most 2^24 cells, 32766 a side)")]
+    TableTooLarge {
+        /// The grid's width.
+        width: u32,
+        /// The grid's height.
+        height: u32,
+    },
 }
 
 impl<N: Debug> SearchError<N> {
@@ -134,6 +143,7 @@ impl<N: Debug> SearchError<N> {
             SearchError::InvalidEpsilon { initial, step } => SearchError::InvalidEpsilon { initial, step },
             SearchError::CostOverflow { node } => SearchError::CostOverflow { node: f(node) },
             SearchError::TooManyNodes(n) => SearchError::TooManyNodes(n),
+            SearchError::TableTooLarge { width, height } => SearchError::TableTooLarge { width, height },
             SearchError::NonUniformCost { cell, cost, expected } => {
                 SearchError::NonUniformCost { cell: f(cell), cost, expected }
             }

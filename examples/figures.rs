@@ -84,6 +84,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .path(&path.nodes);
         write(&format!("search-{name}.svg"), svg.to_svg())?;
     }
+    // Jump point search on the same query: only the cells where a path may turn are expanded.
+    let mut jps = Jps::new(&grid, CornerCutting::Forbidden)?;
+    let found = jps.search(start, goal)?;
+    let path = found.path.ok_or("no path")?;
+    let title = format!("Jump point search: {} expansions, cost {:.2}", found.stats.expansions, path.cost);
+    println!("{title}");
+    let svg = GridSvg::new(&grid).cell_size(5.0).title(title).explored(jps.expanded()).path(&path.nodes);
+    write("search-jps.svg", svg.to_svg())?;
 
     // Navigation in unknown terrain: a robot with a free-space prior and a sensor radius of 3,
     // driven by D* Lite, with A* from scratch planning along the same trajectory for comparison.

@@ -26,6 +26,8 @@ fn planners() -> Vec<PlannerSpec> {
         PlannerSpec::DStarLite { heuristic: None },
         PlannerSpec::AdaptiveAStar { heuristic: None },
         PlannerSpec::MpgaaStar { heuristic: None },
+        PlannerSpec::Jps {},
+        PlannerSpec::JpsPlus {},
         anytime(false, None, None),
         anytime(true, None, None),
     ]
@@ -133,6 +135,25 @@ fn bad_input_gives_typed_errors() {
     let negative = with(&|w| w.costs = Some(vec![vec![1.0; 4], vec![1.0; 4], vec![1.0, -2.0, 1.0, 1.0]]));
     assert!(matches!(err(negative), SolveError::Grid(_)));
 
+    // Jump point search: 8-connected grids of uniform cost only.
+    for jumps in [PlannerSpec::Jps {}, PlannerSpec::JpsPlus {}] {
+        let mut four = problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], jumps.clone());
+        let WorldSpec::Grid(world) = &mut four.world else { unreachable!() };
+        world.connectivity = trailmark::prelude::Connectivity::Four;
+        assert!(matches!(
+            err(four),
+            SolveError::Document(DocumentError::NeedsEightConnectedGrid { planner }) if planner == jumps.name()
+        ));
+        let mut costly = problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], jumps.clone());
+        let WorldSpec::Grid(world) = &mut costly.world else { unreachable!() };
+        world.costs = Some(vec![vec![1.0; 4], vec![1.0; 4], vec![1.0, 2.0, 1.0, 1.0]]);
+        assert!(matches!(
+            err(costly),
+            SolveError::Search(trailmark::search::SearchError::NonUniformCost { cell: Waypoint::Cell(c), .. })
+                if c == [1, 2].into()
+        ));
+    }
+
     for backward in [false, true] {
         let low = anytime(backward, Some(0.5), None);
         assert!(matches!(err(problem(&ROWS, vec![0.0, 0.0], vec![3.0, 0.0], low)), SolveError::Search(_)));
@@ -225,7 +246,7 @@ proptest! {
             prop_oneof![Just(f64::NAN), Just(-1.0), Just(0.0), 0.1f64..5.0], 0..6), 0..6)),
         start in prop::collection::vec(prop_oneof![Just(f64::NAN), -2.0f64..8.0, 0.0f64..8.0], 0..4),
         goal in prop::collection::vec(0u32..8, 2).prop_map(|v| v.iter().map(|&x| f64::from(x)).collect::<Vec<_>>()),
-        which in 0usize..9,
+        which in 0usize..11,
         weight in prop_oneof![Just(f64::NAN), -1.0f64..4.0],
         eight in any::<bool>(),
         cut in any::<bool>(),
@@ -239,6 +260,8 @@ proptest! {
             5 => PlannerSpec::LpaStar { heuristic: None },
             6 => PlannerSpec::DStarLite { heuristic: None },
             7 => anytime(false, Some(weight), Some(0.5)),
+            8 => PlannerSpec::Jps {},
+            9 => PlannerSpec::JpsPlus {},
             _ => anytime(true, Some(weight), Some(0.5)),
         };
         let world = GridSpec {

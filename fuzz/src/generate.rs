@@ -49,6 +49,8 @@ pub enum PlannerName {
     ThetaStar,
     AdaptiveAstar,
     MpgaaStar,
+    Jps,
+    JpsPlus,
 }
 
 impl PlannerName {
@@ -69,6 +71,8 @@ impl PlannerName {
             PlannerName::ThetaStar => "theta_star",
             PlannerName::AdaptiveAstar => "adaptive_astar",
             PlannerName::MpgaaStar => "mpgaa_star",
+            PlannerName::Jps => "jps",
+            PlannerName::JpsPlus => "jps_plus",
         }
     }
 
@@ -532,7 +536,12 @@ fn planner_spec(u: &mut Unstructured, planner: PlannerName, grid: bool) -> Resul
     let mut spec = Map::new();
     spec.insert("name".into(), json!(planner.name()));
     match planner {
-        PlannerName::Bfs | PlannerName::Dfs | PlannerName::Dijkstra | PlannerName::ThetaStar => {}
+        PlannerName::Bfs
+        | PlannerName::Dfs
+        | PlannerName::Dijkstra
+        | PlannerName::ThetaStar
+        | PlannerName::Jps
+        | PlannerName::JpsPlus => {}
         PlannerName::Astar
         | PlannerName::LpaStar
         | PlannerName::DstarLite

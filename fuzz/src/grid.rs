@@ -303,7 +303,9 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         | PlannerSpec::LpaStar { .. }
         | PlannerSpec::AdaptiveAStar { .. }
         | PlannerSpec::MpgaaStar { .. }
-        | PlannerSpec::DStarLite { .. } => optimal(),
+        | PlannerSpec::DStarLite { .. }
+        | PlannerSpec::Jps {}
+        | PlannerSpec::JpsPlus {} => optimal(),
         PlannerSpec::Bfs {} => {
             let fewest = grid.bfs_moves(start, goal).expect("reachable");
             assert_eq!(cells.len() - 1, fewest, "bfs path of {} moves, fewest {fewest}", cells.len() - 1);

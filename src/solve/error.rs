@@ -269,6 +269,13 @@ pub enum DocumentError {
         /// The planner.
         planner: &'static str,
     },
+    /// A planner made for grids themselves (jump point search) on another world, or on a
+    /// 4-connected grid.
+    #[error("the \"{planner}\" planner searches 8-connected grid worlds (\"connectivity\": 8) only")]
+    NeedsEightConnectedGrid {
+        /// The planner.
+        planner: &'static str,
+    },
     /// A start or goal in metres outside a ROS map.
     #[error("the {which} ({x}, {y}) m lies outside the map")]
     OutsideMap {

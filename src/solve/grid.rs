@@ -42,10 +42,14 @@ pub fn load_grid(world: &GridSpec, base_dir: impl AsRef<Path>) -> Result<Grid, S
     Ok(grid)
 }
 
+/// The rule for diagonal moves of a grid world.
+fn corner_cutting(world: &GridSpec) -> CornerCutting {
+    if world.corner_cutting { CornerCutting::Allowed } else { CornerCutting::Forbidden }
+}
+
 /// The grid graph of a grid world.
 pub fn grid_graph(world: &GridSpec, grid: &Grid) -> GridGraph {
-    let rule = if world.corner_cutting { CornerCutting::Allowed } else { CornerCutting::Forbidden };
-    GridGraph::new(grid, world.connectivity).with_corner_cutting(rule)
+    GridGraph::new(grid, world.connectivity).with_corner_cutting(corner_cutting(world))
 }
 
 fn cell_of(which: &'static str, value: &[f64], grid: &Grid) -> Result<Cell, DocumentError> {
@@ -78,9 +82,15 @@ pub(super) fn solve_grid(
     let grid = load_grid(world, base_dir)?;
     let start = cell_of("start", &problem.start, &grid)?;
     let goal = cell_of("goal", &problem.goal, &grid)?;
-    let graph = grid_graph(world, &grid);
-    let h = graph.heuristic_between(problem.planner.grid_heuristic(world.connectivity)?);
-    let result = problem.planner.search(&graph, (start, goal), h, Waypoint::Cell, Some(&graph))?;
+    let ends = (start, goal);
+    let result = match problem.planner.grid_search(&grid, world.connectivity, corner_cutting(world), ends) {
+        Some(found) => found?,
+        None => {
+            let graph = grid_graph(world, &grid);
+            let h = graph.heuristic_between(problem.planner.grid_heuristic(world.connectivity)?);
+            problem.planner.search(&graph, ends, h, Waypoint::Cell, Some(&graph))?
+        }
+    };
     if let Some(picture) = picture {
         let cells: Vec<Cell> = result
             .path

@@ -1,21 +1,21 @@
 //! The planners of a problem document and how [`solve`](super::solve) runs each one: the
 //! registry. Adding a planner to `solve` touches this file only (and the planner's own crate).
 
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use serde::{Deserialize, Serialize};
 use trailmark_car::HybridSettings;
 use trailmark_core::Cost;
 use trailmark_core::graph::{IndexedGraph, Lines, Predecessors, Successors};
-use trailmark_core::grid::{Connectivity, GridHeuristic};
+use trailmark_core::grid::{Cell, Connectivity, CornerCutting, Grid, GridHeuristic};
 use trailmark_core::smooth::Smoothing;
 use trailmark_core::termination::Termination;
 use trailmark_sample::{
     NearestNeighbors, Planner, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
 };
 use trailmark_search::{
-    AdStar, AdaptiveAStar, DStarLite, EpsilonSchedule, LpaStar, MpgaaStar, RepeatedAStar, Replanner, Search,
-    SearchError, SearchResult, ara_star,
+    AdStar, AdaptiveAStar, DStarLite, EpsilonSchedule, Jps, JpsPlus, LpaStar, MpgaaStar, RepeatedAStar,
+    Replanner, Search, SearchError, SearchResult, ara_star,
 };
 
 use super::error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
@@ -59,6 +59,14 @@ pub enum PlannerSpec {
     /// priced by the cells they cross; the Euclidean heuristic.
     #[serde(rename = "theta_star")]
     ThetaStar {},
+    /// Jump point search: least cost on an 8-connected grid world whose passable cells all cost
+    /// the same, putting on its open list only the cells where a path may turn.
+    #[serde(rename = "jps")]
+    Jps {},
+    /// JPS+: jump point search reading its jumps from a table made for the map first (its time
+    /// is part of the result's time); the same grid worlds and paths as `jps`.
+    #[serde(rename = "jps_plus")]
+    JpsPlus {},
     /// Lifelong Planning A*: the incremental forward search (on a static world, one search).
     #[serde(rename = "lpa_star")]
     LpaStar {
@@ -122,6 +130,8 @@ impl PlannerSpec {
             | PlannerSpec::AStar { .. }
             | PlannerSpec::WeightedAStar { .. }
             | PlannerSpec::ThetaStar {}
+            | PlannerSpec::Jps {}
+            | PlannerSpec::JpsPlus {}
             | PlannerSpec::LpaStar { .. }
             | PlannerSpec::AdaptiveAStar { .. }
             | PlannerSpec::MpgaaStar { .. }
@@ -141,6 +151,8 @@ impl PlannerSpec {
             PlannerSpec::AStar { .. } => "astar",
             PlannerSpec::WeightedAStar { .. } => "weighted_astar",
             PlannerSpec::ThetaStar {} => "theta_star",
+            PlannerSpec::Jps {} => "jps",
+            PlannerSpec::JpsPlus {} => "jps_plus",
             PlannerSpec::LpaStar { .. } => "lpa_star",
             PlannerSpec::AdaptiveAStar { .. } => "adaptive_astar",
             PlannerSpec::MpgaaStar { .. } => "mpgaa_star",
@@ -170,7 +182,11 @@ impl PlannerSpec {
     /// heuristic must be admissible).
     pub(crate) fn heuristic(&self) -> (Option<GridHeuristic>, bool) {
         match self {
-            PlannerSpec::Bfs {} | PlannerSpec::Dfs {} | PlannerSpec::Dijkstra {} => (None, true),
+            PlannerSpec::Bfs {}
+            | PlannerSpec::Dfs {}
+            | PlannerSpec::Dijkstra {}
+            | PlannerSpec::Jps {}
+            | PlannerSpec::JpsPlus {} => (None, true),
             PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)
             | PlannerSpec::RrtStar(_)
@@ -260,6 +276,9 @@ impl PlannerSpec {
                     .and_then(|mut planner| planner.improve(graph, spec.budget()));
                 return Ok(anytime_result_of(&found.map_err(searched)?, waypoint));
             }
+            PlannerSpec::Jps {} | PlannerSpec::JpsPlus {} => {
+                return Err(DocumentError::NeedsEightConnectedGrid { planner: self.name() }.into());
+            }
             PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)
             | PlannerSpec::RrtStar(_)
@@ -268,6 +287,51 @@ impl PlannerSpec {
             }
         };
         Ok(result_of(&found.map_err(searched)?, waypoint))
+    }
+
+    /// Runs this planner on the grid itself where it is made for grids (jump point search: on
+    /// `grid` with `connectivity` and diagonal moves by `rule`, from `start` to `goal`); `None`
+    /// for the planners that search the grid's graph through [`PlannerSpec::search`].
+    pub(super) fn grid_search(
+        &self,
+        grid: &Grid,
+        connectivity: Connectivity,
+        rule: CornerCutting,
+        (start, goal): (Cell, Cell),
+    ) -> Option<Result<SolveResult, SolveError>> {
+        let found = match self {
+            PlannerSpec::Jps {} | PlannerSpec::JpsPlus {} if connectivity != Connectivity::Eight => {
+                return Some(Err(DocumentError::NeedsEightConnectedGrid { planner: self.name() }.into()));
+            }
+            PlannerSpec::Jps {} => Jps::new(grid, rule).and_then(|mut jps| jps.search(start, goal)),
+            PlannerSpec::JpsPlus {} => {
+                let clock = Instant::now();
+                JpsPlus::new(grid, rule).and_then(|mut plus| plus.search(start, goal)).map(|mut found| {
+                    found.stats.elapsed = clock.elapsed();
+                    found
+                })
+            }
+            PlannerSpec::Bfs {}
+            | PlannerSpec::Dfs {}
+            | PlannerSpec::Dijkstra {}
+            | PlannerSpec::AStar { .. }
+            | PlannerSpec::WeightedAStar { .. }
+            | PlannerSpec::ThetaStar {}
+            | PlannerSpec::LpaStar { .. }
+            | PlannerSpec::AdaptiveAStar { .. }
+            | PlannerSpec::MpgaaStar { .. }
+            | PlannerSpec::DStarLite { .. }
+            | PlannerSpec::AraStar(_)
+            | PlannerSpec::AdStar(_)
+            | PlannerSpec::Rrt(_)
+            | PlannerSpec::RrtConnect(_)
+            | PlannerSpec::RrtStar(_)
+            | PlannerSpec::HybridAStar(_) => return None,
+        };
+        Some(match found {
+            Ok(found) => Ok(result_of(&found, Waypoint::Cell)),
+            Err(error) => Err(SolveError::Search(error.map_node(Waypoint::Cell))),
+        })
     }
 
     /// This planner as a [`Replanner`] from `start` to `goal` on `graph` with the heuristic
@@ -310,6 +374,8 @@ impl PlannerSpec {
             | PlannerSpec::Dijkstra {}
             | PlannerSpec::WeightedAStar { .. }
             | PlannerSpec::ThetaStar {}
+            | PlannerSpec::Jps {}
+            | PlannerSpec::JpsPlus {}
             | PlannerSpec::AraStar(_)
             | PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)

@@ -127,10 +127,15 @@ fn one_planner_answers_many_queries_and_the_start_alone_when_it_is_the_goal() {
     let graph = GridGraph::new(&grid, Connectivity::Eight);
     let mut online = Jps::new(&grid, CornerCutting::Forbidden).unwrap();
     let mut plus = JpsPlus::new(&grid, CornerCutting::Forbidden).unwrap();
+    assert!(online.expanded().is_empty() && plus.expanded().is_empty());
     for (a, b) in [((0, 0), (8, 0)), ((8, 2), (0, 0)), ((3, 2), (3, 2)), ((0, 0), (8, 3))] {
         let (a, b) = (Cell::new(a.0, a.1), Cell::new(b.0, b.1));
         let best = dijkstra(&graph, a, b).unwrap();
-        for found in [online.search(a, b).unwrap(), plus.search(a, b).unwrap()] {
+        let found = [online.search(a, b).unwrap(), plus.search(a, b).unwrap()];
+        // The cells each says it expanded are as many as its statistics count.
+        assert_eq!(online.expanded().len() as u64, found[0].stats.expansions);
+        assert_eq!(plus.expanded().len() as u64, found[1].stats.expansions);
+        for found in found {
             assert_eq!(found.cost().is_some(), best.cost().is_some());
             if let (Some(x), Some(y)) = (found.cost(), best.cost()) {
                 assert!((x - y).abs() < 1e-9, "{a} -> {b}: {x} against {y}");

@@ -89,6 +89,12 @@ impl JpsPlus {
         self.map.memory_bytes() + self.table.len() * size_of::<[i16; 8]>() + self.search.memory_bytes()
     }
 
+    /// The cells the last search expanded (the jump points it took off the open list), to draw
+    /// or count; empty before the first.
+    pub fn expanded(&self) -> Vec<Cell> {
+        self.search.expanded(&self.map)
+    }
+
     /// A least-cost path from `start` to `goal`, every cell of it (`None`: no path).
     ///
     /// Errors: a start or goal outside the grid or blocked.

@@ -54,6 +54,13 @@ impl JumpSearch {
         self.nodes.capacity() * size_of::<Node>() + self.heap.memory_bytes()
     }
 
+    /// The cells the last search expanded, in index order.
+    pub(crate) fn expanded(&self, map: &JumpMap) -> Vec<Cell> {
+        let closed = self.era;
+        let expanded = |i: &usize| self.era > 0 && self.nodes[*i].stamp >> 3 == closed;
+        (0..self.nodes.len()).filter(expanded).map(|i| map.cell_of(i)).collect()
+    }
+
     /// A least-cost path from `start` to `goal` on `map`, where `successors(u, arrival, goal,
     /// out)` puts in `out` the jump points found from cell `u`,
     /// reached by a jump whose last move was in direction `arrival` (`None`: the start), towards

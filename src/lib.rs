@@ -81,6 +81,11 @@ pub struct ReadmeDoctests;
 #[doc = include_str!("../docs/ros-maps.md")]
 pub struct RosMapsGuideDoctests;
 
+/// The code of the guide's page on jump point search, run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/jump-points.md")]
+pub struct JumpPointsGuideDoctests;
+
 /// The names most programs need: `use trailmark::prelude::*;`.
 pub mod prelude {
     pub use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};

@@ -168,7 +168,7 @@ impl MapInfo {
 impl BenchReport {
     /// The goals table's rows, each from its section.
     fn goals(&self) -> Vec<GoalRow> {
-        let mut goals = grid::goals(&self.ratios);
+        let mut goals = grid::goals(&self.ratios, &self.results);
         goals.extend(navigation::goals(&self.navigation_ratios));
         goals.extend(navigation::best_goals(&self.replanner_ratios));
         goals.push(rosmaps::goal(&self.rosmaps));

@@ -92,11 +92,7 @@ fn check(job: &ScenarioFile, algos: &[VerifyAlgo], every: u64) -> MapCheck {
     };
     let graph = GridGraph::new(&grid, Connectivity::Eight);
     let mut search = Search::new();
-    let rule = CornerCutting::Forbidden;
-    let made = algos.contains(&VerifyAlgo::Jps).then(|| Jps::new(&grid, rule)).transpose().and_then(|jps| {
-        Ok((jps, algos.contains(&VerifyAlgo::JpsPlus).then(|| JpsPlus::new(&grid, rule)).transpose()?))
-    });
-    let (mut jps, mut plus) = match made {
+    let (mut jps, mut plus) = match jump_searches(&grid, algos) {
         Ok(made) => made,
         Err(e) => {
             out.failed += 1;
@@ -118,6 +114,17 @@ fn check(job: &ScenarioFile, algos: &[VerifyAlgo], every: u64) -> MapCheck {
     }
     out.seconds = clock.elapsed().as_secs_f64();
     out
+}
+
+/// The jump point searches `algos` asks for, made for `grid` under the MovingAI rule.
+fn jump_searches(
+    grid: &Grid,
+    algos: &[VerifyAlgo],
+) -> Result<(Option<Jps>, Option<JpsPlus>), SearchError<Cell>> {
+    let rule = CornerCutting::Forbidden;
+    let jps = if algos.contains(&VerifyAlgo::Jps) { Some(Jps::new(grid, rule)?) } else { None };
+    let plus = if algos.contains(&VerifyAlgo::JpsPlus) { Some(JpsPlus::new(grid, rule)?) } else { None };
+    Ok((jps, plus))
 }
 
 /// The jump point searches made for a map, if asked for.

@@ -120,6 +120,7 @@ pub use index::{Dense, Hashed, NodeIndex};
 pub use limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_NODES, MAX_WEIGHT};
 pub use one_shot::SearchResult;
 pub use one_shot::astar::{astar, dijkstra, weighted_astar};
+pub use one_shot::closures;
 pub use one_shot::jps::{Jps, jps};
 pub use one_shot::jps_plus::JpsPlus;
 pub use one_shot::theta_star::theta_star;

@@ -219,7 +219,7 @@ impl<I> Search<I> {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn best_first<G, H, E>(
+    pub(crate) fn best_first<G, H, E>(
         &mut self,
         graph: &G,
         start: G::Node,

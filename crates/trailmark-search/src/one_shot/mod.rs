@@ -13,6 +13,7 @@ use trailmark_core::path::Path;
 use crate::stats::SearchStats;
 
 pub(crate) mod astar;
+pub mod closures;
 pub(crate) mod edges;
 pub(crate) mod jps;
 pub(crate) mod jps_plus;

@@ -67,7 +67,7 @@ impl<I> Search<I> {
         G: Successors + ?Sized,
         I: NodeIndex<G>,
     {
-        self.uninformed::<G, true>(graph, start, goal)
+        self.uninformed::<G, _, true>(graph, start, Some(goal), |_| false)
     }
 
     /// Depth-first search with this workspace; see [`dfs`](crate::dfs()).
@@ -81,7 +81,7 @@ impl<I> Search<I> {
         G: Successors + ?Sized,
         I: NodeIndex<G>,
     {
-        self.uninformed::<G, false>(graph, start, goal)
+        self.uninformed::<G, _, false>(graph, start, Some(goal), |_| false)
     }
 
     /// Breadth-first (a queue) or depth-first (a stack) search. Breadth-first, the goal is
@@ -89,19 +89,24 @@ impl<I> Search<I> {
     /// a node may be on the stack several times; its parent is the one that pushed it last,
     /// which is the entry popped first, later entries for a closed node are skipped, and the
     /// goal is recognised when it is popped. `BREADTH_FIRST` is a constant, so each search
-    /// compiles to its own loop.
-    fn uninformed<G, const BREADTH_FIRST: bool>(
+    /// compiles to its own loop. A node whose slot `is_goal` accepts ends the search as the goal
+    /// does (with no goal, only those).
+    pub(crate) fn uninformed<G, E, const BREADTH_FIRST: bool>(
         &mut self,
         graph: &G,
         start: G::Node,
-        goal: G::Node,
+        goal: Option<G::Node>,
+        mut is_goal: E,
     ) -> Result<SearchResult<G::Node>, SearchError<G::Node>>
     where
         G: Successors + ?Sized,
         I: NodeIndex<G>,
+        E: FnMut(usize) -> bool,
     {
-        let query = self.begin(graph, start, goal)?;
-        let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
+        let query = self.begin(graph, start, goal.unwrap_or(start))?;
+        let (s, open, closed) = (query.start, query.open, query.closed);
+        let t = if goal.is_some() { query.goal } else { usize::MAX };
+        let mut ends = |slot: usize| slot == t || is_goal(slot);
         let mut stats = SearchStats { pushes: 1, ..SearchStats::default() };
         if BREADTH_FIRST {
             self.fifo.push_back(s as u32);
@@ -109,7 +114,7 @@ impl<I> Search<I> {
             self.stack.push(s as u32);
         }
         let mut edges = EdgeCheck::new();
-        let mut found = (BREADTH_FIRST && s == t).then_some(t);
+        let mut found = (BREADTH_FIRST && ends(s)).then_some(s);
         while found.is_none() {
             let next = if BREADTH_FIRST { self.fifo.pop_front() } else { self.stack.pop() };
             let Some(u) = next else { break };
@@ -118,7 +123,7 @@ impl<I> Search<I> {
                 if self.nodes.stamp[u] == closed {
                     continue;
                 }
-                if u == t {
+                if ends(u) {
                     found = Some(u);
                     break;
                 }
@@ -144,7 +149,7 @@ impl<I> Search<I> {
                     stack.push(v as u32);
                 }
                 stats.pushes += 1;
-                if BREADTH_FIRST && v == t {
+                if BREADTH_FIRST && ends(v) {
                     found = Some(v);
                 }
             });

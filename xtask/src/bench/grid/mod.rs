@@ -15,6 +15,7 @@ use grid_util::grid::ValueGrid;
 use grid_util::point::Point;
 use serde::Serialize;
 use trailmark::prelude::*;
+use trailmark::search::closures;
 
 use crate::bench::peer::{neighbours, octile};
 use crate::bench::progress::SectionProgress;
@@ -82,7 +83,7 @@ const SQUEEZE: CornerCutting = CornerCutting::Squeeze;
 const GRID_PATHFINDING_BOUND: f64 = 1.0 + 6e-5;
 
 /// The planners, in the order they run and are reported.
-pub const PLANNERS: [GridPlanner; 13] = [
+pub const PLANNERS: [GridPlanner; 14] = [
     GridPlanner {
         name: "astar",
         library: TRAILMARK,
@@ -117,6 +118,21 @@ pub const PLANNERS: [GridPlanner; 13] = [
         peers: &["pathfinding_astar", "astar"],
         plot_colour: Some(4),
         kind: Kind::JpsPlus,
+    },
+    GridPlanner {
+        name: "closure_astar",
+        library: TRAILMARK,
+        rule: NO_CUT,
+        bound: Some(1.0),
+        known_flaw: false,
+        any_angle: false,
+        peers: &["pathfinding_astar", "astar"],
+        plot_colour: None,
+        // The graph as `pathfinding` takes it: a successor closure over hashed cells.
+        kind: Kind::Graph(|graph, _, q| {
+            let h = graph.heuristic(GridHeuristic::Octile, q.goal);
+            ours(closures::astar(&q.start, |&p| graph.neighbours(p), |&p| h(p), |&p| p == q.goal))
+        }),
     },
     GridPlanner {
         name: "pathfinding_astar",

@@ -76,6 +76,13 @@ pub fn goals(ratios: &[PeerRatio], rows: &[GridRow]) -> Vec<GoalRow> {
             missing,
         },
         GoalRow {
+            goal: "A* given as closures no slower than `pathfinding` A* on every map",
+            figures: speedups(ratios, "closure_astar", "pathfinding_astar"),
+            target: 1.0,
+            unit: "x",
+            missing,
+        },
+        GoalRow {
             goal: "JPS at least 20x faster than `pathfinding` A* (geometric mean over the maps)",
             figures: if jps.is_empty() {
                 Vec::new()

@@ -86,6 +86,11 @@ pub struct RosMapsGuideDoctests;
 #[doc = include_str!("../docs/jump-points.md")]
 pub struct JumpPointsGuideDoctests;
 
+/// The code of the page for users of the `pathfinding` crate, run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/from-pathfinding.md")]
+pub struct FromPathfindingDoctests;
+
 /// The names most programs need: `use trailmark::prelude::*;`.
 pub mod prelude {
     pub use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};

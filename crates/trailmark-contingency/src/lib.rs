@@ -77,5 +77,15 @@ pub use planner::{ContingencyError, ContingencyStats, Planned, PlannerOptions, p
 #[doc(hidden)]
 #[allow(deprecated)]
 pub use planner::{PlanError, PlanStats};
+/// The random generator [`simulate::sample_world`] draws from (`rand_chacha` 0.10), and the trait
+/// that seeds it (`rand_core` 0.10), so a caller needs no version-matched dependency.
+///
+/// ```
+/// use trailmark_contingency::{ChaCha8Rng, SeedableRng};
+///
+/// let mut rng = ChaCha8Rng::seed_from_u64(7);
+/// # let _ = &mut rng;
+/// ```
+pub use rand_chacha::{ChaCha8Rng, rand_core::SeedableRng};
 pub use spec::TerrainSpec;
 pub use terrain::{ChokePoint, MAX_CHOKE_POINTS, Terrain, TerrainError, grid_from_rows};

@@ -208,28 +208,52 @@ impl JumpMap {
                 })
     }
 
-    /// Whether cell `i`, reached by the diagonal move `(dx, dy)`, has a forced neighbour: a cell
-    /// behind it on one side blocked with the cell beyond it free (never with no corner cutting,
-    /// where the parent could not have passed that blocked cell).
+    /// The turns that may be forced at a cell reached by the diagonal move `(dx, dy)`: each the
+    /// cell behind it on one side, and the diagonal past that cell.
+    #[inline]
+    fn diagonal_turns((dx, dy): Direction) -> [(Direction, Direction); 2] {
+        [((-dx, 0), (-dx, dy)), ((0, -dy), (dx, -dy))]
+    }
+
+    /// Whether the turn past the cell `behind` of cell `i` is forced: that cell blocked and the
+    /// turn's cell free (never with no corner cutting, where the parent could not have passed
+    /// the blocked cell).
+    #[inline]
+    fn forced_turn(&self, i: usize, (bx, by): Direction, (tx, ty): Direction) -> bool {
+        self.rule != CornerCutting::Forbidden && !self.open(i, bx, by) && self.open(i, tx, ty)
+    }
+
+    /// Whether cell `i`, reached by the diagonal move `(dx, dy)`, has a forced neighbour.
     #[inline]
     pub(crate) fn forced_diagonal(&self, i: usize, dx: isize, dy: isize) -> bool {
-        self.rule != CornerCutting::Forbidden
-            && ((!self.open(i, -dx, 0) && self.open(i, -dx, dy))
-                || (!self.open(i, 0, -dy) && self.open(i, dx, -dy)))
+        Self::diagonal_turns((dx, dy)).iter().any(|&(behind, turn)| self.forced_turn(i, behind, turn))
+    }
+
+    /// The two sides of the straight move `(dx, dy)`.
+    #[inline]
+    fn sides((dx, dy): Direction) -> [Direction; 2] {
+        let (sx, sy) = (dy.abs(), dx.abs());
+        [(sx, sy), (-sx, -sy)]
+    }
+
+    /// Whether the side `(ax, ay)` of cell `i`, reached by the straight move `(dx, dy)`, is
+    /// forced.
+    ///
+    /// With no corner cutting, the side cell free with its neighbour beside the parent blocked
+    /// (the parent could not reach it diagonally); with corner cutting, the side cell blocked
+    /// with the cell ahead of it free (the diagonal around it starts here).
+    #[inline]
+    fn forced_side(&self, i: usize, (ax, ay): Direction, (dx, dy): Direction) -> bool {
+        match self.rule {
+            CornerCutting::Forbidden => self.open(i, ax, ay) && !self.open(i, ax - dx, ay - dy),
+            _ => !self.open(i, ax, ay) && self.open(i, ax + dx, ay + dy),
+        }
     }
 
     /// Whether cell `i`, reached by the straight move `(dx, dy)`, has a forced neighbour.
-    ///
-    /// With no corner cutting, a side cell whose neighbour beside the parent is blocked (the
-    /// parent could not reach it diagonally); with corner cutting, a blocked side cell with the
-    /// cell ahead of it free (the diagonal around it starts here).
     #[inline]
     pub(crate) fn forced_straight(&self, i: usize, dx: isize, dy: isize) -> bool {
-        let (sx, sy) = (dy.abs(), dx.abs());
-        [(sx, sy), (-sx, -sy)].iter().any(|&(ax, ay)| match self.rule {
-            CornerCutting::Forbidden => self.open(i, ax, ay) && !self.open(i, ax - dx, ay - dy),
-            _ => !self.open(i, ax, ay) && self.open(i, ax + dx, ay + dy),
-        })
+        Self::sides((dx, dy)).iter().any(|&side| self.forced_side(i, side, (dx, dy)))
     }
 
     /// The directions to jump in from cell `i`, reached by a move in direction `arrival`
@@ -243,30 +267,21 @@ impl JumpMap {
         };
         if dx != 0 && dy != 0 {
             out.extend([(dx, 0), (0, dy), (dx, dy)]);
-            if self.rule != CornerCutting::Forbidden {
-                if !self.open(i, -dx, 0) && self.open(i, -dx, dy) {
-                    out.push((-dx, dy));
-                }
-                if !self.open(i, 0, -dy) && self.open(i, dx, -dy) {
-                    out.push((dx, -dy));
+            for (behind, turn) in Self::diagonal_turns((dx, dy)) {
+                if self.forced_turn(i, behind, turn) {
+                    out.push(turn);
                 }
             }
             return;
         }
         out.push((dx, dy));
-        let (sx, sy) = (dy.abs(), dx.abs());
-        for (ax, ay) in [(sx, sy), (-sx, -sy)] {
-            match self.rule {
-                CornerCutting::Forbidden => {
-                    if self.open(i, ax, ay) && !self.open(i, ax - dx, ay - dy) {
-                        out.extend([(ax, ay), (ax + dx, ay + dy)]);
-                    }
+        for (ax, ay) in Self::sides((dx, dy)) {
+            if self.forced_side(i, (ax, ay), (dx, dy)) {
+                // With no corner cutting the side cell itself is forced too.
+                if self.rule == CornerCutting::Forbidden {
+                    out.push((ax, ay));
                 }
-                _ => {
-                    if !self.open(i, ax, ay) && self.open(i, ax + dx, ay + dy) {
-                        out.push((ax + dx, ay + dy));
-                    }
-                }
+                out.push((ax + dx, ay + dy));
             }
         }
     }

@@ -6,6 +6,13 @@
 //! crate and never on each other; a graph of your own that implements the traits of [`graph`]
 //! works with every algorithm.
 //!
+//! **Features.** `geometry` (on by default) brings the modules of points and shapes:
+//! `geometry`, `world`, `freespace`, `footprint`, `predicates`, `dubins`, `reeds_shepp`,
+//! `curve`, `smooth`, `generate` and `svg`, on nalgebra, parry2d, geo, robust and rand. Without
+//! it (`default-features = false`) the crate is [`cost`], [`graph`], [`grid`], [`path`],
+//! [`movingai`], [`read`], [`termination`] and [`union_find`], on serde and thiserror alone:
+//! what grid search needs, and what `trailmark-search` takes.
+//!
 //! ```
 //! use trailmark_core::grid::{Cell, Grid};
 //! use trailmark_core::movingai::parse_map;
@@ -25,23 +32,34 @@
 #![deny(missing_docs)]
 
 pub mod cost;
+#[cfg(feature = "geometry")]
 pub mod curve;
+#[cfg(feature = "geometry")]
 pub mod dubins;
+#[cfg(feature = "geometry")]
 pub mod footprint;
+#[cfg(feature = "geometry")]
 pub mod freespace;
+#[cfg(feature = "geometry")]
 pub mod generate;
+#[cfg(feature = "geometry")]
 pub mod geometry;
 pub mod graph;
 pub mod grid;
 pub mod movingai;
 pub mod path;
+#[cfg(feature = "geometry")]
 pub mod predicates;
 pub mod read;
+#[cfg(feature = "geometry")]
 pub mod reeds_shepp;
+#[cfg(feature = "geometry")]
 pub mod smooth;
+#[cfg(feature = "geometry")]
 pub mod svg;
 pub mod termination;
 pub mod union_find;
+#[cfg(feature = "geometry")]
 pub mod world;
 
 // One documented path per item: the vocabulary's families above (`grid::Cell`,

@@ -12,6 +12,13 @@
 //! Every item is documented at the crate root; the module paths (`trailmark_graph::prm::Prm`)
 //! still work, hidden, for one release.
 //!
+//! **Features.** `roadmaps` (on by default) brings everything over polygon worlds and state
+//! spaces: the visibility graph, trapezoidal cells, the PRMs, [`Roadmap`] and the dynamic
+//! roadmap, with `trailmark-sample`, parry2d and rand beneath them. Without it
+//! (`default-features = false`) the crate is the grid graphs alone ([`GridGraph`],
+//! [`CornerGraph`]) on `trailmark-core`'s light build: 14 crates with `trailmark-search`, see
+//! the search guide's "A light build".
+//!
 //! ```
 //! use trailmark_core::{Cell, Connectivity, Grid, IndexedGraph, Successors};
 //! use trailmark_graph::GridGraph;
@@ -33,30 +40,41 @@
 
 // One documented path per item: the root. The modules stay public, hidden, for one release.
 mod corners;
+#[cfg(feature = "roadmaps")]
 #[doc(hidden)]
 pub mod dynamic;
 #[doc(hidden)]
 pub mod grid;
+#[cfg(feature = "roadmaps")]
 #[doc(hidden)]
 pub mod prm;
+#[cfg(feature = "roadmaps")]
 #[doc(hidden)]
 pub mod roadmap;
 mod sight;
+#[cfg(feature = "roadmaps")]
 #[doc(hidden)]
 pub mod trapezoid;
+#[cfg(feature = "roadmaps")]
 #[doc(hidden)]
 pub mod visibility;
 
 pub use corners::CornerGraph;
+#[cfg(feature = "roadmaps")]
 pub use dynamic::{DynamicError, DynamicRoadmap, NodeKey, Rebuild};
 pub use grid::{CornerCutting, GridGraph, Neighbours};
+#[cfg(feature = "roadmaps")]
 pub use prm::{
     Connection, DubinsPrm, MAX_ROADMAP_NODES, PlanarSpace, PolygonPrm, PrmError, PrmOptions, PrmQuery,
     PrmSampler, ReedsSheppPrm,
 };
+#[cfg(feature = "roadmaps")]
 #[doc(hidden)]
 #[allow(deprecated)]
 pub use prm::{MAX_NODES, Prm, Sampler};
+#[cfg(feature = "roadmaps")]
 pub use roadmap::{Roadmap, RoadmapQuery};
+#[cfg(feature = "roadmaps")]
 pub use trapezoid::{Portal, Side, Trapezoid, TrapezoidError, TrapezoidQuery, Trapezoids};
+#[cfg(feature = "roadmaps")]
 pub use visibility::{Edges, VisibilityError, VisibilityGraph, VisibilityQuery};

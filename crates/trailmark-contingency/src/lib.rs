@@ -87,5 +87,8 @@ pub use planner::{PlanError, PlanStats};
 /// # let _ = &mut rng;
 /// ```
 pub use rand_chacha::{ChaCha8Rng, rand_core::SeedableRng};
+/// JSON (`serde_json` 1), the form [`PlanNode::to_json`] gives a plan in, so a caller can read
+/// or embed it without a dependency of their own.
+pub use serde_json;
 pub use spec::TerrainSpec;
 pub use terrain::{ChokePoint, MAX_CHOKE_POINTS, Terrain, TerrainError, grid_from_rows};

@@ -8,6 +8,8 @@
 //! defines `Name`). Unit-test modules (`#[cfg(test)] mod tests`) are left out: a test may use
 //! anything.
 
+mod sources;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -31,24 +33,6 @@ fn source_roots(root: &Path) -> Vec<PathBuf> {
     roots.push(root.join("xtask/src"));
     roots.sort();
     roots
-}
-
-/// Every `.rs` file below `dir`.
-fn rust_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for entry in fs::read_dir(&d).expect("a readable folder") {
-            let path = entry.expect("an entry").path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs") {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    out
 }
 
 /// The module path of a file below `src` (`a/b.rs` and `a/b/mod.rs` are `a::b`; `lib.rs`,
@@ -190,7 +174,7 @@ fn root_reexports(root_code: &str, modules: &BTreeSet<String>) -> BTreeMap<Strin
 
 /// The import graph of the files below `src`: module -> the modules it imports.
 fn import_graph(src: &Path) -> BTreeMap<String, BTreeSet<String>> {
-    let files: BTreeMap<String, String> = rust_files(src)
+    let files: BTreeMap<String, String> = sources::rust_files(src)
         .into_iter()
         .map(|f| (module_of(src, &f), code_of(&fs::read_to_string(&f).expect("a readable file"))))
         .collect();
@@ -299,7 +283,7 @@ fn files_stay_small_or_are_one_concept() {
     let root = workspace();
     let mut over = Vec::new();
     for src in source_roots(&root) {
-        for file in rust_files(&src) {
+        for file in sources::rust_files(&src) {
             let lines = fs::read_to_string(&file).expect("a readable file").lines().count();
             let name =
                 file.strip_prefix(&root).expect("in the workspace").to_string_lossy().replace('\\', "/");
@@ -322,7 +306,7 @@ fn the_map_names_every_module_file() {
     let map = fs::read_to_string(root.join("docs/architecture.md")).expect("docs/architecture.md");
     let mut missing = Vec::new();
     for src in source_roots(&root) {
-        for file in rust_files(&src) {
+        for file in sources::rust_files(&src) {
             let name = file.strip_prefix(&src).expect("below src").to_string_lossy().replace('\\', "/");
             if matches!(name.as_str(), "lib.rs" | "main.rs") || name.ends_with("tests.rs") {
                 continue;

@@ -8,6 +8,8 @@
 //! method). A name counts as another crate's when it is written with that crate's path
 //! (`rand::Rng`) or imported from it by a `use`. Unit-test modules are left out.
 
+mod sources;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -47,23 +49,6 @@ fn registry_dependencies(manifest: &Path) -> BTreeSet<String> {
         }
     }
     names
-}
-
-fn rust_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for entry in fs::read_dir(&d).expect("a readable folder") {
-            let path = entry.expect("an entry").path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs") {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    out
 }
 
 /// A `use` tree flattened: each name it brings in with the full path it stands for.
@@ -262,7 +247,7 @@ fn public_signatures_name_only_items_a_user_can_name() {
     for dir in library_crates(root) {
         let dependencies = registry_dependencies(&dir.join("Cargo.toml"));
         let mut files = Vec::new();
-        for file in rust_files(&dir.join("src")) {
+        for file in sources::rust_files(&dir.join("src")) {
             let text = fs::read_to_string(&file).expect("a source file");
             let parsed = syn::parse_file(&text).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
             files.push((file, parsed));

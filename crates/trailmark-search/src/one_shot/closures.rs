@@ -221,6 +221,7 @@ struct Table<N> {
 
 impl<N: Eq + Hash + Clone> Table<N> {
     /// The number of `node`, numbering it if it is new (`None`: no number left).
+    #[inline]
     fn number(&mut self, node: N) -> Option<u32> {
         let next = self.nodes.len();
         match self.numbers.entry(node) {
@@ -242,9 +243,6 @@ impl<N: Eq + Hash + Clone> Table<N> {
 struct Implicit<N, FN> {
     table: RefCell<Table<N>>,
     successors: RefCell<FN>,
-    /// The numbered successors of the node being expanded, before the search sees them (the
-    /// search asks the heuristic of each, which reads the table).
-    found: RefCell<Vec<(u32, Cost)>>,
 }
 
 impl<N, FN, IN> Implicit<N, FN>
@@ -256,11 +254,7 @@ where
     fn new(start: &N, successors: FN) -> Self {
         let mut table = Table { nodes: Vec::new(), numbers: rustc_hash::FxHashMap::default(), full: false };
         table.number(start.clone());
-        Implicit {
-            table: RefCell::new(table),
-            successors: RefCell::new(successors),
-            found: RefCell::new(Vec::new()),
-        }
+        Implicit { table: RefCell::new(table), successors: RefCell::new(successors) }
     }
 
     /// `f` of the node numbered `u`.
@@ -305,21 +299,18 @@ where
 {
     fn for_each_successor<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
         // The closure's successors own their nodes (`IN` cannot borrow its argument), so the
-        // table is free to number them once the closure has returned.
+        // table is free to number them once the closure has returned; each is numbered and
+        // visited in turn (the visit asks the heuristic, which reads the table).
         let next = {
             let table = self.table.borrow();
             (self.successors.borrow_mut())(&table.nodes[node as usize])
         };
-        let mut found = self.found.take();
-        found.clear();
-        {
-            let mut table = self.table.borrow_mut();
-            found.extend(next.into_iter().filter_map(|(n, cost)| Some((table.number(n)?, cost))));
+        for (n, cost) in next {
+            let number = self.table.borrow_mut().number(n);
+            if let Some(v) = number {
+                visit(v, cost);
+            }
         }
-        for &(v, cost) in &found {
-            visit(v, cost);
-        }
-        self.found.replace(found);
     }
 }
 

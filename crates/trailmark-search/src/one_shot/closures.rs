@@ -7,6 +7,9 @@
 //! are met (a hash map from node to number), with the same results, statistics and errors: a
 //! negative or NaN cost is an error, never a wrong path.
 //!
+//! Jump point search has no closure form: it jumps along the rows and columns of a grid, which a
+//! successor closure does not show. On a grid, hand the grid itself to [`Jps`](crate::Jps).
+//!
 //! ```
 //! use trailmark_search::closures::astar;
 //!

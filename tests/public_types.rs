@@ -247,12 +247,10 @@ struct Reexports {
 }
 
 impl Reexports {
-    fn of(files: &[(PathBuf, syn::File)]) -> Self {
+    fn of(files: &[Source]) -> Self {
         let mut reexports = Self::default();
-        for (_, parsed) in files {
-            let mut uses = Vec::new();
-            imports(&parsed.items, &mut uses);
-            for (_, _, path) in uses.into_iter().filter(|(public, ..)| *public) {
+        for source in files {
+            for (_, _, path) in source.uses.iter().filter(|(public, ..)| *public) {
                 if path.len() == 1 || path.len() == 2 && path[1] == "*" {
                     reexports.whole.insert(path[0].clone());
                 }
@@ -271,18 +269,34 @@ impl Reexports {
     }
 }
 
-/// The full paths of the other crates' items that the public face of `parsed` names, and the
+/// A source file of a library crate: its path, its syntax tree and its `use` items.
+struct Source {
+    file: PathBuf,
+    parsed: syn::File,
+    uses: Vec<(bool, String, Vec<String>)>,
+}
+
+impl Source {
+    fn read(file: PathBuf) -> Self {
+        let text = fs::read_to_string(&file).expect("a source file");
+        let parsed = syn::parse_file(&text).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+        let mut uses = Vec::new();
+        imports(&parsed.items, &mut uses);
+        Source { file, parsed, uses }
+    }
+}
+
+/// The full paths of the other crates' items that the public face of `source` names, and the
 /// number of paths read.
-fn foreign_items(parsed: &syn::File, dependencies: &BTreeSet<String>) -> (Vec<Vec<String>>, usize) {
-    let mut uses = Vec::new();
-    imports(&parsed.items, &mut uses);
-    let from_other_crates: BTreeMap<String, Vec<String>> = uses
-        .into_iter()
+fn foreign_items(source: &Source, dependencies: &BTreeSet<String>) -> (Vec<Vec<String>>, usize) {
+    let from_other_crates: BTreeMap<&String, &Vec<String>> = source
+        .uses
+        .iter()
         .filter(|(_, _, path)| dependencies.contains(&path[0]))
         .map(|(_, name, path)| (name, path))
         .collect();
     let mut face = Face::default();
-    face.visit_file(parsed);
+    face.visit_file(&source.parsed);
     let read = face.paths.len();
     let foreign = face
         .paths
@@ -307,17 +321,12 @@ fn public_signatures_name_only_items_a_user_can_name() {
     let mut seen = BTreeSet::new();
     for dir in library_crates(root) {
         let dependencies = registry_dependencies(&dir.join("Cargo.toml"));
-        let files: Vec<(PathBuf, syn::File)> = sources::rust_files(&dir.join("src"))
-            .into_iter()
-            .map(|file| {
-                let text = fs::read_to_string(&file).expect("a source file");
-                let parsed = syn::parse_file(&text).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
-                (file, parsed)
-            })
-            .collect();
+        let files: Vec<Source> =
+            sources::rust_files(&dir.join("src")).into_iter().map(Source::read).collect();
         let reexports = Reexports::of(&files);
-        for (file, parsed) in &files {
-            let (foreign, paths) = foreign_items(parsed, &dependencies);
+        for source in &files {
+            let file = &source.file;
+            let (foreign, paths) = foreign_items(source, &dependencies);
             read += paths;
             for full in foreign {
                 if !reexports.names(&full) {

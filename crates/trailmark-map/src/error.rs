@@ -20,7 +20,8 @@ pub enum MapError {
         /// The I/O error.
         source: std::io::Error,
     },
-    /// The map's YAML file is not YAML, or not a mapping.
+    /// The map's YAML file is not YAML, not a mapping, or uses what map files never do
+    /// (anchors, aliases, deep nesting).
     #[error("the map YAML is malformed: {reason}")]
     Yaml {
         /// What the parser said.

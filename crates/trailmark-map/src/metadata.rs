@@ -13,10 +13,15 @@
 //! ```
 
 use serde::{Deserialize, Serialize};
+use yaml_rust2::parser::{Event, Parser};
 use yaml_rust2::{Yaml, YamlLoader};
 
 use crate::error::MapError;
 use crate::frame::{check_origin, check_resolution};
+
+/// The deepest nesting of lists and mappings a map YAML file may have (map_server's files have
+/// two: the fields, and `origin`'s list).
+const MAX_YAML_DEPTH: usize = 16;
 
 /// How pixels become occupancy values (map_server's `mode`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
@@ -68,7 +73,12 @@ impl MapMetadata {
     /// `occupied_thresh`, `free_thresh`); `mode` defaults to trinary and is read without
     /// regard to case. Unknown fields are ignored, as map_server does. The values are checked
     /// ([`MapMetadata::check`]).
+    ///
+    /// YAML's anchors and aliases (`&name`, `*name`), which map_server's files never use, are
+    /// refused ([`MapError::Yaml`]), as is nesting deeper than 16 lists and mappings: both are
+    /// found by reading the text's events, before any document is built.
     pub fn parse(text: &str) -> Result<Self, MapError> {
+        screen(text)?;
         let docs = YamlLoader::load_from_str(text).map_err(|e| MapError::Yaml { reason: e.to_string() })?;
         let doc = docs.into_iter().next().ok_or(MapError::Yaml { reason: "the file is empty".into() })?;
         if doc.as_hash().is_none() {
@@ -144,6 +154,46 @@ impl MapMetadata {
             real(self.occupied_thresh),
             real(self.free_thresh),
         )
+    }
+}
+
+/// Refuses anchors, aliases and deep nesting, reading the parser's events one at a time (the
+/// parser keeps its nesting on the heap). The loader copies an anchored node wherever an alias
+/// names it, so a few hundred bytes of aliases naming aliases expand to billions of nodes; and
+/// a deeply nested document is dropped by recursion deeper than a thread's stack.
+fn screen(text: &str) -> Result<(), MapError> {
+    let mut parser = Parser::new_from_str(text);
+    let mut depth = 0usize;
+    loop {
+        let (event, mark) = parser.next_token().map_err(|e| MapError::Yaml { reason: e.to_string() })?;
+        let refuse = |what: &str, why: &str| {
+            let (line, column) = (mark.line(), mark.col() + 1);
+            Err(MapError::Yaml { reason: format!("{what} at line {line} column {column}: {why}") })
+        };
+        let no_aliases = "map files use no anchors or aliases";
+        let anchor = match &event {
+            Event::Scalar(_, _, anchor, _)
+            | Event::SequenceStart(anchor, _)
+            | Event::MappingStart(anchor, _) => *anchor,
+            _ => 0,
+        };
+        // The parser numbers anchors from 1; 0 is a node without one.
+        if anchor != 0 {
+            return refuse("an anchor (`&name`)", no_aliases);
+        }
+        match event {
+            Event::StreamEnd => return Ok(()),
+            Event::Alias(_) => return refuse("an alias (`*name`)", no_aliases),
+            Event::SequenceStart(..) | Event::MappingStart(..) => {
+                depth += 1;
+                if depth > MAX_YAML_DEPTH {
+                    let why = format!("lists and mappings nest at most {MAX_YAML_DEPTH} deep");
+                    return refuse("a list or mapping", &why);
+                }
+            }
+            Event::SequenceEnd | Event::MappingEnd => depth = depth.saturating_sub(1),
+            _ => {}
+        }
     }
 }
 
@@ -256,5 +306,41 @@ mod tests {
         assert!(matches!(bad("origin: [", "origin: [[["), MapError::Yaml { .. }));
         assert!(matches!(MapMetadata::parse(""), Err(MapError::Yaml { .. })));
         assert!(matches!(MapMetadata::parse("- 1\n- 2\n"), Err(MapError::Yaml { .. })));
+    }
+
+    /// The reason of a YAML error, or a panic naming what was returned instead.
+    fn yaml_reason(text: &str) -> String {
+        match MapMetadata::parse(text) {
+            Err(MapError::Yaml { reason }) => reason,
+            other => panic!("expected a YAML error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn aliases_and_anchors_are_refused_before_they_are_expanded() {
+        // Billion laughs, kept small enough to expand harmlessly were it not refused: each
+        // level names the one before nine times, so the last names 9^6 scalars.
+        let mut bomb = String::from(NAV2);
+        bomb.push_str("l0: &l0 [x, x, x, x, x, x, x, x, x]\n");
+        for level in 1..6 {
+            let previous = format!("*l{}", level - 1);
+            bomb.push_str(&format!("l{level}: &l{level} [{}]\n", [previous.as_str(); 9].join(", ")));
+        }
+        let reason = yaml_reason(&bomb);
+        assert!(reason.contains("anchor") && reason.contains("line 8"), "{reason}");
+        // An alias of a field's value, and an anchor alone.
+        let aliased = NAV2.replace("free_thresh: 0.1", "free_thresh: *t").replace("0.65", "&t 0.65");
+        assert!(yaml_reason(&aliased).contains("anchor"));
+        assert!(yaml_reason(&NAV2.replace("[-15.1", "&o [-15.1")).contains("anchor"));
+    }
+
+    #[test]
+    fn deep_nesting_is_refused_before_the_document_is_built() {
+        // Block sequences two characters a level: a document this deep, once built, is
+        // dropped by recursion deeper than a thread's stack.
+        let deep = format!("{NAV2}laughs:\n  {}x\n", "- ".repeat(100_000));
+        assert!(yaml_reason(&deep).contains("at most 16 deep"));
+        let shallow = format!("{NAV2}extra:\n  {}x\n", "- ".repeat(MAX_YAML_DEPTH - 1));
+        assert!(MapMetadata::parse(&shallow).is_ok());
     }
 }

@@ -75,6 +75,14 @@ pub enum MapError {
         /// What the decoder said.
         reason: String,
     },
+    /// The image is in a format map files are not read in: map images are PGM (P2, P5) or PNG.
+    #[error("the map image {} is {format}, not PGM (P2, P5) or PNG", path.display())]
+    ImageFormat {
+        /// The image file (as named to [`crate::decode_map`] when decoded from memory).
+        path: PathBuf,
+        /// What it is instead: `"PPM (P6)"`, `"PBM (P1)"`, ... or what it starts with.
+        format: String,
+    },
     /// The map cannot be saved as asked (no shade reads back as each kind of cell under the
     /// thresholds, or the encoder failed).
     #[error("cannot save the map: {reason}")]

@@ -21,7 +21,7 @@ use std::path::Path;
 
 use image::codecs::png::PngEncoder;
 use image::codecs::pnm::{PnmEncoder, PnmSubtype, SampleEncoding};
-use image::{DynamicImage, ImageEncoder, ImageReader, Limits};
+use image::{DynamicImage, ImageEncoder, ImageFormat, ImageReader, Limits};
 use trailmark_core::grid::Grid;
 
 use crate::error::MapError;
@@ -38,15 +38,54 @@ pub(crate) struct Decoded {
     pub values: Vec<i8>,
 }
 
+/// The formats map images are read in. map_server reads whatever SDL_image reads; maps are
+/// PGM or PNG, and only these are documented and read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Format {
+    /// A graymap, ASCII (P2) or binary (P5).
+    Pgm,
+    /// PNG.
+    Png,
+}
+
+/// The first eight bytes of every PNG file.
+const PNG_SIGNATURE: &[u8] = b"\x89PNG\r\n\x1a\n";
+
+/// The format of an image from its first bytes, or [`MapError::ImageFormat`] naming what it is
+/// instead: the other Netpbm formats by name, others as the image crate recognises them (from
+/// their first bytes, whichever formats it was built to decode), anything else by its first
+/// bytes.
+fn format_of(bytes: &[u8], path: &Path) -> Result<Format, MapError> {
+    let netpbm = |name: &str, digit: u8| format!("{name} (P{})", char::from(digit));
+    let format = match bytes {
+        [b'P', b'2' | b'5', ..] => return Ok(Format::Pgm),
+        _ if bytes.starts_with(PNG_SIGNATURE) => return Ok(Format::Png),
+        [b'P', d @ (b'1' | b'4'), ..] => netpbm("PBM", *d),
+        [b'P', d @ (b'3' | b'6'), ..] => netpbm("PPM", *d),
+        [b'P', d @ b'7', ..] => netpbm("PAM", *d),
+        [] => "empty".to_string(),
+        _ => match image::guess_format(bytes) {
+            Ok(format) => format!("{format:?}").to_uppercase(),
+            Err(_) => {
+                let start: Vec<String> = bytes.iter().take(8).map(|b| format!("{b:02x}")).collect();
+                format!("of no known image format (its first bytes are {})", start.join(" "))
+            }
+        },
+    };
+    Err(MapError::ImageFormat { path: path.to_path_buf(), format })
+}
+
 /// Decodes `bytes` (PGM P2/P5, PNG) into occupancy values by `meta`'s mode, thresholds and
 /// negate. `path` names the image in errors.
 pub(crate) fn decode(bytes: &[u8], meta: &MapMetadata, path: &Path) -> Result<Decoded, MapError> {
     let image_error =
         |e: image::ImageError| MapError::Image { path: path.to_path_buf(), reason: e.to_string() };
-    let reader = ImageReader::new(Cursor::new(bytes))
-        .with_guessed_format()
-        .map_err(|e| MapError::Image { path: path.to_path_buf(), reason: e.to_string() })?;
-    let (w, h) = reader.into_dimensions().map_err(image_error)?;
+    let format = match format_of(bytes, path)? {
+        Format::Pgm => ImageFormat::Pnm,
+        Format::Png => ImageFormat::Png,
+    };
+    let (w, h) =
+        ImageReader::with_format(Cursor::new(bytes), format).into_dimensions().map_err(image_error)?;
     if w > MAX_IMAGE_SIDE || h > MAX_IMAGE_SIDE {
         return Err(MapError::TooLarge { width: u64::from(w), height: u64::from(h) });
     }
@@ -57,9 +96,7 @@ pub(crate) fn decode(bytes: &[u8], meta: &MapMetadata, path: &Path) -> Result<De
     limits.max_image_height = Some(MAX_IMAGE_SIDE);
     // An RGBA image of 16-bit samples of the largest grid, with room for the decoder's buffers.
     limits.max_alloc = Some((Grid::MAX_CELLS as u64) * 8 + (64 << 20));
-    let mut reader = ImageReader::new(Cursor::new(bytes))
-        .with_guessed_format()
-        .map_err(|e| MapError::Image { path: path.to_path_buf(), reason: e.to_string() })?;
+    let mut reader = ImageReader::with_format(Cursor::new(bytes), format);
     reader.limits(limits);
     let image = reader.decode().map_err(image_error)?;
     let values = occupancy(&image, meta);

@@ -105,6 +105,29 @@ fn pgm_variants_read_alike() {
     );
 }
 
+#[test]
+fn images_other_than_pgm_and_png_are_refused_by_name() {
+    let m = meta(MapMode::Trinary, 0.196, 0.65);
+    let named = |bytes: &[u8]| match decode_map(&m, bytes, Path::new("map.pnm")) {
+        Err(MapError::ImageFormat { path, format }) => {
+            assert_eq!(path, Path::new("map.pnm"));
+            format
+        }
+        other => panic!("expected a refused format, got {other:?}"),
+    };
+    // Each a valid image of its kind, black and white or colour: map_server (SDL_image) reads
+    // them, but the documented contract is PGM and PNG.
+    assert_eq!(named(b"P1\n2 1\n0 1\n"), "PBM (P1)");
+    assert_eq!(named(b"P4\n2 1\n\x40"), "PBM (P4)");
+    assert_eq!(named(b"P3\n1 1\n255\n0 0 0\n"), "PPM (P3)");
+    assert_eq!(named(b"P6\n1 1\n255\n\x00\x00\x00"), "PPM (P6)");
+    let pam = b"P7\nWIDTH 1\nHEIGHT 1\nDEPTH 1\nMAXVAL 255\nTUPLTYPE GRAYSCALE\nENDHDR\n\x00";
+    assert_eq!(named(pam), "PAM (P7)");
+    assert!(named(b"\xff\xd8\xff\xe0\x00\x10JFIF\x00").contains("JPEG"));
+    assert!(named(b"hello").contains("68 65 6c 6c 6f"));
+    assert!(named(b"").contains("empty"));
+}
+
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("trailmark-map-files-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -127,7 +150,7 @@ fn malformed_inputs_are_typed_errors() {
     assert!(matches!(load("image: [", Some(pgm)), MapError::Yaml { .. }));
     assert!(matches!(load(yaml, None), MapError::Read(_)), "missing image");
     assert!(matches!(load(yaml, Some(b"P5 4 4 255\n\x00\x00")), MapError::Image { .. }), "short data");
-    assert!(matches!(load(yaml, Some(b"hello")), MapError::Image { .. }), "not an image");
+    assert!(matches!(load(yaml, Some(b"hello")), MapError::ImageFormat { .. }), "not an image");
     assert!(matches!(load(&yaml.replace("0.65", "1.2"), Some(pgm)), MapError::Thresholds { .. }));
     assert!(matches!(load(&yaml.replace("0.25", "-0.2"), Some(pgm)), MapError::Thresholds { .. }));
     assert!(matches!(load(&yaml.replace("0.25", "0.8"), Some(pgm)), MapError::Thresholds { .. }));

@@ -83,6 +83,42 @@ pub enum MapError {
         /// What it is instead: `"PPM (P6)"`, `"PBM (P1)"`, ... or what it starts with.
         format: String,
     },
+    /// A pixel of a PGM image holds a sample above the maxval its header gives (which would
+    /// read as white). Pixels are numbered as in the image, `(0, 0)` the top-left.
+    #[error(
+        "pixel ({x}, {y}) of the map image {} is {value}, above the maxval {maxval} its header gives",
+        path.display()
+    )]
+    PixelAboveMaxval {
+        /// The image file (as named to [`crate::decode_map`] when decoded from memory).
+        path: PathBuf,
+        /// The pixel's column, from the left.
+        x: u32,
+        /// The pixel's row, from the top.
+        y: u32,
+        /// Its sample.
+        value: u32,
+        /// The header's maxval.
+        maxval: u32,
+    },
+    /// A pixel of a palette PNG holds an index past the last entry of the palette (which would
+    /// read as black). Pixels are numbered as in the image, `(0, 0)` the top-left.
+    #[error(
+        "pixel ({x}, {y}) of the map image {} is palette index {index}, but the palette has {entries} entries",
+        path.display()
+    )]
+    PixelOutsidePalette {
+        /// The image file (as named to [`crate::decode_map`] when decoded from memory).
+        path: PathBuf,
+        /// The pixel's column, from the left.
+        x: u32,
+        /// The pixel's row, from the top.
+        y: u32,
+        /// Its index.
+        index: u32,
+        /// How many colours the palette has.
+        entries: u32,
+    },
     /// The map cannot be saved as asked (no shade reads back as each kind of cell under the
     /// thresholds, or the encoder failed).
     #[error("cannot save the map: {reason}")]

@@ -51,14 +51,22 @@ pub enum MapError {
         /// `occupied_thresh`.
         occupied: f64,
     },
-    /// The resolution is not a positive finite number of metres per cell.
-    #[error("the resolution must be a positive finite number of metres per cell, got {resolution}")]
+    /// The resolution is not a positive finite number of metres per cell of at most
+    /// [`crate::MAX_RESOLUTION`].
+    #[error(
+        "the map's `resolution` must be a positive number of metres per cell, at most {max:e}, got {resolution:?}",
+        max = crate::MAX_RESOLUTION
+    )]
     Resolution {
         /// The resolution given.
         resolution: f64,
     },
-    /// The origin is not finite.
-    #[error("the origin must be finite metres and radians, got [{x}, {y}, {yaw}]")]
+    /// The origin is not finite, or its x or y is beyond
+    /// [`MAX_COORDINATE`](trailmark_core::world::MAX_COORDINATE) in magnitude.
+    #[error(
+        "the map's `origin` must be finite metres and radians, x and y within +-{max:e} m, got [{x:?}, {y:?}, {yaw:?}]",
+        max = trailmark_core::world::MAX_COORDINATE
+    )]
     Origin {
         /// x in metres.
         x: f64,
@@ -66,6 +74,23 @@ pub enum MapError {
         y: f64,
         /// yaw in radians.
         yaw: f64,
+    },
+    /// A corner of the map lies beyond [`MAX_COORDINATE`](trailmark_core::world::MAX_COORDINATE)
+    /// in x or y, or its cells are smaller than [`crate::MIN_RELATIVE_RESOLUTION`] times the
+    /// largest coordinate it reaches (too fine for `f64` to tell points apart there).
+    #[error(
+        "a map of {width} x {height} cells of `resolution` {resolution:?} m at `origin` [{:?}, {:?}, {:?}] must have its corners within +-{max:e} m and cells of at least {rel:e} times its largest coordinate",
+        origin[0], origin[1], origin[2], max = trailmark_core::world::MAX_COORDINATE, rel = crate::MIN_RELATIVE_RESOLUTION
+    )]
+    Extent {
+        /// `[x, y, yaw]` of the lower-left corner.
+        origin: [f64; 3],
+        /// Width in cells.
+        width: u32,
+        /// Height in cells.
+        height: u32,
+        /// Metres per cell.
+        resolution: f64,
     },
     /// The image could not be decoded (unknown format, truncated, corrupt).
     #[error("cannot decode the map image {}: {reason}", path.display())]

@@ -61,9 +61,10 @@ pub fn load_map_file(yaml: impl AsRef<Path>) -> Result<LoadedMap, MapError> {
 /// field is not used); `name` names the image in errors.
 pub fn decode_map(metadata: &MapMetadata, image: &[u8], name: &Path) -> Result<OccupancyGrid, MapError> {
     metadata.check()?;
-    let decoded = pixels::decode(image, metadata, name)?;
-    let frame = MapFrame::new(decoded.width, decoded.height, metadata.resolution, metadata.origin)?;
-    OccupancyGrid::new(frame, decoded.values)
+    let image = pixels::Image::open(image, name)?;
+    // The frame is checked from the header's size, before any pixel is decoded.
+    let frame = MapFrame::new(image.width(), image.height(), metadata.resolution, metadata.origin)?;
+    OccupancyGrid::new(frame, image.occupancy(metadata)?)
 }
 
 /// How a map is saved: map_saver's mode and thresholds.

@@ -24,8 +24,22 @@
 use serde::{Deserialize, Serialize};
 use trailmark_core::geometry::{Point, Vector};
 use trailmark_core::grid::{Cell, Grid};
+use trailmark_core::world::MAX_COORDINATE;
 
 use crate::error::MapError;
+
+/// The largest resolution of a map, in metres per cell (10 km): at it, a map of the largest
+/// side ([`crate::MAX_IMAGE_SIDE`] cells) spans less than a third of
+/// [`MAX_COORDINATE`](trailmark_core::world::MAX_COORDINATE), the largest coordinate a polygon
+/// world supports and the bound on every corner of a map.
+pub const MAX_RESOLUTION: f64 = 1e4;
+
+/// The smallest cell of a map relative to the largest coordinate its corners reach: `f64`
+/// values lie about 2.2e-16 times their magnitude apart, so a cell of at least 1e-9 of the
+/// coordinates still holds millions of distinct points a side, and no two cell centres or path
+/// points collapse into one. A map at the far edge (1e9 m) has cells of at least a metre; one
+/// at UTM coordinates (up to 1e7 m) of at least a centimetre.
+pub const MIN_RELATIVE_RESOLUTION: f64 = 1e-9;
 
 /// A map's size in cells, its resolution and the pose of its lower-left corner.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -41,14 +55,27 @@ impl MapFrame {
     /// lower-left cell at `origin = [x, y, yaw]` (metres, radians, yaw counter-clockwise).
     ///
     /// Errors: an empty or too large size ([`MapError::Grid`]), a resolution that is not
-    /// positive and finite ([`MapError::Resolution`]), an origin that is not finite
-    /// ([`MapError::Origin`]).
+    /// positive and finite or above [`MAX_RESOLUTION`] ([`MapError::Resolution`]), an origin
+    /// that is not finite or whose x or y is beyond
+    /// [`MAX_COORDINATE`](trailmark_core::world::MAX_COORDINATE) ([`MapError::Origin`]), a
+    /// corner of the map beyond it, or cells smaller than [`MIN_RELATIVE_RESOLUTION`] times
+    /// the largest coordinate a corner reaches ([`MapError::Extent`]).
     pub fn new(width: usize, height: usize, resolution: f64, origin: [f64; 3]) -> Result<Self, MapError> {
         Grid::cell_count(width, height)?;
         check_resolution(resolution)?;
         check_origin(origin)?;
         // Within Grid::MAX_CELLS both sides fit a u32.
-        Ok(MapFrame { width: width as u32, height: height as u32, resolution, origin })
+        let frame = MapFrame { width: width as u32, height: height as u32, resolution, origin };
+        let (w, h) = (f64::from(frame.width) * resolution, f64::from(frame.height) * resolution);
+        let reach = [(0.0, 0.0), (w, 0.0), (0.0, h), (w, h)]
+            .map(|(u, v)| frame.world_point(u, v))
+            .iter()
+            .fold(0.0, |m: f64, p| m.max(p.x.abs()).max(p.y.abs()));
+        // NaN fails the comparison: a corner that is not finite is refused too.
+        if !(reach <= MAX_COORDINATE && resolution >= MIN_RELATIVE_RESOLUTION * reach) {
+            return Err(MapError::Extent { origin, width: frame.width, height: frame.height, resolution });
+        }
+        Ok(frame)
     }
 
     /// The width in cells.
@@ -155,11 +182,17 @@ impl MapFrame {
 }
 
 pub(crate) fn check_resolution(resolution: f64) -> Result<(), MapError> {
-    if resolution.is_finite() && resolution > 0.0 { Ok(()) } else { Err(MapError::Resolution { resolution }) }
+    // NaN fails the comparison.
+    if resolution > 0.0 && resolution <= MAX_RESOLUTION {
+        Ok(())
+    } else {
+        Err(MapError::Resolution { resolution })
+    }
 }
 
 pub(crate) fn check_origin(origin: [f64; 3]) -> Result<(), MapError> {
-    if origin.iter().all(|v| v.is_finite()) {
+    let [x, y, yaw] = origin;
+    if x.abs() <= MAX_COORDINATE && y.abs() <= MAX_COORDINATE && yaw.is_finite() {
         Ok(())
     } else {
         Err(MapError::Origin { x: origin[0], y: origin[1], yaw: origin[2] })
@@ -207,5 +240,37 @@ mod tests {
             assert!(matches!(MapFrame::new(3, 3, r, [0.0; 3]), Err(MapError::Resolution { .. })));
         }
         assert!(matches!(MapFrame::new(3, 3, 0.1, [0.0, f64::NAN, 0.0]), Err(MapError::Origin { .. })));
+    }
+
+    #[test]
+    fn coordinates_stay_within_what_a_world_supports() {
+        // Far origins, where f64 spacing swallows the cells, and absurd resolutions.
+        let origin = |o: [f64; 3]| match MapFrame::new(3, 3, 0.05, o) {
+            Err(e @ MapError::Origin { .. }) => e.to_string(),
+            other => panic!("expected an origin error, got {other:?}"),
+        };
+        assert!(
+            origin([1e15, 0.0, 0.0]).contains("`origin`")
+                && origin([1e15, 0.0, 0.0]).contains("1000000000000000")
+        );
+        assert!(origin([0.0, -1.5e9, 0.0]).contains("-1500000000"));
+        for r in [1e300, 2e4] {
+            let e = MapFrame::new(3, 3, r, [0.0; 3]).unwrap_err();
+            assert!(matches!(e, MapError::Resolution { resolution } if resolution == r), "{e}");
+            assert!(e.to_string().contains("`resolution`"));
+        }
+        // Within the limits at their edge: the corner at -1e9, cells of MAX_RESOLUTION.
+        assert!(MapFrame::new(3, 3, 1e4, [-1e9, -1e9, 0.0]).is_ok());
+        // The far corner beyond 1e9, straight or turned a quarter.
+        let extent = |w: usize, r: f64, o: [f64; 3]| match MapFrame::new(w, 2, r, o) {
+            Err(e @ MapError::Extent { .. }) => e.to_string(),
+            other => panic!("expected an extent error, got {other:?}"),
+        };
+        assert!(extent(10, 0.05, [1e9 - 0.1, 0.0, 0.0]).contains("`origin` [999999999.9, 0.0, 0.0]"));
+        assert!(extent(10, 1.0, [0.0, 1e9 - 5.0, std::f64::consts::FRAC_PI_2]).contains("10 x 2"));
+        assert!(MapFrame::new(10, 2, 1.0, [0.0, 1e9 - 11.0, std::f64::consts::FRAC_PI_2]).is_ok());
+        // Cells too fine to be told apart so far out: under 1e-9 of the farthest coordinate.
+        assert!(extent(10, 0.5, [-1e9, 0.0, 0.0]).contains("`resolution` 0.5"));
+        assert!(MapFrame::new(10, 2, 1.0, [-1e9, 0.0, 0.0]).is_ok());
     }
 }

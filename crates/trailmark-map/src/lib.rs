@@ -56,7 +56,7 @@ pub use files::{
     LoadedMap, MAX_IMAGE_BYTES, MAX_YAML_BYTES, SaveOptions, decode_map, encode_map, load_map, load_map_file,
     save_map,
 };
-pub use frame::MapFrame;
+pub use frame::{MAX_RESOLUTION, MIN_RELATIVE_RESOLUTION, MapFrame};
 pub use inflation::Inflation;
 pub use message::MAX_MESSAGE_BYTES;
 pub use metadata::{MapMetadata, MapMode};

@@ -130,8 +130,11 @@ impl MapMetadata {
         Ok(meta)
     }
 
-    /// Checks the values: a positive finite resolution, a finite origin, and
-    /// `0 <= free_thresh < occupied_thresh <= 1`.
+    /// Checks the values: a positive resolution of at most [`crate::MAX_RESOLUTION`], a finite
+    /// origin whose x and y are within
+    /// [`MAX_COORDINATE`](trailmark_core::world::MAX_COORDINATE), and
+    /// `0 <= free_thresh < occupied_thresh <= 1`. (The map's corners are checked against the
+    /// same bound once its size is known, [`crate::MapFrame::new`].)
     pub fn check(&self) -> Result<(), MapError> {
         check_resolution(self.resolution)?;
         check_origin(self.origin)?;
@@ -298,6 +301,9 @@ mod tests {
         assert!(matches!(bad("0.03", "-0.03"), MapError::Resolution { .. }));
         assert!(matches!(bad("0.03", ".nan"), MapError::Resolution { .. }));
         assert!(matches!(bad("0.03", "fast"), MapError::InvalidField { field: "resolution", .. }));
+        assert!(matches!(bad("0.03", "1e300"), MapError::Resolution { .. }));
+        assert!(matches!(bad("[-15.1", "[1e15"), MapError::Origin { x: 1e15, .. }));
+        assert!(matches!(bad("-25, 0]", "-1e10, 0]"), MapError::Origin { y: -1e10, .. }));
         assert!(matches!(bad("-25, 0]", "-25]"), MapError::InvalidField { field: "origin", .. }));
         assert!(matches!(bad("0.65", "1.5"), MapError::Thresholds { .. }));
         assert!(matches!(bad("0.1\n", "0.7\n"), MapError::Thresholds { .. }));

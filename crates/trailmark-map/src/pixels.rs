@@ -29,7 +29,6 @@ use std::path::Path;
 use image::ImageEncoder;
 use image::codecs::png::PngEncoder;
 use image::codecs::pnm::{PnmEncoder, PnmSubtype, SampleEncoding};
-use trailmark_core::grid::Grid;
 
 use crate::error::MapError;
 use crate::metadata::{MapMetadata, MapMode};
@@ -37,13 +36,6 @@ use crate::occupancy::UNKNOWN;
 
 /// The largest side of a map image accepted, in pixels.
 pub const MAX_IMAGE_SIDE: u32 = 1 << 16;
-
-/// A decoded image's size and its occupancy values, row 0 at the top.
-pub(crate) struct Decoded {
-    pub width: usize,
-    pub height: usize,
-    pub values: Vec<i8>,
-}
 
 /// The formats map images are read in. map_server reads whatever SDL_image reads; maps are
 /// PGM or PNG, and only these are documented and read.
@@ -82,22 +74,8 @@ fn format_of(bytes: &[u8], path: &Path) -> Result<Format, MapError> {
     Err(MapError::ImageFormat { path: path.to_path_buf(), format })
 }
 
-/// Decodes `bytes` (PGM P2/P5, PNG) into occupancy values by `meta`'s mode, thresholds and
-/// negate. `path` names the image in errors.
-pub(crate) fn decode(bytes: &[u8], meta: &MapMetadata, path: &Path) -> Result<Decoded, MapError> {
-    let image = Image::open(bytes, path)?;
-    let (w, h) = (image.width, image.height);
-    if w > MAX_IMAGE_SIDE || h > MAX_IMAGE_SIDE {
-        return Err(MapError::TooLarge { width: u64::from(w), height: u64::from(h) });
-    }
-    // An empty image, or more cells than a grid may have.
-    Grid::cell_count(w as usize, h as usize)?;
-    let values = image.occupancy(meta)?;
-    Ok(Decoded { width: w as usize, height: h as usize, values })
-}
-
 /// A map image whose header has been read: its size is known, its pixels not yet decoded.
-struct Image<'a> {
+pub(crate) struct Image<'a> {
     bytes: &'a [u8],
     path: &'a Path,
     width: u32,
@@ -117,24 +95,44 @@ struct PgmHeader {
 }
 
 impl<'a> Image<'a> {
-    /// Reads the header of a PGM or PNG image (any other format is refused), nothing more.
-    fn open(bytes: &'a [u8], path: &'a Path) -> Result<Self, MapError> {
+    /// Reads the header of a PGM or PNG image (any other format is refused), nothing more;
+    /// `path` names the image in errors. A side above [`MAX_IMAGE_SIDE`] is refused
+    /// ([`MapError::TooLarge`]).
+    pub(crate) fn open(bytes: &'a [u8], path: &'a Path) -> Result<Self, MapError> {
         let image = |width, height, pgm| Image { bytes, path, width, height, pgm };
-        match format_of(bytes, path)? {
+        let image = match format_of(bytes, path)? {
             Format::Pgm => {
                 let (width, height, header) = pgm_header(bytes).map_err(|reason| bad(path, reason))?;
-                Ok(image(width, height, Some(header)))
+                image(width, height, Some(header))
             }
             Format::Png => {
                 let mut decoder = png_decoder(bytes);
                 let info = decoder.read_header_info().map_err(|e| bad(path, e.to_string()))?;
-                Ok(image(info.width, info.height, None))
+                image(info.width, info.height, None)
             }
+        };
+        if image.width > MAX_IMAGE_SIDE || image.height > MAX_IMAGE_SIDE {
+            return Err(MapError::TooLarge {
+                width: u64::from(image.width),
+                height: u64::from(image.height),
+            });
         }
+        Ok(image)
     }
 
-    /// The occupancy of every pixel, row-major from the top.
-    fn occupancy(&self, meta: &MapMetadata) -> Result<Vec<i8>, MapError> {
+    /// The width in pixels.
+    pub(crate) fn width(&self) -> usize {
+        self.width as usize
+    }
+
+    /// The height in pixels.
+    pub(crate) fn height(&self) -> usize {
+        self.height as usize
+    }
+
+    /// The occupancy of every pixel by `meta`'s mode, thresholds and negate, row-major from the
+    /// top. The caller has checked the size ([`crate::MapFrame::new`]): this allocates for it.
+    pub(crate) fn occupancy(&self, meta: &MapMetadata) -> Result<Vec<i8>, MapError> {
         match self.pgm {
             Some(header) => self.pgm_occupancy(header, &Rule::new(meta)),
             None => self.png_occupancy(&Rule::new(meta)),

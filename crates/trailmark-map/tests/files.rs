@@ -157,6 +157,10 @@ fn malformed_inputs_are_typed_errors() {
     assert!(matches!(load(&yaml.replace("0.05", "-0.05"), Some(pgm)), MapError::Resolution { .. }));
     assert!(matches!(load(&yaml.replace("0.05", "0"), Some(pgm)), MapError::Resolution { .. }));
     assert!(matches!(load(&yaml.replace("[0, 0, 0]", "[0, .inf, 0]"), Some(pgm)), MapError::Origin { .. }));
+    // A map reaching past 1e9 m is refused from the image's size, before its pixels are read
+    // (this raster is empty).
+    let far = yaml.replace("[0, 0, 0]", "[999999999, 0, 0]");
+    assert!(matches!(load(&far, Some(b"P5 1000 1000 255\n")), MapError::Extent { width: 1000, .. }));
     // Huge images are refused from the header, before anything is allocated for them.
     assert!(matches!(load(yaml, Some(b"P5 70000 2 255\n\x00")), MapError::TooLarge { width: 70000, .. }));
     assert!(matches!(load(yaml, Some(b"P5 60000 60000 255\n\x00")), MapError::Grid(_)));

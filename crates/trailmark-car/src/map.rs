@@ -9,7 +9,7 @@
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::grid::Grid;
 use trailmark_core::world::PolygonWorld;
-use trailmark_map::{Costmap, LETHAL, MAX_NON_OBSTACLE, MapFrame, TravelCost, squared_distances};
+use trailmark_map::{Costmap, LETHAL, MAX_NON_OBSTACLE, MapFrame, NO_SOURCE, TravelCost, squared_distances};
 
 use crate::error::CarError;
 use crate::raster::Cells;
@@ -111,9 +111,9 @@ impl CarMap {
     fn with_prices(frame: MapFrame, price: Vec<f64>) -> Self {
         let (width, height) = (frame.width() as usize, frame.height() as usize);
         let resolution = frame.resolution();
-        let clearance = squared_distances(width, height, |i| price[i].is_infinite())
+        let clearance = squared_distances(&frame, |i| price[i].is_infinite())
             .into_iter()
-            .map(|d| d.sqrt() * resolution)
+            .map(|d| if d == NO_SOURCE { f64::INFINITY } else { f64::from(d).sqrt() * resolution })
             .collect();
         CarMap { frame, width, height, resolution, price, clearance }
     }

@@ -26,6 +26,7 @@
 use serde::{Deserialize, Serialize};
 use trailmark_core::grid::{Cell, Grid};
 
+use crate::distance::NO_SOURCE;
 use crate::error::MapError;
 use crate::frame::MapFrame;
 use crate::inflation::Inflation;
@@ -132,14 +133,13 @@ impl Costmap {
     /// operations per cell.
     pub fn inflate(&mut self, inflation: &Inflation) -> Result<(), MapError> {
         inflation.check()?;
-        let (width, height, resolution) =
-            (self.frame.width() as usize, self.frame.height() as usize, self.frame.resolution());
-        let d2 = crate::distance::squared_distances(width, height, |i| self.costs[i] == LETHAL);
+        let resolution = self.frame.resolution();
+        let d2 = crate::distance::squared_distances(&self.frame, |i| self.costs[i] == LETHAL);
         for (cost, d2) in self.costs.iter_mut().zip(d2) {
-            if d2 == 0.0 || !d2.is_finite() {
+            if d2 == 0 || d2 == NO_SOURCE {
                 continue;
             }
-            let inflated = inflation.cost(d2.sqrt(), resolution);
+            let inflated = inflation.cost(f64::from(d2).sqrt(), resolution);
             *cost = match *cost {
                 NO_INFORMATION if inflated >= INSCRIBED => inflated,
                 NO_INFORMATION => NO_INFORMATION,

@@ -54,8 +54,7 @@ pub enum MapError {
     /// The resolution is not a positive finite number of metres per cell of at most
     /// [`crate::MAX_RESOLUTION`].
     #[error(
-        "the map's `resolution` must be a positive number of metres per cell, at most {max:e}, got {resolution:?}",
-        max = crate::MAX_RESOLUTION
+        "the map's `resolution` must be a positive number of metres per cell, at most 1e4, got {resolution:?}"
     )]
     Resolution {
         /// The resolution given.
@@ -80,7 +79,7 @@ pub enum MapError {
     /// largest coordinate it reaches (too fine for `f64` to tell points apart there).
     #[error(
         "a map of {width} x {height} cells of `resolution` {resolution:?} m at `origin` [{:?}, {:?}, {:?}] must have its corners within +-{max:e} m and cells of at least {rel:e} times its largest coordinate",
-        origin[0], origin[1], origin[2], max = trailmark_core::world::MAX_COORDINATE, rel = crate::MIN_RELATIVE_RESOLUTION
+        origin[0], origin[1], origin[2], max = trailmark_core::world::MAX_COORDINATE, rel = 1e-9
     )]
     Extent {
         /// `[x, y, yaw]` of the lower-left corner.
@@ -151,12 +150,13 @@ pub enum MapError {
         /// Why.
         reason: String,
     },
-    /// The image is larger than a grid may be ([`trailmark_core::grid::Grid::MAX_CELLS`]).
-    #[error("the map image is {width} x {height} pixels, too large for a grid")]
+    /// The map has more than [`crate::MAX_MAP_CELLS`] cells or a side longer than
+    /// [`crate::MAX_IMAGE_SIDE`] (a map file's image is refused from its header).
+    #[error("a map of {width} x {height} cells is too large: at most 67108864 cells and 32768 a side")]
     TooLarge {
-        /// Width in pixels.
+        /// Width in cells (the image's pixels).
         width: u64,
-        /// Height in pixels.
+        /// Height in cells.
         height: u64,
     },
     /// The grid's size is wrong (empty, too large) or does not match its data.

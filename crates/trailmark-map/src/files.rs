@@ -44,7 +44,9 @@ pub fn load_map(yaml: impl AsRef<Path>) -> Result<OccupancyGrid, MapError> {
 /// Loads a map_server YAML file and the image it names (relative to the YAML file's folder
 /// unless absolute): PGM (P2 or P5, comments allowed, 8 or 16 bits) or PNG (gray, gray with
 /// alpha, RGB, RGBA, palette). Any other image is refused ([`MapError::ImageFormat`]), PBM,
-/// PPM and PAM too, though map_server reads whatever SDL_image reads.
+/// PPM and PAM too, though map_server reads whatever SDL_image reads. A map has at most
+/// [`crate::MAX_MAP_CELLS`] cells, checked from the image's header before any pixel is
+/// decoded; the memory loading takes per cell is stated there.
 pub fn load_map_file(yaml: impl AsRef<Path>) -> Result<LoadedMap, MapError> {
     let yaml = yaml.as_ref();
     let metadata = MapMetadata::parse(&read_to_string_capped(yaml, MAX_YAML_BYTES)?)?;

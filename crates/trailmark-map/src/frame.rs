@@ -28,6 +28,34 @@ use trailmark_core::world::MAX_COORDINATE;
 
 use crate::error::MapError;
 
+/// The most cells a map may have: 8192 x 8192, 410 m x 410 m at 5 cm. Every map is checked
+/// against it ([`MapFrame::new`]), a map file from its image's header before any pixel is
+/// decoded.
+///
+/// What a map costs, in bytes per cell, from the code:
+///
+/// - Loading ([`crate::load_map`], [`crate::decode_map`]): the image file's bytes, held while
+///   it is decoded (at most [`crate::MAX_IMAGE_BYTES`]), and 1 byte a cell for the values. A
+///   PGM and a non-interlaced PNG are decoded a row at a time; an interlaced PNG's passes are
+///   gathered into a whole frame first, up to 8 bytes a cell more (16-bit RGBA). The PNG
+///   decoder's own buffers are capped apart from the cells (16 MiB: rows, ancillary chunks).
+/// - The map, an [`crate::OccupancyGrid`]: 1 byte a cell.
+/// - A [`crate::Costmap`]: 1 byte a cell; inflating it ([`crate::Costmap::inflate`]) 4 bytes a
+///   cell more while it runs (the squared distances, [`crate::squared_distances`]) and 24
+///   bytes per cell of the longer side.
+///
+/// At this maximum a byte a cell is 64 MiB: loading takes at most 9 bytes a cell beside the
+/// file (576 MiB, for an interlaced 16-bit RGBA PNG; 64 MiB for a PGM), and a loaded map made
+/// into a costmap and inflated 6 (384 MiB: the map, the costmap, the distances). The grid a
+/// planner searches ([`crate::Costmap::to_grid`]) is core's [`Grid`], 8 bytes a cell for its
+/// costs.
+pub const MAX_MAP_CELLS: usize = 1 << 26;
+
+/// The longest side of a map, in cells (its image's, in pixels): 32768. Within it the squared
+/// distance between two cells of a map, at most `2 x 32767^2`, fits the `u32` of
+/// [`crate::squared_distances`].
+pub const MAX_IMAGE_SIDE: u32 = 1 << 15;
+
 /// The largest resolution of a map, in metres per cell (10 km): at it, a map of the largest
 /// side ([`crate::MAX_IMAGE_SIDE`] cells) spans less than a third of
 /// [`MAX_COORDINATE`](trailmark_core::world::MAX_COORDINATE), the largest coordinate a polygon
@@ -54,17 +82,22 @@ impl MapFrame {
     /// A frame of `width x height` cells of `resolution` metres, the outer corner of the
     /// lower-left cell at `origin = [x, y, yaw]` (metres, radians, yaw counter-clockwise).
     ///
-    /// Errors: an empty or too large size ([`MapError::Grid`]), a resolution that is not
+    /// Errors: more than [`MAX_MAP_CELLS`] cells or a side longer than [`MAX_IMAGE_SIDE`]
+    /// ([`MapError::TooLarge`]), an empty size ([`MapError::Grid`]), a resolution that is not
     /// positive and finite or above [`MAX_RESOLUTION`] ([`MapError::Resolution`]), an origin
     /// that is not finite or whose x or y is beyond
     /// [`MAX_COORDINATE`](trailmark_core::world::MAX_COORDINATE) ([`MapError::Origin`]), a
     /// corner of the map beyond it, or cells smaller than [`MIN_RELATIVE_RESOLUTION`] times
     /// the largest coordinate a corner reaches ([`MapError::Extent`]).
     pub fn new(width: usize, height: usize, resolution: f64, origin: [f64; 3]) -> Result<Self, MapError> {
+        let side = MAX_IMAGE_SIDE as usize;
+        if width > side || height > side || width * height > MAX_MAP_CELLS {
+            return Err(MapError::TooLarge { width: width as u64, height: height as u64 });
+        }
         Grid::cell_count(width, height)?;
         check_resolution(resolution)?;
         check_origin(origin)?;
-        // Within Grid::MAX_CELLS both sides fit a u32.
+        // Within MAX_IMAGE_SIDE both sides fit a u32.
         let frame = MapFrame { width: width as u32, height: height as u32, resolution, origin };
         let (w, h) = (f64::from(frame.width) * resolution, f64::from(frame.height) * resolution);
         let reach = [(0.0, 0.0), (w, 0.0), (0.0, h), (w, h)]
@@ -243,6 +276,25 @@ mod tests {
     }
 
     #[test]
+    fn maps_are_at_most_max_map_cells_and_max_image_side() {
+        let too_large = |w: usize, h: usize| match MapFrame::new(w, h, 0.05, [0.0; 3]) {
+            Err(MapError::TooLarge { width, height }) => assert_eq!((width, height), (w as u64, h as u64)),
+            other => panic!("{w} x {h}: expected a map too large, got {other:?}"),
+        };
+        assert!(MapFrame::new(8192, 8192, 0.05, [0.0; 3]).is_ok());
+        too_large(8192, 8193);
+        too_large(16384, 16384);
+        assert!(MapFrame::new(crate::MAX_IMAGE_SIDE as usize, 2048, 0.05, [0.0; 3]).is_ok());
+        too_large(crate::MAX_IMAGE_SIDE as usize + 1, 1);
+        too_large(1, 1 << 20);
+        // The message states the limits (error.rs names no constant of the crate, so that
+        // it depends on no other file).
+        let e = MapFrame::new(8192, 8193, 0.05, [0.0; 3]).unwrap_err().to_string();
+        let limits = format!("at most {MAX_MAP_CELLS} cells and {MAX_IMAGE_SIDE} a side");
+        assert!(e.contains("8192 x 8193") && e.contains(&limits), "{e}");
+    }
+
+    #[test]
     fn coordinates_stay_within_what_a_world_supports() {
         // Far origins, where f64 spacing swallows the cells, and absurd resolutions.
         let origin = |o: [f64; 3]| match MapFrame::new(3, 3, 0.05, o) {
@@ -257,7 +309,9 @@ mod tests {
         for r in [1e300, 2e4] {
             let e = MapFrame::new(3, 3, r, [0.0; 3]).unwrap_err();
             assert!(matches!(e, MapError::Resolution { resolution } if resolution == r), "{e}");
-            assert!(e.to_string().contains("`resolution`"));
+            assert!(e.to_string().contains(&format!(
+                "`resolution` must be a positive number of metres per cell, at most {MAX_RESOLUTION:e}"
+            )));
         }
         // Within the limits at their edge: the corner at -1e9, cells of MAX_RESOLUTION.
         assert!(MapFrame::new(3, 3, 1e4, [-1e9, -1e9, 0.0]).is_ok());
@@ -271,6 +325,8 @@ mod tests {
         assert!(MapFrame::new(10, 2, 1.0, [0.0, 1e9 - 11.0, std::f64::consts::FRAC_PI_2]).is_ok());
         // Cells too fine to be told apart so far out: under 1e-9 of the farthest coordinate.
         assert!(extent(10, 0.5, [-1e9, 0.0, 0.0]).contains("`resolution` 0.5"));
+        let relative = format!("at least {MIN_RELATIVE_RESOLUTION:e} times");
+        assert!(extent(10, 0.5, [-1e9, 0.0, 0.0]).contains(&relative));
         assert!(MapFrame::new(10, 2, 1.0, [-1e9, 0.0, 0.0]).is_ok());
     }
 }

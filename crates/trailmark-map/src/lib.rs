@@ -50,18 +50,17 @@ mod values;
 
 pub use clearance::CostmapClearance;
 pub use costmap::{Costmap, CostmapSettings, TravelCost, Unknown};
-pub use distance::squared_distances;
+pub use distance::{NO_SOURCE, squared_distances};
 pub use error::MapError;
 pub use files::{
     LoadedMap, MAX_IMAGE_BYTES, MAX_YAML_BYTES, SaveOptions, decode_map, encode_map, load_map, load_map_file,
     save_map,
 };
-pub use frame::{MAX_RESOLUTION, MIN_RELATIVE_RESOLUTION, MapFrame};
+pub use frame::{MAX_IMAGE_SIDE, MAX_MAP_CELLS, MAX_RESOLUTION, MIN_RELATIVE_RESOLUTION, MapFrame};
 pub use inflation::Inflation;
 pub use message::MAX_MESSAGE_BYTES;
 pub use metadata::{MapMetadata, MapMode};
 pub use occupancy::{FREE, OCCUPIED, OccupancyCounts, OccupancyGrid, UNKNOWN};
 pub use picture::{CostmapSvg, cost_colour};
-pub use pixels::MAX_IMAGE_SIDE;
 pub use trailmark_core::footprint::Footprint;
 pub use values::{FREE_SPACE, INSCRIBED, LETHAL, MAX_NON_OBSTACLE, NO_INFORMATION};

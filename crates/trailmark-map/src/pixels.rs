@@ -34,9 +34,6 @@ use crate::error::MapError;
 use crate::metadata::{MapMetadata, MapMode};
 use crate::occupancy::UNKNOWN;
 
-/// The largest side of a map image accepted, in pixels.
-pub const MAX_IMAGE_SIDE: u32 = 1 << 16;
-
 /// The formats map images are read in. map_server reads whatever SDL_image reads; maps are
 /// PGM or PNG, and only these are documented and read.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -96,28 +93,20 @@ struct PgmHeader {
 
 impl<'a> Image<'a> {
     /// Reads the header of a PGM or PNG image (any other format is refused), nothing more;
-    /// `path` names the image in errors. A side above [`MAX_IMAGE_SIDE`] is refused
-    /// ([`MapError::TooLarge`]).
+    /// `path` names the image in errors.
     pub(crate) fn open(bytes: &'a [u8], path: &'a Path) -> Result<Self, MapError> {
         let image = |width, height, pgm| Image { bytes, path, width, height, pgm };
-        let image = match format_of(bytes, path)? {
+        match format_of(bytes, path)? {
             Format::Pgm => {
                 let (width, height, header) = pgm_header(bytes).map_err(|reason| bad(path, reason))?;
-                image(width, height, Some(header))
+                Ok(image(width, height, Some(header)))
             }
             Format::Png => {
                 let mut decoder = png_decoder(bytes);
                 let info = decoder.read_header_info().map_err(|e| bad(path, e.to_string()))?;
-                image(info.width, info.height, None)
+                Ok(image(info.width, info.height, None))
             }
-        };
-        if image.width > MAX_IMAGE_SIDE || image.height > MAX_IMAGE_SIDE {
-            return Err(MapError::TooLarge {
-                width: u64::from(image.width),
-                height: u64::from(image.height),
-            });
         }
-        Ok(image)
     }
 
     /// The width in pixels.

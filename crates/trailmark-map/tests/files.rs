@@ -163,7 +163,7 @@ fn malformed_inputs_are_typed_errors() {
     assert!(matches!(load(&far, Some(b"P5 1000 1000 255\n")), MapError::Extent { width: 1000, .. }));
     // Huge images are refused from the header, before anything is allocated for them.
     assert!(matches!(load(yaml, Some(b"P5 70000 2 255\n\x00")), MapError::TooLarge { width: 70000, .. }));
-    assert!(matches!(load(yaml, Some(b"P5 60000 60000 255\n\x00")), MapError::Grid(_)));
+    assert!(matches!(load(yaml, Some(b"P5 6000 60000 255\n\x00")), MapError::TooLarge { width: 6000, .. }));
     assert!(matches!(load(yaml, Some(b"P5 0 3 255\n")), MapError::Image { .. } | MapError::Grid(_)));
     // An image path that names a folder.
     std::fs::write(dir.join("map.yaml"), yaml).unwrap();

@@ -220,7 +220,13 @@ impl<'a> Image<'a> {
         let has_alpha = matches!(colour, png::ColorType::GrayscaleAlpha | png::ColorType::Rgba);
         let width = self.width as usize;
         let mut values = Vec::with_capacity(width * self.height as usize);
+        // The bytes of a row as the header's size gives it: the decoder checks that an
+        // animated PNG's first frame is the whole image, and a row is checked again here.
+        let row_bytes = (width * samples * bits).div_ceil(8);
         let mut convert = |y: usize, row: &[u8]| -> Result<(), MapError> {
+            if row.len() < row_bytes {
+                return Err(bad(self.path, format!("row {y} has {} of its {row_bytes} bytes", row.len())));
+            }
             for x in 0..width {
                 if indexed {
                     // Indices packed from the high bits of each byte.

@@ -150,21 +150,7 @@ fn interlaced_png(width: u32, height: u32, colour: u8, depth: u8, pixel: usize, 
             }
         }
     }
-    let mut zlib = vec![0x78, 0x01];
-    let blocks: Vec<&[u8]> = raw.chunks(65535).collect();
-    for (k, block) in blocks.iter().enumerate() {
-        zlib.push(u8::from(k + 1 == blocks.len()));
-        let len = block.len() as u16;
-        zlib.extend_from_slice(&len.to_le_bytes());
-        zlib.extend_from_slice(&(!len).to_le_bytes());
-        zlib.extend_from_slice(block);
-    }
-    let (mut a, mut b) = (1u32, 0u32);
-    for &byte in &raw {
-        a = (a + u32::from(byte)) % 65521;
-        b = (b + a) % 65521;
-    }
-    zlib.extend_from_slice(&((b << 16) | a).to_be_bytes());
+    let zlib = zlib_stored(&raw);
     let mut out = b"\x89PNG\r\n\x1a\n".to_vec();
     let mut ihdr = Vec::new();
     ihdr.extend_from_slice(&width.to_be_bytes());
@@ -178,6 +164,56 @@ fn interlaced_png(width: u32, height: u32, colour: u8, depth: u8, pixel: usize, 
     chunk(&mut out, b"IDAT", &zlib);
     chunk(&mut out, b"IEND", &[]);
     out
+}
+
+/// A stored (uncompressed) zlib stream of `raw`.
+fn zlib_stored(raw: &[u8]) -> Vec<u8> {
+    let mut zlib = vec![0x78, 0x01];
+    let blocks: Vec<&[u8]> = raw.chunks(65535).collect();
+    for (k, block) in blocks.iter().enumerate() {
+        zlib.push(u8::from(k + 1 == blocks.len()));
+        let len = block.len() as u16;
+        zlib.extend_from_slice(&len.to_le_bytes());
+        zlib.extend_from_slice(&(!len).to_le_bytes());
+        zlib.extend_from_slice(block);
+    }
+    let (mut a, mut b) = (1u32, 0u32);
+    for &byte in raw {
+        a = (a + u32::from(byte)) % 65521;
+        b = (b + a) % 65521;
+    }
+    zlib.extend_from_slice(&((b << 16) | a).to_be_bytes());
+    zlib
+}
+
+/// A 4 x 2 animated PNG of gray pixels whose first frame, before the image data, claims
+/// `width x height`.
+fn animated_png(width: u32, height: u32) -> Vec<u8> {
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut ihdr = Vec::new();
+    ihdr.extend_from_slice(&4u32.to_be_bytes());
+    ihdr.extend_from_slice(&2u32.to_be_bytes());
+    ihdr.extend_from_slice(&[8, 0, 0, 0, 0]);
+    chunk(&mut png, b"IHDR", &ihdr);
+    chunk(&mut png, b"acTL", &[0, 0, 0, 1, 0, 0, 0, 0]);
+    let mut fctl = vec![0, 0, 0, 0];
+    for v in [width, height, 0, 0] {
+        fctl.extend_from_slice(&v.to_be_bytes());
+    }
+    fctl.extend_from_slice(&[0, 1, 0, 100, 0, 0]);
+    chunk(&mut png, b"fcTL", &fctl);
+    chunk(&mut png, b"IDAT", &zlib_stored(&[0, 10, 20, 30, 40, 0, 1, 2, 3, 4]));
+    chunk(&mut png, b"IEND", &[]);
+    png
+}
+
+#[test]
+fn an_animated_png_whose_first_frame_is_not_the_image_is_a_typed_error() {
+    let m = meta(MapMode::Raw, 0.25, 0.65);
+    let read = |png: &[u8]| decode_map(&m, png, Path::new("map.png"));
+    assert_eq!(read(&animated_png(4, 2)).unwrap().values(), &[10, 20, 30, 40, 1, 2, 3, 4]);
+    // Rows shorter than the image's would be read past their end.
+    assert!(matches!(read(&animated_png(2, 1)), Err(MapError::Image { .. })));
 }
 
 /// A PNG of random pixels: colour type, bit depth, a tRNS chunk or none, interlaced or not.

@@ -45,13 +45,17 @@ fn documents_name_what_is_wrong() {
     let err = |problem: ProblemSpec| solve(&problem, EXAMPLES).expect_err("an error");
     // A pose without a heading.
     match err(office("[-4.2, -2.2]", "[4.3, 2.3, 0.0]", CAR)) {
-        SolveError::Document(DocumentError::NotAPoint { which: "start", .. }) => {}
+        e @ SolveError::Document(DocumentError::NotAPose {
+            which: "start", planner: "hybrid_astar", ..
+        }) => {
+            assert!(e.to_string().contains("expects [x, y, heading]"), "{e}");
+        }
         other => panic!("{other:?}"),
     }
     let mut infinite = office("[-4.2, -2.2, 0.0]", "[4.3, 2.3, 0.0]", CAR);
     infinite.goal[2] = f64::INFINITY;
     match err(infinite) {
-        SolveError::Document(DocumentError::NotAPoint { which: "goal", .. }) => {}
+        SolveError::Document(DocumentError::NotAPose { which: "goal", .. }) => {}
         other => panic!("{other:?}"),
     }
     // Settings out of range.

@@ -1,4 +1,4 @@
-//! Box worlds: every waypoint inside the bounds and outside every box's interior, every motion
+//! Box worlds: every waypoint inside the bounds and outside every (closed) box, every motion
 //! sampled every 1/200 of its length with each sample tested against the boxes directly, the
 //! path from the start (to the goal when solved), and the cost equal to the path's length.
 
@@ -9,9 +9,9 @@ use crate::close;
 /// Samples per motion.
 pub const SAMPLES_PER_MOTION: usize = 200;
 
-/// Whether `q` is in the bounds and inside no box's interior.
+/// Whether `q` is in the bounds and in no box (faces included: boxes are closed).
 fn clear(world: &BoxesSpec, q: &[f64]) -> bool {
-    let inside = |lo: &[f64], hi: &[f64]| q.iter().zip(lo.iter().zip(hi)).all(|(x, (l, h))| x > l && x < h);
+    let inside = |lo: &[f64], hi: &[f64]| q.iter().zip(lo.iter().zip(hi)).all(|(x, (l, h))| x >= l && x <= h);
     let in_bounds =
         q.len() == world.bounds.len() && q.iter().zip(&world.bounds).all(|(x, [l, h])| x >= l && x <= h);
     in_bounds && !world.obstacles.iter().any(|[lo, hi]| inside(lo, hi))

@@ -10,7 +10,8 @@ use trailmark_core::footprint::Footprint;
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::reeds_shepp::Gear;
 use trailmark_core::svg::WorldSvg;
-use trailmark_core::world::{Polygon, PolygonWorld};
+use trailmark_core::termination::Stop;
+use trailmark_core::world::PolygonWorld;
 use trailmark_map::{Costmap, CostmapSvg, LETHAL, TravelCost};
 
 use super::error::{DocumentError, SolveError};
@@ -29,14 +30,14 @@ fn pose(which: &'static str, value: &[f64]) -> Result<Pose, DocumentError> {
         [x, y, heading] if x.is_finite() && y.is_finite() && heading.is_finite() => {
             Ok(Pose::new(Vector::new(x, y), heading))
         }
-        _ => Err(DocumentError::NotAPoint { which, value: value.to_vec(), graph: "hybrid_astar" }),
+        _ => Err(DocumentError::NotAPose { which, value: value.to_vec(), planner: "hybrid_astar" }),
     }
 }
 
 /// The planner's polygon footprint, if it gives one.
 fn given_footprint(spec: &HybridSpec) -> Result<Option<Footprint>, SolveError> {
     let Some(points) = &spec.footprint else { return Ok(None) };
-    Ok(Some(Footprint::Polygon(Polygon::try_from(points.clone()).map_err(DocumentError::Footprint)?)))
+    Ok(Some(Footprint::polygon(points.clone()).map_err(DocumentError::Footprint)?))
 }
 
 /// What a car plans on, and what its picture is drawn over.
@@ -62,9 +63,7 @@ fn on_ros_map(
     }
     let car = match (given_footprint(spec)?, &world.footprint) {
         (Some(car), _) => car,
-        (None, Some(points)) => {
-            Footprint::Polygon(Polygon::try_from(points.clone()).map_err(DocumentError::Footprint)?)
-        }
+        (None, Some(points)) => Footprint::polygon(points.clone()).map_err(DocumentError::Footprint)?,
         (None, None) => Footprint::Radius(world.robot_radius.unwrap_or(DEFAULT_ROBOT_RADIUS)),
     };
     // The costmap is inflated around the planner's footprint when it gives one.
@@ -132,10 +131,14 @@ pub(super) fn solve_car(
         }
     };
     let planner = HybridAStar::new(&map, &car, spec.settings()).map_err(SolveError::Car)?;
+    let mut stopped = None;
     let (path, status, stats) = match planner.plan(&start, &goal, &spec.termination()) {
         Ok(plan) => (Some(plan.path), Status::Solved, plan.stats),
-        Err(CarError::NoPath { stop: None, stats }) => (None, Status::NoPath, stats),
-        Err(CarError::NoPath { stop: Some(_), stats }) => (None, Status::Stopped, stats),
+        Err(CarError::NoPath { stop: Stop::Unreachable, stats }) => (None, Status::NoPath, stats),
+        Err(CarError::NoPath { stop, stats }) => {
+            stopped = Some(stop);
+            (None, Status::Stopped, stats)
+        }
         Err(e) => return Err(SolveError::Car(e)),
     };
     if let Some(picture) = picture {
@@ -180,6 +183,7 @@ pub(super) fn solve_car(
             expansions: Some(stats.expansions),
             time_s: stats.time.as_secs_f64(),
             car: record,
+            stop: stopped,
             ..ResultStats::default()
         },
     })

@@ -202,13 +202,16 @@ pub enum DocumentError {
         /// The graph.
         graph: &'static str,
     },
-    /// A start or goal of a Dubins roadmap that is not a finite pose.
-    #[error("the {which} {value:?} is not a pose: the \"dubins_prm\" graph expects [x, y, heading]")]
+    /// A start or goal of a planner of poses (a Dubins roadmap, Hybrid A*) that is not a
+    /// finite pose.
+    #[error("the {which} {value:?} is not a pose: \"{planner}\" expects [x, y, heading]")]
     NotAPose {
         /// `"start"` or `"goal"`.
         which: &'static str,
         /// The value given.
         value: Vec<f64>,
+        /// The graph or planner: `"dubins_prm"` or `"hybrid_astar"`.
+        planner: &'static str,
     },
     /// A Dubins roadmap without a turning radius.
     #[error("the \"dubins_prm\" graph needs a \"turning_radius\"")]
@@ -269,10 +272,18 @@ pub enum DocumentError {
         /// The planner.
         planner: &'static str,
     },
-    /// A planner made for grids themselves (jump point search) on another world, or on a
-    /// 4-connected grid.
+    /// A planner made for grids themselves (jump point search) on a 4-connected grid.
     #[error("the \"{planner}\" planner searches 8-connected grid worlds (\"connectivity\": 8) only")]
     NeedsEightConnectedGrid {
+        /// The planner.
+        planner: &'static str,
+    },
+    /// A planner made for grids themselves (jump point search) on a world that is not a grid
+    /// (a ROS map's costmap prices its cells; roadmaps have no rows to jump along).
+    #[error(
+        "the \"{planner}\" planner jumps along the rows of a grid world of uniform cost (\"world\": {{\"grid\": ...}}); it does not search ROS-map worlds, whose costmaps price cells, or roadmaps"
+    )]
+    NeedsGridWorld {
         /// The planner.
         planner: &'static str,
     },
@@ -308,9 +319,9 @@ pub enum DocumentError {
     /// A world with both a robot radius and a footprint.
     #[error("give \"robot_radius\" or \"footprint\", not both")]
     RadiusAndFootprint,
-    /// A footprint that is not a simple polygon.
+    /// A footprint that is not a simple polygon, or has too many vertices.
     #[error("the footprint: {0}")]
-    Footprint(trailmark_core::world::PolygonError),
+    Footprint(trailmark_core::footprint::FootprintError),
     /// A graph search where a sampling planner is run.
     #[error("the \"{planner}\" planner searches a graph; it does not sample states")]
     NotASamplingPlanner {

@@ -134,9 +134,11 @@ fn solve_car_roadmap<C: CarCurves>(
     let radius = problem.turning_radius.ok_or(DocumentError::NoTurningRadius)?;
     let space = Car::<C>::new(world.bounds(), radius)?;
     let pose = |which, value: &[f64]| {
-        space
-            .state_from_coordinates(value)
-            .ok_or_else(|| DocumentError::NotAPose { which, value: value.to_vec() })
+        space.state_from_coordinates(value).ok_or_else(|| DocumentError::NotAPose {
+            which,
+            value: value.to_vec(),
+            planner: "dubins_prm",
+        })
     };
     let (start, goal) = (pose("start", &problem.start)?, pose("goal", &problem.goal)?);
     let clock = Instant::now();

@@ -71,6 +71,10 @@ impl std::fmt::Debug for Waypoint {
 /// Statistics of a result. Counters a planner does not keep are omitted.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct ResultStats {
+    /// Why a planner ended without a path when it proved nothing (`"lattice_exhausted"`,
+    /// `"time_limit"`, ...); omitted where a planner does not say.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stop: Option<trailmark_core::termination::Stop>,
     /// Nodes expanded (taken from the open list and their successors generated).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub expansions: Option<u64>,

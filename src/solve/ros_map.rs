@@ -28,9 +28,7 @@ pub const DEFAULT_COST_FACTOR: f64 = 2.0;
 pub fn ros_costmap(world: &RosMapSpec, base_dir: impl AsRef<Path>) -> Result<Costmap, SolveError> {
     let footprint = match (&world.robot_radius, &world.footprint) {
         (Some(_), Some(_)) => return Err(DocumentError::RadiusAndFootprint.into()),
-        (_, Some(points)) => Footprint::Polygon(
-            trailmark_core::world::Polygon::try_from(points.clone()).map_err(DocumentError::Footprint)?,
-        ),
+        (_, Some(points)) => Footprint::polygon(points.clone()).map_err(DocumentError::Footprint)?,
         (radius, None) => Footprint::Radius(radius.unwrap_or(DEFAULT_ROBOT_RADIUS)),
     };
     let inflation = Inflation {

@@ -194,8 +194,16 @@ fn convex_hull(points: &[Point]) -> Vec<Point> {
     hull
 }
 
-/// The convex polygon `hull` (counter-clockwise) with every edge moved out by `margin`: it holds
-/// every point within `margin` of the hull.
+/// The largest turn of the outline drawn about a grown corner, per segment: each segment is
+/// tangent to the circle of the margin, so the outline is within `margin / cos(PI / 16)`, two
+/// percent beyond the margin, of the hull.
+const CORNER_TURN: f64 = std::f64::consts::PI / 8.0;
+
+/// The convex polygon `hull` (counter-clockwise) grown by `margin`: it holds every point within
+/// `margin` of the hull and none farther than `margin / cos(CORNER_TURN / 2)`. Each corner is
+/// rounded by segments tangent to the circle of the margin about it; the corner where the two
+/// moved edges meet would lie `margin / cos(angle / 2)` out, far beyond the margin at a
+/// sharp corner (a thin triangle grown by a centimetre reached a metre).
 fn grown(hull: &[Point], margin: f64) -> Vec<Point> {
     let n = hull.len();
     if margin == 0.0 || n < 3 {
@@ -205,14 +213,25 @@ fn grown(hull: &[Point], margin: f64) -> Vec<Point> {
         let d = (b - a).normalize();
         nalgebra::Vector2::new(d.y, -d.x)
     };
-    (0..n)
-        .map(|i| {
-            let (prev, here, next) = (hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]);
-            let (n1, n2) = (normal(prev, here), normal(here, next));
-            // The corner of the two moved edges: here + margin (n1 + n2) / (1 + n1 . n2).
-            here + (n1 + n2) * (margin / (1.0 + n1.dot(&n2)))
-        })
-        .collect()
+    let mut outline = Vec::with_capacity(2 * n);
+    for i in 0..n {
+        let (prev, here, next) = (hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]);
+        let (from, to) = (normal(prev, here), normal(here, next));
+        // The outline turns left by `turn` (in [0, PI)) at a corner of a counter-clockwise hull.
+        let turn = from.perp(&to).atan2(from.dot(&to)).max(0.0);
+        let pieces = (turn / CORNER_TURN).ceil().max(1.0);
+        let piece = turn / pieces;
+        let reach = margin / (0.5 * piece).cos();
+        // The corners of the tangent segments; the moved edges join them (their points of
+        // tangency lie on those edges).
+        let start = from.y.atan2(from.x);
+        for k in 0..pieces as usize {
+            let angle = start + piece * (k as f64 + 0.5);
+            outline.push(here + nalgebra::Vector2::new(angle.cos(), angle.sin()) * reach);
+        }
+    }
+    outline.dedup();
+    outline
 }
 
 #[cfg(test)]
@@ -238,8 +257,49 @@ mod tests {
         let hull = convex_hull(&notched);
         assert_eq!(hull.len(), 4);
         let big = grown(&hull, 0.5);
-        assert!(big.iter().any(|p| (p.x + 0.5).abs() < 1e-12 && (p.y + 0.5).abs() < 1e-12));
-        assert!(big.iter().any(|p| (p.x - 2.5).abs() < 1e-12 && (p.y - 2.5).abs() < 1e-12));
+        // The square's corners are rounded, not mitred: (2.5, 2.5) is 0.71 from the hull.
+        assert_eq!(big.len(), 16);
+        assert!(!big.iter().any(|p| (p.x - 2.5).abs() < 1e-9 && (p.y - 2.5).abs() < 1e-9));
+    }
+
+    /// The distance from `p` to the convex polygon `v` (0 inside).
+    fn distance_to_convex(v: &[Point], p: Point) -> f64 {
+        let n = v.len();
+        let inside = (0..n).all(|i| orient(v[i], v[(i + 1) % n], p) >= 0.0);
+        if inside {
+            return 0.0;
+        }
+        let to_segment = |a: Point, b: Point| {
+            let ab = b - a;
+            let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+            (p - (a + ab * t)).norm()
+        };
+        (0..n).map(|i| to_segment(v[i], v[(i + 1) % n])).fold(f64::INFINITY, f64::min)
+    }
+
+    #[test]
+    fn growth_holds_the_margin_and_stays_near_it_at_sharp_corners() {
+        // A thin triangle: a 2-degree corner at (10, 0).
+        let thin = [Point::new(0.0, -0.1), Point::new(10.0, 0.0), Point::new(0.0, 0.1)];
+        for margin in [0.01, 0.3] {
+            let hull = convex_hull(&thin);
+            let big = grown(&hull, margin);
+            let n = big.len();
+            assert!((0..n).all(|i| orient(big[i], big[(i + 1) % n], big[(i + 2) % n]) >= 0.0), "convex");
+            // Every outline vertex lies within 2% beyond the margin of the hull...
+            for &p in &big {
+                let d = distance_to_convex(&hull, p);
+                assert!(d >= margin * (1.0 - 1e-9) && d <= margin * 1.0197, "{p:?}: {d}");
+            }
+            // ... and every point at the margin around the hull lies inside the outline.
+            for &corner in &hull {
+                for k in 0..360 {
+                    let a = f64::from(k).to_radians();
+                    let p = corner + nalgebra::Vector2::new(a.cos(), a.sin()) * margin;
+                    assert!(distance_to_convex(&big, p) <= 1e-12, "{p:?} outside");
+                }
+            }
+        }
     }
 
     #[test]

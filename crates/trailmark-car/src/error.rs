@@ -43,12 +43,31 @@ pub enum CarError {
         /// The pose, `[x, y, heading]`.
         pose: [f64; 3],
     },
-    /// The search ended without a path: every reachable state was expanded, or it was
-    /// stopped (`stop`).
-    #[error("no path found ({}; {} expansions)", stop.map_or("every reachable state expanded".to_string(), |s| format!("{s:?}")), stats.expansions)]
+    /// The footprint at the start or the goal is free, but nearer an obstacle than the margin
+    /// the planner grows it by between checked poses
+    /// ([`HybridAStar::margin`](crate::HybridAStar::margin)).
+    #[error(
+        "the footprint at the {which} pose {pose:?} is free but within {margin} of an obstacle, the margin the planner keeps between the poses it checks (half a cell's step along the car's arc); move the pose away or use finer cells"
+    )]
+    WithinMargin {
+        /// `"start"` or `"goal"`.
+        which: &'static str,
+        /// The pose, `[x, y, heading]`.
+        pose: [f64; 3],
+        /// The margin, in the map's units.
+        margin: f64,
+    },
+    /// The search ended without a path. `stop` says what is known: [`Stop::Unreachable`] (the
+    /// only proof), [`Stop::LatticeExhausted`] (the lattice ran out; nothing proved), or the
+    /// limit that stopped it.
+    #[error("no path found ({}; {} expansions)", match stop {
+        Stop::Unreachable => "proved unreachable: no chain of cells the car's reference point may occupy joins the start to the goal".to_string(),
+        Stop::LatticeExhausted => "every state of the lattice of cells and heading bins was expanded without a free shot to the goal; nothing is proved: try more heading bins, finer cells or a longer analytic_expansion_max_length".to_string(),
+        other => format!("stopped: {other:?}"),
+    }, stats.expansions)]
     NoPath {
-        /// Why the search stopped early, if it did.
-        stop: Option<Stop>,
+        /// Why the search ended.
+        stop: Stop,
         /// What the search did.
         stats: HybridStats,
     },

@@ -16,6 +16,7 @@
 //!   path to the goal, times the cheapest price of a metre on the map.
 
 use trailmark_core::dubins::DubinsPath;
+use trailmark_core::footprint::Footprint;
 use trailmark_core::geometry::Pose;
 use trailmark_core::grid::{Cell, Connectivity, Grid};
 use trailmark_core::reeds_shepp::ReedsSheppPath;
@@ -37,11 +38,22 @@ pub(crate) struct HeuristicGrid {
 }
 
 impl HeuristicGrid {
-    /// The grid of `map` for a footprint of `inscribed` radius.
-    pub fn new(map: &CarMap, inscribed: f64) -> Result<Self, CarError> {
+    /// The grid of `map` for `footprint`: cells closed where every point lies closer to an
+    /// obstacle than its inscribed radius, and obstacle cells closed when the footprint holds
+    /// its reference point. A footprint that does not (a forklift planned by its forks' tips)
+    /// may have its reference point over an obstacle: such cells stay open at the map's least
+    /// price, so that the estimate stays below the cost and a closed way stays a proof.
+    pub fn new(map: &CarMap, footprint: &Footprint) -> Result<Self, CarError> {
+        let inscribed = footprint.inscribed_radius()?;
+        let over_obstacles =
+            if footprint.holds_reference_point() { f64::INFINITY } else { map.least_price() };
         let (w, h) = map.size();
         let costs = (0..w * h)
-            .map(|i| if map.clearance_at_most(i) < inscribed { f64::INFINITY } else { map.price(i) })
+            .map(|i| match map.price(i) {
+                _ if map.clearance_at_most(i) < inscribed => f64::INFINITY,
+                price if price.is_finite() => price,
+                _ => over_obstacles,
+            })
             .collect();
         let grid = Grid::from_costs(w, h, costs).map_err(MapError::from)?;
         Ok(HeuristicGrid { grid, resolution: map.resolution() })

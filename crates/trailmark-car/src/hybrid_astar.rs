@@ -37,6 +37,11 @@ const ROOT: u32 = u32::MAX;
 /// The poses along a motion or a shot are checked this many to a cell.
 const CHECKS_PER_CELL: f64 = 2.0;
 
+/// Shots to the goal are tried within this many motions of it, whatever
+/// [`HybridSettings::analytic_expansion_max_length`] says: a setting shorter than the map's
+/// cells or the car's motions would leave the search no way to end.
+const SHOT_MOTIONS: f64 = 4.0;
+
 /// Hybrid A* for one car on one map: made once, asked for many queries.
 ///
 /// ```
@@ -68,8 +73,14 @@ pub struct HybridAStar<'m> {
     settings: HybridSettings,
     motions: Motions,
     checker: FootprintChecker,
+    /// The footprint as it is, without the margin: which poses the margin alone refuses.
+    exact: FootprintChecker,
+    /// How far the checked footprint is grown beyond the robot's own.
+    margin: f64,
     /// The longest step between two checked poses.
     step: f64,
+    /// The longest shot to the goal tried.
+    shot_length: f64,
     /// The grid the estimate around the obstacles is computed on.
     heuristic: HeuristicGrid,
     /// The cheapest price of a metre on the map.
@@ -103,10 +114,11 @@ impl<'m> HybridAStar<'m> {
     /// A planner for a car with `footprint` on `map`.
     ///
     /// Errors: a setting out of range ([`HybridSettings::check`]), a footprint radius that is
-    /// negative or not finite.
+    /// negative or not finite, a polygon of more than
+    /// [`MAX_FOOTPRINT_VERTICES`](trailmark_core::footprint::MAX_FOOTPRINT_VERTICES) vertices.
     pub fn new(map: &'m CarMap, footprint: &Footprint, settings: HybridSettings) -> Result<Self, CarError> {
         settings.check(map.resolution())?;
-        let inscribed = footprint.inscribed_radius()?;
+        footprint.check()?;
         let reach = footprint.circumscribed_radius()?;
         let step = map.resolution() / CHECKS_PER_CELL;
         // Between two poses `step` apart along an arc, a point of the robot `reach` from its
@@ -120,13 +132,17 @@ impl<'m> HybridAStar<'m> {
             settings.reverse,
             step,
         );
+        let shot_length = settings.analytic_expansion_max_length.max(SHOT_MOTIONS * motions.length);
         Ok(HybridAStar {
             map,
             settings,
             motions,
             checker: FootprintChecker::new(footprint, margin),
+            exact: FootprintChecker::new(footprint, 0.0),
+            margin,
             step,
-            heuristic: HeuristicGrid::new(map, inscribed)?,
+            shot_length,
+            heuristic: HeuristicGrid::new(map, footprint)?,
             least_price: map.least_price(),
         })
     }
@@ -147,11 +163,30 @@ impl<'m> HybridAStar<'m> {
         self.checker.is_free(self.map, &self.map.to_map(pose), &mut 0)
     }
 
+    /// How far the footprint is grown where the planner checks it: half the farthest any point
+    /// of the robot moves between two checked poses (a step of half a cell along the arc), so
+    /// that the poses between them are covered too. A start or goal pose nearer an obstacle
+    /// than this is refused ([`CarError::WithinMargin`]).
+    pub fn margin(&self) -> f64 {
+        self.margin
+    }
+
+    /// The longest shot to the goal the search tries: the larger of
+    /// [`HybridSettings::analytic_expansion_max_length`] and four of the car's motions.
+    pub fn shot_length(&self) -> f64 {
+        self.shot_length
+    }
+
     /// A path from `start` to `goal` (poses in the world's frame), within `termination`.
     ///
     /// Errors: a pose with a non-finite value; a start or goal whose footprint touches an
-    /// obstacle or leaves the map; [`CarError::NoPath`] when every reachable state was
-    /// expanded without a free shot to the goal, or the termination stopped the search.
+    /// obstacle or leaves the map ([`CarError::InCollision`]), or is free but nearer an
+    /// obstacle than the [`margin`](Self::margin) ([`CarError::WithinMargin`]);
+    /// [`CarError::NoPath`] without a path, its `stop` saying what is known:
+    /// [`Stop::Unreachable`] when no pose of the car's reference point joins the start to the
+    /// goal (proved on the map's cells), [`Stop::LatticeExhausted`] when every state of the
+    /// lattice the search reached was expanded without a free shot to the goal (nothing
+    /// proved), or the termination's stop.
     pub fn plan(&self, start: &Pose, goal: &Pose, termination: &Termination) -> Result<CarPlan, CarError> {
         let clock = Instant::now();
         let mut stats = HybridStats::default();
@@ -161,6 +196,9 @@ impl<'m> HybridAStar<'m> {
                 return Err(CarError::Pose { which, pose: as_array(pose) });
             }
             if !self.is_free(pose) {
+                if self.exact.is_free(self.map, &self.map.to_map(pose), &mut 0) {
+                    return Err(CarError::WithinMargin { which, pose: as_array(pose), margin: self.margin });
+                }
                 return Err(CarError::InCollision { which, pose: as_array(pose) });
             }
         }
@@ -232,7 +270,10 @@ impl<'m> HybridAStar<'m> {
             if !self.checker.is_free(self.map, &pose, &mut stats.footprint_rasters) {
                 return None;
             }
-            price += self.map.price(self.map.cell_index(point(&pose))?);
+            // A reference point outside the footprint may lie over an obstacle cell: priced as
+            // the cheapest metre there.
+            let here = self.map.price(self.map.cell_index(point(&pose))?);
+            price += if here.is_finite() { here } else { self.least_price };
             count += 1;
             end = Some(pose);
         }
@@ -316,13 +357,19 @@ pub(crate) type Shot = Vec<(Turn, Gear, f64)>;
 
 impl Run<'_, '_> {
     /// Searches from `start`: the node where a free shot to the goal was found, the shot and the
-    /// path's cost; or why it stopped (`None`: the open list ran out).
-    fn run(&mut self, start: Pose, termination: &Termination) -> Result<(u32, Shot, f64), Option<Stop>> {
+    /// path's cost; or why it stopped.
+    ///
+    /// The estimate around the obstacles is infinite exactly where no chain of cells, each with
+    /// a point the reference point may occupy, joins a cell to the goal's: infinite at the start,
+    /// the goal is proved unreachable. An open list that runs out proves nothing about the
+    /// continuous problem, only about the lattice.
+    fn run(&mut self, start: Pose, termination: &Termination) -> Result<(u32, Shot, f64), Stop> {
         let p = self.planner;
-        let start_cell = p.map.cell_index(point(&start)).ok_or(None)?;
+        // The start is on the map: its footprint was checked there.
+        let start_cell = p.map.cell_index(point(&start)).ok_or(Stop::Unreachable)?;
         let h = self.estimate(&start, start_cell);
         if !h.is_finite() {
-            return Err(None);
+            return Err(Stop::Unreachable);
         }
         self.nodes.push(Node {
             pose: start,
@@ -342,29 +389,36 @@ impl Run<'_, '_> {
             if node.closed || node.f.to_bits() != f_bits {
                 continue; // expanded already, or reached more cheaply since this entry
             }
-            self.nodes[id as usize].closed = true;
-            self.stats.expansions += 1;
+            // The expansion limit exactly; the clock and the caller every 64 expansions.
+            if termination.expansions_spent(self.stats.expansions) {
+                return Err(Stop::ExpansionLimit);
+            }
             if self.stats.expansions.is_multiple_of(64) {
                 watch.set_expansions(self.stats.expansions);
                 if let Some(stop) = watch.interrupted() {
-                    return Err(Some(stop));
+                    return Err(stop);
                 }
             }
-            // Shots to the goal: every h / ratio expansions (h in cells), when close enough.
+            self.nodes[id as usize].closed = true;
+            self.stats.expansions += 1;
+            // Shots to the goal: every d / ratio expansions, d the straight distance to the goal
+            // in cells, when close enough. Smac counts its estimate, in units of cost, instead:
+            // where cells cost a million times the cheapest, the countdown never came.
+            let distance = (point(&node.pose) - point(&self.goal)).norm();
             if countdown == 0 {
-                let near = (point(&node.pose) - point(&self.goal)).norm()
-                    <= p.settings.analytic_expansion_max_length;
-                if near && let Some((shot, cost)) = self.shot(&node) {
+                if distance <= p.shot_length
+                    && let Some((shot, cost)) = self.shot(&node)
+                {
                     return Ok((id, shot, node.g + cost));
                 }
-                let h_cells = (node.f - node.g) / p.least_price / p.map.resolution();
-                countdown = (h_cells / p.settings.analytic_expansion_ratio).floor().max(0.0) as u64;
+                let cells = distance / p.map.resolution();
+                countdown = (cells / p.settings.analytic_expansion_ratio).floor().max(0.0) as u64;
             } else {
                 countdown -= 1;
             }
             self.expand(id, node);
         }
-        Err(None)
+        Err(Stop::LatticeExhausted)
     }
 
     fn key(&self, cell: usize, bin: u32) -> u64 {

@@ -4,7 +4,7 @@ use trailmark_car::{CarError, CarMap, HybridAStar, HybridSettings};
 use trailmark_core::footprint::Footprint;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::grid::Grid;
-use trailmark_core::termination::Termination;
+use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::world::{Polygon, PolygonError};
 
 fn yard() -> CarMap {
@@ -122,7 +122,7 @@ fn a_goal_walled_off_is_reported_unreachable() {
     let settings = HybridSettings { heading_bins: 16, ..HybridSettings::default() };
     let planner = HybridAStar::new(&map, &Footprint::Radius(0.2), settings).unwrap();
     let found = planner.plan(&pose(1.0, 1.0, 0.0), &pose(5.0, 1.0, 0.0), &Termination::unlimited());
-    assert!(matches!(found, Err(CarError::NoPath { stop: None, .. })), "{found:?}");
+    assert!(matches!(found, Err(CarError::NoPath { stop: Stop::Unreachable, .. })), "{found:?}");
 }
 
 #[test]
@@ -131,6 +131,15 @@ fn a_budget_stops_the_search_and_says_so() {
     let planner = HybridAStar::new(&map, &Footprint::Radius(0.2), HybridSettings::default()).unwrap();
     let (start, goal) = (pose(1.0, 1.0, 0.0), pose(19.0, 3.0, std::f64::consts::PI));
     let found = planner.plan(&start, &goal, &Termination::expansions(10));
-    assert!(matches!(found, Err(CarError::NoPath { stop: Some(_), .. })), "{found:?}");
+    assert!(matches!(found, Err(CarError::NoPath { stop: Stop::ExpansionLimit, .. })), "{found:?}");
+    // The limit holds exactly, down to none.
+    for limit in [0, 1, 10] {
+        match planner.plan(&start, &goal, &Termination::expansions(limit)) {
+            Err(CarError::NoPath { stop: Stop::ExpansionLimit, stats }) => {
+                assert_eq!(stats.expansions, limit)
+            }
+            other => panic!("{limit}: {other:?}"),
+        }
+    }
     assert!(planner.plan(&start, &goal, &Termination::unlimited()).is_ok());
 }

@@ -17,7 +17,7 @@ use rand_chacha::ChaCha8Rng;
 use trailmark_car::{CarError, CarMap, CarPath, HybridAStar, HybridSettings};
 use trailmark_core::geometry::Pose;
 use trailmark_core::reeds_shepp::Gear;
-use trailmark_core::termination::Termination;
+use trailmark_core::termination::{Stop, Termination};
 use trailmark_map::{Costmap, CostmapSettings, Inflation, load_map};
 
 fn heading_gap(a: f64, b: f64) -> f64 {
@@ -103,8 +103,8 @@ fn queries_on(dir: &std::path::Path, name: &str, queries: usize, least: usize) {
                 smoothed += plan.path.cost;
                 smoothing.push(plan.stats.smoothing_time.as_secs_f64() * 1e3);
             }
-            Err(CarError::NoPath { stop: None, .. }) => unreachable += 1,
-            Err(CarError::NoPath { stop: Some(_), .. }) => stopped += 1,
+            Err(CarError::NoPath { stop: Stop::Unreachable, .. }) => unreachable += 1,
+            Err(CarError::NoPath { .. }) => stopped += 1,
             Err(e) => panic!("{what}: {e}"),
         }
     }

@@ -24,19 +24,27 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::geometry::{Point, Pose};
-use crate::world::Polygon;
+use crate::predicates::{on_segment, orient};
 use crate::world::checker::point_segment_distance;
+use crate::world::{Polygon, PolygonError};
+
+/// The most vertices a footprint polygon may have. A robot's outline has a handful (Nav2's
+/// examples four to eight); every pose a planner checks places each of them, so a longer
+/// outline is refused before it is read rather than slowing every check.
+pub const MAX_FOOTPRINT_VERTICES: usize = 1024;
 
 /// The robot's shape about its reference point (the point whose pose a planner plans), in the
 /// robot's frame: x forward, y to the left. Serialized as `{"radius": r}` or
-/// `{"polygon": [[x, y], ...]}` (Nav2's `robot_radius` and `footprint`).
+/// `{"polygon": [[x, y], ...]}` (Nav2's `robot_radius` and `footprint`); a polygon read from a
+/// document has at most [`MAX_FOOTPRINT_VERTICES`] vertices.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Footprint {
     /// A disc of this radius centred on the reference point.
     Radius(f64),
-    /// A simple polygon (checked when made: see [`Polygon::new`]).
-    Polygon(Polygon),
+    /// A simple polygon (checked when made: see [`Polygon::new`]); see
+    /// [`Footprint::polygon`] for one checked against [`MAX_FOOTPRINT_VERTICES`] too.
+    Polygon(#[serde(deserialize_with = "outline")] Polygon),
 }
 
 /// Why a footprint cannot be used.
@@ -45,22 +53,100 @@ pub enum FootprintError {
     /// The radius is negative, NaN or infinite.
     #[error("a footprint radius must be finite and not negative, got {0}")]
     Radius(f64),
+    /// More vertices than [`MAX_FOOTPRINT_VERTICES`].
+    #[error("a footprint polygon has at most {max} vertices, this one has {count}", max = MAX_FOOTPRINT_VERTICES)]
+    TooManyVertices {
+        /// The vertices given.
+        count: usize,
+    },
+    /// The outline is not a simple polygon.
+    #[error("{0}")]
+    Polygon(#[from] PolygonError),
+}
+
+/// Reads a footprint polygon, its vertices counted before they are checked.
+fn outline<'de, D: serde::Deserializer<'de>>(deserializer: D) -> Result<Polygon, D::Error> {
+    checked_outline(Vec::<[f64; 2]>::deserialize(deserializer)?).map_err(serde::de::Error::custom)
+}
+
+/// The polygon of `corners`, counted first.
+fn checked_outline(corners: Vec<[f64; 2]>) -> Result<Polygon, FootprintError> {
+    if corners.len() > MAX_FOOTPRINT_VERTICES {
+        return Err(FootprintError::TooManyVertices { count: corners.len() });
+    }
+    Ok(Polygon::try_from(corners)?)
 }
 
 impl Footprint {
+    /// A polygon footprint from its corners `[x, y]` in the robot's frame (either orientation):
+    /// at most [`MAX_FOOTPRINT_VERTICES`] of them, counted before anything else is checked,
+    /// making a simple polygon ([`Polygon::new`]).
+    ///
+    /// ```
+    /// use trailmark_core::footprint::{Footprint, FootprintError};
+    ///
+    /// let car = Footprint::polygon(vec![[-0.2, -0.3], [1.0, -0.3], [1.0, 0.3], [-0.2, 0.3]])?;
+    /// assert!((car.inscribed_radius()? - 0.2).abs() < 1e-12);
+    /// let long = (0..5000).map(|i| { let a = i as f64 / 5000.0 * std::f64::consts::TAU; [a.cos(), a.sin()] });
+    /// assert!(matches!(Footprint::polygon(long.collect()), Err(FootprintError::TooManyVertices { count: 5000 })));
+    /// # Ok::<(), FootprintError>(())
+    /// ```
+    pub fn polygon(corners: Vec<[f64; 2]>) -> Result<Footprint, FootprintError> {
+        checked_outline(corners).map(Footprint::Polygon)
+    }
+
+    /// Checks a footprint made in code: a radius finite and not negative, a polygon of at most
+    /// [`MAX_FOOTPRINT_VERTICES`] vertices.
+    pub fn check(&self) -> Result<(), FootprintError> {
+        match self {
+            Footprint::Radius(r) => check_radius(*r).map(|_| ()),
+            Footprint::Polygon(polygon) if polygon.vertices().len() > MAX_FOOTPRINT_VERTICES => {
+                Err(FootprintError::TooManyVertices { count: polygon.vertices().len() })
+            }
+            Footprint::Polygon(_) => Ok(()),
+        }
+    }
+
     /// The radius of the largest circle about the reference point inside the footprint: the
     /// radius itself, or for a polygon the least distance from the reference point to an edge
-    /// (as Nav2's `calculateMinAndMaxDistances`, which also takes the distance to the nearest
-    /// edge when the reference point lies outside the polygon).
+    /// when the reference point lies inside it, and 0 when it does not (a forklift planned by
+    /// the tip of its forks, a trailer by its hitch). Nav2's `calculateMinAndMaxDistances`
+    /// takes the distance to the nearest edge there too, a circle that is not inside the
+    /// robot: a costmap inflated by it blocks cells the robot's reference point may reach, and
+    /// a heuristic that closes them proves reachable goals unreachable.
     ///
     /// Errors: a negative or non-finite radius.
+    ///
+    /// ```
+    /// use trailmark_core::footprint::Footprint;
+    /// use trailmark_core::world::Polygon;
+    ///
+    /// // A 1 m square whose reference point is 0.5 m behind it.
+    /// let ahead = Polygon::try_from(vec![[0.5, -0.5], [1.5, -0.5], [1.5, 0.5], [0.5, 0.5]])?;
+    /// assert_eq!(Footprint::Polygon(ahead).inscribed_radius()?, 0.0);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn inscribed_radius(&self) -> Result<f64, FootprintError> {
         match self {
             Footprint::Radius(r) => check_radius(*r),
+            Footprint::Polygon(polygon) if !polygon.contains_strictly(Point::origin()) => Ok(0.0),
             Footprint::Polygon(polygon) => Ok(polygon
                 .edges()
                 .map(|(a, b)| point_segment_distance(Point::origin(), a, b))
                 .fold(f64::INFINITY, f64::min)),
+        }
+    }
+
+    /// Whether the reference point lies in the footprint, inside or on its outline: then a
+    /// free footprint never has its reference point over an obstacle. A disc holds its centre.
+    pub fn holds_reference_point(&self) -> bool {
+        match self {
+            Footprint::Radius(_) => true,
+            Footprint::Polygon(polygon) => {
+                let o = Point::origin();
+                polygon.contains_strictly(o)
+                    || polygon.edges().any(|(a, b)| orient(a, b, o) == 0.0 && on_segment(a, b, o))
+            }
         }
     }
 
@@ -105,6 +191,33 @@ mod tests {
         let far = (0.5f64 * 0.5 + 0.2 * 0.2).sqrt();
         assert!((rectangle().circumscribed_radius().unwrap() - far).abs() < 1e-12);
         assert_eq!(Footprint::Radius(0.22).inscribed_radius().unwrap(), 0.22);
+    }
+
+    #[test]
+    fn a_reference_point_outside_the_polygon_has_no_inscribed_circle() {
+        // The nearest edge is 0.5 away, but no circle about the origin lies inside the square.
+        let ahead = Footprint::polygon(vec![[0.5, -0.5], [1.5, -0.5], [1.5, 0.5], [0.5, 0.5]]).unwrap();
+        assert_eq!(ahead.inscribed_radius().unwrap(), 0.0);
+        // On an edge: 0 as well.
+        let on_edge = Footprint::polygon(vec![[0.0, -0.5], [1.0, -0.5], [1.0, 0.5], [0.0, 0.5]]).unwrap();
+        assert_eq!(on_edge.inscribed_radius().unwrap(), 0.0);
+        assert!(!ahead.holds_reference_point());
+        assert!(on_edge.holds_reference_point());
+        assert!(rectangle().holds_reference_point());
+        assert!(Footprint::Radius(0.0).holds_reference_point());
+    }
+
+    #[test]
+    fn long_outlines_are_refused_before_they_are_checked() {
+        let ring = |n: usize| -> Vec<[f64; 2]> {
+            (0..n).map(|i| i as f64 / n as f64 * std::f64::consts::TAU).map(|a| [a.cos(), a.sin()]).collect()
+        };
+        assert!(Footprint::polygon(ring(MAX_FOOTPRINT_VERTICES)).is_ok());
+        let count = 100_000;
+        assert_eq!(Footprint::polygon(ring(count)), Err(FootprintError::TooManyVertices { count }));
+        let json = serde_json::json!({ "polygon": ring(count) }).to_string();
+        let read = serde_json::from_str::<Footprint>(&json).unwrap_err().to_string();
+        assert!(read.contains("at most 1024 vertices, this one has 100000"), "{read}");
     }
 
     #[test]

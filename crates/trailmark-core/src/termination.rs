@@ -93,6 +93,10 @@ pub enum Stop {
     /// The caller's condition asked to stop (or, for a planner asked for a given number of
     /// iterations, they are done).
     Caller,
+    /// A search over a lattice that stands for a continuous problem (Hybrid A*'s cells and
+    /// heading bins) expanded every state it reached without a path. Nothing is proved: a
+    /// finer lattice (more heading bins, smaller cells) or longer shots to the goal may find one.
+    LatticeExhausted,
 }
 
 impl std::fmt::Debug for Termination {

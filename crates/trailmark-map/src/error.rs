@@ -213,4 +213,7 @@ pub enum MapError {
         /// The value given.
         value: f64,
     },
+    /// The footprint cannot be used.
+    #[error("the footprint: {0}")]
+    Footprint(#[from] trailmark_core::footprint::FootprintError),
 }

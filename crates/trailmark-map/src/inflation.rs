@@ -19,6 +19,8 @@ pub struct Inflation {
     /// Metres from a lethal cell within which the robot's centre means a collision (cost 253).
     pub inscribed_radius: f64,
     /// Metres from a lethal cell up to which cells get a cost (Nav2's `inflation_radius`).
+    /// Cells within the inscribed radius are inscribed whatever this says: an inflation
+    /// radius smaller than the inscribed radius inflates to the inscribed radius.
     pub inflation_radius: f64,
     /// How fast the cost falls off beyond the inscribed radius, per metre (Nav2's
     /// `cost_scaling_factor`).
@@ -29,8 +31,14 @@ impl Inflation {
     /// Nav2's defaults around a robot: inflation radius 0.55 m, cost scaling factor 10.
     pub fn around(footprint: &Footprint) -> Result<Self, MapError> {
         let inflation = Inflation {
-            inscribed_radius: footprint.inscribed_radius().map_err(|FootprintError::Radius(r)| {
-                MapError::Setting { setting: "robot_radius", expected: "finite and not negative", value: r }
+            inscribed_radius: footprint.inscribed_radius().map_err(|e| match e {
+                FootprintError::Radius(r) => MapError::Setting {
+                    setting: "robot_radius",
+                    expected: "finite and not negative",
+                    value: r,
+                },
+                // A polygon's radius is a distance, never refused.
+                other => MapError::Footprint(other),
             })?,
             inflation_radius: 0.55,
             cost_scaling_factor: 10.0,
@@ -68,9 +76,12 @@ impl Inflation {
         }
     }
 
-    /// The inflation radius in cells, as Nav2 rounds it: `ceil(inflation_radius / resolution)`.
+    /// How far costs spread in cells, as Nav2 rounds it: `ceil(radius / resolution)`, the
+    /// radius the inflation radius or, when that is smaller, the inscribed radius. Nav2 stops
+    /// at the inflation radius and warns; cells within the inscribed radius left free let a
+    /// planner pass a gap narrower than the robot.
     pub fn cell_radius(&self, resolution: f64) -> f64 {
-        (self.inflation_radius / resolution).ceil().max(0.0)
+        (self.inflation_radius.max(self.inscribed_radius) / resolution).ceil().max(0.0)
     }
 }
 
@@ -96,6 +107,18 @@ mod tests {
         // 0.25 m: 252 * exp(-10 * 0.05) = 152.8..., truncated.
         assert_eq!(inflation.cost(5.0, res), 152);
         assert_eq!(inflation.cost(inflation.cell_radius(res) + 0.01, res), 0);
+    }
+
+    #[test]
+    fn cells_within_the_inscribed_radius_are_inscribed_whatever_the_inflation_radius() {
+        let res = 0.05;
+        for inflation_radius in [0.0, 0.05, 0.1, 0.19] {
+            let inflation = Inflation { inscribed_radius: 0.2, inflation_radius, cost_scaling_factor: 10.0 };
+            for cells in 1..=4 {
+                assert_eq!(inflation.cost(f64::from(cells), res), INSCRIBED, "{inflation_radius} at {cells}");
+            }
+            assert_eq!(inflation.cost(5.0, res), 0, "{inflation_radius}: nothing beyond both radii");
+        }
     }
 
     #[test]

@@ -1,9 +1,11 @@
 //! Worlds of axis-aligned boxes in `N` dimensions, checked exactly: the random worlds of the
 //! BIT* papers (boxes in the unit hypercube), and any box-shaped obstacles of a joint space.
 //!
-//! A [`BoxWorld`] is a [`Validity`] for [`Rn<N>`]: a state is valid when it lies inside no box's
-//! interior (touching a box is allowed, as touching a polygon is), a motion when its segment
-//! enters no box's interior, decided by the slab test (Kay and Kajiya 1986) without sampling.
+//! A [`BoxWorld`] is a [`Validity`] for [`Rn<N>`]: a state is valid when it lies in no box, a
+//! motion when its segment meets no box, decided by the slab test (Kay and Kajiya 1986) without
+//! sampling. Boxes are closed: a state on a box's face is in collision. So boxes that share a
+//! face, or touch at an edge or a corner, block as their union does; with open boxes the
+//! zero-width slit between two of them let paths through a solid wall.
 //!
 //! ```
 //! use trailmark_sample::boxes::BoxWorld;
@@ -38,11 +40,14 @@ pub struct BoxWorld<const N: usize> {
 
 impl<const N: usize> BoxWorld<N> {
     /// The region from `low` to `high` with these obstacles, each `(low, high)` corners. A
-    /// region or box that is not finite with low < high on every axis is an error.
+    /// region that is not finite with low < high on every axis ([`SpaceError::InvalidBounds`],
+    /// [`SpaceError::RegionTooLarge`]) or such a box ([`SpaceError::InvalidBox`]) is an error.
     pub fn new(low: [f64; N], high: [f64; N], boxes: Vec<([f64; N], [f64; N])>) -> Result<Self, SpaceError> {
         let space = Rn::new(low, high)?;
-        for (lo, hi) in &boxes {
-            Rn::new(*lo, *hi)?;
+        for (index, (lo, hi)) in boxes.iter().enumerate() {
+            if let Some(axis) = (0..N).find(|&i| !(lo[i].is_finite() && hi[i].is_finite() && lo[i] < hi[i])) {
+                return Err(SpaceError::InvalidBox { index, axis, low: lo[axis], high: hi[axis] });
+            }
         }
         Ok(BoxWorld { space, boxes })
     }
@@ -78,25 +83,31 @@ impl<const N: usize> BoxWorld<N> {
         &self.boxes
     }
 
-    /// Whether `q` lies inside no box's interior.
+    /// Whether `q` lies in no box (faces included).
     pub fn is_free(&self, q: &SVector<f64, N>) -> bool {
-        self.boxes.iter().all(|(lo, hi)| (0..N).any(|i| !(q[i] > lo[i] && q[i] < hi[i])))
+        self.boxes.iter().all(|(lo, hi)| (0..N).any(|i| !(q[i] >= lo[i] && q[i] <= hi[i])))
     }
 
-    /// Whether the segment from `a` to `b` enters no box's interior.
+    /// Whether the segment from `a` to `b` meets no box (faces included).
     pub fn segment_is_free(&self, a: &SVector<f64, N>, b: &SVector<f64, N>) -> bool {
         self.boxes.iter().all(|(lo, hi)| !enters(a, b, lo, hi))
     }
 }
 
-/// Whether the segment `a`-`b` meets the open box `(lo, hi)`: the parameters `t` in `[0, 1]`
-/// where it is strictly inside on every axis form an open interval that is not empty.
+/// How far apart, as parameters along a segment, the ends of its interval in a box may be
+/// found reversed and the segment still meet the box: rounding in the slab test's divisions
+/// (a few units in the last place) must not open a gap at a corner where two boxes touch.
+const SLAB_ROUNDING: f64 = 1e-12;
+
+/// Whether the segment `a`-`b` meets the closed box `[lo, hi]`: the parameters `t` in `[0, 1]`
+/// where it lies within the box on every axis form a closed interval that is not empty (within
+/// [`SLAB_ROUNDING`], on the side of a collision).
 fn enters<const N: usize>(a: &SVector<f64, N>, b: &SVector<f64, N>, lo: &[f64; N], hi: &[f64; N]) -> bool {
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
     for i in 0..N {
         let d = b[i] - a[i];
         if d == 0.0 {
-            if !(a[i] > lo[i] && a[i] < hi[i]) {
+            if !(a[i] >= lo[i] && a[i] <= hi[i]) {
                 return false;
             }
             continue;
@@ -104,12 +115,11 @@ fn enters<const N: usize>(a: &SVector<f64, N>, b: &SVector<f64, N>, lo: &[f64; N
         let (u, v) = ((lo[i] - a[i]) / d, (hi[i] - a[i]) / d);
         t0 = t0.max(u.min(v));
         t1 = t1.min(u.max(v));
-        if t0 >= t1 {
+        if t0 > t1 + SLAB_ROUNDING {
             return false;
         }
     }
-    // Strictly inside on every axis somewhere in (t0, t1), a non-empty interval.
-    t0 < t1
+    true
 }
 
 impl<const N: usize> Validity<Rn<N>> for BoxWorld<N> {

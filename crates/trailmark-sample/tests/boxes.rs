@@ -21,6 +21,85 @@ fn samples<const N: usize>(a: &SVector<f64, N>, b: &SVector<f64, N>, step: f64) 
     (0..=n).map(|i| a + (b - a) * (i as f64 / n as f64)).collect()
 }
 
+/// A wall across the unit square (or cube) at `x` in `[0.4, 0.6]`, cut into boxes that share
+/// faces at `cuts` along the second axis: closed obstacles, it blocks as one box would.
+fn cut_wall<const N: usize>(cuts: &[f64]) -> BoxWorld<N> {
+    let mut edges = vec![0.0];
+    edges.extend(cuts.iter().copied());
+    edges.push(1.0);
+    edges.sort_by(f64::total_cmp);
+    edges.dedup();
+    let boxes = edges
+        .windows(2)
+        .map(|w| {
+            let lo = std::array::from_fn(|i| [0.4, w[0]].get(i).copied().unwrap_or(0.0));
+            let hi = std::array::from_fn(|i| [0.6, w[1]].get(i).copied().unwrap_or(1.0));
+            (lo, hi)
+        })
+        .collect();
+    BoxWorld::new([0.0; N], [1.0; N], boxes).unwrap()
+}
+
+/// RRT, RRT-Connect, RRT* and PRM* in a box world, on the nearest neighbours `kd`.
+fn every_planner<const N: usize>(kd: KdNearest<Rn<N>, N>) -> Vec<Box<dyn Planner<Rn<N>, BoxWorld<N>>>> {
+    vec![
+        Box::new(Rrt::new(kd.clone())),
+        Box::new(RrtConnect::new(kd.clone())),
+        Box::new(RrtStar::new(kd.clone())),
+        Box::new(Prm::star(kd)),
+    ]
+}
+
+/// Every planner from left of the wall to right of it: none may return a path (a path's
+/// states are left and right of a wall that spans the square, so it crossed the wall).
+fn no_planner_crosses<const N: usize>(world: &BoxWorld<N>, a: SVector<f64, N>, b: SVector<f64, N>) {
+    let space: Rn<N> = world.space();
+    let kd = KdNearest::<Rn<N>, N>::new(&space).unwrap();
+    let problem = Problem::new(&space, world, a, b);
+    let planners = every_planner(kd);
+    for mut planner in planners {
+        let plan = planner.solve(&problem, &Termination::iterations(600)).unwrap();
+        let solved = matches!(plan.solution, Solution::Exact { .. });
+        assert!(
+            !solved,
+            "{} crossed a wall of touching boxes: {:?}",
+            planner.name(),
+            plan.solution.any_path()
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(8))]
+
+    /// Boxes that share faces block as their union: no planner passes the slit between them,
+    /// in two dimensions and three.
+    #[test]
+    fn touching_boxes_block_as_their_union(cuts in prop::collection::vec(0.05f64..0.95, 1..6), y in 0.05f64..0.95) {
+        let a2 = SVector::from([0.1, y]);
+        let b2 = SVector::from([0.9, y]);
+        no_planner_crosses(&cut_wall::<2>(&cuts), a2, b2);
+        // The straight segment along a cut meets both boxes' faces.
+        let along = SVector::from([0.1, cuts[0]]);
+        prop_assert!(!cut_wall::<2>(&cuts).segment_is_free(&along, &SVector::from([0.9, cuts[0]])));
+        let a3 = SVector::from([0.1, y, 0.5]);
+        let b3 = SVector::from([0.9, y, 0.5]);
+        no_planner_crosses(&cut_wall::<3>(&cuts), a3, b3);
+    }
+
+    /// Two boxes touching at a corner leave no way through the corner point: the square's two
+    /// other quarters are not joined.
+    #[test]
+    fn boxes_touching_at_a_corner_block_it(cx in 0.2f64..0.8, cy in 0.2f64..0.8) {
+        let world = BoxWorld::new([0.0; 2], [1.0; 2], vec![([0.0, 0.0], [cx, cy]), ([cx, cy], [1.0, 1.0])]).unwrap();
+        // The segment through the corner point itself, rounding and all.
+        let (a, b) = (SVector::from([cx - 0.1, cy + 0.1]), SVector::from([cx + 0.1, cy - 0.1]));
+        prop_assert!(world.is_free(&a) && world.is_free(&b));
+        prop_assert!(!world.segment_is_free(&a, &b));
+        no_planner_crosses(&world, a, b);
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
@@ -45,22 +124,34 @@ proptest! {
 }
 
 #[test]
-fn touching_is_allowed_and_bad_boxes_are_errors() {
+fn boxes_are_closed_and_bad_boxes_are_errors() {
     let world = BoxWorld::new([0.0; 2], [1.0; 2], vec![([0.4, 0.4], [0.6, 0.6])]).unwrap();
     let p = |x: f64, y: f64| SVector::from([x, y]);
-    // Along a face, through a corner, and inside.
-    assert!(world.segment_is_free(&p(0.4, 0.0), &p(0.4, 1.0)));
+    // Along a face, through a corner, and inside: all meet the closed box.
+    assert!(!world.segment_is_free(&p(0.4, 0.0), &p(0.4, 1.0)));
     assert!(!world.segment_is_free(&p(0.2, 0.8), &p(0.8, 0.2)));
-    assert!(world.segment_is_free(&p(0.3, 0.5), &p(0.5, 0.7)));
-    assert!(!world.is_free(&p(0.5, 0.5)) && world.is_free(&p(0.6, 0.5)));
+    assert!(!world.segment_is_free(&p(0.3, 0.5), &p(0.5, 0.7)));
+    assert!(!world.segment_is_free(&p(0.3, 0.7), &p(0.5, 0.5)));
+    // Beside it, and touching nothing.
+    assert!(world.segment_is_free(&p(0.39, 0.0), &p(0.39, 1.0)));
+    assert!(world.segment_is_free(&p(0.3, 0.71), &p(0.5, 0.9)));
+    assert!(!world.is_free(&p(0.5, 0.5)) && !world.is_free(&p(0.6, 0.5)) && world.is_free(&p(0.61, 0.5)));
     assert!(!world.segment_is_free(&p(0.5, 0.5), &p(0.5, 0.5)));
-    assert!(matches!(
-        BoxWorld::new([0.0; 2], [1.0; 2], vec![([0.5, 0.5], [0.5, 0.6])]),
-        Err(SpaceError::InvalidBounds { .. })
-    ));
+    // An inverted box is named as a box, not as the bounds.
+    let inverted = vec![([0.1, 0.1], [0.2, 0.2]), ([0.5, 0.7], [0.6, 0.6])];
+    assert_eq!(
+        BoxWorld::new([0.0; 2], [1.0; 2], inverted),
+        Err(SpaceError::InvalidBox { index: 1, axis: 1, low: 0.7, high: 0.6 })
+    );
     assert!(matches!(
         BoxWorld::new([0.0; 2], [f64::NAN, 1.0], vec![]),
         Err(SpaceError::InvalidBounds { .. })
+    ));
+    // Sides each finite, a diagonal that is not: named as such, not as a planner's range.
+    assert!(matches!(BoxWorld::new([-1e300; 3], [1e300; 3], vec![]), Err(SpaceError::RegionTooLarge { .. })));
+    assert!(matches!(
+        BoxWorld::<8>::new([0.0; 8], [1e-50; 8], vec![]),
+        Err(SpaceError::RegionTooLarge { .. })
     ));
 }
 
@@ -79,12 +170,7 @@ fn planners_in<const N: usize>(count: usize, seed: u64) {
     };
     let (a, b) = (free_near(0.1), free_near(0.9));
     let problem = Problem::new(&space, &world, a, b);
-    let planners: Vec<Box<dyn Planner<Rn<N>, BoxWorld<N>>>> = vec![
-        Box::new(Rrt::new(kd.clone())),
-        Box::new(RrtConnect::new(kd.clone())),
-        Box::new(RrtStar::new(kd.clone())),
-        Box::new(Prm::star(kd)),
-    ];
+    let planners = every_planner(kd);
     for mut planner in planners {
         let plan = planner.solve(&problem, &Termination::iterations(1_500)).unwrap();
         let Some(path) = plan.solution.any_path() else {

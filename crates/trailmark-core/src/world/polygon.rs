@@ -117,27 +117,50 @@ pub(super) fn signed_area(v: &[Point]) -> f64 {
     0.5 * (1..n.saturating_sub(1)).map(|i| (v[i] - o).perp(&(v[i + 1] - o))).sum::<f64>()
 }
 
-/// The first pair of edges that intersect other than at the shared vertex of consecutive edges
-/// (or that fold back over each other there). Quadratic: obstacles are validated once.
+/// A pair of edges that intersect other than at the shared vertex of consecutive edges (or
+/// that fold back over each other there). Edges are swept by their least x, and a pair is
+/// tested only when the two edges' boxes overlap: a long outline (a contour traced from a map)
+/// is checked in about `n log n` where every pair would take minutes.
 fn self_intersection(v: &[Point]) -> Option<(usize, usize)> {
     let n = v.len();
     let edge = |i: usize| (v[i], v[(i + 1) % n]);
-    for i in 0..n {
-        for j in i + 1..n {
-            let ((a, b), (c, d)) = (edge(i), edge(j));
-            let adjacent = j == i + 1 || (i == 0 && j == n - 1);
-            if adjacent {
-                // Consecutive edges share one vertex; they must not overlap along a line.
-                let (shared, p, q) = if j == i + 1 { (b, a, d) } else { (a, b, c) };
-                if orient(shared, p, q) == 0.0 && (p - shared).dot(&(q - shared)) > 0.0 {
-                    return Some((i, j));
-                }
-            } else if segments_touch(a, b, c, d) {
+    let span = |i: usize| {
+        let (a, b) = edge(i);
+        (a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y))
+    };
+    let spans: Vec<(f64, f64, f64, f64)> = (0..n).map(span).collect();
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&i, &j| spans[i].0.total_cmp(&spans[j].0));
+    for (k, &first) in order.iter().enumerate() {
+        let (_, right, low, high) = spans[first];
+        for &other in &order[k + 1..] {
+            let (left, _, other_low, other_high) = spans[other];
+            if left > right {
+                break; // this and every later edge start right of `first`
+            }
+            if other_low > high || other_high < low {
+                continue;
+            }
+            let (i, j) = (first.min(other), first.max(other));
+            if edges_meet(edge(i), edge(j), j == i + 1, i == 0 && j == n - 1) {
                 return Some((i, j));
             }
         }
     }
     None
+}
+
+/// Whether edges `i` and `j` (`i < j`) meet where a simple polygon's may not: anywhere, or for
+/// consecutive edges (`next`: `j = i + 1`; `wrap`: the last and the first) along a line beyond
+/// their shared vertex.
+fn edges_meet((a, b): (Point, Point), (c, d): (Point, Point), next: bool, wrap: bool) -> bool {
+    if next || wrap {
+        // Consecutive edges share one vertex; they must not overlap along a line.
+        let (shared, p, q) = if next { (b, a, d) } else { (a, b, c) };
+        orient(shared, p, q) == 0.0 && (p - shared).dot(&(q - shared)) > 0.0
+    } else {
+        segments_touch(a, b, c, d)
+    }
 }
 
 /// Whether closed segments `a-b` and `c-d` share a point. Exact.

@@ -60,6 +60,27 @@ pub enum SpaceError {
         /// Its upper bound.
         high: f64,
     },
+    /// An obstacle box of a box world with `low >= high` or a bound that is not finite.
+    #[error("obstacle box {index}, axis {axis}: [{low}, {high}] must be finite with low < high")]
+    InvalidBox {
+        /// The box, counted from 0 in the order given.
+        index: usize,
+        /// The axis.
+        axis: usize,
+        /// Its lower bound.
+        low: f64,
+        /// Its upper bound.
+        high: f64,
+    },
+    /// Bounds whose every side is finite but whose diagonal or volume is not: planners draw
+    /// their step (a fifth of the diagonal) and their radii (from the volume) from them.
+    #[error("the bounds are too large: their diagonal ({diagonal:e}) and volume ({volume:e}) must be finite")]
+    RegionTooLarge {
+        /// The length of the bounds' diagonal.
+        diagonal: f64,
+        /// The product of their sides.
+        volume: f64,
+    },
     /// A nearest-neighbour structure over positions of a dimension the space does not have.
     #[error("the space's states have no position with {dimension} coordinates")]
     NoPosition {

@@ -25,7 +25,12 @@ impl<const N: usize> Rn<N> {
                 return Err(SpaceError::InvalidBounds { axis, low: l, high: h });
             }
         }
-        Ok(Rn { low: low.into(), high: high.into() })
+        let space = Rn { low: low.into(), high: high.into() };
+        let (diagonal, volume) = (space.extent(), space.measure());
+        if !(diagonal.is_finite() && volume.is_finite() && volume > 0.0) {
+            return Err(SpaceError::RegionTooLarge { diagonal, volume });
+        }
+        Ok(space)
     }
 
     /// The lower corner.

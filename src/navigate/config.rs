@@ -7,10 +7,14 @@ use trailmark_core::grid::{Cell, GridHeuristic};
 use crate::navigate::error::NavigateError;
 use crate::solve::{AnytimeSpec, PlannerSpec};
 
-/// Errors when the planner's settings are out of range (its limits, as `solve` checks them) or
-/// it asks for a heuristic other than the octile distance that guides every navigation planner.
-/// Whether it can replan at all is [`PlannerSpec::replanner`]'s answer.
+/// Errors when the planner does not replan ([`PlannerSpec::replans`]: asked first, so that a
+/// one-shot planner is named as such and not for its heuristic), when its settings are out of
+/// range (its limits, as `solve` checks them) or it asks for a heuristic other than the octile
+/// distance that guides every navigation planner.
 pub(super) fn check_planner(planner: &PlannerSpec) -> Result<(), NavigateError> {
+    if !planner.replans() {
+        return Err(NavigateError::NotAReplanner { planner: planner.name() });
+    }
     planner.check_limits()?;
     match planner.heuristic().0 {
         None | Some(GridHeuristic::Octile) => Ok(()),

@@ -18,6 +18,14 @@ pub enum NavigateError {
         /// Width and height of the true map.
         truth: (u32, u32),
     },
+    /// The map has more than [`MAX_NAVIGATION_CELLS`](super::MAX_NAVIGATION_CELLS) cells.
+    #[error("a {width} x {height} map is too large to navigate: at most {max} cells", max = super::MAX_NAVIGATION_CELLS)]
+    TooLarge {
+        /// The width in cells.
+        width: u32,
+        /// The height in cells.
+        height: u32,
+    },
     /// The start is outside the map or blocked in the true map.
     #[error("the start {0} is outside the map or blocked")]
     Start(Cell),
@@ -31,7 +39,9 @@ pub enum NavigateError {
     #[error("planner: {0}")]
     Planner(#[from] SearchError<Cell>),
     /// The planner does not replan (a one-shot search or a sampling planner).
-    #[error("\"{planner}\" cannot drive the robot: choose astar, lpa_star, dstar_lite or ad_star")]
+    #[error(
+        "\"{planner}\" does not replan, so it cannot drive the robot: choose astar, lpa_star, dstar_lite, ad_star, adaptive_astar or mpgaa_star"
+    )]
     NotAReplanner {
         /// The planner's name.
         planner: &'static str,

@@ -59,6 +59,7 @@ pub use config::{Navigation, Target};
 pub use error::NavigateError;
 pub use graph::{VIRTUAL_EDGE_COST, VIRTUAL_GOAL};
 pub use report::{NavigationOutcome, NavigationReport};
+pub use simulation::MAX_NAVIGATION_CELLS;
 
 /// Old name of [`NavigationOutcome`], kept for one release (a contingency plan's `Outcome` is
 /// another concept).

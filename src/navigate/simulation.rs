@@ -82,10 +82,17 @@ fn plan_step(
     })
 }
 
+/// The most cells a navigation world may have (4096 x 4096). The robot's map, the truth and
+/// each planner's tables take about a hundred bytes a cell with four planners on one run (85 MB
+/// for a million cells), so 2^24 cells stay near 2 GB; the grids' own maximum, 2^28 cells, would
+/// take 25 GB.
+pub const MAX_NAVIGATION_CELLS: usize = 1 << 24;
+
 /// Runs the robot from `start` toward `target` through `truth`, starting from the map `prior`.
 ///
-/// Errors (before the robot moves) when the maps differ in size, the start or goal is outside
-/// the map or blocked in the true map, the sensor radius is 0, the planner cannot replan (see
+/// Errors (before the robot moves) when the maps differ in size or have more than
+/// [`MAX_NAVIGATION_CELLS`] cells, the start or goal is outside the map or blocked in the true
+/// map, the sensor radius is 0, the planner cannot replan (see
 /// [`Navigation::planner`]) or its settings are invalid.
 pub fn navigate(
     truth: &Grid,
@@ -142,6 +149,10 @@ fn run(
             prior: (prior.width(), prior.height()),
             truth: (truth.width(), truth.height()),
         });
+    }
+    let cells = truth.width() as usize * truth.height() as usize;
+    if cells > MAX_NAVIGATION_CELLS {
+        return Err(NavigateError::TooLarge { width: truth.width(), height: truth.height() });
     }
     if !truth.is_passable(start) {
         return Err(NavigateError::Start(start));

@@ -277,7 +277,7 @@ impl PlannerSpec {
                 return Ok(anytime_result_of(&found.map_err(searched)?, waypoint));
             }
             PlannerSpec::Jps {} | PlannerSpec::JpsPlus {} => {
-                return Err(DocumentError::NeedsEightConnectedGrid { planner: self.name() }.into());
+                return Err(DocumentError::NeedsGridWorld { planner: self.name() }.into());
             }
             PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)
@@ -332,6 +332,20 @@ impl PlannerSpec {
             Ok(found) => Ok(result_of(&found, Waypoint::Cell)),
             Err(error) => Err(SolveError::Search(error.map_node(Waypoint::Cell))),
         })
+    }
+
+    /// Whether [`replanner`](Self::replanner) makes this planner a [`Replanner`]: `astar`,
+    /// `lpa_star`, `dstar_lite`, `ad_star`, `adaptive_astar` and `mpgaa_star`.
+    pub fn replans(&self) -> bool {
+        matches!(
+            self,
+            PlannerSpec::AStar { .. }
+                | PlannerSpec::LpaStar { .. }
+                | PlannerSpec::AdaptiveAStar { .. }
+                | PlannerSpec::MpgaaStar { .. }
+                | PlannerSpec::DStarLite { .. }
+                | PlannerSpec::AdStar(_)
+        )
     }
 
     /// This planner as a [`Replanner`] from `start` to `goal` on `graph` with the heuristic

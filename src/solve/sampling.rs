@@ -136,9 +136,7 @@ pub(super) fn solve_boxes(
     spec: &SamplingSpec,
 ) -> Result<SolveResult, SolveError> {
     let planner = problem.planner.name();
-    if let Some(&field) = problem.roadmap_fields().first() {
-        return Err(DocumentError::NotForPlanner { field, planner }.into());
-    }
+    // The space first: a car's space brings its turning radius, which is not the fault.
     let space = problem.space.unwrap_or(SpaceKind::Rn);
     if space != SpaceKind::Rn {
         return Err(DocumentError::InvalidBoxes(format!(
@@ -146,6 +144,9 @@ pub(super) fn solve_boxes(
             space.name()
         ))
         .into());
+    }
+    if let Some(&field) = problem.roadmap_fields().first() {
+        return Err(DocumentError::NotForPlanner { field, planner }.into());
     }
     if spec.smooth.is_some() {
         return Err(DocumentError::NotForSpace { field: "smooth", space: "rn" }.into());

@@ -21,30 +21,30 @@ pub struct Args {
     /// The terrain JSON file (see `TerrainSpec`); without it, `--generate` is required.
     terrain: Option<PathBuf>,
     /// Generate a river terrain from this seed instead of reading one.
-    #[arg(long, conflicts_with = "terrain")]
+    #[arg(allow_negative_numbers = true, long, conflicts_with = "terrain")]
     generate: Option<u64>,
     /// Write the terrain (read or generated) as JSON to this file.
     #[arg(long)]
     write_terrain: Option<PathBuf>,
     /// How many blocked choke points one branch of the plan prepares for (default 3; "all" for
     /// every combination).
-    #[arg(long, default_value = "3", value_parser = parse_depth)]
+    #[arg(allow_negative_numbers = true, long, default_value = "3", value_parser = parse_depth)]
     max_blockages: usize,
     /// Draw the plan to this SVG file.
     #[arg(long)]
     svg: Option<PathBuf>,
     /// Pixels per cell in the SVG (more than 0, at most 256).
-    #[arg(long, default_value_t = 8.0, value_parser = parse_cell_size)]
+    #[arg(long, default_value_t = 8.0, value_parser = parse_cell_size, allow_negative_numbers = true)]
     cell: f64,
     /// Monte Carlo samples comparing the plan with D* Lite replanning (0: none).
-    #[arg(long, default_value_t = 0)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 0)]
     samples: usize,
     /// Seed of the Monte Carlo samples.
-    #[arg(long, default_value_t = 1)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 1)]
     seed: u64,
     /// Also compute D* Lite replanning's exact expected cost (one drive per distinct sequence of
     /// what the vehicle sees, at most 2^n), up to this many choke points (at most 32).
-    #[arg(long, default_value_t = 24, value_parser = parse_exact_up_to)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 24, value_parser = parse_exact_up_to)]
     exact_up_to: usize,
     /// Leave the plan out of the output (print the figures only).
     #[arg(long)]

@@ -83,7 +83,7 @@ enum VerifySet {
         #[arg(long, value_enum, value_delimiter = ',', default_value = "astar")]
         algo: Vec<VerifyAlgo>,
         /// Check every K-th scenario of each file only.
-        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+        #[arg(allow_negative_numbers = true, long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
         every: u64,
     },
     /// Every DIR/NAME.map.scen of the GPPC any-angle track, on the visibility graph of DIR/NAME.map.
@@ -91,10 +91,10 @@ enum VerifySet {
         /// The folder with the maps and their scenario files.
         dir: PathBuf,
         /// Check every K-th scenario of each file only.
-        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+        #[arg(allow_negative_numbers = true, long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
         every: u64,
         /// The relative tolerance on a published optimum.
-        #[arg(long, default_value_t = 1e-6)]
+        #[arg(long, default_value_t = 1e-6, allow_negative_numbers = true)]
         rel: f64,
         /// Build the full visibility graph instead of its tangent edges only.
         #[arg(long)]
@@ -107,7 +107,16 @@ enum VerifySet {
 static ALLOCATOR: memory::Counting = memory::Counting;
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    // Arguments that cannot be used are reported as every other input is, as
+    // `{"status": "error"}` on standard output; help and the version print as clap writes them.
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if !e.use_stderr() => {
+            let _ = e.print();
+            return ExitCode::SUCCESS;
+        }
+        Err(e) => return output::error_report(e.render().to_string().trim_end()),
+    };
     match cli.command {
         Command::Bench(args) => bench::run(&args),
         Command::Verify { set: VerifySet::Movingai { dir, algo, every } } => {

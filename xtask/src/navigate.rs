@@ -38,16 +38,16 @@ pub struct Args {
     #[arg(long, default_value = "128x128", value_parser = parse_size)]
     size: (usize, usize),
     /// The obstacle fraction of a random map.
-    #[arg(long, default_value_t = 0.25)]
+    #[arg(long, default_value_t = 0.25, allow_negative_numbers = true)]
     density: f64,
     /// Corridor width of a maze.
-    #[arg(long, default_value_t = 4)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 4)]
     corridor: u32,
     /// Room width of a rooms map.
-    #[arg(long, default_value_t = 16)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 16)]
     room: u32,
     /// The seed of the generated map and of the chosen start and goal.
-    #[arg(long, default_value_t = 1)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 1)]
     seed: u64,
     /// The start cell `x,y` (default: chosen from the seed).
     #[arg(long, value_parser = parse_cell)]
@@ -59,23 +59,23 @@ pub struct Args {
     #[arg(long, conflicts_with = "goal")]
     explore: bool,
     /// Sensor radius in cells (a square window).
-    #[arg(long, default_value_t = 1)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 1)]
     radius: u32,
     /// The planners to run, each on the same world (comma-separated names of the solve
     /// registry's planners that replan: astar, lpa_star, dstar_lite, ad_star, adaptive_astar, mpgaa_star).
     #[arg(long, value_delimiter = ',', default_value = "astar,lpa_star,dstar_lite,ad_star", value_parser = parse_planner)]
     planner: Vec<PlannerSpec>,
     /// AD*'s initial inflation.
-    #[arg(long, default_value_t = 3.0)]
+    #[arg(long, default_value_t = 3.0, allow_negative_numbers = true)]
     epsilon: f64,
     /// AD*'s inflation decrease per iteration.
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
     epsilon_step: f64,
     /// AD*'s expansion budget per step (default: improve to epsilon 1 at every step).
-    #[arg(long)]
+    #[arg(allow_negative_numbers = true, long)]
     expansions_per_step: Option<u64>,
     /// An obstacle following the robot this many steps behind.
-    #[arg(long)]
+    #[arg(allow_negative_numbers = true, long)]
     follower: Option<u32>,
     /// Write the SVG of each run into this folder.
     #[arg(long)]
@@ -88,8 +88,13 @@ pub struct Args {
 
 fn parse_size(s: &str) -> Result<(usize, usize), String> {
     let (w, h) = s.split_once('x').ok_or("expected WIDTHxHEIGHT, e.g. 128x128")?;
-    let w = w.parse().map_err(|e| format!("width: {e}"))?;
-    let h = h.parse().map_err(|e| format!("height: {e}"))?;
+    let w: usize = w.parse().map_err(|e| format!("width: {e}"))?;
+    let h: usize = h.parse().map_err(|e| format!("height: {e}"))?;
+    // Refused before the world is generated: the generator would allocate it first.
+    let max = trailmark::navigate::MAX_NAVIGATION_CELLS;
+    if w.checked_mul(h).is_none_or(|cells| cells > max) {
+        return Err(format!("{w}x{h} is too large to navigate: at most {max} cells (4096x4096)"));
+    }
     Ok((w, h))
 }
 

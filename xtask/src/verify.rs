@@ -196,10 +196,7 @@ fn print_messages(messages: &[String]) {
 pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
     let jobs = match jobs(dir) {
         Ok(j) => j,
-        Err(e) => {
-            errln!("error: {e}");
-            return ExitCode::from(2);
-        }
+        Err(e) => return crate::output::error_report(e),
     };
     let clock = Instant::now();
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(jobs.len());
@@ -246,10 +243,7 @@ pub fn movingai(dir: &Path, algos: &[VerifyAlgo], every: u64) -> ExitCode {
 pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
     let listing = match std::fs::read_dir(dir) {
         Ok(l) => l,
-        Err(e) => {
-            errln!("error: cannot list {}: {e}", dir.display());
-            return ExitCode::from(2);
-        }
+        Err(e) => return crate::output::error_report(format!("cannot list {}: {e}", dir.display())),
     };
     let mut scens: Vec<PathBuf> = listing
         .filter_map(|f| f.ok().map(|f| f.path()))
@@ -257,8 +251,7 @@ pub fn anyangle(dir: &Path, every: u64, rel: f64, edges: Edges) -> ExitCode {
         .collect();
     scens.sort();
     if scens.is_empty() {
-        errln!("error: no scenario files (*.map.scen) in {}", dir.display());
-        return ExitCode::from(2);
+        return crate::output::error_report(format!("no scenario files (*.map.scen) in {}", dir.display()));
     }
     let clock = Instant::now();
     let (mut passed, mut failed) = (0u64, 0u64);

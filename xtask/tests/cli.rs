@@ -111,6 +111,9 @@ fn verify_counts_and_fails_on_a_wrong_optimum() {
 
     let out = xtask(&["verify", "movingai", "/nonexistent/folder"], &dir);
     assert_eq!(out.status.code(), Some(2));
+    assert_eq!(json(&out)["status"], "error");
+    let out = xtask(&["verify", "anyangle", "/nonexistent/folder"], &dir);
+    assert_eq!((out.status.code(), json(&out)["status"].as_str()), (Some(2), Some("error")));
 }
 
 #[test]
@@ -164,11 +167,23 @@ fn navigate_errors_are_documents_with_exit_2() {
         vec!["navigate", "--map", "wall.map", "--start", "1,1", "--goal", "3,2"],
         vec!["navigate", "--map", "wall.map", "--start", "0,0", "--goal", "3,2", "--radius", "0"],
         vec!["navigate", "--size", "16x16", "--planner", "ad-star", "--epsilon", "0.5"],
+        vec!["navigate", "--size", "16384x16384"],
+        vec!["navigate", "--size", "1x268435456"],
+        vec!["navigate", "--size", "16x16", "--planner", "nope"],
+        vec!["navigate", "--no-such-flag"],
     ] {
         let out = xtask(&args, &dir);
         assert_eq!(out.status.code(), Some(2), "{args:?}");
         assert_eq!(json(&out)["status"], "error", "{args:?}");
     }
+    let error = |args: &[&str]| json(&xtask(args, &dir))["error"].as_str().unwrap_or_default().to_string();
+    // A negative number is a value to refuse, not an unknown flag.
+    let negative = error(&["navigate", "--size", "16x16", "--density", "-0.5"]);
+    assert!(negative.contains("-0.5") && !negative.contains("unexpected argument"), "{negative}");
+    // A planner that does not replan is named as such, not for its heuristic.
+    let theta = error(&["navigate", "--size", "16x16", "--planner", "theta_star"]);
+    assert!(theta.contains("does not replan") && theta.contains("mpgaa_star"), "{theta}");
+    assert!(error(&["navigate", "--size", "16384x16384"]).contains("at most 16777216 cells"));
 }
 
 /// Every subcommand reports bad input the same way: exit 2 and an error document on stdout.
@@ -190,7 +205,8 @@ fn contingency_refuses_a_cell_size_that_is_not_a_size() {
     for cell in ["NaN", "0", "-3", "inf", "1e9"] {
         let out = xtask(&["contingency", "--generate", "1", "--summary", &format!("--cell={cell}")], &dir);
         assert_eq!(out.status.code(), Some(2), "--cell {cell}");
-        assert!(String::from_utf8_lossy(&out.stderr).contains("pixels per cell"), "--cell {cell}");
+        let error = json(&out)["error"].as_str().unwrap_or_default().to_string();
+        assert!(error.contains("pixels per cell"), "--cell {cell}: {error}");
     }
 }
 

@@ -56,10 +56,10 @@ pub struct Args {
     #[arg(long, value_enum, default_value = "quick")]
     suite: Suite,
     /// The seed of the generated maps and their queries.
-    #[arg(long, default_value_t = 1)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 1)]
     seed: u64,
     /// Rounds over each map's queries; each query's time is its median over the rounds.
-    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..))]
     runs: u32,
     /// The MovingAI folder (default: ../shared/movingai beside the project, when it exists).
     #[arg(long)]

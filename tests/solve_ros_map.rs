@@ -233,6 +233,21 @@ fn bad_documents_are_typed_errors() {
         world.inflation_radius = Some(-1.0);
     }
     assert!(matches!(err(p), SolveError::RosMap(_)));
+    // A cost factor is named as given, not scaled by the map's resolution.
+    for factor in [-1.0, 2e6, f64::NAN] {
+        let mut p = office(astar, [-4.2, -2.2], [4.3, 2.3]);
+        if let WorldSpec::RosMap(world) = &mut p.world {
+            world.cost_factor = Some(factor);
+        }
+        let message = err(p).to_string();
+        assert!(message.contains("cost_factor") && message.contains(&format!("{factor}")), "{message}");
+    }
+    // Jump point search is for grid worlds of uniform cost: the ROS map is named, not the
+    // connectivity it has.
+    for jumps in [r#"{"name": "jps"}"#, r#"{"name": "jps_plus"}"#] {
+        let message = err(office(jumps, [-4.2, -2.2], [4.3, 2.3])).to_string();
+        assert!(message.contains("ROS-map") && !message.contains("\"connectivity\": 8"), "{message}");
+    }
     assert!(matches!(
         err(office(r#"{"name": "rrt"}"#, [-4.2, -2.2], [4.3, 2.3])),
         SolveError::Document(DocumentError::NeedsPolygons { .. })

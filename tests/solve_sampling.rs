@@ -512,6 +512,10 @@ fn bad_box_documents_are_typed_errors() {
         (format!(r#"{ends}, "planner": {{"name": "rrt", "smooth": "bspline"}}"#), |e| {
             matches!(e, SolveError::Document(DocumentError::NotForSpace { .. }))
         }),
+        // A car's space with its turning radius: the space is at fault, not the radius.
+        (format!(r#"{ends}, "space": "reeds_shepp", "turning_radius": 1, "planner": {{"name": "rrt"}}"#), |e| {
+            matches!(e, SolveError::Document(DocumentError::InvalidBoxes(why)) if why.contains("reeds_shepp"))
+        }),
     ];
     for (rest, expected) in cases {
         let error = solve(&box_document(&rest), ".").unwrap_err();
@@ -532,6 +536,19 @@ fn bad_box_documents_are_typed_errors() {
         let problem: ProblemSpec = serde_json::from_str(&json).unwrap();
         assert!(solve(&problem, ".").is_err(), "{obstacles}");
     }
+    // An inverted box is named as a box; bounds too large for a diagonal as bounds, not as the
+    // planner's range.
+    let named = |bounds: &str, obstacles: &str| {
+        let json = format!(
+            r#"{{"world": {{"boxes": {{"bounds": {bounds}, "obstacles": {obstacles}}}}},
+                "start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1], "planner": {{"name": "rrt"}}}}"#
+        );
+        solve(&serde_json::from_str::<ProblemSpec>(&json).unwrap(), ".").unwrap_err().to_string()
+    };
+    let inverted = named("[[0, 1], [0, 1], [0, 1]]", r#"[[[0.6, 0, 0], [0.4, 1, 1]]]"#);
+    assert!(inverted.contains("obstacle box 0, axis 0"), "{inverted}");
+    let huge = named("[[-1e300, 1e300], [-1e300, 1e300], [-1e300, 1e300]]", "[]");
+    assert!(huge.contains("bounds are too large") && !huge.contains("range"), "{huge}");
     // "space": "rn" over polygons, and no picture of a box world.
     let polygons = document(r#""space": "rn", "start": [1, 1], "goal": [9, 1], "planner": {"name": "rrt"}"#);
     assert!(matches!(solve(&polygons, "."), Err(SolveError::Document(DocumentError::RnNeedsBoxes))));

@@ -47,7 +47,7 @@ pub use result::{
 };
 pub use ros_map::{
     DEFAULT_COST_FACTOR, DEFAULT_COST_SCALING_FACTOR, DEFAULT_INFLATION_RADIUS, DEFAULT_ROBOT_RADIUS,
-    ros_costmap, ros_travel_cost,
+    MAX_COST_FACTOR, ros_costmap, ros_travel_cost,
 };
 pub use sampling::{DEFAULT_ITERATIONS, MAX_BOX_DIMENSION, SHORTCUT_ATTEMPTS};
 

@@ -7,7 +7,7 @@ use trailmark_core::geometry::Point;
 use trailmark_core::grid::{Cell, Connectivity};
 use trailmark_graph::GridGraph;
 use trailmark_map::{
-    Costmap, CostmapSettings, Footprint, INSCRIBED, Inflation, TravelCost, Unknown, load_map,
+    Costmap, CostmapSettings, Footprint, INSCRIBED, Inflation, MapError, TravelCost, Unknown, load_map,
 };
 
 use super::error::{DocumentError, SolveError};
@@ -22,6 +22,8 @@ pub const DEFAULT_INFLATION_RADIUS: f64 = 0.55;
 pub const DEFAULT_COST_SCALING_FACTOR: f64 = 10.0;
 /// Smac 2-D's default `cost_travel_multiplier`.
 pub const DEFAULT_COST_FACTOR: f64 = 2.0;
+/// The largest `cost_factor` a ROS-map world takes.
+pub const MAX_COST_FACTOR: f64 = 1e6;
 
 /// The costmap of a ROS-map world: the map loaded (relative paths against `base_dir`), its
 /// unknown cells read as the world says, inflated around the robot.
@@ -36,6 +38,14 @@ pub fn ros_costmap(world: &RosMapSpec, base_dir: impl AsRef<Path>) -> Result<Cos
         cost_scaling_factor: world.cost_scaling_factor.unwrap_or(DEFAULT_COST_SCALING_FACTOR),
         ..Inflation::around(&footprint)?
     };
+    // Checked as the document gives it: the travel cost scales it by the map's resolution,
+    // whose own range would otherwise decide what is accepted, under another name.
+    if let Some(factor) = world.cost_factor
+        && !(factor.is_finite() && (0.0..=MAX_COST_FACTOR).contains(&factor))
+    {
+        let expected = "a number in 0..=1e6";
+        return Err(MapError::Setting { setting: "cost_factor", expected, value: factor }.into());
+    }
     let map = load_map(base_dir.as_ref().join(&world.yaml))?;
     let settings = CostmapSettings {
         unknown: world.unknown.unwrap_or(Unknown::Lethal),

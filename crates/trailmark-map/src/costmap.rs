@@ -184,7 +184,7 @@ impl Costmap {
 pub struct TravelCost {
     /// The price per cell length of a free cell; positive.
     pub neutral: f64,
-    /// How much a cell's cost (over 252) adds; not negative.
+    /// How much a cell's cost (over 252) adds; not negative, at most 1e10.
     pub factor: f64,
     /// The first cost that blocks a cell: 253 (inscribed and lethal cells blocked) by default.
     pub blocked_from: u8,
@@ -206,8 +206,10 @@ impl TravelCost {
         if !(self.neutral.is_finite() && self.neutral > 0.0 && self.neutral <= 1e6) {
             return bad("neutral", "a positive number of at most 1e6", self.neutral);
         }
-        if !(self.factor.is_finite() && self.factor >= 0.0 && self.factor <= 1e6) {
-            return bad("factor", "a number in 0..=1e6", self.factor);
+        // 1e10: a document's factor (up to 1e6) times a map's resolution (up to 1e4 m a cell);
+        // a cell then costs at most about 1e10 a cell length, far within the grids' cost limit.
+        if !(self.factor.is_finite() && self.factor >= 0.0 && self.factor <= 1e10) {
+            return bad("factor", "a number in 0..=1e10", self.factor);
         }
         if self.blocked_from == 0 {
             return bad("blocked_from", "a cost of at least 1", 0.0);

@@ -80,6 +80,67 @@ proptest! {
     }
 }
 
+/// Whether a point can go from cell `a` to cell `b` of `grid` (x, y from the top-left) through
+/// open cells: side to side, or corner to corner past at least one open cell beside the corner
+/// (the point cannot pass a corner both of whose other cells are blocked: blocked cells are
+/// closed squares). A breadth-first search written here.
+fn point_can_pass(grid: &Grid, a: Cell, b: Cell) -> bool {
+    let (w, h) = (grid.width() as i64, grid.height() as i64);
+    let open = |x: i64, y: i64| {
+        x >= 0 && y >= 0 && x < w && y < h && grid.is_passable(Cell::new(x as u32, y as u32))
+    };
+    let mut seen = vec![false; (w * h) as usize];
+    let mut queue = std::collections::VecDeque::from([(i64::from(a.x), i64::from(a.y))]);
+    seen[(i64::from(a.y) * w + i64::from(a.x)) as usize] = true;
+    while let Some((x, y)) = queue.pop_front() {
+        if (x, y) == (i64::from(b.x), i64::from(b.y)) {
+            return true;
+        }
+        for (dx, dy) in [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)] {
+            let (nx, ny) = (x + dx, y + dy);
+            let diagonal_ok = dx == 0 || dy == 0 || open(x + dx, y) || open(x, y + dy);
+            if open(nx, ny) && diagonal_ok && !seen[(ny * w + nx) as usize] {
+                seen[(ny * w + nx) as usize] = true;
+                queue.push_back((nx, ny));
+            }
+        }
+    }
+    false
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// A point robot's `Stop::Unreachable` is a proof: no chain of open cells joins its ends.
+    /// Any other end without a path is a stop, never a proof.
+    #[test]
+    fn unreachable_is_proved_by_the_cells(seed in any::<u64>()) {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let grid = blocks(16, 12, 14, &mut rng);
+        let map = CarMap::from_grid(&grid, 1.0).unwrap();
+        let settings = HybridSettings { turning_radius: 1.0, heading_bins: 16, ..HybridSettings::default() };
+        let planner = HybridAStar::new(&map, &Footprint::Radius(0.0), settings).unwrap();
+        let cell_of = |p: &Pose| Cell::new(p.translation.x as u32, 11 - p.translation.y as u32);
+        let mut free = || loop {
+            let p = pose(rng.random_range(0.1..15.9), rng.random_range(0.1..11.9), rng.random_range(-3.0..3.0));
+            if planner.is_free(&p) {
+                return p;
+            }
+        };
+        for _ in 0..4 {
+            let (start, goal) = (free(), free());
+            match planner.plan(&start, &goal, &Termination::expansions(20_000)) {
+                Err(CarError::NoPath { stop: Stop::Unreachable, .. }) => {
+                    prop_assert!(!point_can_pass(&grid, cell_of(&start), cell_of(&goal)), "{start:?} -> {goal:?}");
+                }
+                Ok(plan) => prop_assert!(point_can_pass(&grid, cell_of(&start), cell_of(&goal)), "{:?}", plan.path),
+                Err(CarError::NoPath { .. }) => {}
+                Err(e) => prop_assert!(false, "{e}"),
+            }
+        }
+    }
+}
+
 #[test]
 fn coarse_cells_and_a_wide_turn_are_solved() {
     // A 200 m x 40 m strip of 10 m cells, a turning radius of 50 m and four headings: every

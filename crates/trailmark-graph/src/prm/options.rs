@@ -93,10 +93,11 @@ impl Default for PrmOptions {
 }
 
 /// The most nodes a roadmap holds. Each node keeps its state, a few dozen edges (PRM*'s
-/// `k` grows with the logarithm of the nodes) and their collision results: about 800 bytes a
-/// node in eight dimensions, so ten million nodes took 7.8 GB and minutes to grow, and a
-/// million stay under a gigabyte. A larger request is refused with
-/// [`PrmError::TooManyNodes`] before anything is drawn.
+/// `k` grows with the logarithm of the nodes), their collision results and the nearest-neighbour
+/// tree's entry: about 2 KB a node in eight dimensions (a document of 300,000 samples in a box
+/// world peaked at 607 MB), so ten million nodes took 7.8 GB before they were refused and a
+/// million take about 2 GB. A larger request is refused with [`PrmError::TooManyNodes`] before
+/// anything is drawn.
 pub const MAX_ROADMAP_NODES: usize = 1_000_000;
 
 /// What went wrong building, growing, querying, changing or loading a roadmap.

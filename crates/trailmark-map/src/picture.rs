@@ -199,8 +199,8 @@ mod tests {
 
     #[test]
     fn a_plain_map_makes_a_small_picture() {
-        // 1024 x 1024 cells, free but for a wall round the edge and a band of inflation.
-        let n = 1024usize;
+        // 4096 x 4096 cells, free but for a wall round the edge and a band of inflation.
+        let n = 4096usize;
         let costs = (0..n * n)
             .map(|i| {
                 let (x, y) = (i % n, i / n);
@@ -215,7 +215,7 @@ mod tests {
             .collect();
         let costmap = Costmap::new(MapFrame::new(n, n, 0.05, [0.0; 3]).unwrap(), costs).unwrap();
         let png = CostmapSvg::new(&costmap).to_png().unwrap();
-        // 3 MB of pixels, nearly all alike.
-        assert!(png.len() < 40_000, "{} bytes", png.len());
+        // 50 MB of pixels, nearly all alike: 59 KB compressed, 254 KB at the encoder's default.
+        assert!(png.len() < 100_000, "{} bytes", png.len());
     }
 }

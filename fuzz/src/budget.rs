@@ -28,6 +28,16 @@ pub const MAX_TIME_LIMIT_S: f64 = 0.5;
 pub const MAX_SAMPLER_ATTEMPTS: u32 = 100;
 /// The most expansions of a Hybrid A* run without a smaller time limit.
 pub const MAX_CAR_EXPANSIONS: u64 = 20_000;
+/// The most poses a Hybrid A* motion is checked at (twice its length in cells): the planner
+/// lays out every motion's poses before it starts, and a turning radius of a million cells with
+/// 4 heading bins makes motions millions of cells long.
+pub const MAX_CAR_MOTION_POSES: f64 = 400.0;
+/// The most vertices of a footprint that is run (a longer one, up to the documented 1024, is
+/// checked at every pose, vertex by vertex: slow rather than hostile).
+pub const MAX_CAR_FOOTPRINT_VERTICES: usize = 64;
+/// The farthest, in cells, a footprint's vertex may lie from its reference point: each check
+/// near an obstacle lays the footprint on the cells it covers.
+pub const MAX_CAR_FOOTPRINT_CELLS: f64 = 64.0;
 /// The most (cells x anytime iterations) of an ARA* or AD* run without a smaller limit.
 pub const MAX_ANYTIME_WORK: u64 = 5_000_000;
 
@@ -73,14 +83,27 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
             if !(spec.max_expansions.is_some_and(|e| e <= MAX_CAR_EXPANSIONS) || time_ok(spec.time_limit_s)) {
                 return false;
             }
+            let resolution = match &problem.world {
+                WorldSpec::Polygons(_) => spec.resolution.unwrap_or(spec.turning_radius / 8.0),
+                _ => spec.resolution.unwrap_or(1.0),
+            };
             // A polygon world laid on cells: no more than a grid world's.
-            if let WorldSpec::Polygons(world) = &problem.world {
-                let resolution = spec.resolution.unwrap_or(spec.turning_radius / 8.0);
+            let diagonal = if let WorldSpec::Polygons(world) = &problem.world {
                 let size = world.bounds().max() - world.bounds().min();
                 let cells = (size.x / resolution).ceil() * (size.y / resolution).ceil();
                 if cells.is_nan() || cells > MAX_GRID_CELLS as f64 {
                     return false;
                 }
+                size.norm() + 2.0 * resolution
+            } else if let WorldSpec::Grid(world) = &problem.world {
+                let rows = world.rows.as_deref().unwrap_or_default();
+                let width = rows.iter().map(|r| r.chars().count()).max().unwrap_or(0);
+                (width as f64).hypot(rows.len() as f64) * resolution
+            } else {
+                f64::INFINITY
+            };
+            if !car_run_is_quick(spec, resolution, diagonal) {
+                return false;
             }
         }
         PlannerSpec::AraStar(AnytimeSpec { epsilon, epsilon_step, time_limit_s, max_expansions, .. })
@@ -160,4 +183,38 @@ fn roadmap_nodes(problem: &ProblemSpec) -> usize {
 pub fn polygons_are_quick(world: &PolygonWorld) -> bool {
     let vertices: usize = world.obstacles().iter().map(|o| o.vertices().len()).sum();
     world.obstacles().len() <= MAX_OBSTACLES && vertices <= MAX_OBSTACLE_VERTICES
+}
+
+/// Whether a Hybrid A* run on cells `resolution` wide does bounded work per expansion: its
+/// motions checked at few poses (the planner's rule: the fewest heading bins whose arc is 1.5
+/// cells long, checked every half cell), a footprint of few vertices within a few cells. A
+/// setting the planner refuses (a resolution or radius out of range, a footprint of more
+/// vertices than documented) costs nothing, and so does a footprint reaching farther than the
+/// map's `diagonal`: it leaves the map wherever it is, and the start is refused.
+fn car_run_is_quick(spec: &trailmark::solve::HybridSpec, resolution: f64, diagonal: f64) -> bool {
+    let (radius, bins) = (spec.turning_radius, spec.heading_bins.unwrap_or(72));
+    let accepted = resolution.is_finite()
+        && resolution > 0.0
+        && radius.is_finite()
+        && radius >= 0.5 * resolution
+        && radius <= 1e6 * resolution
+        && (4..=1440).contains(&bins);
+    if !accepted {
+        return true;
+    }
+    let bin_angle = std::f64::consts::TAU / f64::from(bins);
+    let per_turn = (1.5 * resolution / (radius * bin_angle)).ceil().max(1.0);
+    let poses = (per_turn * bin_angle * radius / (0.5 * resolution)).ceil();
+    if poses.is_nan() || poses > MAX_CAR_MOTION_POSES {
+        return false;
+    }
+    match &spec.footprint {
+        Some(v) if v.len() > trailmark_core::footprint::MAX_FOOTPRINT_VERTICES => true,
+        Some(v) => {
+            let reach = v.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max);
+            v.len() <= MAX_CAR_FOOTPRINT_VERTICES
+                && (reach / resolution <= MAX_CAR_FOOTPRINT_CELLS || reach.is_nan() || reach > diagonal)
+        }
+        None => true,
+    }
 }

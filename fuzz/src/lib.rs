@@ -22,6 +22,7 @@ pub mod terrain;
 use std::path::Path;
 
 use trailmark::solve::{PlannerSpec, ProblemSpec, WorldSpec};
+use trailmark_core::footprint::MAX_FOOTPRINT_VERTICES;
 
 /// The folder relative map paths are resolved against: one that does not exist, so that no
 /// map file is ever read (absolute paths are skipped by [`budget::problem_is_quick`]).
@@ -35,6 +36,14 @@ pub fn close(a: f64, b: f64, rel: f64) -> bool {
 /// Solves `problem` when it is quick enough, and checks every path it returns.
 pub fn solve_and_check(problem: &ProblemSpec) {
     if !budget::problem_is_quick(problem) {
+        return;
+    }
+    // A footprint past the documented most vertices is refused, whatever else the document says.
+    if let PlannerSpec::HybridAStar(spec) = &problem.planner
+        && let Some(count) = spec.footprint.as_ref().map(Vec::len).filter(|&n| n > MAX_FOOTPRINT_VERTICES)
+    {
+        let solved = trailmark::solve::solve(problem, Path::new(NO_DIR));
+        assert!(solved.is_err(), "a footprint of {count} vertices was accepted: {solved:?}");
         return;
     }
     let Ok(result) = trailmark::solve::solve(problem, Path::new(NO_DIR)) else {

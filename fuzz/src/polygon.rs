@@ -7,7 +7,7 @@
 //! shortest Reeds-Shepp curves for the `reeds_shepp_prm` roadmap and the `reeds_shepp` space.
 
 use trailmark::solve::{GraphKind, PlannerSpec, ProblemSpec, SolveResult, SpaceKind, Status, Waypoint};
-use trailmark_core::dubins::DubinsPath;
+use trailmark_core::dubins::{DubinsPath, DubinsWord};
 use trailmark_core::geometry::{Point, Pose, Vector};
 use trailmark_core::reeds_shepp::ReedsSheppPath;
 use trailmark_core::world::PolygonWorld;
@@ -19,6 +19,11 @@ pub const SAMPLES_PER_MOTION: usize = 200;
 
 /// The relative tolerance of a path's cost against its measured length.
 pub const LENGTH_TOLERANCE: f64 = 1e-9;
+
+/// How much longer than the shortest, in turning radii, a curve between two waypoints may be and
+/// still be the one the planner drove: a word whose turn has no length is found through an
+/// arccosine near 1, whose angle moves by the square root of a rounding (1e-8 for 1e-16).
+pub const TIE_ROUNDING: f64 = 1e-7;
 
 /// The absolute error allowed per Dubins motion, in turning radii, when its length is taken again
 /// from waypoints whose headings were rounded through their angles.
@@ -126,21 +131,48 @@ pub fn check_result(problem: &ProblemSpec, world: &PolygonWorld, result: &SolveR
         }
         let mut length = 0.0;
         for (i, pair) in poses.windows(2).enumerate() {
-            let (l, pose_at): (f64, Box<dyn Fn(f64) -> Result<Pose, String>>) = if is_reeds_shepp(problem) {
-                let curve = ReedsSheppPath::shortest(&pair[0], &pair[1], radius)
+            // The shortest curve first, then the others of the same length to within
+            // TIE_ROUNDING: where two words tie, the planner's own poses (before their headings
+            // were rounded through angles) may have picked the other (a word through a turn of
+            // no length flips for a heading a unit in the last place off).
+            type Curve = (f64, Box<dyn Fn(f64) -> Result<Pose, String>>);
+            let curves: Vec<Curve> = if is_reeds_shepp(problem) {
+                let mut all = ReedsSheppPath::candidates(&pair[0], &pair[1], radius)
                     .unwrap_or_else(|e| panic!("{planner}: no Reeds-Shepp curve for motion {i}: {e}"));
-                (curve.length(), Box::new(move |s| curve.pose_at(s).map_err(|e| e.to_string())))
+                all.sort_by(|a, b| a.length().total_cmp(&b.length()));
+                all.into_iter()
+                    .map(|c| -> Curve {
+                        (c.length(), Box::new(move |s| c.pose_at(s).map_err(|e| e.to_string())))
+                    })
+                    .collect()
             } else {
-                let curve = DubinsPath::shortest(&pair[0], &pair[1], radius)
+                let shortest = DubinsPath::shortest(&pair[0], &pair[1], radius)
                     .unwrap_or_else(|e| panic!("{planner}: no Dubins curve for motion {i}: {e}"));
-                (curve.length(), Box::new(move |s| curve.pose_at(s).map_err(|e| e.to_string())))
+                let words = DubinsWord::ALL.iter().filter(|&&w| w != shortest.word());
+                let others = words.filter_map(|&w| DubinsPath::with_word(&pair[0], &pair[1], radius, w).ok());
+                std::iter::once(shortest)
+                    .chain(others)
+                    .map(|c| -> Curve {
+                        (c.length(), Box::new(move |s| c.pose_at(s).map_err(|e| e.to_string())))
+                    })
+                    .collect()
             };
-            for k in 0..=SAMPLES_PER_MOTION {
-                let s = (l * k as f64 / SAMPLES_PER_MOTION as f64).min(l);
-                let at = pose_at(s).unwrap_or_else(|e| panic!("pose_at({s}) of a {l} curve: {e}"));
-                clear(onto_bounds(Point::from(at.translation.vector)), &format!("motion {i} at {s}"));
+            let l = curves.iter().map(|c| c.0).fold(f64::INFINITY, f64::min);
+            let first_blocked = |(cl, pose_at): &Curve| {
+                (0..=SAMPLES_PER_MOTION).find_map(|k| {
+                    let s = (cl * k as f64 / SAMPLES_PER_MOTION as f64).min(*cl);
+                    let at = pose_at(s).unwrap_or_else(|e| panic!("pose_at({s}) of a {cl} curve: {e}"));
+                    let p = onto_bounds(Point::from(at.translation.vector));
+                    (!is_clear(world, p, tolerance)).then_some((s, p))
+                })
+            };
+            let ties = curves.iter().filter(|c| c.0 <= l + TIE_ROUNDING * radius);
+            if ties.clone().any(|c| first_blocked(c).is_none()) {
+                length += l;
+                continue;
             }
-            length += l;
+            let (s, p) = first_blocked(&curves[0]).expect("blocked");
+            clear(p, &format!("motion {i} at {s}"));
         }
         length
     } else {
@@ -227,4 +259,33 @@ pub fn is_clear(world: &PolygonWorld, p: Point, tolerance: f64) -> bool {
             let signed = if o.contains_strictly(p) { -to_edges } else { to_edges };
             signed >= r
         })
+}
+
+#[cfg(test)]
+mod tests {
+    use trailmark::solve::{ProblemSpec, WorldSpec};
+
+    use super::*;
+
+    /// Found by solve_document: an RRT over Dubins curves at 1e9 m, whose motion 26, taken
+    /// again from the reported waypoints, is the word RLR (a left turn of no length) looping out
+    /// of the bounds, the shortest by 2.3e-8 m; the planner's own check refuses that curve too,
+    /// so from its own poses it drove another of the tie: LSR, as long to within that, is clear.
+    /// Ties of that size are accepted.
+    #[test]
+    fn a_tie_between_dubins_words_at_far_coordinates_passes() {
+        let problem: ProblemSpec = serde_json::from_str(
+            r#"{"goal":[-999999905.0,-999999967.5,0.7853981633974483],"planner":{"max_iterations":1503,"name":"rrt","range":0.375},
+                "space":"dubins","start":[-999999955.0,-999999912.5,-2.356194490192345],"turning_radius":13.75,
+                "world":{"polygons":{"bounds":[-1000000000.0,-1000000000.0,-999999900.0,-999999900.0],
+                "obstacles":[[[-999999985.0,-999999985.0],[-999999960.0,-999999985.0],[-999999960.0,-999999960.0],[-999999985.0,-999999960.0]],
+                             [[-999999985.0,-999999985.0],[-999999960.0,-999999985.0],[-999999960.0,-999999960.0],[-999999985.0,-999999960.0]],
+                             [[-999999985.0,-999999985.0],[-999999960.0,-999999985.0],[-999999960.0,-999999960.0],[-999999985.0,-999999960.0]]],
+                "robot_radius":3.75}}}"#,
+        )
+        .unwrap();
+        let WorldSpec::Polygons(world) = &problem.world else { unreachable!() };
+        let result = trailmark::solve::solve(&problem, ".").unwrap();
+        check_result(&problem, world, &result);
+    }
 }

@@ -37,6 +37,11 @@ const ROOT: u32 = u32::MAX;
 /// The poses along a motion or a shot are checked this many to a cell.
 const CHECKS_PER_CELL: f64 = 2.0;
 
+/// The longest motion, in cells: a turn of one heading bin at the turning radius longer than
+/// this (a radius of a million cells with four bins is a quarter circle of 1.6 million cells)
+/// would hold millions of precomputed poses and leave any map a grid may be.
+pub const MAX_MOTION_CELLS: f64 = 32_768.0;
+
 /// Shots to the goal are tried within this many motions of it, whatever
 /// [`HybridSettings::analytic_expansion_max_length`] says: a setting shorter than the map's
 /// cells or the car's motions would leave the search no way to end.
@@ -113,12 +118,22 @@ struct Node {
 impl<'m> HybridAStar<'m> {
     /// A planner for a car with `footprint` on `map`.
     ///
-    /// Errors: a setting out of range ([`HybridSettings::check`]), a footprint radius that is
-    /// negative or not finite, a polygon of more than
+    /// Errors: a setting out of range ([`HybridSettings::check`]), too few heading bins for the
+    /// turning radius (one bin's arc longer than [`MAX_MOTION_CELLS`] cells: the motions' poses
+    /// are precomputed, two a cell), a footprint radius that is negative or not finite, a
+    /// polygon of more than
     /// [`MAX_FOOTPRINT_VERTICES`](trailmark_core::footprint::MAX_FOOTPRINT_VERTICES) vertices.
     pub fn new(map: &'m CarMap, footprint: &Footprint, settings: HybridSettings) -> Result<Self, CarError> {
         settings.check(map.resolution())?;
         footprint.check()?;
+        let bin_arc = std::f64::consts::TAU / f64::from(settings.heading_bins) * settings.turning_radius;
+        if bin_arc > MAX_MOTION_CELLS * map.resolution() {
+            return Err(CarError::Setting {
+                setting: "heading_bins",
+                expected: "enough bins that one bin's arc at the turning radius is at most 32,768 cells (2 pi turning_radius / heading_bins)",
+                value: f64::from(settings.heading_bins),
+            });
+        }
         let reach = footprint.circumscribed_radius()?;
         let step = map.resolution() / CHECKS_PER_CELL;
         // Between two poses `step` apart along an arc, a point of the robot `reach` from its
@@ -384,16 +399,18 @@ impl Run<'_, '_> {
         self.open.push(Reverse((h.to_bits(), !0.0f64.to_bits(), 0)));
         let mut watch = Watch::start(termination);
         let mut countdown = 0u64;
+        let clock_every = if p.motions.checks[0].len() > 64 { 1 } else { 64 };
         while let Some(Reverse((f_bits, _, id))) = self.open.pop() {
             let node = self.nodes[id as usize];
             if node.closed || node.f.to_bits() != f_bits {
                 continue; // expanded already, or reached more cheaply since this entry
             }
-            // The expansion limit exactly; the clock and the caller every 64 expansions.
+            // The expansion limit exactly; the clock and the caller every 64 expansions, or every
+            // one where motions are long enough for one expansion to take long.
             if termination.expansions_spent(self.stats.expansions) {
                 return Err(Stop::ExpansionLimit);
             }
-            if self.stats.expansions.is_multiple_of(64) {
+            if self.stats.expansions.is_multiple_of(clock_every) {
                 watch.set_expansions(self.stats.expansions);
                 if let Some(stop) = watch.interrupted() {
                     return Err(stop);

@@ -54,7 +54,7 @@ mod smooth;
 mod stats;
 
 pub use error::CarError;
-pub use hybrid_astar::{CarPlan, HybridAStar};
+pub use hybrid_astar::{CarPlan, HybridAStar, MAX_MOTION_CELLS};
 pub use map::CarMap;
 pub use path::{CarPath, Stretch};
 pub use settings::{HybridSettings, MAX_HEADING_BINS};

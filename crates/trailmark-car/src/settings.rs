@@ -17,7 +17,9 @@ pub struct HybridSettings {
     /// tighter turn would not leave its cell before its heading moved a bin.
     pub turning_radius: f64,
     /// How many headings the search tells apart (72: 5 degrees), from 4 to
-    /// [`MAX_HEADING_BINS`].
+    /// [`MAX_HEADING_BINS`], and enough that one bin's arc at the turning radius is at most
+    /// [`MAX_MOTION_CELLS`](crate::MAX_MOTION_CELLS) cells (checked by
+    /// [`HybridAStar::new`](crate::HybridAStar::new)).
     pub heading_bins: u32,
     /// Whether the car may drive in reverse (Reeds-Shepp shots to the goal); otherwise forward
     /// only (Dubins shots).

@@ -32,6 +32,21 @@ fn turning_radii_out_of_range_are_errors() {
 }
 
 #[test]
+fn a_wide_turn_in_few_bins_is_refused_before_its_poses_are_laid_out() {
+    // A turning radius of a million cells with four bins: a quarter circle of 1.6 million cells,
+    // 3 million poses a motion (600 MB) had been laid out.
+    let map = CarMap::from_grid(&Grid::new(4, 4).unwrap(), 1.0).unwrap();
+    let wide = HybridSettings { turning_radius: 1e6, heading_bins: 4, ..HybridSettings::default() };
+    match HybridAStar::new(&map, &Footprint::Radius(0.0), wide) {
+        Err(CarError::Setting { setting: "heading_bins", value, .. }) => assert_eq!(value, 4.0),
+        other => panic!("{other:?}"),
+    }
+    // Enough bins for the radius: 2 pi 1e6 / 32768 = 192.
+    let enough = HybridSettings { heading_bins: 192, ..wide };
+    assert!(HybridAStar::new(&map, &Footprint::Radius(0.0), enough).is_ok());
+}
+
+#[test]
 fn heading_bins_out_of_range_are_errors() {
     for bins in [0, 1, 3, 1441, u32::MAX] {
         let settings = HybridSettings { heading_bins: bins, ..HybridSettings::default() };

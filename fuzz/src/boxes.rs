@@ -49,9 +49,10 @@ const MAX_SECTION_CELLS: usize = 4096;
 /// The walls of `world`: `(axis, c0, c1)` where the boxes spanning `[c0, c1]` along `axis`
 /// cover the bounds' cross section, every point of it. Each box's own span along each axis is a
 /// candidate slab, and so is each of its faces (`c0 = c1`: where two boxes meet at a face or a
-/// corner, only the plane they share may be covered by both). The cross section is cut at every side of those boxes within the bounds; it
-/// is covered when every cell of that cut holds a box (the boxes are closed: covering every
-/// cell's inside covers its edges too). Cuts of more than [`MAX_SECTION_CELLS`] are not tried.
+/// corner, only the plane they share may be covered by both). The cross section is cut at every
+/// side of those boxes within the bounds; it is covered when every cell of that cut holds a box
+/// (the boxes are closed: covering every cell's inside covers its edges too). Cuts of more than
+/// [`MAX_SECTION_CELLS`] are not tried.
 pub fn walls(world: &BoxesSpec) -> Vec<(usize, f64, f64)> {
     let n = world.bounds.len();
     let mut found = Vec::new();

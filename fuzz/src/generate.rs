@@ -1095,14 +1095,7 @@ mod tests {
         let mut tally = std::collections::BTreeMap::<String, usize>::new();
         let n = 600;
         for _ in 0..n {
-            let bytes: Vec<u8> = (0..512)
-                .map(|_| {
-                    state ^= state << 13;
-                    state ^= state >> 7;
-                    state ^= state << 17;
-                    state as u8
-                })
-                .collect();
+            let bytes = pseudo_random_bytes(&mut state, 512);
             let doc = problem(&mut Unstructured::new(&bytes)).unwrap();
             let outcome = match serde_json::from_value::<ProblemSpec>(doc) {
                 Err(e) => format!("not a problem: {}", e.to_string().chars().take(60).collect::<String>()),
@@ -1124,8 +1117,18 @@ mod tests {
         assert!(solved * 6 >= n, "only {solved} of {n} documents solved");
     }
 
-    /// Documents from pseudo-random bytes, each made by `make` and run through the checks;
-    /// the tally of their outcomes (a status, an error's start, skipped).
+    /// `len` bytes of a xorshift generator from `state`, which it advances.
+    fn pseudo_random_bytes(state: &mut u64, len: usize) -> Vec<u8> {
+        (0..len)
+            .map(|_| {
+                *state ^= *state << 13;
+                *state ^= *state >> 7;
+                *state ^= *state << 17;
+                *state as u8
+            })
+            .collect()
+    }
+
     /// `n` documents made by `make` from pseudo-random bytes.
     fn documents(
         n: usize,
@@ -1134,14 +1137,7 @@ mod tests {
         let mut state = 0x2545_f491_4f6c_dd1du64;
         (0..n)
             .map(|_| {
-                let bytes: Vec<u8> = (0..1024)
-                    .map(|_| {
-                        state ^= state << 13;
-                        state ^= state >> 7;
-                        state ^= state << 17;
-                        state as u8
-                    })
-                    .collect();
+                let bytes = pseudo_random_bytes(&mut state, 1024);
                 let mut doc = Map::new();
                 make(&mut Unstructured::new(&bytes), &mut doc).unwrap();
                 Value::Object(doc)

@@ -337,15 +337,27 @@ impl PlannerSpec {
     /// Whether [`replanner`](Self::replanner) makes this planner a [`Replanner`]: `astar`,
     /// `lpa_star`, `dstar_lite`, `ad_star`, `adaptive_astar` and `mpgaa_star`.
     pub fn replans(&self) -> bool {
-        matches!(
-            self,
+        // Every variant named, so that a new planner is asked whether it replans.
+        match self {
             PlannerSpec::AStar { .. }
-                | PlannerSpec::LpaStar { .. }
-                | PlannerSpec::AdaptiveAStar { .. }
-                | PlannerSpec::MpgaaStar { .. }
-                | PlannerSpec::DStarLite { .. }
-                | PlannerSpec::AdStar(_)
-        )
+            | PlannerSpec::LpaStar { .. }
+            | PlannerSpec::AdaptiveAStar { .. }
+            | PlannerSpec::MpgaaStar { .. }
+            | PlannerSpec::DStarLite { .. }
+            | PlannerSpec::AdStar(_) => true,
+            PlannerSpec::Bfs {}
+            | PlannerSpec::Dfs {}
+            | PlannerSpec::Dijkstra {}
+            | PlannerSpec::WeightedAStar { .. }
+            | PlannerSpec::ThetaStar {}
+            | PlannerSpec::Jps {}
+            | PlannerSpec::JpsPlus {}
+            | PlannerSpec::AraStar(_)
+            | PlannerSpec::Rrt(_)
+            | PlannerSpec::RrtConnect(_)
+            | PlannerSpec::RrtStar(_)
+            | PlannerSpec::HybridAStar(_) => false,
+        }
     }
 
     /// This planner as a [`Replanner`] from `start` to `goal` on `graph` with the heuristic

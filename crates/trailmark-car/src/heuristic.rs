@@ -76,12 +76,15 @@ impl ObstacleHeuristic {
         // The goal's cell is open whenever the goal pose is valid; were it closed, no cell
         // would have a cost and the planner would report no path.
         let goal = Cell::new((goal % w) as u32, (goal / w) as u32);
-        if search.dijkstra_all(&graph, goal).is_ok() {
-            for (i, slot) in cost.iter_mut().enumerate() {
-                let cell = Cell::new((i % w) as u32, (i / w) as u32);
-                if let Some(c) = search.cost_to(&graph, cell) {
-                    *slot = c * grid.resolution;
-                }
+        if search.dijkstra_all(&graph, goal).is_err() {
+            // A search that failed proves nothing: no estimate, rather than one that closes all.
+            cost.fill(0.0);
+            return ObstacleHeuristic { cost };
+        }
+        for (i, slot) in cost.iter_mut().enumerate() {
+            let cell = Cell::new((i % w) as u32, (i / w) as u32);
+            if let Some(c) = search.cost_to(&graph, cell) {
+                *slot = c * grid.resolution;
             }
         }
         ObstacleHeuristic { cost }

@@ -199,7 +199,7 @@ impl<'m> HybridAStar<'m> {
     /// obstacle than the [`margin`](Self::margin) ([`CarError::WithinMargin`]);
     /// [`CarError::NoPath`] without a path, its `stop` saying what is known:
     /// [`Stop::Unreachable`] when no pose of the car's reference point joins the start to the
-    /// goal (proved on the map's cells), [`Stop::LatticeExhausted`] when every state of the
+    /// goal (proved on the map's cells, where they are the obstacles: [`CarMap::is_exact`]), [`Stop::LatticeExhausted`] when every state of the
     /// lattice the search reached was expanded without a free shot to the goal (nothing
     /// proved), or the termination's stop.
     pub fn plan(&self, start: &Pose, goal: &Pose, termination: &Termination) -> Result<CarPlan, CarError> {
@@ -374,17 +374,19 @@ impl Run<'_, '_> {
     /// Searches from `start`: the node where a free shot to the goal was found, the shot and the
     /// path's cost; or why it stopped.
     ///
-    /// The estimate around the obstacles is infinite exactly where no chain of cells, each with
-    /// a point the reference point may occupy, joins a cell to the goal's: infinite at the start,
-    /// the goal is proved unreachable. An open list that runs out proves nothing about the
+    /// The estimate around the obstacles is infinite only where no chain of cells, each with a
+    /// point the reference point may occupy, joins a cell to the goal's: infinite at the start,
+    /// the goal is proved unreachable, when the map's obstacle cells are the obstacles
+    /// themselves ([`CarMap::is_exact`]). An open list that runs out proves nothing about the
     /// continuous problem, only about the lattice.
     fn run(&mut self, start: Pose, termination: &Termination) -> Result<(u32, Shot, f64), Stop> {
         let p = self.planner;
+        let unreachable = if p.map.is_exact() { Stop::Unreachable } else { Stop::LatticeExhausted };
         // The start is on the map: its footprint was checked there.
-        let start_cell = p.map.cell_index(point(&start)).ok_or(Stop::Unreachable)?;
+        let start_cell = p.map.cell_index(point(&start)).ok_or(unreachable)?;
         let h = self.estimate(&start, start_cell);
         if !h.is_finite() {
-            return Err(Stop::Unreachable);
+            return Err(unreachable);
         }
         self.nodes.push(Node {
             pose: start,

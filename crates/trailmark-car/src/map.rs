@@ -28,6 +28,10 @@ pub struct CarMap {
     /// Per cell: metres from its centre to the centre of the nearest obstacle cell (`+inf`
     /// without obstacles).
     clearance: Vec<f64>,
+    /// Whether its obstacle cells are the obstacles themselves (a costmap, a grid), so that
+    /// no way through the cells is no way at all; a polygon world's cells cover its obstacles
+    /// and more.
+    exact: bool,
 }
 
 impl CarMap {
@@ -54,24 +58,29 @@ impl CarMap {
                 }
             })
             .collect();
-        Ok(Self::with_prices(*costmap.frame(), price))
+        Ok(Self::with_prices(*costmap.frame(), price, true))
     }
 
     /// A grid as a car sees it, each cell `resolution` wide with the grid's top-left corner
     /// at `(0, height * resolution)` (the map frame's convention: y up): blocked cells are
     /// obstacles, and a metre costs the cell's cost.
     ///
-    /// Errors: a resolution that is not positive and finite.
+    /// Errors: a resolution that is not positive and finite, a grid beyond a map's limits
+    /// ([`MAX_MAP_CELLS`](trailmark_map::MAX_MAP_CELLS) cells and
+    /// [`MAX_IMAGE_SIDE`](trailmark_map::MAX_IMAGE_SIDE) a side, [`MapError::TooLarge`](trailmark_map::MapError::TooLarge)).
     pub fn from_grid(grid: &Grid, resolution: f64) -> Result<Self, CarError> {
         let frame = MapFrame::new(grid.width() as usize, grid.height() as usize, resolution, [0.0; 3])?;
-        Ok(Self::with_prices(frame, grid.costs().to_vec()))
+        Ok(Self::with_prices(frame, grid.costs().to_vec(), true))
     }
 
     /// A polygon world as a car sees it, laid on cells `resolution` wide from the bounds'
     /// lower-left corner: a cell any point of which lies in an obstacle (boundary included) or
     /// outside the bounds is an obstacle, so a footprint clear of the cells is clear of the
     /// polygons and inside the bounds; a metre costs 1 elsewhere. The world's robot radius is
-    /// not used: the car's footprint is checked itself.
+    /// not used: the car's footprint is checked itself. The cells cover more than the
+    /// obstacles, so a search on them proves no goal unreachable: Hybrid A* reports
+    /// [`Stop::LatticeExhausted`](trailmark_core::termination::Stop::LatticeExhausted) where on
+    /// a grid or a costmap it would report [`Stop::Unreachable`](trailmark_core::termination::Stop::Unreachable).
     ///
     /// Errors: a resolution that is not positive and finite ([`CarError::Map`]), or so fine
     /// that the map would exceed [`CarMap::MAX_WORLD_CELLS`] ([`CarError::Setting`]).
@@ -105,17 +114,24 @@ impl CarMap {
                 if raster.marked[k] || out { f64::INFINITY } else { 1.0 }
             })
             .collect();
-        Ok(Self::with_prices(frame, price))
+        Ok(Self::with_prices(frame, price, false))
     }
 
-    fn with_prices(frame: MapFrame, price: Vec<f64>) -> Self {
+    fn with_prices(frame: MapFrame, price: Vec<f64>, exact: bool) -> Self {
         let (width, height) = (frame.width() as usize, frame.height() as usize);
         let resolution = frame.resolution();
         let clearance = squared_distances(&frame, |i| price[i].is_infinite())
             .into_iter()
             .map(|d| if d == NO_SOURCE { f64::INFINITY } else { f64::from(d).sqrt() * resolution })
             .collect();
-        CarMap { frame, width, height, resolution, price, clearance }
+        CarMap { frame, width, height, resolution, price, clearance, exact }
+    }
+
+    /// Whether the obstacle cells are the obstacles themselves (a costmap, a grid) rather than
+    /// cells that cover them (a polygon world): only then does no way through the cells prove
+    /// that there is none.
+    pub fn is_exact(&self) -> bool {
+        self.exact
     }
 
     /// The map's frame.

@@ -170,7 +170,8 @@ fn a_gap_a_million_times_dearer_is_still_shot_through() {
     let settings = HybridSettings { turning_radius: 0.5, ..HybridSettings::default() };
     let (start, goal) = (pose(1.0, 2.0, 0.0), pose(5.0, 2.0, 0.0));
     let plan = plan(&grid, 0.1, &Footprint::Radius(0.2), settings, (&start, &goal)).unwrap();
-    assert!(plan.path.length() >= 4.0);
+    // Through the gap: its tenth of a metre is priced at about 1e5 (the poses checked there).
+    assert!(plan.path.cost > 5e4, "{}", plan.path.cost);
 }
 
 #[test]
@@ -259,4 +260,27 @@ fn a_walled_off_goal_is_proved_unreachable_for_every_footprint() {
         let found = plan(&grid, 0.1, &car, settings, (&pose(1.0, 1.0, 0.0), &pose(5.0, 1.0, 0.0)));
         assert!(matches!(found, Err(CarError::NoPath { stop: Stop::Unreachable, .. })), "{car:?}: {found:?}");
     }
+}
+
+#[test]
+fn a_polygon_world_laid_on_cells_proves_nothing_unreachable() {
+    use trailmark_core::geometry::Point;
+    use trailmark_core::world::{Bounds, PolygonWorld};
+    // A wall across a 10 x 10 world with a gap from y = 4.05 to 4.25, 1.6 cells of 0.125 wide:
+    // both cells it touches are marked, so the cells close a gap a point passes.
+    let square = |x0: f64, y0: f64, x1: f64, y1: f64| {
+        vec![Point::new(x0, y0), Point::new(x1, y0), Point::new(x1, y1), Point::new(x0, y1)]
+    };
+    let walls = vec![square(4.9, 0.0, 5.1, 4.05), square(4.9, 4.25, 5.1, 10.0)];
+    let world = PolygonWorld::new(Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap(), walls, 0.0).unwrap();
+    let map = CarMap::from_world(&world, 0.125).unwrap();
+    assert!(!map.is_exact());
+    let planner = HybridAStar::new(&map, &Footprint::Radius(0.0), HybridSettings::default()).unwrap();
+    match planner.plan(&pose(2.0, 4.15, 0.0), &pose(8.0, 4.15, 0.0), &Termination::expansions(50_000)) {
+        Err(CarError::NoPath { stop, .. }) => assert_eq!(stop, Stop::LatticeExhausted),
+        Ok(plan) => panic!("a point passed a gap the cells close: {:?}", plan.path),
+        Err(e) => panic!("{e}"),
+    }
+    // On a grid the same wall of cells is the obstacle itself: a proof.
+    assert!(CarMap::from_grid(&Grid::new(4, 4).unwrap(), 1.0).unwrap().is_exact());
 }

@@ -94,10 +94,9 @@ impl Default for PrmOptions {
 
 /// The most nodes a roadmap holds. Each node keeps its state, a few dozen edges (PRM*'s
 /// `k` grows with the logarithm of the nodes), their collision results and the nearest-neighbour
-/// tree's entry: about 2 KB a node in eight dimensions (a document of 300,000 samples in a box
-/// world peaked at 607 MB), so ten million nodes took 7.8 GB before they were refused and a
-/// million take about 2 GB. A larger request is refused with [`PrmError::TooManyNodes`] before
-/// anything is drawn.
+/// tree's entry: about 2 KB a node in eight dimensions (docs/core.md has the measurements), so
+/// a million take about 2 GB. A larger request is refused with [`PrmError::TooManyNodes`]
+/// before anything is drawn.
 pub const MAX_ROADMAP_NODES: usize = 1_000_000;
 
 /// What went wrong building, growing, querying, changing or loading a roadmap.

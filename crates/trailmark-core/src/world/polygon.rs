@@ -119,8 +119,11 @@ pub(super) fn signed_area(v: &[Point]) -> f64 {
 
 /// A pair of edges that intersect other than at the shared vertex of consecutive edges (or
 /// that fold back over each other there). Edges are swept by their least x, and a pair is
-/// tested only when the two edges' boxes overlap: a long outline (a contour traced from a map)
-/// is checked in about `n log n` where every pair would take minutes.
+/// tested only when the two edges' boxes overlap: an outline of short edges (a contour traced
+/// from a map) is checked in about `n log n` where every pair would take minutes. Edges that
+/// all span the same x (a comb of long teeth) are still compared pair by pair, cheaply, by
+/// their y ranges; a footprint is capped at
+/// [`MAX_FOOTPRINT_VERTICES`](crate::footprint::MAX_FOOTPRINT_VERTICES) before this.
 fn self_intersection(v: &[Point]) -> Option<(usize, usize)> {
     let n = v.len();
     let edge = |i: usize| (v[i], v[(i + 1) % n]);

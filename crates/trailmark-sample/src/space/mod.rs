@@ -72,9 +72,12 @@ pub enum SpaceError {
         /// Its upper bound.
         high: f64,
     },
-    /// Bounds whose every side is finite but whose diagonal or volume is not: planners draw
-    /// their step (a fifth of the diagonal) and their radii (from the volume) from them.
-    #[error("the bounds are too large: their diagonal ({diagonal:e}) and volume ({volume:e}) must be finite")]
+    /// Bounds whose every side is finite but whose diagonal or volume is not (or whose volume
+    /// underflows to 0: tiny sides in many dimensions): planners draw their step (a fifth of
+    /// the diagonal) and their radii (from the volume) from them.
+    #[error(
+        "the bounds are too large or too small for f64: their diagonal ({diagonal:e}) must be finite and their volume ({volume:e}) finite and above 0"
+    )]
     RegionTooLarge {
         /// The length of the bounds' diagonal.
         diagonal: f64,

@@ -30,6 +30,7 @@ mod grid;
 mod planner;
 mod polygons;
 mod problem;
+mod replan;
 mod result;
 mod ros_map;
 mod sampling;

@@ -14,8 +14,8 @@ use trailmark_sample::{
     NearestNeighbors, Planner, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
 };
 use trailmark_search::{
-    AdStar, AdaptiveAStar, DStarLite, EpsilonSchedule, Jps, JpsPlus, LpaStar, MpgaaStar, RepeatedAStar,
-    Replanner, Search, SearchError, SearchResult, ara_star,
+    AdStar, AdaptiveAStar, DStarLite, EpsilonSchedule, Jps, JpsPlus, LpaStar, MpgaaStar, Replanner, Search,
+    SearchError, SearchResult, ara_star,
 };
 
 use super::error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
@@ -334,82 +334,6 @@ impl PlannerSpec {
         })
     }
 
-    /// Whether [`replanner`](Self::replanner) makes this planner a [`Replanner`]: `astar`,
-    /// `lpa_star`, `dstar_lite`, `ad_star`, `adaptive_astar` and `mpgaa_star`.
-    pub fn replans(&self) -> bool {
-        // Every variant named, so that a new planner is asked whether it replans.
-        match self {
-            PlannerSpec::AStar { .. }
-            | PlannerSpec::LpaStar { .. }
-            | PlannerSpec::AdaptiveAStar { .. }
-            | PlannerSpec::MpgaaStar { .. }
-            | PlannerSpec::DStarLite { .. }
-            | PlannerSpec::AdStar(_) => true,
-            PlannerSpec::Bfs {}
-            | PlannerSpec::Dfs {}
-            | PlannerSpec::Dijkstra {}
-            | PlannerSpec::WeightedAStar { .. }
-            | PlannerSpec::ThetaStar {}
-            | PlannerSpec::Jps {}
-            | PlannerSpec::JpsPlus {}
-            | PlannerSpec::AraStar(_)
-            | PlannerSpec::Rrt(_)
-            | PlannerSpec::RrtConnect(_)
-            | PlannerSpec::RrtStar(_)
-            | PlannerSpec::HybridAStar(_) => false,
-        }
-    }
-
-    /// This planner as a [`Replanner`] from `start` to `goal` on `graph` with the heuristic
-    /// `h(a, b)`, for the planners that keep their search between plans: `astar` (A* from
-    /// scratch at every plan), `lpa_star`, `dstar_lite` and `ad_star` (whose limits apply to
-    /// each plan); `None` for the others. [`navigate`](crate::navigate::navigate) drives the
-    /// robot with it, and `solve` runs LPA* and D* Lite through it.
-    pub fn replanner<'h, G, H>(
-        &self,
-        graph: &G,
-        start: G::Node,
-        goal: G::Node,
-        h: H,
-    ) -> Option<Result<BoxedReplanner<'h, G>, SearchError<G::Node>>>
-    where
-        G: Successors + Predecessors + IndexedGraph + 'h,
-        H: Fn(G::Node, G::Node) -> Cost + Copy + 'h,
-    {
-        fn boxed<'h, G, R>(
-            made: Result<R, SearchError<G::Node>>,
-        ) -> Result<BoxedReplanner<'h, G>, SearchError<G::Node>>
-        where
-            G: Successors + Predecessors + IndexedGraph,
-            R: Replanner<G> + 'h,
-        {
-            made.map(|planner| Box::new(planner) as BoxedReplanner<'h, G>)
-        }
-        Some(match self {
-            PlannerSpec::AStar { .. } => boxed(RepeatedAStar::new(graph, start, goal, h)),
-            PlannerSpec::LpaStar { .. } => boxed(LpaStar::new(graph, start, goal, h)),
-            PlannerSpec::AdaptiveAStar { .. } => boxed(AdaptiveAStar::new(graph, start, goal, h)),
-            PlannerSpec::MpgaaStar { .. } => boxed(MpgaaStar::new(graph, start, goal, h)),
-            PlannerSpec::DStarLite { .. } => boxed(DStarLite::new(graph, start, goal, h)),
-            PlannerSpec::AdStar(spec) => boxed(
-                AdStar::new(graph, start, goal, h, spec.schedule())
-                    .map(|planner| planner.with_termination_per_plan(spec.budget())),
-            ),
-            PlannerSpec::Bfs {}
-            | PlannerSpec::Dfs {}
-            | PlannerSpec::Dijkstra {}
-            | PlannerSpec::WeightedAStar { .. }
-            | PlannerSpec::ThetaStar {}
-            | PlannerSpec::Jps {}
-            | PlannerSpec::JpsPlus {}
-            | PlannerSpec::AraStar(_)
-            | PlannerSpec::Rrt(_)
-            | PlannerSpec::RrtConnect(_)
-            | PlannerSpec::RrtStar(_)
-            | PlannerSpec::HybridAStar(_) => return None,
-        })
-    }
-
     /// This sampling planner over the space `S` with the validity `V`, with its nearest
     /// neighbours, sampler, options and seed; `None` for a graph search.
     pub(super) fn sampling_planner<'a, S, V, N, Q>(
@@ -444,9 +368,6 @@ impl PlannerSpec {
 /// The price of a straight line between two nodes, `None` when it is blocked: what an
 /// any-angle search draws its segments with.
 pub(super) type LineCost<'a, N> = dyn Lines<N> + 'a;
-
-/// A replanner of the registry, behind its trait.
-type BoxedReplanner<'h, G> = Box<dyn Replanner<G> + 'h>;
 
 /// One plan of a replanner just made: what `solve` asks of LPA* and D* Lite on a static world.
 fn plan_once<G, R>(
@@ -485,7 +406,7 @@ pub struct AnytimeSpec {
 
 impl AnytimeSpec {
     /// The inflation schedule, with the library's defaults.
-    fn schedule(&self) -> EpsilonSchedule {
+    pub(super) fn schedule(&self) -> EpsilonSchedule {
         let default = EpsilonSchedule::default();
         EpsilonSchedule::new(
             self.epsilon.unwrap_or(default.initial),
@@ -494,7 +415,7 @@ impl AnytimeSpec {
     }
 
     /// The limits of the search.
-    fn budget(&self) -> Termination {
+    pub(super) fn budget(&self) -> Termination {
         // Checked by solve: a limit too large for a Duration has been refused already.
         let time = self.time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
         Termination { time_limit: time, max_expansions: self.max_expansions, ..Termination::default() }

@@ -1,0 +1,91 @@
+//! The planners of the registry that replan: which they are, and each made a [`Replanner`] for
+//! a graph (what navigation drives its robot with).
+
+use trailmark_core::Cost;
+use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
+use trailmark_search::{
+    AdStar, AdaptiveAStar, DStarLite, LpaStar, MpgaaStar, RepeatedAStar, Replanner, SearchError,
+};
+
+use super::planner::PlannerSpec;
+
+/// A replanner of the registry, behind its trait.
+type BoxedReplanner<'h, G> = Box<dyn Replanner<G> + 'h>;
+
+impl PlannerSpec {
+    /// Whether [`replanner`](Self::replanner) makes this planner a [`Replanner`]: `astar`,
+    /// `lpa_star`, `dstar_lite`, `ad_star`, `adaptive_astar` and `mpgaa_star`.
+    pub fn replans(&self) -> bool {
+        // Every variant named, so that a new planner is asked whether it replans.
+        match self {
+            PlannerSpec::AStar { .. }
+            | PlannerSpec::LpaStar { .. }
+            | PlannerSpec::AdaptiveAStar { .. }
+            | PlannerSpec::MpgaaStar { .. }
+            | PlannerSpec::DStarLite { .. }
+            | PlannerSpec::AdStar(_) => true,
+            PlannerSpec::Bfs {}
+            | PlannerSpec::Dfs {}
+            | PlannerSpec::Dijkstra {}
+            | PlannerSpec::WeightedAStar { .. }
+            | PlannerSpec::ThetaStar {}
+            | PlannerSpec::Jps {}
+            | PlannerSpec::JpsPlus {}
+            | PlannerSpec::AraStar(_)
+            | PlannerSpec::Rrt(_)
+            | PlannerSpec::RrtConnect(_)
+            | PlannerSpec::RrtStar(_)
+            | PlannerSpec::HybridAStar(_) => false,
+        }
+    }
+
+    /// This planner as a [`Replanner`] from `start` to `goal` on `graph` with the heuristic
+    /// `h(a, b)`, for the planners that keep their search between plans: `astar` (A* from
+    /// scratch at every plan), `lpa_star`, `dstar_lite` and `ad_star` (whose limits apply to
+    /// each plan); `None` for the others. [`navigate`](crate::navigate::navigate) drives the
+    /// robot with it, and `solve` runs LPA* and D* Lite through it.
+    pub fn replanner<'h, G, H>(
+        &self,
+        graph: &G,
+        start: G::Node,
+        goal: G::Node,
+        h: H,
+    ) -> Option<Result<BoxedReplanner<'h, G>, SearchError<G::Node>>>
+    where
+        G: Successors + Predecessors + IndexedGraph + 'h,
+        H: Fn(G::Node, G::Node) -> Cost + Copy + 'h,
+    {
+        fn boxed<'h, G, R>(
+            made: Result<R, SearchError<G::Node>>,
+        ) -> Result<BoxedReplanner<'h, G>, SearchError<G::Node>>
+        where
+            G: Successors + Predecessors + IndexedGraph,
+            R: Replanner<G> + 'h,
+        {
+            made.map(|planner| Box::new(planner) as BoxedReplanner<'h, G>)
+        }
+        Some(match self {
+            PlannerSpec::AStar { .. } => boxed(RepeatedAStar::new(graph, start, goal, h)),
+            PlannerSpec::LpaStar { .. } => boxed(LpaStar::new(graph, start, goal, h)),
+            PlannerSpec::AdaptiveAStar { .. } => boxed(AdaptiveAStar::new(graph, start, goal, h)),
+            PlannerSpec::MpgaaStar { .. } => boxed(MpgaaStar::new(graph, start, goal, h)),
+            PlannerSpec::DStarLite { .. } => boxed(DStarLite::new(graph, start, goal, h)),
+            PlannerSpec::AdStar(spec) => boxed(
+                AdStar::new(graph, start, goal, h, spec.schedule())
+                    .map(|planner| planner.with_termination_per_plan(spec.budget())),
+            ),
+            PlannerSpec::Bfs {}
+            | PlannerSpec::Dfs {}
+            | PlannerSpec::Dijkstra {}
+            | PlannerSpec::WeightedAStar { .. }
+            | PlannerSpec::ThetaStar {}
+            | PlannerSpec::Jps {}
+            | PlannerSpec::JpsPlus {}
+            | PlannerSpec::AraStar(_)
+            | PlannerSpec::Rrt(_)
+            | PlannerSpec::RrtConnect(_)
+            | PlannerSpec::RrtStar(_)
+            | PlannerSpec::HybridAStar(_) => return None,
+        })
+    }
+}

@@ -122,9 +122,13 @@ pub fn check_result(problem: &ProblemSpec, world: &PolygonWorld, result: &SolveR
             _ => panic!("{planner}: the Dubins waypoint {c:?} is not [x, y, heading]"),
         };
         let poses: Vec<Pose> = coordinates.iter().map(|c| pose(c)).collect();
-        assert_same_pose(&poses[0], &problem.start, "start");
+        // Positions to a trillionth of the world's extent: a start 1e-300 from the goal is the
+        // goal to the planner's distance (and to any robot), and its path is that one state.
+        let (lo, hi) = (world.bounds().min(), world.bounds().max());
+        let same_place = 1e-12 * (hi - lo).norm();
+        assert_same_pose(&poses[0], &problem.start, "start", 0.0);
         if solved {
-            assert_same_pose(poses.last().unwrap(), &problem.goal, "goal");
+            assert_same_pose(poses.last().unwrap(), &problem.goal, "goal", same_place);
         }
         for (i, p) in poses.iter().enumerate() {
             clear(Point::from(p.translation.vector), &format!("waypoint {i}"));
@@ -220,11 +224,13 @@ pub fn check_result(problem: &ProblemSpec, world: &PolygonWorld, result: &SolveR
     );
 }
 
-/// Asserts that `pose` is at the position of `given` (`[x, y, heading]`) with its heading.
-fn assert_same_pose(pose: &Pose, given: &[f64], what: &str) {
+/// Asserts that `pose` is at the position of `given` (`[x, y, heading]`), to `within` on each
+/// axis, with its heading.
+fn assert_same_pose(pose: &Pose, given: &[f64], what: &str, within: f64) {
     let [x, y, theta] = *given else { panic!("the {what} {given:?} is not a pose") };
     let at = pose.translation.vector;
-    assert!(at.x == x && at.y == y, "the path's {what} ({}, {}) is not ({x}, {y})", at.x, at.y);
+    let near = (at.x - x).abs() <= within && (at.y - y).abs() <= within;
+    assert!(near, "the path's {what} ({}, {}) is not ({x}, {y})", at.x, at.y);
     // Compare directions, not angles: a heading of 1e12 rad is a direction known to its cos/sin.
     let (c, s) = (pose.rotation.cos_angle(), pose.rotation.sin_angle());
     assert!(
@@ -286,6 +292,25 @@ mod tests {
         .unwrap();
         let WorldSpec::Polygons(world) = &problem.world else { unreachable!() };
         let result = trailmark::solve::solve(&problem, ".").unwrap();
+        check_result(&problem, world, &result);
+    }
+
+    /// Found by CI's seeded solve_document run: a start 1e-300 from the goal in a world 1e-5
+    /// across is the goal to the Dubins distance, and the path is the start alone; the goal is
+    /// compared to a trillionth of the world's extent.
+    #[test]
+    fn a_start_a_denormal_away_from_the_goal_is_at_the_goal() {
+        let problem: ProblemSpec = serde_json::from_str(
+            r#"{"goal":[0.0,0.0,6.283185307179586],"planner":{"goal_bias":1.0,"max_iterations":502,"name":"rrt_star"},
+                "space":"dubins","start":[0.0,1e-300,0.0],"turning_radius":5e-7,
+                "world":{"polygons":{"bounds":[0.0,0.0,9.999999999999999e-6,9.999999999999999e-6],
+                "obstacles":[[[0.0,0.0],[9.499999999999999e-6,0.0],[0.0,6e-6]],[[0.0,0.0],[9e-6,0.0],[9e-6,5e-7],[8.5e-6,5e-7]],
+                             [[4.5e-6,6.5e-6],[5.5e-6,4e-6],[8e-6,1e-6]],[[7e-6,7.499999999999999e-6],[6e-6,7e-6],[7.499999999999999e-6,6e-6]]]}}}"#,
+        )
+        .unwrap();
+        let WorldSpec::Polygons(world) = &problem.world else { unreachable!() };
+        let result = trailmark::solve::solve(&problem, ".").unwrap();
+        assert_eq!(result.path.len(), 1);
         check_result(&problem, world, &result);
     }
 }

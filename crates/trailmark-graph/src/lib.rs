@@ -3,7 +3,7 @@
 //! Grid graphs ([`GridGraph`]): 4- or 8-connected, with per-cell costs and a choice of
 //! corner-cutting rule. Roadmaps of polygon worlds: visibility graphs ([`VisibilityGraph`]) by
 //! Lee's rotational sweep with exact predicates, trapezoidal cell decompositions
-//! ([`Trapezoids`]), probabilistic roadmaps over the state spaces of `trailmark-sample`
+//! ([`Trapezoids`]), probabilistic roadmaps over the state spaces of `trailmark-space`
 //! (segments in `R2`, Dubins curves, ...) ([`PolygonPrm`]), all queried through [`RoadmapQuery`]; and
 //! roadmaps of worlds whose obstacles change, with stable node ids and the changed edges for
 //! D* Lite ([`DynamicRoadmap`]). The graphs implement the traits of [`trailmark_core::graph`];
@@ -14,7 +14,7 @@
 //!
 //! **Features.** `roadmaps` (on by default) brings everything over polygon worlds and state
 //! spaces: the visibility graph, trapezoidal cells, the PRMs, [`Roadmap`] and the dynamic
-//! roadmap, with `trailmark-sample`, parry2d and rand beneath them. Without it
+//! roadmap, with `trailmark-space`, parry2d and rand beneath them. Without it
 //! (`default-features = false`) the crate is the grid graphs alone ([`GridGraph`],
 //! [`CornerGraph`]) on `trailmark-core`'s light build: 14 crates with `trailmark-search`, see
 //! the search guide's "A light build".

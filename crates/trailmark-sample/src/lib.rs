@@ -1,13 +1,10 @@
-//! Sampling-based planners for continuous spaces: RRT, RRT-Connect and RRT* over pluggable state
-//! spaces (R², Rⁿ, SE(2), Dubins, Reeds-Shepp), with exact collision checks and seeded, reproducible runs.
+//! Sampling-based planners for continuous spaces: RRT, RRT-Connect, RRT* and PRM over any
+//! configuration space of `trailmark-space` (R², Rⁿ, SE(2), Dubins, Reeds-Shepp, your own), with
+//! exact collision checks and seeded, reproducible runs.
 //!
-//! - [`space`]: the state spaces (sampling, distances, interpolation, steering);
-//! - [`nearest`]: exact nearest-neighbour structures for every space (a k-d tree over positions,
-//!   pruned by the straight-line lower bound, and brute force);
-//! - [`validity`]: exact checks against polygon worlds, sampled checks for your own spaces;
-//!   [`boxes`]: worlds of axis-aligned boxes in `N` dimensions, checked exactly;
-//! - [`sampler`]: where the planners draw samples: uniformly, or near obstacles and in narrow
-//!   passages (the Gaussian and bridge-test samplers);
+//! The spaces, validity, samplers and nearest neighbours the planners run on are
+//! `trailmark-space`'s, re-exported here (`trailmark_sample::R2` is `trailmark_space::R2`).
+//!
 //! - [`problem`] (start states and a goal: a state with a tolerance or the user's region),
 //!   `trailmark_core::termination` (iterations, time, target cost, the caller's condition;
 //!   shared with the anytime searches), [`plan`] (exact, approximate or no solution, why the
@@ -15,31 +12,28 @@
 //! - [`planner`]: the one interface of every planner, so they swap at run time; [`rrt`](mod@rrt),
 //!   [`rrt_connect`](mod@rrt_connect), [`rrt_star`](mod@rrt_star) and [`prm`] (PRM and PRM*,
 //!   multi-query) implement it;
-//! - [`arm`]: a planar arm of revolute joints among polygons, for planning in its joint space;
+//! - [`boxes`]: worlds of axis-aligned boxes in `N` dimensions, checked exactly; [`arm`]: a
+//!   planar arm of revolute joints among polygons, for planning in its joint space;
 //! - [`benchmark`]: seeded runs of any planner, measured, and logs in OMPL's format;
 //! - [`paths`]: a path's length, interpolation to a resolution, and a re-check of every state and
 //!   motion; [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
 //!
 //! ```
-//! use rand::SeedableRng;
-//! use rand_chacha::ChaCha8Rng;
-//! use trailmark_core::world::Bounds;
-//! use trailmark_sample::nearest::{Direction, KdNearest, NearestNeighbors};
-//! use trailmark_sample::space::{Dubins, StateSpace};
+//! use trailmark_core::geometry::Point;
+//! use trailmark_core::termination::Termination;
+//! use trailmark_core::world::{Bounds, PolygonWorld};
+//! use trailmark_sample::{KdNearest, Planner, Problem, R2, RrtConnect};
 //!
-//! // A car with a turning radius of 1 in a 20 x 20 square: the nearest pose *from which* the
-//! // car reaches a sample soonest (Dubins distances are not symmetric).
-//! let space = Dubins::new(Bounds::new(0.0, 0.0, 20.0, 20.0)?, 1.0)?;
-//! let mut rng = ChaCha8Rng::seed_from_u64(7);
-//! let mut tree = KdNearest::<Dubins, 2>::new(&space)?;
-//! for _ in 0..500 {
-//!     tree.insert(&space, space.sample(&mut rng));
-//! }
-//! let target = space.sample(&mut rng);
-//! let (id, distance) = tree.nearest(&space, &target, Direction::ToQuery).expect("a full tree");
-//! assert_eq!(distance, space.distance(tree.state(id), &target));
-//! let step = space.steer(tree.state(id), &target, 2.0); // at most 2 along the curve
-//! assert!(space.distance(tree.state(id), &step) <= 2.0 + 1e-9);
+//! // A disc of radius 0.25 in a 10 x 10 room with a wall from the floor to y = 8.
+//! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
+//! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
+//! let checker = PolygonWorld::new(bounds, vec![wall], 0.25)?.checker();
+//! let space = R2::new(bounds);
+//! let problem = Problem::new(&space, &checker, Point::new(1.0, 1.0), Point::new(9.0, 1.0));
+//! let mut planner = RrtConnect::new(KdNearest::<R2, 2>::new(&space)?).with_seed(3);
+//! let plan = planner.solve(&problem, &Termination::iterations(10_000))?;
+//! let path = plan.path().expect("a way over the wall");
+//! assert!(path.windows(2).all(|m| checker.segment_is_free(m[0], m[1])));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
@@ -52,8 +46,6 @@ pub mod arm;
 pub mod benchmark;
 #[doc(hidden)]
 pub mod boxes;
-#[doc(hidden)]
-pub mod nearest;
 pub mod paths;
 #[doc(hidden)]
 pub mod plan;
@@ -71,42 +63,40 @@ pub mod rrt_connect;
 pub mod rrt_star;
 mod run;
 #[doc(hidden)]
-pub mod sampler;
-#[doc(hidden)]
 pub mod simplify;
-#[doc(hidden)]
-pub mod space;
 #[doc(hidden)]
 pub mod termination;
 mod tree;
+
+// The configuration-space vocabulary, at the paths it had when it lived here.
 #[doc(hidden)]
-pub mod validity;
+pub use trailmark_space::{nearest, sampler, space, validity};
 
 pub use boxes::BoxWorld;
 /// The states of [`Rn`]: nalgebra's fixed-size column vectors (nalgebra 0.35).
 pub use nalgebra::SVector;
-pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
 #[allow(deprecated)]
 pub use plan::Stop;
 pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution};
 pub use planner::Planner;
-pub use prm::{Connection, Growth, Prm};
+pub use prm::{Growth, Prm};
 pub use problem::{Goal, GoalState, Problem, admit};
 /// The `rand` crate (0.10) the generator implements: `rand::RngExt` draws ranges and floats.
 pub use rand;
-/// The random generator the planners and state spaces draw from (`rand_chacha` 0.10), so a
-/// user's own space or sampler needs no version-matched dependency.
+/// The random generator the planners draw from (`rand_chacha` 0.10), so a user's own space or
+/// sampler needs no version-matched dependency.
 pub use rand_chacha::ChaCha8Rng;
 pub use rrt::Rrt;
 pub use rrt_connect::{MAX_CONNECT_STEPS, MAX_GOAL_ROOTS, RrtConnect};
 pub use rrt_star::{RrtStar, neighbour_count};
 pub use run::{MIN_RELATIVE_RANGE, RrtOptions};
-pub use sampler::{
-    Bridge, DEFAULT_ATTEMPTS, DEFAULT_SHARE, Draw, Gaussian, Halton, MAX_ATTEMPTS, SamplerError,
-    StateSampler, Uniform,
-};
 pub use simplify::shortcut;
-pub use space::{Dubins, R2, ReedsShepp, Rn, Se2, SpaceError, StateSpace, UnitCube};
 #[allow(deprecated)]
 pub use termination::{Condition, Progress, Termination};
-pub use validity::{FootprintValidity, Sampled, Validity};
+/// The configuration-space vocabulary of `trailmark-space`: spaces, validity, samplers, nearest
+/// neighbours, connection rules.
+pub use trailmark_space::{
+    Bridge, BruteForce, Connection, DEFAULT_ATTEMPTS, DEFAULT_SHARE, Direction, Draw, Dubins,
+    FootprintValidity, Gaussian, Halton, KdNearest, MAX_ATTEMPTS, NearestNeighbors, R2, ReedsShepp, Rn,
+    Sampled, SamplerError, Se2, SpaceError, StateSampler, StateSpace, Uniform, UnitCube, Validity,
+};

@@ -46,7 +46,6 @@ use std::marker::PhantomData;
 
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use serde::{Deserialize, Serialize};
 use trailmark_core::UnionFind;
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
@@ -62,40 +61,7 @@ use crate::space::StateSpace;
 use crate::validity::Validity;
 use trailmark_core::termination::Stop;
 use trailmark_core::termination::{Termination, Watch};
-
-/// Which milestones a new one is joined to. Saved as `{"nearest": {"k": 10}}`,
-/// `{"radius": {"radius": 2.5}}` or `"prm_star"`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Connection {
-    /// The `k` nearest.
-    Nearest {
-        /// How many.
-        k: usize,
-    },
-    /// Every milestone within this distance.
-    Radius {
-        /// The distance.
-        radius: f64,
-    },
-    /// The `k = ⌈e (1 + 1/d) ln n⌉` nearest, `n` the milestones and `d` the dimension: PRM*.
-    PrmStar,
-}
-
-impl Connection {
-    /// The neighbours to ask for in a roadmap of `n` milestones in dimension `d` (`None`: by
-    /// radius).
-    pub fn neighbour_count(&self, n: usize, d: usize) -> Option<usize> {
-        match *self {
-            Connection::Nearest { k } => Some(k),
-            Connection::Radius { .. } => None,
-            Connection::PrmStar => {
-                let k = std::f64::consts::E * (1.0 + 1.0 / d.max(1) as f64) * (n.max(1) as f64).ln();
-                Some(k.ceil() as usize)
-            }
-        }
-    }
-}
+pub use trailmark_space::Connection;
 
 /// What [`Prm::grow`] did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

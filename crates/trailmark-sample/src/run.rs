@@ -79,7 +79,9 @@ impl<'t> Run<'t> {
         validity: &V,
         sampler: &Q,
     ) -> Result<Option<S::State>, Stop> {
-        let mut draw = Draw::watched(&mut self.rng, &mut self.stats.collision_checks, &self.watch);
+        let best = self.history.last().map_or(f64::INFINITY, |b| b.cost);
+        let mut draw =
+            Draw::watched(&mut self.rng, &mut self.stats.collision_checks, &self.watch).with_best_cost(best);
         match sampler.sample(space, validity, &mut draw) {
             Some(state) => Ok(Some(state)),
             None => self.watch.interrupted().map_or(Ok(None), Err),

@@ -281,3 +281,37 @@ fn halton_is_the_van_der_corput_sequence_per_axis_and_resumes() {
     let validity = trailmark_sample::Sampled::new(always, 0.01).unwrap();
     assert_eq!(Halton::new().sample(&wide, &validity, &mut draw), None);
 }
+
+/// Uniform samples, recording the best cost each draw was told.
+#[derive(Default)]
+struct Told(std::cell::RefCell<Vec<f64>>);
+
+impl StateSampler<R2> for Told {
+    fn sample<V: Validity<R2>>(&self, space: &R2, _: &V, draw: &mut Draw<'_>) -> Option<Point> {
+        self.0.borrow_mut().push(draw.best_cost());
+        Some(space.sample(draw.rng()))
+    }
+}
+
+#[test]
+fn an_optimizing_planner_tells_its_sampler_the_best_cost_so_far() {
+    let world = narrow();
+    let checker = world.checker();
+    let space = R2::new(world.bounds());
+    let problem = Problem::new(&space, &checker, Point::new(1.0, 20.0), Point::new(39.0, 20.0));
+    let told = Told::default();
+    let mut planner = trailmark_sample::RrtStar::new(KdNearest::<R2, 2>::new(&space).expect("a tree"))
+        .with_sampler(&told)
+        .with_seed(4);
+    let plan = planner.solve(&problem, &Termination::iterations(20_000)).expect("a run");
+    let told = told.0.into_inner();
+    let costs: Vec<f64> = plan.history.iter().map(|b| b.cost).collect();
+    assert!(costs.len() >= 2, "RRT* improves its first solution here: {costs:?}");
+    // Infinite until the first solution, then each solution's cost, in the order found.
+    assert_eq!(told[0], f64::INFINITY);
+    let mut seen: Vec<f64> = told.iter().copied().filter(|c| c.is_finite()).collect();
+    seen.dedup();
+    assert!(told.iter().skip_while(|c| c.is_infinite()).all(|c| c.is_finite()));
+    // The last improvement may come after the last draw.
+    assert!(seen.len() + 1 >= costs.len() && costs.starts_with(&seen), "told {seen:?}, found {costs:?}");
+}

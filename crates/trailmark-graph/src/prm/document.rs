@@ -2,8 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 use trailmark_core::world::PolygonWorld;
-use trailmark_sample::nearest::NearestNeighbors;
-use trailmark_sample::sampler::Halton;
+use trailmark_space::nearest::NearestNeighbors;
+use trailmark_space::sampler::Halton;
 
 use super::{Drawer, PlanarSpace, PolygonPrm, PrmError, PrmOptions};
 

@@ -2,7 +2,7 @@
 
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
-use trailmark_sample::nearest::NearestNeighbors;
+use trailmark_space::nearest::NearestNeighbors;
 
 use super::{PlanarSpace, PolygonPrm};
 use crate::roadmap::Roadmap;

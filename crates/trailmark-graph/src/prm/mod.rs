@@ -9,7 +9,7 @@
 //!
 //! The states, motions and distances are a state space of `trailmark-sample` ([`PlanarSpace`]):
 //! [`R2`] segments for a disc robot (an undirected
-//! roadmap over points), or [`Dubins`](trailmark_sample::Dubins) curves for a car-like robot (a directed roadmap
+//! roadmap over points), or [`Dubins`](trailmark_space::Dubins) curves for a car-like robot (a directed roadmap
 //! over poses, since a Dubins path from `a` to `b` is not the reverse of one from `b` to `a`).
 //!
 //! A roadmap grows incrementally ([`PolygonPrm::grow`], [`PolygonPrm::insert`]), tracks its connected
@@ -48,11 +48,11 @@ use trailmark_core::cost::Cost;
 use trailmark_core::geometry::Point;
 use trailmark_core::graph::EdgeChange;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
-use trailmark_sample::nearest::{Direction, KdNearest, NearestNeighbors};
-use trailmark_sample::sampler::{Draw, StateSampler, Uniform};
-use trailmark_sample::space::R2;
+use trailmark_space::nearest::{Direction, KdNearest, NearestNeighbors};
+use trailmark_space::sampler::{Draw, StateSampler, Uniform};
+use trailmark_space::space::R2;
 
-pub use trailmark_sample::prm::Connection;
+pub use trailmark_space::Connection;
 
 use crate::roadmap::RoadmapQuery;
 
@@ -86,7 +86,7 @@ struct Stream {
 
 /// A probabilistic roadmap over a polygon world, in any [`PlanarSpace`]: [`R2`] (straight
 /// segments for a disc robot, an undirected roadmap over points) by default, or
-/// [`Dubins`](trailmark_sample::Dubins) (a directed roadmap over poses, since a Dubins path
+/// [`Dubins`](trailmark_space::Dubins) (a directed roadmap over poses, since a Dubins path
 /// from `a` to `b` is not the reverse of one from `b` to `a`). Node `i` is at
 /// [`PolygonPrm::position`]; edges cost their motion's distance in the space.
 ///
@@ -126,11 +126,11 @@ pub type Sampler = PrmSampler;
 pub const MAX_NODES: usize = MAX_ROADMAP_NODES;
 
 /// A probabilistic roadmap of Dubins paths between poses.
-pub type DubinsPrm = PolygonPrm<trailmark_sample::Dubins>;
+pub type DubinsPrm = PolygonPrm<trailmark_space::Dubins>;
 
 /// A probabilistic roadmap of Reeds-Shepp paths between poses (a car that reverses: each edge
 /// costs the same both ways).
-pub type ReedsSheppPrm = PolygonPrm<trailmark_sample::ReedsShepp>;
+pub type ReedsSheppPrm = PolygonPrm<trailmark_space::ReedsShepp>;
 
 /// A [`PolygonPrm`] with a start and a goal joined to it.
 pub type PrmQuery<'g, S = R2> = RoadmapQuery<'g, PolygonPrm<S>>;

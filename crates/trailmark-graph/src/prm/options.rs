@@ -3,15 +3,15 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use trailmark_core::world::WorldError;
-use trailmark_sample::prm::Connection;
-use trailmark_sample::sampler::{Bridge, Gaussian, Halton, SamplerError};
-use trailmark_sample::space::SpaceError;
+use trailmark_space::Connection;
+use trailmark_space::sampler::{Bridge, Gaussian, Halton, SamplerError};
+use trailmark_space::space::SpaceError;
 
 /// How samples are drawn: which of `trailmark-sample`'s samplers, with its settings.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PrmSampler {
-    /// Independent uniform samples ([`Uniform`](trailmark_sample::Uniform)) from a ChaCha8 generator with this seed: the
+    /// Independent uniform samples ([`Uniform`](trailmark_space::Uniform)) from a ChaCha8 generator with this seed: the
     /// same seed gives the same roadmap on every machine.
     Uniform {
         /// The generator's seed.

@@ -3,12 +3,12 @@
 use std::fmt::Debug;
 
 use trailmark_core::world::CollisionChecker;
-use trailmark_sample::space::UnitCube;
-use trailmark_sample::validity::Validity;
+use trailmark_space::space::UnitCube;
+use trailmark_space::validity::Validity;
 
 /// A state space a roadmap over a polygon world is built in: one whose states the world's exact
-/// [`CollisionChecker`] checks ([`R2`](trailmark_sample::R2) for a disc robot, [`Se2`](trailmark_sample::Se2),
-/// [`Dubins`](trailmark_sample::Dubins) for a car), that maps the unit cube (for the Halton
+/// [`CollisionChecker`] checks ([`R2`](trailmark_space::R2) for a disc robot, [`Se2`](trailmark_space::Se2),
+/// [`Dubins`](trailmark_space::Dubins) for a car), that maps the unit cube (for the Halton
 /// sequence) and whose states are small values. Every such space of `trailmark-sample` is one.
 pub trait PlanarSpace: UnitCube<State: Copy> + Clone + Debug {
     /// Whether the world of `checker` leaves `state` free.

@@ -5,7 +5,7 @@ use std::collections::BTreeSet;
 use trailmark_core::generate::convex_obstacles;
 use trailmark_core::geometry::Vector;
 use trailmark_core::world::Bounds;
-use trailmark_sample::{Dubins, ReedsShepp};
+use trailmark_space::{Dubins, ReedsShepp};
 
 use trailmark_core::graph::{Predecessors, Successors};
 

@@ -14,7 +14,7 @@
 //! use rand_chacha::ChaCha8Rng;
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::Bounds;
-//! use trailmark_sample::space::{R2, StateSpace};
+//! use trailmark_space::space::{R2, StateSpace};
 //!
 //! let space = R2::new(Bounds::new(0.0, 0.0, 10.0, 10.0)?);
 //! let (a, b) = (Point::new(1.0, 1.0), Point::new(7.0, 9.0));

@@ -12,8 +12,8 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_sample::space::{R2, StateSpace};
-//! use trailmark_sample::validity::{Sampled, Validity};
+//! use trailmark_space::space::{R2, StateSpace};
+//! use trailmark_space::validity::{Sampled, Validity};
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 //! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
@@ -94,8 +94,8 @@ impl<C: CarCurves> Validity<Car<C>> for CollisionChecker {
 /// use trailmark_core::footprint::Footprint;
 /// use trailmark_core::geometry::{Point, Pose, Vector};
 /// use trailmark_core::world::{Bounds, Polygon, PolygonWorld};
-/// use trailmark_sample::space::ReedsShepp;
-/// use trailmark_sample::validity::{FootprintValidity, Validity};
+/// use trailmark_space::space::ReedsShepp;
+/// use trailmark_space::validity::{FootprintValidity, Validity};
 ///
 /// let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 /// let post = vec![Point::new(4.0, 4.0), Point::new(5.0, 4.0), Point::new(5.0, 5.0), Point::new(4.0, 5.0)];

@@ -22,20 +22,23 @@
 //! implement [`StateSampler`] for their own strategies.
 //!
 //! ```
+//! use rand::SeedableRng;
+//! use rand_chacha::ChaCha8Rng;
 //! use trailmark_core::generate;
-//! use trailmark_core::geometry::Point;
-//! use trailmark_sample::{Bridge, KdNearest, Planner, Problem, R2, RrtConnect};
-//! use trailmark_core::termination::Termination;
+//! use trailmark_space::{Bridge, Draw, R2, StateSampler, Validity};
 //!
 //! // Six walls, each with a door 1.5 wide, for a robot of radius 0.25.
 //! let world = generate::narrow_passages(40.0, 6, 1.5, 0.25, 2)?;
 //! let checker = world.checker();
 //! let space = R2::new(world.bounds());
-//! let bridge = Bridge::new(1.0)?; // partners about one door width away
-//! let problem = Problem::new(&space, &checker, Point::new(1.0, 20.0), Point::new(39.0, 20.0));
-//! let mut planner = RrtConnect::new(KdNearest::<R2, 2>::new(&space)?).with_sampler(bridge).with_seed(1);
-//! let plan = planner.solve(&problem, &Termination::iterations(10_000))?;
-//! assert!(plan.is_exact()); // through all six doors
+//! let bridge = Bridge::new(1.0)?.with_share(1.0)?; // partners about one door width away
+//! let (mut rng, mut checks) = (ChaCha8Rng::seed_from_u64(1), 0);
+//! let mut draw = Draw::new(&mut rng, &mut checks);
+//! let samples: Vec<_> = (0..100).filter_map(|_| bridge.sample(&space, &checker, &mut draw)).collect();
+//! // Mostly free midpoints between two obstacles (the doors); uniform ones where no bridge was found.
+//! let free = samples.iter().filter(|s| checker.state_is_valid(&space, s)).count();
+//! assert!(samples.len() == 100 && free >= 75, "{free} free");
+//! assert!(checks > 200); // every test counted
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
@@ -86,23 +89,39 @@ impl<S: StateSpace, T: StateSampler<S>> StateSampler<S> for &T {
     }
 }
 
-/// What a sampler draws with: the run's random generator, its count of validity tests, and
-/// whether the run must stop (asked between attempts).
+/// What a sampler draws with: the run's random generator, its count of validity tests, whether
+/// the run must stop (asked between attempts), and the cost of the best solution so far.
 pub struct Draw<'a> {
     rng: &'a mut ChaCha8Rng,
     checks: &'a mut u64,
     watch: Option<&'a Watch<'a>>,
+    best_cost: f64,
 }
 
 impl<'a> Draw<'a> {
     /// Draws from `rng`, counting tests in `checks`, with no termination to answer to (for
     /// using a sampler outside a planner).
     pub fn new(rng: &'a mut ChaCha8Rng, checks: &'a mut u64) -> Self {
-        Draw { rng, checks, watch: None }
+        Draw { rng, checks, watch: None, best_cost: f64::INFINITY }
     }
 
-    pub(crate) fn watched(rng: &'a mut ChaCha8Rng, checks: &'a mut u64, watch: &'a Watch<'a>) -> Self {
-        Draw { rng, checks, watch: Some(watch) }
+    /// Draws for a planner's run: from `rng`, counting tests in `checks`, answering
+    /// [`should_stop`](Self::should_stop) from `watch`.
+    pub fn watched(rng: &'a mut ChaCha8Rng, checks: &'a mut u64, watch: &'a Watch<'a>) -> Self {
+        Draw { rng, checks, watch: Some(watch), best_cost: f64::INFINITY }
+    }
+
+    /// The same draw, told that the run's best solution so far costs `cost`: a planner that
+    /// optimizes tells its sampler, so that an informed sampler draws only states through
+    /// which a cheaper path could pass.
+    pub fn with_best_cost(self, cost: f64) -> Self {
+        Draw { best_cost: cost, ..self }
+    }
+
+    /// The cost of the run's best solution so far: `f64::INFINITY` before the first one, or
+    /// when the planner does not say.
+    pub fn best_cost(&self) -> f64 {
+        self.best_cost
     }
 
     /// The run's random generator.

@@ -15,8 +15,8 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::Bounds;
-//! use trailmark_sample::nearest::{Direction, KdNearest, NearestNeighbors};
-//! use trailmark_sample::space::R2;
+//! use trailmark_space::nearest::{Direction, KdNearest, NearestNeighbors};
+//! use trailmark_space::space::R2;
 //!
 //! let space = R2::new(Bounds::new(0.0, 0.0, 10.0, 10.0)?);
 //! let mut tree = KdNearest::<R2, 2>::new(&space)?;
@@ -48,12 +48,7 @@ pub enum Direction {
 }
 
 /// The distance between a stored state and a query, measured the way `direction` says.
-pub(crate) fn measure<S: StateSpace>(
-    space: &S,
-    stored: &S::State,
-    query: &S::State,
-    direction: Direction,
-) -> f64 {
+pub fn measure<S: StateSpace>(space: &S, stored: &S::State, query: &S::State, direction: Direction) -> f64 {
     match direction {
         Direction::ToQuery => space.distance(stored, query),
         Direction::FromQuery => space.distance(query, stored),

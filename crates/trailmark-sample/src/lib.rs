@@ -39,34 +39,31 @@
 
 #![deny(missing_docs)]
 
-// One documented path per item: the root, or for the three families that read better under
-// their names, `arm::`, `benchmark::` and `paths::`. The other modules stay public, hidden,
-// for one release.
-pub mod arm;
+// The families: tree planners, roadmap planners, the worlds, benchmarking; and what every
+// planner shares at the top (problem, plan, the Planner trait, a run, paths). One documented
+// path per item: the root, or for the three families that read better under their names,
+// `arm::`, `benchmark::` and `paths::`. The other module paths stay public, hidden, for one
+// release.
 pub mod benchmark;
-#[doc(hidden)]
-pub mod boxes;
 pub mod paths;
 #[doc(hidden)]
 pub mod plan;
 #[doc(hidden)]
 pub mod planner;
 #[doc(hidden)]
-pub mod prm;
-#[doc(hidden)]
 pub mod problem;
-#[doc(hidden)]
-pub mod rrt;
-#[doc(hidden)]
-pub mod rrt_connect;
-#[doc(hidden)]
-pub mod rrt_star;
+mod roadmap;
 mod run;
 #[doc(hidden)]
 pub mod simplify;
 #[doc(hidden)]
 pub mod termination;
 mod tree;
+mod worlds;
+
+pub use worlds::arm;
+#[doc(hidden)]
+pub use {roadmap::prm, tree::rrt, tree::rrt_connect, tree::rrt_star, worlds::boxes};
 
 // The configuration-space vocabulary, at the paths it had when it lived here.
 #[doc(hidden)]
@@ -89,7 +86,6 @@ pub use rand_chacha::ChaCha8Rng;
 pub use rrt::Rrt;
 pub use rrt_connect::{MAX_CONNECT_STEPS, MAX_GOAL_ROOTS, RrtConnect};
 pub use rrt_star::{RrtStar, neighbour_count};
-pub use run::{MIN_RELATIVE_RANGE, RrtOptions};
 pub use simplify::shortcut;
 #[allow(deprecated)]
 pub use termination::{Condition, Progress, Termination};
@@ -100,3 +96,4 @@ pub use trailmark_space::{
     FootprintValidity, Gaussian, Halton, KdNearest, MAX_ATTEMPTS, NearestNeighbors, R2, ReedsShepp, Rn,
     Sampled, SamplerError, Se2, SpaceError, StateSampler, StateSpace, Uniform, UnitCube, Validity,
 };
+pub use tree::options::{MIN_RELATIVE_RANGE, RrtOptions};

@@ -32,15 +32,20 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::options::RrtOptions;
+use super::parts::TreeParts;
+use super::{Extension, Tree};
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{Plan, PlanError, Rejection};
+use crate::planner::Planner;
 use crate::problem::{Problem, admit};
-use crate::run::{Run, tree_planner};
+use crate::run::Run;
 use crate::sampler::StateSampler;
+use crate::sampler::Uniform;
 use crate::space::StateSpace;
-use crate::tree::{Extension, Tree};
 use crate::validity::Validity;
 use trailmark_core::termination::Stop;
+use trailmark_core::termination::Termination;
 
 /// The most extensions one connect phase makes toward a new state before the next iteration
 /// begins: the tree keeps what it grew (a range of 1e-7 across a world of 10 had made one
@@ -54,10 +59,78 @@ pub const MAX_GOAL_ROOTS: usize = 64;
 /// which the goal is refused.
 const FIRST_ROOT_ATTEMPTS: usize = 1_000;
 
-tree_planner! {
-    /// RRT-Connect: a tree from the start and one into the goal, grown toward each other; see
-    /// the [module](self) documentation.
-    RrtConnect, "RRT-Connect", optimizes: false
+/// RRT-Connect: a tree from the start and one into the goal, grown toward each other; see
+/// the [module](self) documentation.
+#[derive(Debug, Clone)]
+pub struct RrtConnect<N, Q = Uniform> {
+    parts: TreeParts<N, Q>,
+    /// Range and goal bias.
+    pub options: RrtOptions,
+    /// The seed of the ChaCha8 generator each run starts from: the same seed, the same run.
+    pub seed: u64,
+}
+
+impl<N> RrtConnect<N> {
+    /// The planner with its trees in (clones of) `nearest`, which must be empty, uniform
+    /// samples, the default options and seed 0.
+    pub fn new(nearest: N) -> Self {
+        RrtConnect { parts: TreeParts::new(nearest), options: RrtOptions::default(), seed: 0 }
+    }
+}
+
+impl<N, Q> RrtConnect<N, Q> {
+    /// The same planner drawing its samples from `sampler`.
+    pub fn with_sampler<R>(self, sampler: R) -> RrtConnect<N, R> {
+        RrtConnect { parts: self.parts.with_sampler(sampler), options: self.options, seed: self.seed }
+    }
+
+    /// The same planner with these options.
+    pub fn with_options(self, options: RrtOptions) -> Self {
+        RrtConnect { options, ..self }
+    }
+
+    /// The same planner seeded with `seed`.
+    pub fn with_seed(self, seed: u64) -> Self {
+        RrtConnect { seed, ..self }
+    }
+
+    /// The sampler.
+    pub fn sampler(&self) -> &Q {
+        &self.parts.sampler
+    }
+}
+
+impl<S, V, N, Q> Planner<S, V> for RrtConnect<N, Q>
+where
+    S: StateSpace,
+    V: Validity<S>,
+    N: NearestNeighbors<S> + Clone,
+    Q: StateSampler<S>,
+{
+    fn name(&self) -> &str {
+        "RRT-Connect"
+    }
+
+    fn set_seed(&mut self, seed: u64) {
+        self.seed = seed;
+    }
+
+    fn clear(&mut self) {
+        self.parts.spent.release();
+    }
+
+    fn optimizes(&self) -> bool {
+        false
+    }
+
+    fn solve(
+        &mut self,
+        problem: &Problem<'_, S, V>,
+        termination: &Termination,
+    ) -> Result<Plan<S::State>, PlanError> {
+        let run = self.parts.begin(problem, &self.options, termination, self.seed)?;
+        self.grow(problem, run)
+    }
 }
 
 /// The goal tree's roots: states the goal sampled, each in bounds and valid.
@@ -124,7 +197,7 @@ impl Closest {
 }
 
 impl<N, Q> RrtConnect<N, Q> {
-    /// A run checked by [`Planner::solve`](crate::planner::Planner::solve): the trees grown until it stops.
+    /// A run checked by [`Planner::solve`](Planner::solve): the trees grown until it stops.
     fn grow<S, V>(
         &mut self,
         problem: &Problem<'_, S, V>,
@@ -138,8 +211,8 @@ impl<N, Q> RrtConnect<N, Q> {
     {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
         let mut trees = [
-            Tree::new(self.nearest.clone(), Direction::ToQuery),
-            Tree::new(self.nearest.clone(), Direction::FromQuery),
+            Tree::new(self.parts.nearest.clone(), Direction::ToQuery),
+            Tree::new(self.parts.nearest.clone(), Direction::FromQuery),
         ];
         for start in &problem.starts {
             let id = trees[0].add_root(space, start.clone());
@@ -179,7 +252,7 @@ impl<N, Q> RrtConnect<N, Q> {
                 }
                 continue;
             }
-            let sample = match run.sample(space, validity, &self.sampler) {
+            let sample = match run.sample(space, validity, &self.parts.sampler) {
                 Ok(Some(sample)) => sample,
                 Ok(None) => continue,
                 Err(stop) => break stop,
@@ -261,8 +334,8 @@ impl<N, Q> RrtConnect<N, Q> {
     fn keep<S: StateSpace>(&mut self, trees: [Tree<S, N>; 2]) {
         for tree in trees {
             let (nearest, parents) = tree.into_parts();
-            self.spent.nearest.push(nearest);
-            self.spent.ids.push(parents);
+            self.parts.spent.nearest.push(nearest);
+            self.parts.spent.ids.push(parents);
         }
     }
 }

@@ -1,5 +1,12 @@
-//! A tree of valid motions, grown toward targets at most a range at a time: what RRT,
-//! RRT-Connect and RRT* grow.
+//! The tree planners: RRT, RRT-Connect and RRT*, each in its file, and what they share: the
+//! tree of valid motions they grow toward targets at most a range at a time (here), their
+//! settings (`options.rs`) and the parts each holds between runs (`parts.rs`).
+
+pub mod options;
+pub(crate) mod parts;
+pub mod rrt;
+pub mod rrt_connect;
+pub mod rrt_star;
 
 use crate::nearest::{Direction, NearestNeighbors, measure};
 use crate::space::StateSpace;

@@ -1,0 +1,3 @@
+//! The roadmap planners: multi-query roadmaps over any space, queried with A*.
+
+pub mod prm;

@@ -2,7 +2,7 @@
 //!
 //! [`ProblemDoc`] implements [`Arbitrary`]: from the fuzzer's bytes it builds the JSON of a
 //! problem in the schema of trailmark-core's `problem.rs` — a small grid (inline rows, optional
-//! costs) or a polygon world of a few polygons, any of the twelve planners, any roadmap, space
+//! costs) or a polygon world of a few polygons, any planner of the registry (`trailmark::solve::PlannerName::ALL`), any roadmap, space
 //! and sampler — whose numbers are mostly ordinary and otherwise extreme: 0, -0, 1e308, 1e-300,
 //! the smallest subnormal, `u32::MAX`, `u64::MAX`, values just beyond a documented limit. The
 //! parameters that bound the work (samples, iterations, time limits, sampler attempts) stay
@@ -21,6 +21,7 @@ use std::fmt;
 
 use arbitrary::{Arbitrary, Result, Unstructured};
 use serde_json::{Map, Value, json};
+use trailmark::solve::{Family, PlannerName};
 
 /// A problem document, as JSON. Its `Debug` form is the JSON text, so that a crash report
 /// (`cargo fuzz fmt`) shows the document.
@@ -35,58 +36,6 @@ impl fmt::Debug for ProblemDoc {
 impl<'a> Arbitrary<'a> for ProblemDoc {
     fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
         problem(u).map(ProblemDoc)
-    }
-}
-
-/// The planners of problem documents.
-#[derive(Arbitrary, Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PlannerName {
-    Bfs,
-    Dfs,
-    Dijkstra,
-    Astar,
-    WeightedAstar,
-    LpaStar,
-    DstarLite,
-    AraStar,
-    AdStar,
-    Rrt,
-    RrtConnect,
-    RrtStar,
-    ThetaStar,
-    AdaptiveAstar,
-    MpgaaStar,
-    Jps,
-    JpsPlus,
-    HybridAstar,
-}
-
-impl PlannerName {
-    fn name(self) -> &'static str {
-        match self {
-            PlannerName::Bfs => "bfs",
-            PlannerName::Dfs => "dfs",
-            PlannerName::Dijkstra => "dijkstra",
-            PlannerName::Astar => "astar",
-            PlannerName::WeightedAstar => "weighted_astar",
-            PlannerName::LpaStar => "lpa_star",
-            PlannerName::DstarLite => "dstar_lite",
-            PlannerName::AraStar => "ara_star",
-            PlannerName::AdStar => "ad_star",
-            PlannerName::Rrt => "rrt",
-            PlannerName::RrtConnect => "rrt_connect",
-            PlannerName::RrtStar => "rrt_star",
-            PlannerName::ThetaStar => "theta_star",
-            PlannerName::AdaptiveAstar => "adaptive_astar",
-            PlannerName::MpgaaStar => "mpgaa_star",
-            PlannerName::Jps => "jps",
-            PlannerName::JpsPlus => "jps_plus",
-            PlannerName::HybridAstar => "hybrid_astar",
-        }
-    }
-
-    fn is_sampling(self) -> bool {
-        matches!(self, PlannerName::Rrt | PlannerName::RrtConnect | PlannerName::RrtStar)
     }
 }
 
@@ -208,19 +157,20 @@ fn insert(map: &mut Map<String, Value>, key: &str, value: Option<Value>) {
 pub fn problem(u: &mut Unstructured) -> Result<Value> {
     let grid = u.ratio(1u8, 2)?;
     let misplaced = u.ratio(1u8, 10)?;
-    let mut planner: PlannerName = u.arbitrary()?;
+    // Every planner of the registry, drawn from its own list.
+    let mut planner: PlannerName = *u.choose(PlannerName::ALL)?;
     // Sampling planners take polygon worlds; a few mismatched pairs reach the error.
-    if grid && planner.is_sampling() && !misplaced {
-        planner = PlannerName::Astar;
+    if grid && planner.family() == Family::Sampling && !misplaced {
+        planner = PlannerName::AStar;
     }
     // Hybrid A* more often than one planner in eighteen: its documents have the most shapes.
     if u.ratio(1u8, 16)? {
-        planner = PlannerName::HybridAstar;
+        planner = PlannerName::HybridAStar;
     }
     let mut doc = Map::new();
-    if planner == PlannerName::HybridAstar {
+    if planner == PlannerName::HybridAStar {
         hybrid_problem(u, &mut doc, grid)?;
-    } else if !grid && planner.is_sampling() && u.ratio(1u8, 4)? {
+    } else if !grid && planner.family() == Family::Sampling && u.ratio(1u8, 4)? {
         box_world(u, &mut doc)?;
     } else if grid {
         let (world, width, height) = grid_world(u)?;
@@ -230,16 +180,16 @@ pub fn problem(u: &mut Unstructured) -> Result<Value> {
     } else {
         let (world, frame) = polygon_world(u)?;
         let graph: GraphName = u.arbitrary()?;
-        let space_dubins = planner.is_sampling() && u.ratio(1u8, 3)?;
+        let space_dubins = planner.family() == Family::Sampling && u.ratio(1u8, 3)?;
         let car_roadmap = matches!(graph, GraphName::DubinsPrm | GraphName::ReedsSheppPrm);
-        let dubins = space_dubins || (!planner.is_sampling() && car_roadmap);
+        let dubins = space_dubins || (planner.family() != Family::Sampling && car_roadmap);
         doc.insert("world".into(), world);
         doc.insert("start".into(), polygon_end(u, &frame, dubins)?);
         doc.insert("goal".into(), polygon_end(u, &frame, dubins)?);
         if dubins || misplaced && u.ratio(1u8, 2)? {
             doc.insert("turning_radius".into(), num(float(u, 0.0, 3.0)? * frame.scale));
         }
-        if planner.is_sampling() {
+        if planner.family() == Family::Sampling {
             if space_dubins || misplaced && u.ratio(1u8, 2)? {
                 let car = if u.ratio(1u8, 2)? { "dubins" } else { "reeds_shepp" };
                 doc.insert("space".into(), json!(if space_dubins { car } else { "r2" }));
@@ -263,7 +213,7 @@ pub fn problem(u: &mut Unstructured) -> Result<Value> {
     if u.ratio(1u8, 2)? {
         doc.insert("seed".into(), json!(hostile_u64(u)?));
     }
-    if planner != PlannerName::HybridAstar {
+    if planner != PlannerName::HybridAStar {
         doc.insert("planner".into(), planner_spec(u, planner, grid)?);
     }
     Ok(Value::Object(doc))
@@ -1021,14 +971,14 @@ fn planner_spec(u: &mut Unstructured, planner: PlannerName, grid: bool) -> Resul
         | PlannerName::ThetaStar
         | PlannerName::Jps
         | PlannerName::JpsPlus => {}
-        PlannerName::Astar
+        PlannerName::AStar
         | PlannerName::LpaStar
-        | PlannerName::DstarLite
-        | PlannerName::AdaptiveAstar
+        | PlannerName::DStarLite
+        | PlannerName::AdaptiveAStar
         | PlannerName::MpgaaStar => {
             insert(&mut spec, "heuristic", heuristic(u, grid)?);
         }
-        PlannerName::WeightedAstar => {
+        PlannerName::WeightedAStar => {
             spec.insert("weight".into(), num(float(u, 1.0, 6.0)?));
             insert(&mut spec, "heuristic", heuristic(u, grid)?);
         }
@@ -1045,7 +995,7 @@ fn planner_spec(u: &mut Unstructured, planner: PlannerName, grid: bool) -> Resul
                 })?,
             );
         }
-        PlannerName::HybridAstar => {
+        PlannerName::HybridAStar => {
             // Built with its world by hybrid_problem; a plain one here.
             spec.insert("turning_radius".into(), json!(1.0));
             spec.insert("max_expansions".into(), json!(100));

@@ -40,7 +40,8 @@ pub enum NavigateError {
     Planner(#[from] SearchError<Cell>),
     /// The planner does not replan (a one-shot search or a sampling planner).
     #[error(
-        "\"{planner}\" does not replan, so it cannot drive the robot: choose astar, lpa_star, dstar_lite, ad_star, adaptive_astar or mpgaa_star"
+        "\"{planner}\" does not replan, so it cannot drive the robot: choose one of {choices}",
+        choices = crate::solve::PlannerName::replanner_names()
     )]
     NotAReplanner {
         /// The planner's name.

@@ -30,6 +30,7 @@ mod grid;
 mod planner;
 mod polygons;
 mod problem;
+mod registry;
 mod replan;
 mod result;
 mod ros_map;
@@ -42,6 +43,7 @@ pub use polygons::DEFAULT_SAMPLES;
 pub use problem::{
     BoxesSpec, GraphKind, GridSpec, ProblemSpec, RosMapSpec, SamplerKind, SpaceKind, WorldSpec,
 };
+pub use registry::{Family, PlannerName};
 pub use result::{
     CarRecord, ErrorReport, GraphStats, ImprovementRecord, IterationRecord, ResultStats, SamplingStats,
     SmoothedRecord, SolveResult, Status, Waypoint, anytime_result_of, result_of,

@@ -1,5 +1,5 @@
-//! The planners of a problem document and how [`solve`](super::solve) runs each one: the
-//! registry. Adding a planner to `solve` touches this file only (and the planner's own crate).
+//! The planners' settings in a problem document and how [`solve`](super::solve) runs each one;
+//! their names and families are the registry's (`registry.rs`).
 
 use std::time::{Duration, Instant};
 
@@ -19,13 +19,14 @@ use trailmark_search::{
 };
 
 use super::error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
+use super::registry::PlannerName;
 use super::result::{SolveResult, Waypoint, anytime_result_of, result_of};
 
 /// A planner and its parameters. In JSON, an object whose `"name"` selects the planner.
 ///
-/// This enum and its `impl` below are the registry of the planners [`solve`](super::solve)
-/// runs: a new planner is a variant here, and the compiler then asks for its arm in each
-/// `match` of this file (its name, the heuristic it needs, and how it runs).
+/// Each variant is a row of the [registry](PlannerName) with its settings: a new planner is a
+/// row there and a variant here, and the compiler then asks for its arm in each `match` of
+/// this file (which row it is, the heuristic it needs, and how it runs).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "name", deny_unknown_fields)]
 pub enum PlannerSpec {
@@ -142,28 +143,33 @@ impl PlannerSpec {
         }
     }
 
-    /// The name used in problem documents (`"astar"`, `"dstar_lite"`, ...).
-    pub fn name(&self) -> &'static str {
+    /// Which planner of the [registry](PlannerName) this is.
+    pub fn planner(&self) -> PlannerName {
         match self {
-            PlannerSpec::Bfs {} => "bfs",
-            PlannerSpec::Dfs {} => "dfs",
-            PlannerSpec::Dijkstra {} => "dijkstra",
-            PlannerSpec::AStar { .. } => "astar",
-            PlannerSpec::WeightedAStar { .. } => "weighted_astar",
-            PlannerSpec::ThetaStar {} => "theta_star",
-            PlannerSpec::Jps {} => "jps",
-            PlannerSpec::JpsPlus {} => "jps_plus",
-            PlannerSpec::LpaStar { .. } => "lpa_star",
-            PlannerSpec::AdaptiveAStar { .. } => "adaptive_astar",
-            PlannerSpec::MpgaaStar { .. } => "mpgaa_star",
-            PlannerSpec::DStarLite { .. } => "dstar_lite",
-            PlannerSpec::AraStar(_) => "ara_star",
-            PlannerSpec::AdStar(_) => "ad_star",
-            PlannerSpec::Rrt(_) => "rrt",
-            PlannerSpec::RrtConnect(_) => "rrt_connect",
-            PlannerSpec::RrtStar(_) => "rrt_star",
-            PlannerSpec::HybridAStar(_) => "hybrid_astar",
+            PlannerSpec::Bfs {} => PlannerName::Bfs,
+            PlannerSpec::Dfs {} => PlannerName::Dfs,
+            PlannerSpec::Dijkstra {} => PlannerName::Dijkstra,
+            PlannerSpec::AStar { .. } => PlannerName::AStar,
+            PlannerSpec::WeightedAStar { .. } => PlannerName::WeightedAStar,
+            PlannerSpec::ThetaStar {} => PlannerName::ThetaStar,
+            PlannerSpec::Jps {} => PlannerName::Jps,
+            PlannerSpec::JpsPlus {} => PlannerName::JpsPlus,
+            PlannerSpec::LpaStar { .. } => PlannerName::LpaStar,
+            PlannerSpec::AdaptiveAStar { .. } => PlannerName::AdaptiveAStar,
+            PlannerSpec::MpgaaStar { .. } => PlannerName::MpgaaStar,
+            PlannerSpec::DStarLite { .. } => PlannerName::DStarLite,
+            PlannerSpec::AraStar(_) => PlannerName::AraStar,
+            PlannerSpec::AdStar(_) => PlannerName::AdStar,
+            PlannerSpec::Rrt(_) => PlannerName::Rrt,
+            PlannerSpec::RrtConnect(_) => PlannerName::RrtConnect,
+            PlannerSpec::RrtStar(_) => PlannerName::RrtStar,
+            PlannerSpec::HybridAStar(_) => PlannerName::HybridAStar,
         }
+    }
+
+    /// The name used in problem documents (`"astar"`, `"dstar_lite"`, ...): the registry's.
+    pub fn name(&self) -> &'static str {
+        self.planner().name()
     }
 
     /// The heuristic this planner searches a grid of `connectivity` with: the one it asks for,

@@ -13,30 +13,10 @@ use super::planner::PlannerSpec;
 type BoxedReplanner<'h, G> = Box<dyn Replanner<G> + 'h>;
 
 impl PlannerSpec {
-    /// Whether [`replanner`](Self::replanner) makes this planner a [`Replanner`]: `astar`,
-    /// `lpa_star`, `dstar_lite`, `ad_star`, `adaptive_astar` and `mpgaa_star`.
+    /// Whether [`replanner`](Self::replanner) makes this planner a [`Replanner`]: the
+    /// registry's [`PlannerName::replans`](super::PlannerName::replans).
     pub fn replans(&self) -> bool {
-        // Every variant named, so that a new planner is asked whether it replans.
-        match self {
-            PlannerSpec::AStar { .. }
-            | PlannerSpec::LpaStar { .. }
-            | PlannerSpec::AdaptiveAStar { .. }
-            | PlannerSpec::MpgaaStar { .. }
-            | PlannerSpec::DStarLite { .. }
-            | PlannerSpec::AdStar(_) => true,
-            PlannerSpec::Bfs {}
-            | PlannerSpec::Dfs {}
-            | PlannerSpec::Dijkstra {}
-            | PlannerSpec::WeightedAStar { .. }
-            | PlannerSpec::ThetaStar {}
-            | PlannerSpec::Jps {}
-            | PlannerSpec::JpsPlus {}
-            | PlannerSpec::AraStar(_)
-            | PlannerSpec::Rrt(_)
-            | PlannerSpec::RrtConnect(_)
-            | PlannerSpec::RrtStar(_)
-            | PlannerSpec::HybridAStar(_) => false,
-        }
+        self.planner().replans()
     }
 
     /// This planner as a [`Replanner`] from `start` to `goal` on `graph` with the heuristic

@@ -37,6 +37,10 @@ pub struct AnytimeRow {
     pub ad_speedup: f64,
 }
 
+/// The registry's planners this section measures.
+pub const MEASURED: [trailmark::solve::PlannerName; 2] =
+    [trailmark::solve::PlannerName::AraStar, trailmark::solve::PlannerName::AdStar];
+
 const ANYTIME: EpsilonSchedule = EpsilonSchedule { initial: 3.0, step: 0.5 };
 
 /// The section's results: the table's rows, and the cost-over-time plot with the sentence that

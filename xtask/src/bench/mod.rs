@@ -201,6 +201,13 @@ impl BenchReport {
         );
         let versions: Vec<String> = self.versions.iter().map(|(n, v)| format!("{n} {v}")).collect();
         out.push_str(&format!("Versions: {}.\n\n", versions.join(", ")));
+        let measured: Vec<&str> = measured_planners().iter().map(|p| p.name()).collect();
+        out.push_str(&format!(
+            "Planners of the registry the sections measure: {} of {} ({}).\n\n",
+            measured.len(),
+            trailmark::solve::PlannerName::ALL.len(),
+            measured.join(", ")
+        ));
         out.push_str(time_line);
         out.push_str(&report::goals_markdown(&self.goals()));
         out.push_str(&grid::markdown(&self.results, &self.ratios));
@@ -474,4 +481,30 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         return Ok(ExitCode::from(1));
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The registry's planners the sections measure, each section's list read from what it runs.
+fn measured_planners() -> std::collections::BTreeSet<trailmark::solve::PlannerName> {
+    grid::measured()
+        .chain(navigation::measured())
+        .chain(anytime::MEASURED)
+        .chain(sampling::measured())
+        .chain(cars::MEASURED)
+        .chain(rosmaps::MEASURED)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use trailmark::solve::PlannerName;
+
+    /// Every planner of the registry runs in some section of the harness: a planner registered
+    /// but measured nowhere fails here.
+    #[test]
+    fn every_registered_planner_is_measured() {
+        let measured = super::measured_planners();
+        let missing: Vec<&str> =
+            PlannerName::ALL.iter().filter(|p| !measured.contains(p)).map(|p| p.name()).collect();
+        assert!(missing.is_empty(), "registered but measured in no section of the harness: {missing:?}");
+    }
 }

@@ -20,6 +20,10 @@ use crate::bench::stats::{geometric_mean, median};
 use crate::bench::suite::Suite;
 use crate::reference::tolerance;
 
+/// The registry's planners this section measures on costmaps.
+pub const MEASURED: [trailmark::solve::PlannerName; 2] =
+    [trailmark::solve::PlannerName::AStar, trailmark::solve::PlannerName::ThetaStar];
+
 /// One map's figures.
 #[derive(Debug, Clone, Serialize)]
 pub struct RosMapRow {

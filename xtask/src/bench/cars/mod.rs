@@ -27,6 +27,13 @@ use crate::bench::suite::Suite;
 use world::{CarWorld, ROBOT_RADIUS, SIZE, TURNING_RADIUS, ompl_pose, worlds};
 
 /// The cells Hybrid A* lays the worlds on: an eighth of the turning radius.
+/// The registry's planners this section measures in the car spaces.
+pub const MEASURED: [trailmark::solve::PlannerName; 3] = [
+    trailmark::solve::PlannerName::HybridAStar,
+    trailmark::solve::PlannerName::RrtConnect,
+    trailmark::solve::PlannerName::RrtStar,
+];
+
 const RESOLUTION: f64 = TURNING_RADIUS / 8.0;
 /// Hybrid A*'s time limit per query.
 const HYBRID_LIMIT: Duration = Duration::from_secs(2);

@@ -82,6 +82,15 @@ const SQUEEZE: CornerCutting = CornerCutting::Squeeze;
 /// that factor of the optimum at sqrt(2).
 const GRID_PATHFINDING_BOUND: f64 = 1.0 + 6e-5;
 
+/// The registry's planners this section measures: its own planners that are registered (the
+/// others are variants, as closure A*, or peers).
+pub fn measured() -> impl Iterator<Item = trailmark::solve::PlannerName> {
+    PLANNERS
+        .iter()
+        .filter(|p| p.library == TRAILMARK)
+        .filter_map(|p| trailmark::solve::PlannerName::from_name(p.name))
+}
+
 /// The planners, in the order they run and are reported.
 pub const PLANNERS: [GridPlanner; 14] = [
     GridPlanner {

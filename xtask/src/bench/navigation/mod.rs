@@ -110,6 +110,11 @@ const NAV_OTHERS: [PlannerSpec; 5] = [
     PlannerSpec::MpgaaStar { heuristic: None },
 ];
 
+/// The registry's planners this section measures: the driver and those run along its trajectory.
+pub fn measured() -> impl Iterator<Item = trailmark::solve::PlannerName> {
+    std::iter::once(DRIVER).chain(NAV_OTHERS).map(|spec| spec.planner())
+}
+
 /// The planning work of the runs of one planner on one case: the rounds' reports, which differ
 /// only in their times.
 fn row(case: &NavCase, reports: &[&NavigationReport]) -> NavRow {

@@ -41,6 +41,16 @@ impl SingleQuery {
     pub const ALL: [SingleQuery; 3] =
         [SingleQuery::RrtConnect, SingleQuery::RrtConnectBridge, SingleQuery::Rrt];
 
+    /// The registry's planner it runs.
+    pub fn planner(self) -> trailmark::solve::PlannerName {
+        match self {
+            SingleQuery::Rrt => trailmark::solve::PlannerName::Rrt,
+            SingleQuery::RrtConnect | SingleQuery::RrtConnectBridge => {
+                trailmark::solve::PlannerName::RrtConnect
+            }
+        }
+    }
+
     /// The name in `--only`, the JSON results and the OMPL driver's input.
     pub fn name(self) -> &'static str {
         match self {

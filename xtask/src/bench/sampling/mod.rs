@@ -39,6 +39,11 @@ pub fn planner_names() -> Vec<&'static str> {
     SingleQuery::ALL.iter().map(|p| p.name()).chain([star::NAME, prm::NAME, boxes::NAME]).collect()
 }
 
+/// The registry's planners this section measures: its single-query planners and RRT*.
+pub fn measured() -> impl Iterator<Item = trailmark::solve::PlannerName> {
+    SingleQuery::ALL.iter().map(|p| p.planner()).chain(trailmark::solve::PlannerName::from_name(star::NAME))
+}
+
 /// The sampling section's results.
 #[derive(Debug, Clone, Serialize)]
 pub struct SamplingReport {

@@ -18,7 +18,7 @@ use crate::bench::sampling::world::{PlaneQuery, SamplingWorld, points};
 use crate::bench::stats::{median, sorted};
 
 /// The name in `--only`.
-pub const NAME: &str = "rrt_star";
+pub const NAME: &str = trailmark::solve::PlannerName::RrtStar.name();
 /// RRT*'s iterations per run (the figure).
 pub const STAR_ITERATIONS: u64 = 20_000;
 /// The goal for RRT*'s median cost after its iterations, over the optimum.

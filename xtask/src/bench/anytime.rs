@@ -9,7 +9,7 @@ use trailmark::prelude::*;
 use trailmark::search::{AdStar, EpsilonSchedule};
 
 use crate::bench::progress::SectionProgress;
-use crate::bench::report::Figure;
+use crate::bench::report::{Figure, table};
 use crate::bench::stats::median;
 use crate::bench::suite::{Suite, SuiteMap};
 
@@ -265,22 +265,25 @@ pub fn markdown(anytime: &[AnytimeRow]) -> String {
     let mut out = String::new();
     if !anytime.is_empty() {
         out.push_str("## Anytime planners: time to the first solution (goal: 5x below optimal A*)\n\n");
-        out.push_str("| map | queries | A* ms | ARA* first ms | speedup | first cost / optimal | ARA* to optimal ms | AD* first ms | speedup |\n");
-        out.push_str("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-        for r in anytime {
-            out.push_str(&format!(
-                "| {} | {} | {:.2} | {:.2} | {:.1}x | {:.3} | {:.2} | {:.2} | {:.1}x |\n",
-                r.map,
-                r.queries,
-                r.astar_ms,
-                r.ara_first_ms,
-                r.ara_speedup,
-                r.ara_first_cost_ratio,
-                r.ara_optimal_ms,
-                r.ad_first_ms,
-                r.ad_speedup
-            ));
-        }
+        out.push_str(&table(
+            "| map | queries | A* ms | ARA* first ms | speedup | first cost / optimal | ARA* to optimal ms | AD* first ms | speedup |",
+            "|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+            anytime,
+            |r| {
+                format!(
+                    "| {} | {} | {:.2} | {:.2} | {:.1}x | {:.3} | {:.2} | {:.2} | {:.1}x |",
+                    r.map,
+                    r.queries,
+                    r.astar_ms,
+                    r.ara_first_ms,
+                    r.ara_speedup,
+                    r.ara_first_cost_ratio,
+                    r.ara_optimal_ms,
+                    r.ad_first_ms,
+                    r.ad_speedup
+                )
+            },
+        ));
         out.push('\n');
     }
     out

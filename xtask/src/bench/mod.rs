@@ -407,41 +407,29 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
     let sampling_named =
         args.only.is_empty() || args.only.iter().any(|o| sampling_names.contains(&o.as_str()));
     let mut times = RunTimes::start();
-    let parts = std::thread::scope(|scope| run_parts(scope, args, &planners, sampling_named, &mut times))?;
-    let Parts {
-        maps,
-        results,
-        navigation,
-        navigation_own,
-        mut anytime,
-        roadmaps,
-        sampling,
-        cars,
-        contingency,
-        rosmaps,
-        date,
-    } = parts;
+    let mut parts =
+        std::thread::scope(|scope| run_parts(scope, args, &planners, sampling_named, &mut times))?;
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let report = BenchReport {
         suite: args.suite,
         versions: report::locked_versions(&["trailmark", "pathfinding", "grid_pathfinding"]),
-        date,
+        date: parts.date,
         seed: args.seed,
         runs: args.runs,
         cores,
-        maps: maps.iter().map(MapInfo::of).collect(),
-        ratios: grid::ratios(&results),
-        results,
-        navigation_ratios: navigation::nav_ratios(&navigation),
-        replanner_ratios: navigation::replanner_ratios(&navigation),
-        navigation,
-        navigation_own,
-        anytime: anytime.as_mut().map_or(Vec::new(), |a| std::mem::take(&mut a.rows)),
-        roadmaps,
-        sampling,
-        cars,
-        contingency,
-        rosmaps,
+        maps: parts.maps.iter().map(MapInfo::of).collect(),
+        ratios: grid::ratios(&parts.results),
+        results: parts.results,
+        navigation_ratios: navigation::nav_ratios(&parts.navigation),
+        replanner_ratios: navigation::replanner_ratios(&parts.navigation),
+        navigation: parts.navigation,
+        navigation_own: parts.navigation_own,
+        anytime: parts.anytime.as_mut().map_or(Vec::new(), |a| std::mem::take(&mut a.rows)),
+        roadmaps: parts.roadmaps,
+        sampling: parts.sampling,
+        cars: parts.cars,
+        contingency: parts.contingency,
+        rosmaps: parts.rosmaps,
     };
     let mut figures: Vec<Figure> = Vec::new();
     if !report.results.is_empty() {
@@ -457,9 +445,9 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
             Err(e) => errln!("warning: no navigation time plot: {e}"),
         }
     }
-    let anytime_plot = anytime.as_ref().map_or(String::new(), |a| a.cost_time_markdown());
+    let anytime_plot = parts.anytime.as_ref().map_or(String::new(), |a| a.cost_time_markdown());
     let text = report.markdown(&times.markdown(cores), &anytime_plot);
-    figures.extend(anytime.iter().flat_map(|a| a.figures()));
+    figures.extend(parts.anytime.iter().flat_map(|a| a.figures()));
     figures.extend(report.sampling.iter().flat_map(|s| s.figures.iter().cloned()));
     let json = serde_json::to_string_pretty(&report).expect("serializable");
     let folder =

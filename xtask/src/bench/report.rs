@@ -59,6 +59,22 @@ pub fn goals_markdown(goals: &[GoalRow]) -> String {
     s
 }
 
+/// A markdown table: its header line, its alignment line (`---` a column of text, `---:` one of
+/// figures) and the line `line` writes for each of `rows`, every line given without its newline.
+pub fn table<T>(
+    header: &str,
+    align: &str,
+    rows: impl IntoIterator<Item = T>,
+    line: impl Fn(T) -> String,
+) -> String {
+    let mut s = format!("{header}\n{align}\n");
+    for row in rows {
+        s.push_str(&line(row));
+        s.push('\n');
+    }
+    s
+}
+
 /// The locked versions of `names`, read from the workspace's Cargo.lock.
 pub fn locked_versions(names: &[&str]) -> Vec<(String, String)> {
     let lock = std::fs::read_to_string(crate::workspace::root().join("Cargo.lock")).unwrap_or_default();

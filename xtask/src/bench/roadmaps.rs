@@ -24,6 +24,7 @@ use trailmark::graph::{RoadmapQuery, Trapezoids};
 use trailmark::prelude::*;
 
 use crate::bench::progress::SectionProgress;
+use crate::bench::report::table;
 use crate::bench::stats::{fitted_exponent, median};
 use crate::bench::suite::Suite;
 
@@ -257,32 +258,35 @@ pub fn markdown(report: &RoadmapReport) -> String {
          (full, point robot), trapezoidal decomposition, PRM* (1,000 Halton samples, robot radius 2). Costs are \
          medians over seeded queries, divided by the visibility graph's shortest path for the same robot (for the \
          PRM's disc robot, around corners grown as chords in steps of π/8, so a PRM path may come out up to 2% \
-         shorter; a cost error is a path shorter than that, and fails the run).\n\n\
-         | obstacles | vertices | visibility nodes / edges | 1 thread | all cores | tangent edges | tangent, all cores | trapezoids | decomposition | PRM* edges | PRM* build | PRM* solved | PRM* cost | trapezoid cost | cost errors |\n\
-         |---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+         shorter; a cost error is a path shorter than that, and fails the run).\n\n",
     );
-    for r in &report.rows {
-        out.push_str(&format!(
-            "| {} | {} | {} / {} | {:.1} ms | {:.1} ms | {} | {:.1} ms | {} | {:.2} ms | {} | {:.1} ms | {}/{} | {:.3} | {:.3} | {} |\n",
-            r.obstacles,
-            r.vertices,
-            r.visibility_nodes,
-            r.visibility_edges,
-            r.visibility_ms_one_thread,
-            r.visibility_ms_all_cores,
-            r.tangent_edges,
-            r.tangent_ms_all_cores,
-            r.trapezoid_cells,
-            r.trapezoid_ms,
-            r.prm_edges,
-            r.prm_ms,
-            r.prm_solved,
-            r.queries,
-            r.prm_cost_ratio,
-            r.trapezoid_cost_ratio,
-            r.cost_errors
-        ));
-    }
+    out.push_str(&table(
+        "| obstacles | vertices | visibility nodes / edges | 1 thread | all cores | tangent edges | tangent, all cores | trapezoids | decomposition | PRM* edges | PRM* build | PRM* solved | PRM* cost | trapezoid cost | cost errors |",
+        "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        &report.rows,
+        |r| {
+            format!(
+                "| {} | {} | {} / {} | {:.1} ms | {:.1} ms | {} | {:.1} ms | {} | {:.2} ms | {} | {:.1} ms | {}/{} | {:.3} | {:.3} | {} |",
+                r.obstacles,
+                r.vertices,
+                r.visibility_nodes,
+                r.visibility_edges,
+                r.visibility_ms_one_thread,
+                r.visibility_ms_all_cores,
+                r.tangent_edges,
+                r.tangent_ms_all_cores,
+                r.trapezoid_cells,
+                r.trapezoid_ms,
+                r.prm_edges,
+                r.prm_ms,
+                r.prm_solved,
+                r.queries,
+                r.prm_cost_ratio,
+                r.trapezoid_cost_ratio,
+                r.cost_errors
+            )
+        },
+    ));
     out.push_str(&format!(
         "\nVisibility-graph build time grows like n^{:.2} in the number of boundary vertices n (one thread; \
          Lee's sweep is O(n² log n)).\n\n",

@@ -22,6 +22,7 @@ use trailmark::sample::{KdNearest, Planner, Problem, RrtConnect, RrtStar};
 
 use crate::bench::ompl::{OmplDriver, OmplInput};
 use crate::bench::progress::SectionProgress;
+use crate::bench::report::table;
 use crate::bench::stats::{median, quantile, sorted};
 use crate::bench::suite::Suite;
 use world::{CarWorld, ROBOT_RADIUS, SIZE, TURNING_RADIUS, ompl_pose, worlds};
@@ -342,27 +343,30 @@ pub fn markdown(report: &CarReport) -> String {
          states checked by the same point test and motions by trailmark's exact test of the same curve. Every \
          path is re-checked every 0.001 (poses free, the heading turning no tighter than the radius, ends exact). \
          Length is over the shortest path any planner found for the query in the same space; Hybrid A* weighs \
-         reversing and turning, so its paths are not the shortest it could find.\n\n\
-         | world | planner | space | queries | solved | median ms | p90 ms | median length / shortest | median cusps | invalid |\n\
-         |---|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
+         reversing and turning, so its paths are not the shortest it could find.\n\n",
         maps.join(", "),
         HYBRID_LIMIT.as_secs()
     );
-    for r in &report.rows {
-        s.push_str(&format!(
-            "| {} | {} | {} | {} | {} | {:.2} | {:.2} | {:.3} | {:.0} | {} |\n",
-            r.world,
-            r.planner,
-            r.space,
-            r.queries,
-            r.solved,
-            r.median_ms,
-            r.p90_ms,
-            r.median_length_ratio,
-            r.median_cusps,
-            r.invalid
-        ));
-    }
+    s.push_str(&table(
+        "| world | planner | space | queries | solved | median ms | p90 ms | median length / shortest | median cusps | invalid |",
+        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|",
+        &report.rows,
+        |r| {
+            format!(
+                "| {} | {} | {} | {} | {} | {:.2} | {:.2} | {:.3} | {:.0} | {} |",
+                r.world,
+                r.planner,
+                r.space,
+                r.queries,
+                r.solved,
+                r.median_ms,
+                r.p90_ms,
+                r.median_length_ratio,
+                r.median_cusps,
+                r.invalid
+            )
+        },
+    ));
     let row = |world: &str, planner: &str| {
         report.rows.iter().find(|r| r.world == world && r.planner == planner && r.space == "reeds_shepp")
     };

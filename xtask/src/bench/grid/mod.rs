@@ -91,98 +91,85 @@ pub fn measured() -> impl Iterator<Item = trailmark::solve::PlannerName> {
         .filter_map(|p| trailmark::solve::PlannerName::from_name(p.name))
 }
 
+/// An entry of [`PLANNERS`] in all it does not say otherwise: a trailmark planner held to the
+/// optimum without corner cutting, compared with no peer, not plotted. Its name and kind only
+/// hold places: every entry gives its own.
+const DEFAULTS: GridPlanner = GridPlanner {
+    name: "",
+    library: TRAILMARK,
+    rule: NO_CUT,
+    bound: Some(1.0),
+    known_flaw: false,
+    any_angle: false,
+    peers: &[],
+    plot_colour: None,
+    kind: Kind::Graph(|_, _, _| unreachable!("every planner says how it solves")),
+};
+
 /// The planners, in the order they run and are reported.
 pub const PLANNERS: [GridPlanner; 14] = [
     GridPlanner {
         name: "astar",
-        library: TRAILMARK,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
         peers: &["pathfinding_astar"],
         plot_colour: Some(0),
         kind: Kind::Graph(|graph, search, q| {
             ours(search.astar(graph, q.start, q.goal, graph.heuristic(GridHeuristic::Octile, q.goal)))
         }),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "jps",
-        library: TRAILMARK,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
         peers: &["pathfinding_astar", "astar"],
         plot_colour: Some(1),
         kind: Kind::Jps,
+        ..DEFAULTS
     },
     GridPlanner {
         name: "jps_plus",
-        library: TRAILMARK,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
         peers: &["pathfinding_astar", "astar"],
         plot_colour: Some(4),
         kind: Kind::JpsPlus,
+        ..DEFAULTS
     },
     GridPlanner {
         name: "closure_astar",
-        library: TRAILMARK,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
         peers: &["pathfinding_astar", "astar"],
-        plot_colour: None,
         // The graph as `pathfinding` takes it: a successor closure over hashed cells.
         kind: Kind::Graph(|graph, _, q| {
             let h = graph.heuristic(GridHeuristic::Octile, q.goal);
             ours(closures::astar(&q.start, |&p| graph.neighbours(p), |&p| h(p), |&p| p == q.goal))
         }),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "pathfinding_astar",
         library: PATHFINDING,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
-        peers: &[],
         plot_colour: Some(2),
         kind: Kind::Graph(|graph, _, q| {
             let h = |p: &Cell| octile(p, q.goal, 1.0);
             let r = pathfinding::prelude::astar(&q.start, |&p| neighbours(graph, p), h, |&p| p == q.goal);
             (r.map(|(_, c)| c.0), None)
         }),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "pathfinding_fringe",
         library: PATHFINDING,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
-        peers: &[],
         plot_colour: Some(3),
+        // As `pathfinding_astar` but for the peer's function (generic, so not passed as a value).
         kind: Kind::Graph(|graph, _, q| {
             let h = |p: &Cell| octile(p, q.goal, 1.0);
             let r = pathfinding::prelude::fringe(&q.start, |&p| neighbours(graph, p), h, |&p| p == q.goal);
             (r.map(|(_, c)| c.0), None)
         }),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "jps_squeeze",
-        library: TRAILMARK,
         rule: SQUEEZE,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
         peers: &["grid_pathfinding_jps"],
-        plot_colour: None,
         kind: Kind::Jps,
+        ..DEFAULTS
     },
     GridPlanner {
         name: "grid_pathfinding_jps",
@@ -193,20 +180,12 @@ pub const PLANNERS: [GridPlanner; 14] = [
         // jump point found past an unforced diagonal one is the cell before that one), and are
         // then longer than the optimum: on most queries of the random maps (docs/jump-points.md).
         known_flaw: true,
-        any_angle: false,
-        peers: &[],
-        plot_colour: None,
         kind: Kind::GridPathfinding,
+        ..DEFAULTS
     },
     GridPlanner {
         name: "weighted_astar",
-        library: TRAILMARK,
-        rule: NO_CUT,
         bound: Some(WEIGHT),
-        known_flaw: false,
-        any_angle: false,
-        peers: &[],
-        plot_colour: None,
         kind: Kind::Graph(|graph, search, q| {
             ours(search.weighted_astar(
                 graph,
@@ -216,67 +195,43 @@ pub const PLANNERS: [GridPlanner; 14] = [
                 WEIGHT,
             ))
         }),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "dijkstra",
-        library: TRAILMARK,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
         peers: &["pathfinding_dijkstra"],
-        plot_colour: None,
         kind: Kind::Graph(|graph, search, q| ours(search.dijkstra(graph, q.start, q.goal))),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "pathfinding_dijkstra",
         library: PATHFINDING,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
-        any_angle: false,
-        peers: &[],
-        plot_colour: None,
         kind: Kind::Graph(|graph, _, q| {
             let r = pathfinding::prelude::dijkstra(&q.start, |&p| neighbours(graph, p), |&p| p == q.goal);
             (r.map(|(_, c)| c.0), None)
         }),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "theta_star",
-        library: TRAILMARK,
-        rule: NO_CUT,
-        bound: Some(1.0),
-        known_flaw: false,
         any_angle: true,
-        peers: &[],
-        plot_colour: None,
         kind: Kind::Graph(|graph, search, q| {
             let h = graph.heuristic(GridHeuristic::Euclidean, q.goal);
             ours(search.theta_star(graph, q.start, q.goal, h, graph))
         }),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "bfs",
-        library: TRAILMARK,
-        rule: NO_CUT,
         bound: None,
-        known_flaw: false,
-        any_angle: false,
-        peers: &[],
-        plot_colour: None,
         kind: Kind::Graph(|graph, search, q| ours(search.bfs(graph, q.start, q.goal))),
+        ..DEFAULTS
     },
     GridPlanner {
         name: "dfs",
-        library: TRAILMARK,
-        rule: NO_CUT,
         bound: None,
-        known_flaw: false,
-        any_angle: false,
-        peers: &[],
-        plot_colour: None,
         kind: Kind::Graph(|graph, search, q| ours(search.dfs(graph, q.start, q.goal))),
+        ..DEFAULTS
     },
 ];
 
@@ -513,4 +468,19 @@ fn bench_map(map: &SuiteMap, planners: &[&GridPlanner], runs: u32) -> Vec<GridRo
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::PLANNERS;
+
+    /// Every entry of the table names itself (over the placeholder of `DEFAULTS`), and no two
+    /// share a name.
+    #[test]
+    fn planners_have_distinct_names() {
+        let names: Vec<&str> = PLANNERS.iter().map(|p| p.name).collect();
+        assert!(names.iter().all(|n| !n.is_empty()), "a planner without a name: {names:?}");
+        let distinct: std::collections::BTreeSet<&str> = names.iter().copied().collect();
+        assert_eq!(distinct.len(), names.len(), "two planners share a name: {names:?}");
+    }
 }

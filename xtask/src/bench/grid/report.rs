@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use crate::bench::plots::{BoxSeries, COLOURS, box_plot_svg};
-use crate::bench::report::GoalRow;
+use crate::bench::report::{GoalRow, table};
 use crate::bench::stats::geometric_mean;
 
 use super::{GridRow, PLANNERS};
@@ -142,12 +142,13 @@ pub fn time_svg(maps: &[String], rows: &[GridRow]) -> Result<String, String> {
 
 /// The section of the report: the speed against the peers and every result.
 pub fn markdown(rows: &[GridRow], ratios: &[PeerRatio]) -> String {
-    let mut out = String::from(
-        "## Speed against the peers\n\n| map | planner | peer | speedup (peer median / trailmark median) |\n|---|---|---|---:|\n",
-    );
-    for r in ratios {
-        out.push_str(&format!("| {} | {} | {} | {:.2}x |\n", r.map, r.planner, r.peer, r.speedup));
-    }
+    let mut out = String::from("## Speed against the peers\n\n");
+    out.push_str(&table(
+        "| map | planner | peer | speedup (peer median / trailmark median) |",
+        "|---|---|---|---:|",
+        ratios,
+        |r| format!("| {} | {} | {} | {:.2}x |", r.map, r.planner, r.peer, r.speedup),
+    ));
     for planner in &PLANNERS {
         for &peer in planner.peers {
             let speedups: Vec<f64> = speedups(ratios, planner.name, peer).into_iter().map(|f| f.1).collect();
@@ -174,24 +175,29 @@ pub fn markdown(rows: &[GridRow], ratios: &[PeerRatio]) -> String {
          Made: the time to make the planner for the map (JPS+'s table, `grid_pathfinding`'s grid). \
          Bytes/cell: what a trailmark planner holds between queries, per cell of the map.",
     );
-    out.push_str("\n\n## All results\n\n| map | planner | solved | median µs | mean µs | p90 µs | Mexp/s | cost / optimal | cost errors | made ms | bytes/cell |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-    for r in rows {
-        out.push_str(&format!(
-            "| {} | {} | {}/{} | {:.1} | {:.1} | {:.1} | {} | {:.4} | {} | {:.2} | {} |\n",
-            r.map,
-            r.planner,
-            r.solved,
-            r.queries,
-            r.median_us,
-            r.mean_us,
-            r.p90_us,
-            r.mexp_per_s.map_or("-".into(), |m| format!("{m:.1}")),
-            r.mean_cost_ratio,
-            r.cost_errors,
-            r.prepare_ms,
-            r.bytes_per_cell.map_or("-".into(), |b| format!("{b:.1}")),
-        ));
-    }
+    out.push_str("\n\n## All results\n\n");
+    out.push_str(&table(
+        "| map | planner | solved | median µs | mean µs | p90 µs | Mexp/s | cost / optimal | cost errors | made ms | bytes/cell |",
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        rows,
+        |r| {
+            format!(
+                "| {} | {} | {}/{} | {:.1} | {:.1} | {:.1} | {} | {:.4} | {} | {:.2} | {} |",
+                r.map,
+                r.planner,
+                r.solved,
+                r.queries,
+                r.median_us,
+                r.mean_us,
+                r.p90_us,
+                r.mexp_per_s.map_or("-".into(), |m| format!("{m:.1}")),
+                r.mean_cost_ratio,
+                r.cost_errors,
+                r.prepare_ms,
+                r.bytes_per_cell.map_or("-".into(), |b| format!("{b:.1}")),
+            )
+        },
+    ));
     out.push('\n');
     out
 }

@@ -14,7 +14,7 @@ use trailmark::solve::{AnytimeSpec, PlannerSpec};
 
 use crate::bench::plots::{BoxSeries, COLOURS, box_plot_svg};
 use crate::bench::progress::SectionProgress;
-use crate::bench::report::GoalRow;
+use crate::bench::report::{GoalRow, table};
 use crate::bench::stats::{median, quantile, sorted};
 
 mod cases;
@@ -346,6 +346,20 @@ pub fn goals(ratios: &[NavRatio]) -> [GoalRow; 2] {
     ]
 }
 
+/// The header of the columns every table of runs starts with (along the shared trajectory, or
+/// each planner driving its own robot).
+const RUN_HEADER: &str = "| map | radius | planner | outcome | steps | distance | expansions | planning ms |";
+/// Their alignment.
+const RUN_ALIGN: &str = "|---|---:|---|---|---:|---:|---:|---:|";
+
+/// A run's cells in those columns.
+fn run_cells(r: &NavRow) -> String {
+    format!(
+        "| {} | {} | {} | {:?} | {} | {:.1} | {} | {:.2} |",
+        r.map, r.radius, r.planner, r.outcome, r.steps, r.distance, r.expansions, r.planning_ms
+    )
+}
+
 /// The section of the report.
 pub fn markdown(
     nav: &[NavRow],
@@ -365,40 +379,39 @@ pub fn markdown(
              summed over the run (time: median over rounds); the latency of a step is the time of its plan \
              (the first plan includes making the planner).\n\n",
         );
-        out.push_str("| map | radius | planner | outcome | steps | distance | expansions | planning ms | median plan µs | p99 plan ms | worst plan ms |\n");
-        out.push_str("|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
-        for r in nav {
-            out.push_str(&format!(
-                "| {} | {} | {} | {:?} | {} | {:.1} | {} | {:.2} | {:.1} | {:.3} | {:.3} |\n",
-                r.map,
-                r.radius,
-                r.planner,
-                r.outcome,
-                r.steps,
-                r.distance,
-                r.expansions,
-                r.planning_ms,
-                r.median_plan_us,
-                r.p99_plan_ms,
-                r.max_plan_ms
-            ));
-        }
+        out.push_str(&table(
+            &format!("{RUN_HEADER} median plan µs | p99 plan ms | worst plan ms |"),
+            &format!("{RUN_ALIGN}---:|---:|---:|"),
+            nav,
+            |r| {
+                format!(
+                    "{} {:.1} | {:.3} | {:.3} |",
+                    run_cells(r),
+                    r.median_plan_us,
+                    r.p99_plan_ms,
+                    r.max_plan_ms
+                )
+            },
+        ));
         out.push_str("\n![total planning time of each exact planner per map, over the sensor radii](navigation-time.svg)\n");
         out.push_str("\n### Every replanner against A* from scratch (goal: the best at least 1x everywhere, aim 3x)\n\n");
         out.push_str(
             "Total planning time, 99th-percentile plan and expansions of A* from scratch divided by each \
              replanner's (above 1: the replanner is faster). The best per case is in bold.\n\n",
         );
-        out.push_str("| map | radius | planner | time A* / it | p99 plan A* / it | expansions A* / it |\n");
-        out.push_str("|---|---:|---|---:|---:|---:|\n");
         let best = best_replanners(replanners);
-        for r in replanners {
-            let bold = if best.iter().any(|b| std::ptr::eq(*b, r)) { "**" } else { "" };
-            out.push_str(&format!(
-                "| {} | {} | {bold}{}{bold} | {bold}{:.2}x{bold} | {:.2}x | {:.1}x |\n",
-                r.map, r.radius, r.planner, r.time, r.p99, r.expansions
-            ));
-        }
+        out.push_str(&table(
+            "| map | radius | planner | time A* / it | p99 plan A* / it | expansions A* / it |",
+            "|---|---:|---|---:|---:|---:|",
+            replanners,
+            |r| {
+                let bold = if best.iter().any(|b| std::ptr::eq(*b, r)) { "**" } else { "" };
+                format!(
+                    "| {} | {} | {bold}{}{bold} | {bold}{:.2}x{bold} | {:.2}x | {:.1}x |",
+                    r.map, r.radius, r.planner, r.time, r.p99, r.expansions
+                )
+            },
+        ));
         if !own.is_empty() {
             out.push_str("\n### Each planner driving a robot of its own\n\n");
             out.push_str(
@@ -406,46 +419,37 @@ pub fn markdown(
                  plans: among paths of equal cost each picks its own, so trajectories, distances and the \
                  problems planned may differ.\n\n",
             );
-            out.push_str(
-                "| map | radius | planner | outcome | steps | distance | expansions | planning ms | p99 plan ms |\n",
-            );
-            out.push_str("|---|---:|---|---|---:|---:|---:|---:|---:|\n");
-            for r in own {
-                out.push_str(&format!(
-                    "| {} | {} | {} | {:?} | {} | {:.1} | {} | {:.2} | {:.3} |\n",
-                    r.map,
-                    r.radius,
-                    r.planner,
-                    r.outcome,
-                    r.steps,
-                    r.distance,
-                    r.expansions,
-                    r.planning_ms,
-                    r.p99_plan_ms
-                ));
-            }
+            out.push_str(&table(
+                &format!("{RUN_HEADER} p99 plan ms |"),
+                &format!("{RUN_ALIGN}---:|"),
+                own,
+                |r| format!("{} {:.3} |", run_cells(r), r.p99_plan_ms),
+            ));
         }
         out.push_str("\n### D* Lite against A* from scratch (goals: 5x less time on mazes and the trap, the worst plan within 3x of A*'s)\n\n");
         out.push_str(
             "Where incremental search loses: the plans for which D* Lite expanded more nodes than A* from \
              scratch, and the worst such plan (D* Lite expansions / A* expansions).\n\n",
         );
-        out.push_str("| map | radius | expansions A* / D* Lite | time A* / D* Lite | worst plan time A* / D* Lite | plans D* Lite lost | worst plan D* Lite / A* expansions | 5x time | worst plan |\n");
-        out.push_str("|---|---:|---:|---:|---:|---:|---:|---|---|\n");
-        for r in ratios {
-            let time = if !dstar_lite_family(r) {
-                "-"
-            } else if r.time >= 5.0 {
-                "met"
-            } else {
-                "**not met**"
-            };
-            let worst = if r.worst_plan >= 1.0 / 3.0 { "met" } else { "**not met**" };
-            out.push_str(&format!(
-                "| {} | {} | {:.1}x | {:.1}x | {:.2}x | {} of {} | {:.1}x | {time} | {worst} |\n",
-                r.map, r.radius, r.expansions, r.time, r.worst_plan, r.steps_lost, r.plans, r.worst_step
-            ));
-        }
+        out.push_str(&table(
+            "| map | radius | expansions A* / D* Lite | time A* / D* Lite | worst plan time A* / D* Lite | plans D* Lite lost | worst plan D* Lite / A* expansions | 5x time | worst plan |",
+            "|---|---:|---:|---:|---:|---:|---:|---|---|",
+            ratios,
+            |r| {
+                let time = if !dstar_lite_family(r) {
+                    "-"
+                } else if r.time >= 5.0 {
+                    "met"
+                } else {
+                    "**not met**"
+                };
+                let worst = if r.worst_plan >= 1.0 / 3.0 { "met" } else { "**not met**" };
+                format!(
+                    "| {} | {} | {:.1}x | {:.1}x | {:.2}x | {} of {} | {:.1}x | {time} | {worst} |",
+                    r.map, r.radius, r.expansions, r.time, r.worst_plan, r.steps_lost, r.plans, r.worst_step
+                )
+            },
+        ));
         out.push('\n');
     }
     out

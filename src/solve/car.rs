@@ -15,11 +15,11 @@ use trailmark_core::world::PolygonWorld;
 use trailmark_map::{Costmap, CostmapSvg, LETHAL, TravelCost};
 
 use super::error::{DocumentError, SolveError};
-use super::grid::load_grid;
 use super::planner::HybridSpec;
 use super::problem::{GridSpec, ProblemSpec, RosMapSpec, WorldSpec};
 use super::result::{CarRecord, ResultStats, SolveResult, Status, Waypoint};
-use super::ros_map::{DEFAULT_COST_FACTOR, DEFAULT_ROBOT_RADIUS, ros_costmap};
+use super::world::grid::load_grid;
+use super::world::ros_map::{DEFAULT_COST_FACTOR, DEFAULT_ROBOT_RADIUS, ros_costmap};
 
 /// The footprint drawn every this many metres along the path in pictures.
 const OUTLINE_EVERY: f64 = 0.5;
@@ -110,7 +110,7 @@ fn on_polygons(world: &PolygonWorld, spec: &HybridSpec) -> Result<(CarMap, Footp
 }
 
 /// Solves a Hybrid A* problem on a ROS-map, grid or polygon world.
-pub(super) fn solve_car(
+pub(super) fn solve_hybrid_astar(
     problem: &ProblemSpec,
     world: &WorldSpec,
     spec: &HybridSpec,

@@ -23,23 +23,20 @@
 // Integer casts of user-derived values are checked conversions here, not silent truncation.
 #![deny(clippy::cast_possible_truncation)]
 
-mod box_roadmap;
 mod car;
+mod curves;
 mod error;
-mod grid;
 mod planner;
-mod polygons;
 mod problem;
 mod registry;
 mod replan;
 mod result;
-mod ros_map;
 mod sampling;
+mod search;
+mod world;
 
 pub use error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
-pub use grid::{grid_graph, load_grid};
 pub use planner::{AnytimeSpec, HybridSpec, PlannerSpec, SamplerSpec, SamplingSpec};
-pub use polygons::DEFAULT_SAMPLES;
 pub use problem::{
     BoxesSpec, GraphKind, GridSpec, ProblemSpec, RosMapSpec, SamplerKind, SpaceKind, WorldSpec,
 };
@@ -48,11 +45,14 @@ pub use result::{
     CarRecord, ErrorReport, GraphStats, ImprovementRecord, IterationRecord, ResultStats, SamplingStats,
     SmoothedRecord, SolveResult, Status, Waypoint, anytime_result_of, result_of,
 };
-pub use ros_map::{
+pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
+pub use search::roadmap::DEFAULT_SAMPLES;
+pub use world::boxes::MAX_BOX_DIMENSION;
+pub use world::grid::{grid_graph, load_grid};
+pub use world::ros_map::{
     DEFAULT_COST_FACTOR, DEFAULT_COST_SCALING_FACTOR, DEFAULT_INFLATION_RADIUS, DEFAULT_ROBOT_RADIUS,
     MAX_COST_FACTOR, ros_costmap, ros_travel_cost,
 };
-pub use sampling::{DEFAULT_ITERATIONS, MAX_BOX_DIMENSION, SHORTCUT_ATTEMPTS};
 
 use std::path::Path;
 
@@ -99,19 +99,19 @@ fn solve_inner(
     let undrawable =
         || DocumentError::InvalidBoxes("cannot be drawn: pictures are of grid and polygon worlds".into());
     if let PlannerSpec::HybridAStar(spec) = planner {
-        return car::solve_car(problem, &problem.world, spec, base_dir, picture);
+        return car::solve_hybrid_astar(problem, &problem.world, spec, base_dir, picture);
     }
     match (&problem.world, planner.sampling()) {
         (WorldSpec::Grid(_), Some(_)) => Err(DocumentError::NeedsPolygons { planner: planner.name() }.into()),
-        (WorldSpec::Grid(world), None) => grid::solve_grid(problem, world, base_dir, picture),
+        (WorldSpec::Grid(world), None) => search::grid::solve_grid(problem, world, base_dir, picture),
         (WorldSpec::Polygons(world), Some(spec)) => sampling::solve_sampling(problem, world, spec, picture),
-        (WorldSpec::Polygons(world), None) => polygons::solve_polygons(problem, world, picture),
+        (WorldSpec::Polygons(world), None) => search::polygons::solve_polygons(problem, world, picture),
         (WorldSpec::Boxes(_), _) if picture.is_some() => Err(undrawable().into()),
-        (WorldSpec::Boxes(world), Some(spec)) => sampling::solve_boxes(problem, world, spec),
-        (WorldSpec::Boxes(world), None) => box_roadmap::solve_box_roadmap(problem, world),
+        (WorldSpec::Boxes(world), Some(spec)) => sampling::boxes::solve_boxes(problem, world, spec),
+        (WorldSpec::Boxes(world), None) => search::boxes::solve_box_roadmap(problem, world),
         (WorldSpec::RosMap(_), Some(_)) => {
             Err(DocumentError::NeedsPolygons { planner: planner.name() }.into())
         }
-        (WorldSpec::RosMap(world), None) => ros_map::solve_ros_map(problem, world, base_dir, picture),
+        (WorldSpec::RosMap(world), None) => search::ros_map::solve_ros_map(problem, world, base_dir, picture),
     }
 }

@@ -212,8 +212,8 @@ impl ErrorReport {
 /// The result document of an anytime search: the path of its last iteration, every iteration;
 /// each path node written as `waypoint(node)`. Without a path the status is
 /// [`Status::NoPath`] only when the search proved the goal unreachable
-/// ([`Stop::Unreachable`](trailmark_search::Stop::Unreachable)); stopped by a limit first, it is
-/// [`Status::Stopped`].
+/// ([`Stop::Unreachable`](trailmark_core::termination::Stop::Unreachable)); stopped by a limit
+/// first, it is [`Status::Stopped`].
 pub fn anytime_result_of<N: Copy>(found: &AnytimeResult<N>, waypoint: impl Fn(N) -> Waypoint) -> SolveResult {
     let mut result = result_of(&SearchResult { path: found.path.clone(), stats: found.stats }, waypoint);
     if found.path.is_none() && !found.proved_unreachable() {

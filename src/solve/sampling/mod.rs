@@ -1,27 +1,28 @@
 //! The sampling planners of [`solve`](super::solve): `rrt`, `rrt_connect` and `rrt_star` over
-//! a polygon world, in `"space": "r2"` (points), `"dubins"` (poses of a car that drives forward)
+//! a polygon world (here), a box world (`boxes.rs`) or in a car's space (`car.rs`); over a polygon world in `"space": "r2"` (points), `"dubins"` (poses of a car that drives forward)
 //! or `"reeds_shepp"` (poses of a car that also reverses).
+
+pub(super) mod boxes;
+mod car;
 
 use std::time::{Duration, Instant};
 
 use trailmark_core::geometry::Point;
-use trailmark_core::geometry::SVector;
 use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::termination::Termination;
-use trailmark_core::world::{CollisionChecker, PolygonWorld};
+use trailmark_core::world::PolygonWorld;
 use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
-use trailmark_sample::space::{Car, CarCurves, DubinsCurves, ReedsSheppCurves};
+use trailmark_sample::space::{DubinsCurves, ReedsSheppCurves};
 use trailmark_sample::{
-    BoxWorld, Bridge, Gaussian, KdNearest, NearestNeighbors, Plan, Problem as PlanningProblem, R2, Rn,
-    RrtOptions, Solution, StateSampler, StateSpace, shortcut,
+    Bridge, Gaussian, KdNearest, NearestNeighbors, Plan, Problem as PlanningProblem, R2, RrtOptions,
+    Solution, StateSampler, StateSpace, shortcut,
 };
 
-use super::error::{DocumentError, SolveError};
-use super::planner::{SamplerSpec, SamplingSpec};
-use super::polygons::car_curve;
-use super::problem::{BoxesSpec, ProblemSpec, SpaceKind};
-use super::result::{
+use crate::solve::error::{DocumentError, SolveError};
+use crate::solve::planner::{SamplerSpec, SamplingSpec};
+use crate::solve::problem::{ProblemSpec, SpaceKind};
+use crate::solve::result::{
     Coordinates, ImprovementRecord, ResultStats, SamplingStats, SmoothedRecord, SolveResult, Status, Waypoint,
 };
 
@@ -32,7 +33,7 @@ pub const DEFAULT_ITERATIONS: u64 = 10_000;
 pub const SHORTCUT_ATTEMPTS: usize = 100;
 
 /// Solves a sampling-planner problem over `world`.
-pub(super) fn solve_sampling(
+pub(in crate::solve) fn solve_sampling(
     problem: &ProblemSpec,
     world: &PolygonWorld,
     spec: &SamplingSpec,
@@ -87,136 +88,13 @@ pub(super) fn solve_sampling(
             }
             Ok(result)
         }
-        SpaceKind::Dubins => solve_car::<DubinsCurves>(&run, world, planner, space_kind.name(), picture),
+        SpaceKind::Dubins => {
+            car::solve_in_car_space::<DubinsCurves>(&run, world, planner, space_kind.name(), picture)
+        }
         SpaceKind::ReedsShepp => {
-            solve_car::<ReedsSheppCurves>(&run, world, planner, space_kind.name(), picture)
+            car::solve_in_car_space::<ReedsSheppCurves>(&run, world, planner, space_kind.name(), picture)
         }
     }
-}
-
-/// The sampling planners in a space of car poses (`space` its name in documents), joined by
-/// the shortest curves of the family `C` of the problem's turning radius.
-fn solve_car<C: CarCurves>(
-    run: &SamplingRun<'_, CollisionChecker>,
-    world: &PolygonWorld,
-    planner: &'static str,
-    space_name: &'static str,
-    picture: Option<&mut String>,
-) -> Result<SolveResult, SolveError> {
-    let problem = run.problem;
-    if run.spec.smooth.is_some() {
-        return Err(DocumentError::NotForSpace { field: "smooth", space: space_name }.into());
-    }
-    let radius = problem.turning_radius.ok_or(DocumentError::NoTurningRadius)?;
-    let space = Car::<C>::new(world.bounds(), radius)?;
-    let state = |which, value: &[f64]| {
-        space.state_from_coordinates(value).ok_or_else(|| DocumentError::NotAState {
-            which,
-            value: value.to_vec(),
-            space: space_name,
-        })
-    };
-    let (start, goal) = (state("start", &problem.start)?, state("goal", &problem.goal)?);
-    let (result, path) = run.plan(&space, KdNearest::<Car<C>, 2>::new(&space)?, start, goal)?;
-    if let Some(picture) = picture {
-        let curve = car_curve(&space, &path);
-        let ends = (Point::from(start.translation.vector), Point::from(goal.translation.vector));
-        *picture = sketch(world, planner, &curve, ends.0, ends.1).poses(path).to_svg();
-    }
-    Ok(result)
-}
-
-/// The most axes of a box world.
-pub const MAX_BOX_DIMENSION: usize = 8;
-
-/// Solves a sampling-planner problem over a box world, in `"space": "rn"`.
-pub(super) fn solve_boxes(
-    problem: &ProblemSpec,
-    world: &BoxesSpec,
-    spec: &SamplingSpec,
-) -> Result<SolveResult, SolveError> {
-    let planner = problem.planner.name();
-    // The space first: a car's space brings its turning radius, which is not the fault.
-    let space = problem.space.unwrap_or(SpaceKind::Rn);
-    if space != SpaceKind::Rn {
-        return Err(DocumentError::InvalidBoxes(format!(
-            "takes \"space\": \"rn\", not \"{}\"",
-            space.name()
-        ))
-        .into());
-    }
-    if let Some(&field) = problem.roadmap_fields().first() {
-        return Err(DocumentError::NotForPlanner { field, planner }.into());
-    }
-    if spec.smooth.is_some() {
-        return Err(DocumentError::NotForSpace { field: "smooth", space: "rn" }.into());
-    }
-    by_dimension!(world, boxes(problem, world, spec))
-}
-
-/// `$f::<N>($args)` for the box world's dimension `N`: each dimension is its own type (the
-/// states are fixed-size vectors), from 1 to [`MAX_BOX_DIMENSION`].
-macro_rules! by_dimension {
-    ($world:expr, $f:ident $args:tt) => {
-        by_dimension!(@ $world, $f $args, 1 2 3 4 5 6 7 8)
-    };
-    (@ $world:expr, $f:ident $args:tt, $($n:literal)*) => {
-        match $world.bounds.len() {
-            $($n => $f::<$n> $args,)*
-            d => Err(DocumentError::InvalidBoxes(format!(
-                "has {d} axes; from 1 to {} are supported",
-                $crate::solve::MAX_BOX_DIMENSION
-            ))
-            .into()),
-        }
-    };
-}
-pub(super) use by_dimension;
-
-/// [`solve_boxes`] in `N` dimensions.
-fn boxes<const N: usize>(
-    problem: &ProblemSpec,
-    world: &BoxesSpec,
-    spec: &SamplingSpec,
-) -> Result<SolveResult, SolveError> {
-    let world = box_world::<N>(world)?;
-    let (start, goal) = box_ends::<N>(problem)?;
-    let space = world.space();
-    let run = SamplingRun { problem, spec, checker: &world, seed: problem.seed.unwrap_or(0) };
-    let (result, _) = run.plan(&space, KdNearest::<Rn<N>, N>::new(&space)?, start, goal)?;
-    Ok(result)
-}
-
-/// The box world of a document, in `N` dimensions.
-pub(super) fn box_world<const N: usize>(world: &BoxesSpec) -> Result<BoxWorld<N>, SolveError> {
-    let corner = |v: &[f64], what: &str| -> Result<[f64; N], SolveError> {
-        <[f64; N]>::try_from(v).map_err(|_| {
-            DocumentError::InvalidBoxes(format!("{what} has {} coordinates, not {N}", v.len())).into()
-        })
-    };
-    let low: Vec<f64> = world.bounds.iter().map(|b| b[0]).collect();
-    let high: Vec<f64> = world.bounds.iter().map(|b| b[1]).collect();
-    let obstacles = world
-        .obstacles
-        .iter()
-        .enumerate()
-        .map(|(i, [lo, hi])| Ok((corner(lo, &format!("box {i}"))?, corner(hi, &format!("box {i}"))?)))
-        .collect::<Result<Vec<_>, SolveError>>()?;
-    Ok(BoxWorld::new(corner(&low, "bounds")?, corner(&high, "bounds")?, obstacles)?)
-}
-
-/// The start and goal of a box-world problem, in `N` dimensions.
-pub(super) fn box_ends<const N: usize>(
-    problem: &ProblemSpec,
-) -> Result<(SVector<f64, N>, SVector<f64, N>), SolveError> {
-    let state = |which, value: &[f64]| {
-        <[f64; N]>::try_from(value)
-            .ok()
-            .filter(|c| c.iter().all(|x| x.is_finite()))
-            .map(SVector::from)
-            .ok_or_else(|| DocumentError::NotAState { which, value: value.to_vec(), space: "rn" })
-    };
-    Ok((state("start", &problem.start)?, state("goal", &problem.goal)?))
 }
 
 /// A sampling planner's run: the problem, its settings, the world's validity and the seed.

@@ -15,17 +15,20 @@ use trailmark_graph::{MAX_ROADMAP_NODES, PrmError};
 
 use trailmark_core::grid::GridHeuristic;
 
-use super::error::{DocumentError, SolveError};
-use super::polygons::DEFAULT_SAMPLES;
-use super::problem::{BoxesSpec, GraphKind, ProblemSpec, SamplerKind};
-use super::result::{GraphStats, SolveResult, Status, Waypoint, same_length, states_of};
-use super::sampling::{box_ends, box_world, by_dimension};
+use super::roadmap::DEFAULT_SAMPLES;
+use crate::solve::error::{DocumentError, SolveError};
+use crate::solve::problem::{BoxesSpec, GraphKind, ProblemSpec, SamplerKind};
+use crate::solve::result::{GraphStats, SolveResult, Status, Waypoint, same_length, states_of};
+use crate::solve::world::boxes::{box_ends, box_world, by_dimension};
 
 /// The draws a roadmap may make per sample asked for, as the polygon roadmap's default.
 const ATTEMPTS_PER_SAMPLE: u64 = 1_000;
 
 /// Solves a box-world problem on a PRM roadmap.
-pub(super) fn solve_box_roadmap(problem: &ProblemSpec, world: &BoxesSpec) -> Result<SolveResult, SolveError> {
+pub(in crate::solve) fn solve_box_roadmap(
+    problem: &ProblemSpec,
+    world: &BoxesSpec,
+) -> Result<SolveResult, SolveError> {
     let kind = problem.graph.unwrap_or(GraphKind::Prm);
     if kind != GraphKind::Prm {
         return Err(DocumentError::InvalidBoxes(format!(

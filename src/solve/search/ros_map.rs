@@ -6,81 +6,14 @@ use std::path::Path;
 use trailmark_core::geometry::Point;
 use trailmark_core::grid::{Cell, Connectivity};
 use trailmark_graph::GridGraph;
-use trailmark_map::{
-    Costmap, CostmapSettings, Footprint, INSCRIBED, Inflation, MapError, TravelCost, Unknown, load_map,
-};
 
-use super::error::{DocumentError, SolveError};
-use super::problem::{ProblemSpec, RosMapSpec};
-use super::result::{SolveResult, Waypoint};
-
-/// Nav2's default `robot_radius`, in metres.
-pub const DEFAULT_ROBOT_RADIUS: f64 = 0.1;
-/// Nav2's default `inflation_radius`, in metres.
-pub const DEFAULT_INFLATION_RADIUS: f64 = 0.55;
-/// Nav2's default `cost_scaling_factor`, per metre.
-pub const DEFAULT_COST_SCALING_FACTOR: f64 = 10.0;
-/// Smac 2-D's default `cost_travel_multiplier`.
-pub const DEFAULT_COST_FACTOR: f64 = 2.0;
-/// The largest `cost_factor` a ROS-map world takes.
-pub const MAX_COST_FACTOR: f64 = 1e6;
-
-/// The costmap of a ROS-map world: the map loaded (relative paths against `base_dir`), its
-/// unknown cells read as the world says, inflated around the robot.
-pub fn ros_costmap(world: &RosMapSpec, base_dir: impl AsRef<Path>) -> Result<Costmap, SolveError> {
-    let footprint = match (&world.robot_radius, &world.footprint) {
-        (Some(_), Some(_)) => return Err(DocumentError::RadiusAndFootprint.into()),
-        (_, Some(points)) => Footprint::polygon(points.clone()).map_err(DocumentError::Footprint)?,
-        (radius, None) => Footprint::Radius(radius.unwrap_or(DEFAULT_ROBOT_RADIUS)),
-    };
-    let inflation = Inflation {
-        inflation_radius: world.inflation_radius.unwrap_or(DEFAULT_INFLATION_RADIUS),
-        cost_scaling_factor: world.cost_scaling_factor.unwrap_or(DEFAULT_COST_SCALING_FACTOR),
-        ..Inflation::around(&footprint)?
-    };
-    // Checked as the document gives it: the travel cost scales it by the map's resolution,
-    // whose own range would otherwise decide what is accepted, under another name.
-    if let Some(factor) = world.cost_factor
-        && !(factor.is_finite() && (0.0..=MAX_COST_FACTOR).contains(&factor))
-    {
-        let expected = "a number in 0..=1e6";
-        return Err(MapError::Setting { setting: "cost_factor", expected, value: factor }.into());
-    }
-    let map = load_map(base_dir.as_ref().join(&world.yaml))?;
-    let settings = CostmapSettings {
-        unknown: world.unknown.unwrap_or(Unknown::Lethal),
-        inflation: Some(inflation),
-        ..CostmapSettings::default()
-    };
-    Ok(Costmap::from_occupancy(&map, &settings)?)
-}
-
-/// The price of travel over a ROS-map world's costmap, per metre: a move over free cells costs
-/// its length in metres, over costly cells `1 + cost_factor * cost / 252` times that.
-pub fn ros_travel_cost(world: &RosMapSpec, resolution: f64) -> TravelCost {
-    let factor = world.cost_factor.unwrap_or(DEFAULT_COST_FACTOR);
-    TravelCost { neutral: resolution, factor: factor * resolution, blocked_from: INSCRIBED }
-}
-
-/// The cell of `which` (`[x, y]` in metres), or why the robot cannot start or end there.
-fn cell_at(which: &'static str, value: &[f64], costmap: &Costmap) -> Result<Cell, DocumentError> {
-    let &[x, y] = value else {
-        return Err(DocumentError::NotAPoint { which, value: value.to_vec(), graph: "ros_map" });
-    };
-    if !(x.is_finite() && y.is_finite()) {
-        return Err(DocumentError::NotAPoint { which, value: value.to_vec(), graph: "ros_map" });
-    }
-    let cell =
-        costmap.frame().try_cell_at(Point::new(x, y)).ok_or(DocumentError::OutsideMap { which, x, y })?;
-    match costmap.cost(cell) {
-        Some(cost) if cost < INSCRIBED => Ok(cell),
-        Some(cost) => Err(DocumentError::BlockedPoint { which, x, y, cost }),
-        None => Err(DocumentError::OutsideMap { which, x, y }),
-    }
-}
+use crate::solve::error::{DocumentError, SolveError};
+use crate::solve::problem::{ProblemSpec, RosMapSpec};
+use crate::solve::result::{SolveResult, Waypoint};
+use crate::solve::world::ros_map::{cell_at, ros_costmap, ros_travel_cost};
 
 /// Solves a ROS-map problem.
-pub(super) fn solve_ros_map(
+pub(in crate::solve) fn solve_ros_map(
     problem: &ProblemSpec,
     world: &RosMapSpec,
     base_dir: &Path,

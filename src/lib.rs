@@ -51,33 +51,15 @@ pub use trailmark_space as space;
 #[doc(hidden)]
 pub use trailmark_core::{movingai, svg};
 
-/// The problem and result documents under their names before they moved to [`solve`]
-/// (renamed there to end in `Spec` where they describe a document's part), kept for one release.
-#[doc(hidden)]
-pub mod problem {
-    /// Old name of [`ProblemSpec`](crate::solve::ProblemSpec).
-    #[deprecated(since = "0.2.0", note = "use trailmark::solve::ProblemSpec")]
-    pub type Problem = crate::solve::ProblemSpec;
-    /// Old name of [`WorldSpec`](crate::solve::WorldSpec).
-    #[deprecated(since = "0.2.0", note = "use trailmark::solve::WorldSpec")]
-    pub type World = crate::solve::WorldSpec;
-    /// Old name of [`GridSpec`](crate::solve::GridSpec).
-    #[deprecated(since = "0.2.0", note = "use trailmark::solve::GridSpec")]
-    pub type GridWorld = crate::solve::GridSpec;
-    /// Old name of [`BoxesSpec`](crate::solve::BoxesSpec).
-    #[deprecated(since = "0.2.0", note = "use trailmark::solve::BoxesSpec")]
-    pub type BoxesWorld = crate::solve::BoxesSpec;
-    pub use crate::solve::{
-        ErrorReport, GraphKind, GraphStats, ImprovementRecord, IterationRecord, PlannerSpec, ResultStats,
-        SamplerKind, SamplerSpec, SamplingSpec, SamplingStats, SmoothedRecord, SolveResult, SpaceKind,
-        Status, Waypoint,
-    };
-}
-
 /// The README's example, run as a doc test.
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
+
+/// The code of the guide's page on navigation, run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/navigation.md")]
+pub struct NavigationDoctests;
 
 /// The code of the guide's page on ROS maps, run as a doc test.
 #[cfg(doctest)]
@@ -101,8 +83,6 @@ pub mod prelude {
     pub use trailmark_core::termination::{Stop, Termination};
     pub use trailmark_core::{Cost, Path};
     pub use trailmark_graph::{CornerCutting, GridGraph};
-    #[allow(deprecated)]
-    pub use trailmark_search::Budget;
     pub use trailmark_search::{
         AdStar, DStarLite, EdgeChange, EpsilonSchedule, Jps, JpsPlus, LpaStar, Search, SearchError,
         SearchResult, ara_star, astar, bfs, dfs, dijkstra, jps, weighted_astar,

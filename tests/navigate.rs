@@ -227,29 +227,6 @@ fn bad_settings_are_errors() {
     assert!(go(&prior, a, b, &octile).unwrap().reached());
 }
 
-/// The settings of the old `PlannerChoice` give the same runs as the `PlannerSpec` they convert
-/// into, for one release.
-#[test]
-#[allow(deprecated)]
-fn the_deprecated_planner_choice_converts_into_the_same_planner() {
-    use trailmark::navigate::PlannerChoice;
-    let truth = generate::random(40, 30, 0.25, 3).unwrap();
-    let prior = Grid::new(40, 30).unwrap();
-    let (start, goal) = far_apart(&truth);
-    let old = [
-        PlannerChoice::AStar,
-        PlannerChoice::LpaStar,
-        PlannerChoice::DStarLite,
-        PlannerChoice::AdStar { epsilon: 3.0, epsilon_step: 0.5, expansions_per_step: Some(200) },
-    ];
-    for (choice, spec) in old.into_iter().zip(PLANNERS) {
-        assert_eq!(PlannerSpec::from(choice), spec);
-        let config = Navigation { planner: choice.into(), sensor_radius: 2, ..Navigation::default() };
-        let run = navigate(&truth, &prior, start, Target::Cell(goal), &config).unwrap();
-        assert_eq!(run.planner, spec.name());
-    }
-}
-
 #[test]
 fn the_picture_shows_the_trajectory_and_the_unseen_walls() {
     let truth = generate::random(30, 20, 0.25, 2).unwrap();

@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 use trailmark_core::grid::{Cell, GridHeuristic};
 
 use crate::navigate::error::NavigateError;
-use crate::solve::{AnytimeSpec, PlannerSpec};
+use crate::solve::PlannerSpec;
 
 /// Errors when the planner does not replan ([`PlannerSpec::replans`]: asked first, so that a
 /// one-shot planner is named as such and not for its heuristic), when its settings are out of
@@ -20,50 +20,6 @@ pub(super) fn check_planner(planner: &PlannerSpec) -> Result<(), NavigateError> 
         None | Some(GridHeuristic::Octile) => Ok(()),
         Some(heuristic) => Err(NavigateError::Heuristic(heuristic)),
     }
-}
-
-/// The planner settings of the deprecated [`PlannerChoice`], as a [`PlannerSpec`].
-#[allow(deprecated)]
-impl From<PlannerChoice> for PlannerSpec {
-    fn from(choice: PlannerChoice) -> Self {
-        match choice {
-            PlannerChoice::AStar => PlannerSpec::AStar { heuristic: None },
-            PlannerChoice::LpaStar => PlannerSpec::LpaStar { heuristic: None },
-            PlannerChoice::DStarLite => PlannerSpec::DStarLite { heuristic: None },
-            PlannerChoice::AdStar { epsilon, epsilon_step, expansions_per_step } => {
-                PlannerSpec::AdStar(AnytimeSpec {
-                    epsilon: Some(epsilon),
-                    epsilon_step: Some(epsilon_step),
-                    max_expansions: expansions_per_step,
-                    ..AnytimeSpec::default()
-                })
-            }
-        }
-    }
-}
-
-/// Which planner drove the robot before [`Navigation::planner`] became a [`PlannerSpec`]; kept
-/// for one release, converting into one with `.into()`.
-#[deprecated(since = "0.2.0", note = "use trailmark::solve::PlannerSpec (the solve registry's planners)")]
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "name", rename_all = "snake_case")]
-pub enum PlannerChoice {
-    /// A* from scratch at every step.
-    #[serde(rename = "astar")]
-    AStar,
-    /// LPA*, restarted each time the start moves.
-    LpaStar,
-    /// D* Lite.
-    DStarLite,
-    /// AD* with `expansions_per_step` expansions per step.
-    AdStar {
-        /// The initial inflation.
-        epsilon: f64,
-        /// The decrease per iteration.
-        epsilon_step: f64,
-        /// The expansion budget of one step's improvement; `None` improves to epsilon = 1.
-        expansions_per_step: Option<u64>,
-    },
 }
 
 /// Where the robot is going.

@@ -53,16 +53,9 @@ mod report;
 mod simulation;
 mod world;
 
-#[allow(deprecated)]
-pub use config::PlannerChoice;
 pub use config::{Navigation, Target};
 pub use error::NavigateError;
 pub use graph::{VIRTUAL_EDGE_COST, VIRTUAL_GOAL};
 pub use report::{NavigationOutcome, NavigationReport};
 pub use simulation::MAX_NAVIGATION_CELLS;
-
-/// Old name of [`NavigationOutcome`], kept for one release (a contingency plan's `Outcome` is
-/// another concept).
-#[deprecated(since = "0.2.0", note = "use trailmark::navigate::NavigationOutcome")]
-pub type Outcome = NavigationOutcome;
 pub use simulation::{navigate, navigate_together};

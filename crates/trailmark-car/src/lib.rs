@@ -59,3 +59,6 @@ pub use map::CarMap;
 pub use path::{CarPath, Stretch};
 pub use settings::{HybridSettings, MAX_HEADING_BINS};
 pub use stats::HybridStats;
+/// The gear and turn of a [`Stretch`] of a car's path (from `trailmark_core`'s Reeds-Shepp and
+/// Dubins curves).
+pub use trailmark_core::{dubins::Turn, reeds_shepp::Gear};

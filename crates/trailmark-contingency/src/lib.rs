@@ -74,9 +74,6 @@ mod view;
 pub use abstraction::Abstraction;
 pub use plan::{Action, Drive, Execution, ExecutionError, Knowledge, Outcome, PlanNode, outcomes, worlds};
 pub use planner::{ContingencyError, ContingencyStats, Planned, PlannerOptions, plan};
-#[doc(hidden)]
-#[allow(deprecated)]
-pub use planner::{PlanError, PlanStats};
 /// The random generator [`simulate::sample_world`] draws from (`rand_chacha` 0.10), and the trait
 /// that seeds it (`rand_core` 0.10), so a caller needs no version-matched dependency.
 ///

@@ -45,31 +45,6 @@ use crate::geometry::Point;
 use crate::grid::{Cell, Grid};
 use crate::predicates;
 
-/// Old path of [`crate::predicates::orient`], kept for one release.
-#[deprecated(since = "0.2.0", note = "use trailmark_core::predicates::orient")]
-pub fn orient(a: Point, b: Point, c: Point) -> f64 {
-    crate::predicates::orient(a, b, c)
-}
-
-/// Old path of [`crate::predicates::in_wedge`], kept for one release.
-#[deprecated(since = "0.2.0", note = "use trailmark_core::predicates::in_wedge")]
-pub fn in_wedge(apex: Point, from: Point, to: Point, q: Point) -> bool {
-    crate::predicates::in_wedge(apex, from, to, q)
-}
-
-/// Old path of [`crate::predicates::wedge_holds`], kept for one release.
-#[deprecated(since = "0.2.0", note = "use trailmark_core::predicates::wedge_holds")]
-pub fn wedge_holds(turn: f64, aligned: impl FnOnce() -> bool, from_q: f64, to_q: f64) -> bool {
-    crate::predicates::wedge_holds(turn, aligned, from_q, to_q)
-}
-
-/// Old path of [`crate::predicates::angular_order`], kept for one
-/// release.
-#[deprecated(since = "0.2.0", note = "use trailmark_core::predicates::angular_order")]
-pub fn angular_order(at: Point, p: Point, q: Point) -> std::cmp::Ordering {
-    crate::predicates::angular_order(at, p, q)
-}
-
 /// One free wedge at a boundary vertex: a ring arrives from `prev` and leaves toward `next`, with
 /// free space on its left, so the wedge swept counter-clockwise from the direction of `next` to
 /// the direction of `prev` is free.

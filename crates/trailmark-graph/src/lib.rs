@@ -9,8 +9,8 @@
 //! D* Lite ([`DynamicRoadmap`]). The graphs implement the traits of [`trailmark_core::graph`];
 //! no builder here runs a search.
 //!
-//! Every item is documented at the crate root; the module paths (`trailmark_graph::prm::Prm`)
-//! still work, hidden, for one release.
+//! Every item is documented at the crate root; the module paths
+//! (`trailmark_graph::prm::PolygonPrm`) still work, hidden, for one release.
 //!
 //! **Features.** `roadmaps` (on by default) brings everything over polygon worlds and state
 //! spaces: the visibility graph, trapezoidal cells, the PRMs, [`Roadmap`] and the dynamic
@@ -68,10 +68,6 @@ pub use prm::{
     Connection, DubinsPrm, MAX_ROADMAP_NODES, PlanarSpace, PolygonPrm, PrmError, PrmOptions, PrmQuery,
     PrmSampler, ReedsSheppPrm,
 };
-#[cfg(feature = "roadmaps")]
-#[doc(hidden)]
-#[allow(deprecated)]
-pub use prm::{MAX_NODES, Prm, Sampler};
 #[cfg(feature = "roadmaps")]
 pub use roadmap::{Roadmap, RoadmapQuery};
 #[cfg(feature = "roadmaps")]

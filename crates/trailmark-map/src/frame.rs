@@ -207,6 +207,18 @@ impl MapFrame {
         (u / self.resolution, f64::from(self.height) - v / self.resolution)
     }
 
+    /// A grid planner's cost on this map, in metres: a grid graph prices moves in cell lengths
+    /// (1 a side, √2 a diagonal, times the cells' costs), so `cost x resolution`.
+    pub fn metres(&self, cost_in_cells: f64) -> f64 {
+        cost_in_cells * self.resolution
+    }
+
+    /// The length in metres of a path through the centres of `cells` (the straight segments
+    /// between consecutive centres, whatever the cells cost).
+    pub fn length(&self, cells: &[Cell]) -> f64 {
+        cells.windows(2).map(|w| (self.centre(w[1]) - self.centre(w[0])).norm()).sum()
+    }
+
     /// The map's x axis in the world: a unit vector.
     pub fn x_axis(&self) -> Vector {
         let (s, c) = self.origin[2].sin_cos();
@@ -235,6 +247,16 @@ pub(crate) fn check_origin(origin: [f64; 3]) -> Result<(), MapError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn lengths_and_costs_in_metres() {
+        let frame = MapFrame::new(7, 5, 0.25, [1.5, -3.0, 0.7]).unwrap();
+        let cells = [Cell::new(0, 0), Cell::new(1, 0), Cell::new(2, 1), Cell::new(2, 2)];
+        let expected = 0.25 + 0.25 * 2f64.sqrt() + 0.25;
+        assert!((frame.length(&cells) - expected).abs() < 1e-12);
+        assert_eq!(frame.length(&cells[..1]), 0.0);
+        assert_eq!(frame.metres(2.0 + 2f64.sqrt()), 0.25 * (2.0 + 2f64.sqrt()));
+    }
 
     #[test]
     fn cells_and_centres_agree() {

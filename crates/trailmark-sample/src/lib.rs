@@ -56,8 +56,6 @@ mod roadmap;
 mod run;
 #[doc(hidden)]
 pub mod simplify;
-#[doc(hidden)]
-pub mod termination;
 mod tree;
 mod worlds;
 
@@ -72,8 +70,6 @@ pub use trailmark_space::{nearest, sampler, space, validity};
 pub use boxes::BoxWorld;
 /// The states of [`Rn`]: nalgebra's fixed-size column vectors (nalgebra 0.35).
 pub use nalgebra::SVector;
-#[allow(deprecated)]
-pub use plan::Stop;
 pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution};
 pub use planner::Planner;
 pub use prm::{Growth, Prm};
@@ -83,12 +79,10 @@ pub use rand;
 /// The random generator the planners draw from (`rand_chacha` 0.10), so a user's own space or
 /// sampler needs no version-matched dependency.
 pub use rand_chacha::ChaCha8Rng;
-pub use rrt::Rrt;
-pub use rrt_connect::{MAX_CONNECT_STEPS, MAX_GOAL_ROOTS, RrtConnect};
-pub use rrt_star::{RrtStar, neighbour_count};
+pub use rrt::{Rrt, RrtGrowth};
+pub use rrt_connect::{ConnectGrowth, MAX_CONNECT_STEPS, MAX_GOAL_ROOTS, RrtConnect};
+pub use rrt_star::{RrtStar, StarGrowth, neighbour_count};
 pub use simplify::shortcut;
-#[allow(deprecated)]
-pub use termination::{Condition, Progress, Termination};
 /// The configuration-space vocabulary of `trailmark-space`: spaces, validity, samplers, nearest
 /// neighbours, connection rules.
 pub use trailmark_space::{
@@ -97,3 +91,4 @@ pub use trailmark_space::{
     Sampled, SamplerError, Se2, SpaceError, StateSampler, StateSpace, Uniform, UnitCube, Validity,
 };
 pub use tree::options::{MIN_RELATIVE_RANGE, RrtOptions};
+pub use tree::planner::TreePlanner;

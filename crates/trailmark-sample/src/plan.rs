@@ -72,10 +72,6 @@ pub enum PlanError {
     Other(String),
 }
 
-/// Moved: why a run stopped, one vocabulary with the anytime searches.
-#[deprecated(since = "0.2.0", note = "use trailmark_core::termination::Stop")]
-pub type Stop = trailmark_core::termination::Stop;
-
 /// The answer of a run.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Solution<T> {

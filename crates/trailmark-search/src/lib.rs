@@ -98,14 +98,10 @@ mod priority;
 #[doc(hidden)]
 pub mod queue;
 #[doc(hidden)]
-pub mod search;
-#[doc(hidden)]
 pub mod stats;
 
 pub use anytime::ad_star::{AdStar, DEFAULT_RAISE_THRESHOLD};
 pub use anytime::ara_star::ara_star;
-#[allow(deprecated)]
-pub use anytime::budget::Budget;
 pub use anytime::{AnytimeResult, EpsilonSchedule, Iteration};
 pub use error::SearchError;
 pub use heuristic::{Heuristic, ReadsGraph};
@@ -128,7 +124,3 @@ pub use one_shot::uninformed::{bfs, dfs};
 pub use one_shot::workspace::Search;
 pub use queue::IndexedHeap;
 pub use stats::SearchStats;
-
-/// Moved: why a search stopped, one vocabulary with the sampling planners.
-#[deprecated(since = "0.2.0", note = "use trailmark_core::termination::Stop")]
-pub type Stop = trailmark_core::termination::Stop;

@@ -159,22 +159,6 @@ fn iteration_limits_target_costs_and_conditions_stop_the_search() {
     assert_eq!((stopped.stop, stopped.iterations.len()), (Stop::Caller, 2));
 }
 
-/// The old names keep working for one release: a `Budget` limits as the termination with the
-/// same limits does.
-#[test]
-#[allow(deprecated)]
-fn the_deprecated_budget_still_limits() {
-    let (graph, start, goal) = random_world();
-    let h = graph.heuristic(GridHeuristic::Octile, goal);
-    let schedule = EpsilonSchedule::default();
-    let budget = trailmark_search::Budget { time: None, expansions: Some(40) };
-    let old = ara_star(&graph, start, goal, h, schedule, budget).unwrap();
-    let new = ara_star(&graph, start, goal, h, schedule, Termination::expansions(40)).unwrap();
-    assert_eq!(old.stop, trailmark_search::Stop::ExpansionLimit);
-    assert_eq!((old.stop, old.path, old.stats.expansions), (new.stop, new.path, new.stats.expansions));
-    assert_eq!(trailmark_search::Budget::unlimited().spent(std::time::Duration::ZERO, 5), None);
-}
-
 #[test]
 fn invalid_schedules_are_errors() {
     let graph = GridGraph::new(&Grid::new(3, 3).unwrap(), Connectivity::Four);

@@ -1,7 +1,5 @@
-//! The public paths that moved keep working for one release (deprecated where an alias can
-//! say so): the modules `search`, `error`, `index`, `queue`, `stats`, and `Budget` and `Stop`.
-
-#![allow(deprecated)]
+//! The hidden second paths of the modules `error`, `index`, `queue` and `stats` keep naming the
+//! items at the crate root.
 
 use trailmark_core::{Cell, Connectivity, Grid};
 use trailmark_graph::GridGraph;
@@ -9,13 +7,11 @@ use trailmark_graph::GridGraph;
 #[test]
 fn the_old_module_paths_still_name_the_same_items() {
     let graph = GridGraph::new(&Grid::new(4, 3).unwrap(), Connectivity::Eight);
-    let mut search: trailmark_search::search::Search = trailmark_search::search::Search::new();
-    let found: trailmark_search::search::SearchResult<Cell> =
-        search.bfs(&graph, Cell::new(0, 0), Cell::new(3, 2)).unwrap();
+    let mut search = trailmark_search::Search::new();
+    let found = search.bfs(&graph, Cell::new(0, 0), Cell::new(3, 2)).unwrap();
     let stats: trailmark_search::stats::SearchStats = found.stats;
     assert_eq!(found.path.map(|p| p.moves()), Some(3));
     assert!(stats.expansions > 0);
-    assert_eq!(trailmark_search::search::MAX_NODES, trailmark_search::MAX_NODES);
 
     let error: trailmark_search::error::SearchError<Cell> =
         search.bfs(&graph, Cell::new(9, 9), Cell::new(0, 0)).unwrap_err();
@@ -27,8 +23,4 @@ fn the_old_module_paths_still_name_the_same_items() {
     let mut queue = trailmark_search::queue::IndexedHeap::new();
     queue.push(3, 1.0);
     assert_eq!(queue.pop(), Some((3, 1.0)));
-
-    let stop: trailmark_search::Stop = trailmark_core::termination::Stop::Optimal;
-    assert_eq!(stop, trailmark_search::Stop::Optimal);
-    assert_eq!(trailmark_search::Budget::unlimited(), trailmark_search::Budget::default());
 }

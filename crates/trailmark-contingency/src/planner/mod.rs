@@ -69,14 +69,6 @@ pub enum ContingencyError {
     },
 }
 
-/// Old name of [`ContingencyError`], kept for one release.
-#[deprecated(since = "0.2.0", note = "use trailmark_contingency::ContingencyError")]
-pub type PlanError = ContingencyError;
-
-/// Old name of [`ContingencyStats`], kept for one release.
-#[deprecated(since = "0.2.0", note = "use trailmark_contingency::ContingencyStats")]
-pub type PlanStats = ContingencyStats;
-
 /// What the planner did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct ContingencyStats {

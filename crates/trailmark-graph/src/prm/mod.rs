@@ -110,21 +110,6 @@ pub struct PolygonPrm<S: PlanarSpace = R2> {
     local_paths_checked: u64,
 }
 
-/// Old name of [`PolygonPrm`], kept for one release (`trailmark_sample::Prm` is the PRM over any
-/// space; this one is the roadmap of a polygon world).
-#[deprecated(since = "0.2.0", note = "use trailmark_graph::PolygonPrm")]
-pub type Prm<S = R2> = PolygonPrm<S>;
-
-/// Old name of [`PrmSampler`], kept for one release (beside the sampling crate's
-/// `StateSampler`, `Sampler` said nothing).
-#[deprecated(since = "0.2.0", note = "use trailmark_graph::PrmSampler")]
-pub type Sampler = PrmSampler;
-
-/// Old name of [`MAX_ROADMAP_NODES`], kept for one release (the search crate's `MAX_NODES` is
-/// another limit).
-#[deprecated(since = "0.2.0", note = "use trailmark_graph::MAX_ROADMAP_NODES")]
-pub const MAX_NODES: usize = MAX_ROADMAP_NODES;
-
 /// A probabilistic roadmap of Dubins paths between poses.
 pub type DubinsPrm = PolygonPrm<trailmark_space::Dubins>;
 

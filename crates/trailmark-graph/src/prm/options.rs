@@ -68,7 +68,7 @@ impl PrmSampler {
     }
 }
 
-/// The settings of a [`PolygonPrm`](crate::Prm).
+/// The settings of a [`PolygonPrm`](crate::PolygonPrm).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct PrmOptions {
@@ -76,7 +76,7 @@ pub struct PrmOptions {
     pub sampler: PrmSampler,
     /// Which nodes a new node is joined to.
     pub connection: Connection,
-    /// How many draws [`PolygonPrm::grow`](crate::Prm::grow) may make per sample asked for before it gives up (draws in
+    /// How many draws [`PolygonPrm::grow`](crate::PolygonPrm::grow) may make per sample asked for before it gives up (draws in
     /// obstacles are rejected).
     pub attempts_per_sample: u32,
 }
@@ -118,7 +118,7 @@ pub enum PrmError {
     /// A sampler setting out of its range.
     #[error(transparent)]
     PrmSampler(#[from] SamplerError),
-    /// [`PolygonPrm::grow`](crate::Prm::grow) ran out of draws: the free space is empty or very small. The samples
+    /// [`PolygonPrm::grow`](crate::PolygonPrm::grow) ran out of draws: the free space is empty or very small. The samples
     /// found were added.
     #[error("found only {added} of {requested} free samples in {attempts} draws")]
     SamplingExhausted {
@@ -129,7 +129,8 @@ pub enum PrmError {
         /// Draws made.
         attempts: u64,
     },
-    /// A configuration given to [`PolygonPrm::insert`](crate::Prm::insert) collides or leaves the bounds.
+    /// A configuration given to [`PolygonPrm::insert`](crate::PolygonPrm::insert) collides or leaves
+    /// the bounds.
     #[error("the configuration {0:?} collides or is outside the bounds")]
     Blocked(Vec<f64>),
     /// A query's start collides or is outside the bounds.
@@ -144,7 +145,8 @@ pub enum PrmError {
     /// The world rejected an obstacle change.
     #[error(transparent)]
     World(#[from] WorldError),
-    /// [`PolygonPrm::remove_obstacle`](crate::Prm::remove_obstacle) named an obstacle that does not exist.
+    /// [`PolygonPrm::remove_obstacle`](crate::PolygonPrm::remove_obstacle) named an obstacle that does
+    /// not exist.
     #[error("there is no obstacle {index} (the world has {count})")]
     NoSuchObstacle {
         /// The index given.

@@ -1,9 +1,10 @@
-//! The tree planners: RRT, RRT-Connect and RRT*, each in its file, and what they share: the
-//! tree of valid motions they grow toward targets at most a range at a time (here), their
-//! settings (`options.rs`) and the parts each holds between runs (`parts.rs`).
+//! The tree planners: RRT, RRT-Connect and RRT*, each in its file (how it grows its trees), and
+//! what they share: the tree of valid motions they grow toward targets at most a range at a
+//! time (here), their settings (`options.rs`), and the planner every one of them is
+//! (`planner.rs`: `TreePlanner`, its builders and its `Planner` impl).
 
 pub mod options;
-pub(crate) mod parts;
+pub mod planner;
 pub mod rrt;
 pub mod rrt_connect;
 pub mod rrt_star;

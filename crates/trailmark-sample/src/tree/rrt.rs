@@ -28,12 +28,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::options::RrtOptions;
-use super::parts::TreeParts;
+use super::planner::{Grow, Grown, TreePlanner};
 use super::{Extension, Tree};
 use crate::nearest::{Direction, NearestNeighbors};
-use crate::plan::{Plan, PlanError};
-use crate::planner::Planner;
+
 use crate::problem::Problem;
 use crate::run::Run;
 use crate::sampler::StateSampler;
@@ -41,96 +39,25 @@ use crate::sampler::Uniform;
 use crate::space::StateSpace;
 use crate::validity::Validity;
 use trailmark_core::termination::Stop;
-use trailmark_core::termination::Termination;
 
 /// RRT: one tree from the start states; see the [module](self) documentation.
-#[derive(Debug, Clone)]
-pub struct Rrt<N, Q = Uniform> {
-    parts: TreeParts<N, Q>,
-    /// Range and goal bias.
-    pub options: RrtOptions,
-    /// The seed of the ChaCha8 generator each run starts from: the same seed, the same run.
-    pub seed: u64,
-}
+pub type Rrt<N, Q = Uniform> = TreePlanner<RrtGrowth, N, Q>;
 
-impl<N> Rrt<N> {
-    /// The planner with its trees in (clones of) `nearest`, which must be empty, uniform
-    /// samples, the default options and seed 0.
-    pub fn new(nearest: N) -> Self {
-        Rrt { parts: TreeParts::new(nearest), options: RrtOptions::default(), seed: 0 }
-    }
-}
+/// What makes a [`TreePlanner`] RRT: how it grows its trees.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct RrtGrowth;
 
-impl<N, Q> Rrt<N, Q> {
-    /// The same planner drawing its samples from `sampler`.
-    pub fn with_sampler<R>(self, sampler: R) -> Rrt<N, R> {
-        Rrt { parts: self.parts.with_sampler(sampler), options: self.options, seed: self.seed }
-    }
+impl Grow for RrtGrowth {
+    const NAME: &'static str = "RRT";
+    const OPTIMIZES: bool = false;
 
-    /// The same planner with these options.
-    pub fn with_options(self, options: RrtOptions) -> Self {
-        Rrt { options, ..self }
-    }
-
-    /// The same planner seeded with `seed`.
-    pub fn with_seed(self, seed: u64) -> Self {
-        Rrt { seed, ..self }
-    }
-
-    /// The sampler.
-    pub fn sampler(&self) -> &Q {
-        &self.parts.sampler
-    }
-}
-
-impl<S, V, N, Q> Planner<S, V> for Rrt<N, Q>
-where
-    S: StateSpace,
-    V: Validity<S>,
-    N: NearestNeighbors<S> + Clone,
-    Q: StateSampler<S>,
-{
-    fn name(&self) -> &str {
-        "RRT"
-    }
-
-    fn set_seed(&mut self, seed: u64) {
-        self.seed = seed;
-    }
-
-    fn clear(&mut self) {
-        self.parts.spent.release();
-    }
-
-    fn optimizes(&self) -> bool {
-        false
-    }
-
-    fn solve(
-        &mut self,
-        problem: &Problem<'_, S, V>,
-        termination: &Termination,
-    ) -> Result<Plan<S::State>, PlanError> {
-        let run = self.parts.begin(problem, &self.options, termination, self.seed)?;
-        self.grow(problem, run)
-    }
-}
-
-impl<N, Q> Rrt<N, Q> {
-    /// A run checked by [`Planner::solve`](Planner::solve): the trees grown until it stops.
-    fn grow<S, V>(
-        &mut self,
+    fn grow<S: StateSpace, V: Validity<S>, N: NearestNeighbors<S> + Clone, Q: StateSampler<S>>(
+        planner: &mut TreePlanner<Self, N, Q>,
         problem: &Problem<'_, S, V>,
         mut run: Run<'_>,
-    ) -> Result<Plan<S::State>, PlanError>
-    where
-        S: StateSpace,
-        V: Validity<S>,
-        N: NearestNeighbors<S> + Clone,
-        Q: StateSampler<S>,
-    {
+    ) -> Grown<S> {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
-        let mut tree = Tree::new(self.parts.nearest.clone(), Direction::ToQuery);
+        let mut tree = Tree::new(planner.nearest.clone(), Direction::ToQuery);
         let mut closest: Option<(u32, f64)> = None;
         let mut solved = None;
         for start in &problem.starts {
@@ -150,9 +77,9 @@ impl<N, Q> Rrt<N, Q> {
             if let Some(stop) = run.watch.next_iteration() {
                 break stop;
             }
-            let target = match run.goal_target(problem, self.options.goal_bias) {
+            let target = match run.goal_target(problem, planner.options.goal_bias) {
                 Some(target) => target,
-                None => match run.sample(space, validity, &self.parts.sampler) {
+                None => match run.sample(space, validity, &planner.sampler) {
                     Ok(Some(target)) => target,
                     Ok(None) => continue,
                     Err(stop) => break stop,
@@ -184,8 +111,8 @@ impl<N, Q> Rrt<N, Q> {
             run.improved(crate::paths::length(space, &path));
         }
         let (nearest, parents) = tree.into_parts();
-        self.parts.spent.nearest.push(nearest);
-        self.parts.spent.ids.push(parents);
+        planner.spent.nearest.push(nearest);
+        planner.spent.ids.push(parents);
         Ok(run.finish(space, path, goal_distance, stop))
     }
 }

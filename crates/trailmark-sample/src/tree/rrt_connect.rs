@@ -32,12 +32,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::options::RrtOptions;
-use super::parts::TreeParts;
+use super::planner::{Grow, Grown, Spent, TreePlanner};
 use super::{Extension, Tree};
 use crate::nearest::{Direction, NearestNeighbors};
-use crate::plan::{Plan, PlanError, Rejection};
-use crate::planner::Planner;
+use crate::plan::{PlanError, Rejection};
 use crate::problem::{Problem, admit};
 use crate::run::Run;
 use crate::sampler::StateSampler;
@@ -45,7 +43,6 @@ use crate::sampler::Uniform;
 use crate::space::StateSpace;
 use crate::validity::Validity;
 use trailmark_core::termination::Stop;
-use trailmark_core::termination::Termination;
 
 /// The most extensions one connect phase makes toward a new state before the next iteration
 /// begins: the tree keeps what it grew (a range of 1e-7 across a world of 10 had made one
@@ -61,77 +58,11 @@ const FIRST_ROOT_ATTEMPTS: usize = 1_000;
 
 /// RRT-Connect: a tree from the start and one into the goal, grown toward each other; see
 /// the [module](self) documentation.
-#[derive(Debug, Clone)]
-pub struct RrtConnect<N, Q = Uniform> {
-    parts: TreeParts<N, Q>,
-    /// Range and goal bias.
-    pub options: RrtOptions,
-    /// The seed of the ChaCha8 generator each run starts from: the same seed, the same run.
-    pub seed: u64,
-}
+pub type RrtConnect<N, Q = Uniform> = TreePlanner<ConnectGrowth, N, Q>;
 
-impl<N> RrtConnect<N> {
-    /// The planner with its trees in (clones of) `nearest`, which must be empty, uniform
-    /// samples, the default options and seed 0.
-    pub fn new(nearest: N) -> Self {
-        RrtConnect { parts: TreeParts::new(nearest), options: RrtOptions::default(), seed: 0 }
-    }
-}
-
-impl<N, Q> RrtConnect<N, Q> {
-    /// The same planner drawing its samples from `sampler`.
-    pub fn with_sampler<R>(self, sampler: R) -> RrtConnect<N, R> {
-        RrtConnect { parts: self.parts.with_sampler(sampler), options: self.options, seed: self.seed }
-    }
-
-    /// The same planner with these options.
-    pub fn with_options(self, options: RrtOptions) -> Self {
-        RrtConnect { options, ..self }
-    }
-
-    /// The same planner seeded with `seed`.
-    pub fn with_seed(self, seed: u64) -> Self {
-        RrtConnect { seed, ..self }
-    }
-
-    /// The sampler.
-    pub fn sampler(&self) -> &Q {
-        &self.parts.sampler
-    }
-}
-
-impl<S, V, N, Q> Planner<S, V> for RrtConnect<N, Q>
-where
-    S: StateSpace,
-    V: Validity<S>,
-    N: NearestNeighbors<S> + Clone,
-    Q: StateSampler<S>,
-{
-    fn name(&self) -> &str {
-        "RRT-Connect"
-    }
-
-    fn set_seed(&mut self, seed: u64) {
-        self.seed = seed;
-    }
-
-    fn clear(&mut self) {
-        self.parts.spent.release();
-    }
-
-    fn optimizes(&self) -> bool {
-        false
-    }
-
-    fn solve(
-        &mut self,
-        problem: &Problem<'_, S, V>,
-        termination: &Termination,
-    ) -> Result<Plan<S::State>, PlanError> {
-        let run = self.parts.begin(problem, &self.options, termination, self.seed)?;
-        self.grow(problem, run)
-    }
-}
+/// What makes a [`TreePlanner`] RRT-Connect: how it grows its trees.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ConnectGrowth;
 
 /// The goal tree's roots: states the goal sampled, each in bounds and valid.
 struct GoalRoots<T> {
@@ -196,23 +127,19 @@ impl Closest {
     }
 }
 
-impl<N, Q> RrtConnect<N, Q> {
-    /// A run checked by [`Planner::solve`](Planner::solve): the trees grown until it stops.
-    fn grow<S, V>(
-        &mut self,
+impl Grow for ConnectGrowth {
+    const NAME: &'static str = "RRT-Connect";
+    const OPTIMIZES: bool = false;
+
+    fn grow<S: StateSpace, V: Validity<S>, N: NearestNeighbors<S> + Clone, Q: StateSampler<S>>(
+        planner: &mut TreePlanner<Self, N, Q>,
         problem: &Problem<'_, S, V>,
         mut run: Run<'_>,
-    ) -> Result<Plan<S::State>, PlanError>
-    where
-        S: StateSpace,
-        V: Validity<S>,
-        N: NearestNeighbors<S> + Clone,
-        Q: StateSampler<S>,
-    {
+    ) -> Grown<S> {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
         let mut trees = [
-            Tree::new(self.parts.nearest.clone(), Direction::ToQuery),
-            Tree::new(self.parts.nearest.clone(), Direction::FromQuery),
+            Tree::new(planner.nearest.clone(), Direction::ToQuery),
+            Tree::new(planner.nearest.clone(), Direction::FromQuery),
         ];
         for start in &problem.starts {
             let id = trees[0].add_root(space, start.clone());
@@ -252,7 +179,7 @@ impl<N, Q> RrtConnect<N, Q> {
                 }
                 continue;
             }
-            let sample = match run.sample(space, validity, &self.parts.sampler) {
+            let sample = match run.sample(space, validity, &planner.sampler) {
                 Ok(Some(sample)) => sample,
                 Ok(None) => continue,
                 Err(stop) => break stop,
@@ -309,13 +236,13 @@ impl<N, Q> RrtConnect<N, Q> {
             // The start tree reached the goal before the trees met.
             let path = start_tree.branch(id);
             run.improved(crate::paths::length(space, &path));
-            self.keep(trees);
+            keep(&mut planner.spent, trees);
             return Ok(run.finish(space, path, None, stop));
         }
         let Some((from_start, into_goal)) = meeting else {
             // No meeting: the start tree's branch to the state nearest the goal.
             let path = start_tree.branch(closest.id);
-            self.keep(trees);
+            keep(&mut planner.spent, trees);
             return Ok(run.finish(space, path, Some(closest.distance), stop));
         };
         let mut path = start_tree.branch(from_start);
@@ -324,18 +251,16 @@ impl<N, Q> RrtConnect<N, Q> {
         // The meeting state ends the first part and starts the second.
         path.extend(back.into_iter().skip(1));
         run.improved(crate::paths::length(space, &path));
-        self.keep(trees);
+        keep(&mut planner.spent, trees);
         Ok(run.finish(space, path, None, stop))
     }
 }
 
-impl<N, Q> RrtConnect<N, Q> {
-    /// Keeps the trees until the next run or `clear`.
-    fn keep<S: StateSpace>(&mut self, trees: [Tree<S, N>; 2]) {
-        for tree in trees {
-            let (nearest, parents) = tree.into_parts();
-            self.parts.spent.nearest.push(nearest);
-            self.parts.spent.ids.push(parents);
-        }
+/// Keeps the trees until the next run or `clear`.
+fn keep<S: StateSpace, N>(spent: &mut Spent<N>, trees: [Tree<S, N>; 2]) {
+    for tree in trees {
+        let (nearest, parents) = tree.into_parts();
+        spent.nearest.push(nearest);
+        spent.ids.push(parents);
     }
 }

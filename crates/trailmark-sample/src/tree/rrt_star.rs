@@ -32,19 +32,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::options::RrtOptions;
-use super::parts::TreeParts;
+use super::planner::{Grow, Grown, TreePlanner};
 use super::{ROOT, Tree};
 use crate::nearest::{Direction, NearestNeighbors};
-use crate::plan::{Plan, PlanError};
-use crate::planner::Planner;
+
 use crate::problem::Problem;
 use crate::run::Run;
 use crate::sampler::StateSampler;
 use crate::sampler::Uniform;
 use crate::space::StateSpace;
 use crate::validity::Validity;
-use trailmark_core::termination::Termination;
 
 /// RRT*'s neighbour count for `n` states in `dimension` dimensions: ⌈k_rrt ln n⌉ with
 /// k_rrt = 1.1 · 2^(d+1) · e · (1 + 1/d), at least 1.
@@ -56,93 +53,23 @@ pub fn neighbour_count(n: usize, dimension: usize) -> usize {
 
 /// RRT*: one tree from the start states, rewired toward lower costs until the termination;
 /// see the [module](self) documentation.
-#[derive(Debug, Clone)]
-pub struct RrtStar<N, Q = Uniform> {
-    parts: TreeParts<N, Q>,
-    /// Range and goal bias.
-    pub options: RrtOptions,
-    /// The seed of the ChaCha8 generator each run starts from: the same seed, the same run.
-    pub seed: u64,
-}
+pub type RrtStar<N, Q = Uniform> = TreePlanner<StarGrowth, N, Q>;
 
-impl<N> RrtStar<N> {
-    /// The planner with its trees in (clones of) `nearest`, which must be empty, uniform
-    /// samples, the default options and seed 0.
-    pub fn new(nearest: N) -> Self {
-        RrtStar { parts: TreeParts::new(nearest), options: RrtOptions::default(), seed: 0 }
-    }
-}
+/// What makes a [`TreePlanner`] RRT*: how it grows its trees.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct StarGrowth;
 
-impl<N, Q> RrtStar<N, Q> {
-    /// The same planner drawing its samples from `sampler`.
-    pub fn with_sampler<R>(self, sampler: R) -> RrtStar<N, R> {
-        RrtStar { parts: self.parts.with_sampler(sampler), options: self.options, seed: self.seed }
-    }
+impl Grow for StarGrowth {
+    const NAME: &'static str = "RRT*";
+    const OPTIMIZES: bool = true;
 
-    /// The same planner with these options.
-    pub fn with_options(self, options: RrtOptions) -> Self {
-        RrtStar { options, ..self }
-    }
-
-    /// The same planner seeded with `seed`.
-    pub fn with_seed(self, seed: u64) -> Self {
-        RrtStar { seed, ..self }
-    }
-
-    /// The sampler.
-    pub fn sampler(&self) -> &Q {
-        &self.parts.sampler
-    }
-}
-
-impl<S, V, N, Q> Planner<S, V> for RrtStar<N, Q>
-where
-    S: StateSpace,
-    V: Validity<S>,
-    N: NearestNeighbors<S> + Clone,
-    Q: StateSampler<S>,
-{
-    fn name(&self) -> &str {
-        "RRT*"
-    }
-
-    fn set_seed(&mut self, seed: u64) {
-        self.seed = seed;
-    }
-
-    fn clear(&mut self) {
-        self.parts.spent.release();
-    }
-
-    fn optimizes(&self) -> bool {
-        true
-    }
-
-    fn solve(
-        &mut self,
-        problem: &Problem<'_, S, V>,
-        termination: &Termination,
-    ) -> Result<Plan<S::State>, PlanError> {
-        let run = self.parts.begin(problem, &self.options, termination, self.seed)?;
-        self.grow(problem, run)
-    }
-}
-
-impl<N, Q> RrtStar<N, Q> {
-    /// A run checked by [`Planner::solve`](Planner::solve): the trees grown until it stops.
-    fn grow<S, V>(
-        &mut self,
+    fn grow<S: StateSpace, V: Validity<S>, N: NearestNeighbors<S> + Clone, Q: StateSampler<S>>(
+        planner: &mut TreePlanner<Self, N, Q>,
         problem: &Problem<'_, S, V>,
         mut run: Run<'_>,
-    ) -> Result<Plan<S::State>, PlanError>
-    where
-        S: StateSpace,
-        V: Validity<S>,
-        N: NearestNeighbors<S> + Clone,
-        Q: StateSampler<S>,
-    {
+    ) -> Grown<S> {
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
-        let mut tree = Tree::new(self.parts.nearest.clone(), Direction::ToQuery);
+        let mut tree = Tree::new(planner.nearest.clone(), Direction::ToQuery);
         let mut costs = Vec::new();
         let mut children: Vec<Vec<u32>> = Vec::new();
         // States that satisfy the goal; the nearest state to the goal for an approximate answer.
@@ -171,9 +98,9 @@ impl<N, Q> RrtStar<N, Q> {
             if let Some(stop) = run.watch.next_iteration() {
                 break stop;
             }
-            let (target, from_goal) = match run.goal_target(problem, self.options.goal_bias) {
+            let (target, from_goal) = match run.goal_target(problem, planner.options.goal_bias) {
                 Some(target) => (target, true),
-                None => match run.sample(space, validity, &self.parts.sampler) {
+                None => match run.sample(space, validity, &planner.sampler) {
                     Ok(Some(target)) => (target, false),
                     Ok(None) => continue,
                     Err(stop) => break stop,
@@ -286,10 +213,10 @@ impl<N, Q> RrtStar<N, Q> {
         };
         let path = tree.branch(end);
         let (nearest, parents) = tree.into_parts();
-        self.parts.spent.nearest.push(nearest);
-        self.parts.spent.ids.push(parents);
-        self.parts.spent.costs = costs;
-        self.parts.spent.lists = children;
+        planner.spent.nearest.push(nearest);
+        planner.spent.ids.push(parents);
+        planner.spent.costs = costs;
+        planner.spent.lists = children;
         Ok(run.finish(space, path, goal_distance, stop))
     }
 }

@@ -23,7 +23,6 @@ use crate::stats::SearchStats;
 
 pub(crate) mod ad_star;
 pub(crate) mod ara_star;
-pub(crate) mod budget;
 
 /// How an anytime planner lowers its heuristic inflation: from `initial` down to 1 by `step`
 /// per iteration (the last step lands on 1 exactly). [`EpsilonSchedule::check`] says which

@@ -16,8 +16,14 @@ pub struct Rn<const N: usize> {
 }
 
 impl<const N: usize> Rn<N> {
-    /// The box `low[i] < x[i] < high[i]`.
-    pub fn new(low: [f64; N], high: [f64; N]) -> Result<Self, SpaceError> {
+    /// The box `low[i] <= x[i] <= high[i]` (bounds are closed: a state on a face is in the
+    /// space), its corners given as arrays (`[0.0; 6]`) or as the space's states
+    /// ([`SVector`]). Errors when a side is not finite or not longer than 0.
+    pub fn new(
+        low: impl Into<SVector<f64, N>>,
+        high: impl Into<SVector<f64, N>>,
+    ) -> Result<Self, SpaceError> {
+        let (low, high) = (low.into(), high.into());
         for axis in 0..N {
             let (l, h) = (low[axis], high[axis]);
             // The width too must be finite: samples are drawn across it.
@@ -25,7 +31,7 @@ impl<const N: usize> Rn<N> {
                 return Err(SpaceError::InvalidBounds { axis, low: l, high: h });
             }
         }
-        let space = Rn { low: low.into(), high: high.into() };
+        let space = Rn { low, high };
         let (diagonal, volume) = (space.extent(), space.measure());
         if !(diagonal.is_finite() && volume.is_finite() && volume > 0.0) {
             return Err(SpaceError::RegionTooLarge { diagonal, volume });

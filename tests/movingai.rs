@@ -9,14 +9,11 @@ use std::path::{Path, PathBuf};
 use trailmark::movingai;
 use trailmark::prelude::*;
 
+#[path = "support/shared_data.rs"]
+mod shared_data;
+
 fn data() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/movingai");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("skipped: {} not found (MovingAI benchmark data)", dir.display());
-        None
-    }
+    shared_data::shared_data("movingai", "MovingAI benchmark data")
 }
 
 /// `(map, scenario file)` for every scenario file under `dir/scenarios/<set>/`.

@@ -112,14 +112,11 @@ fn every_grid_planner_plans_on_the_office_map() {
     assert!(theta >= straight - 0.1, "{theta} below the straight line {straight}");
 }
 
+#[path = "support/shared_data.rs"]
+mod shared_data;
+
 fn data() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/rosmaps");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("skipped: {} not found (the Nav2 example maps)", dir.display());
-        None
-    }
+    shared_data::shared_data("rosmaps", "the Nav2 example maps")
 }
 
 #[test]

@@ -2,43 +2,17 @@
 //! bounds per cell documented on `MAX_MAP_CELLS`; and sizes past the maximum refused from the
 //! image's header, before anything is allocated for its pixels.
 
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use trailmark_map::{
     Costmap, CostmapSettings, Footprint, Inflation, MAX_MAP_CELLS, MapError, MapMetadata, MapMode, decode_map,
 };
 
-/// The system allocator, counting the bytes currently allocated and their peak.
-struct Counting;
+// The facade's counting allocator, the one file both memory tests include.
+#[path = "../../../tests/support/counting_alloc.rs"]
+mod counting_alloc;
 
-static CURRENT: AtomicUsize = AtomicUsize::new(0);
-static PEAK: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let now = CURRENT.fetch_add(layout.size(), Ordering::SeqCst) + layout.size();
-        PEAK.fetch_max(now, Ordering::SeqCst);
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        CURRENT.fetch_sub(layout.size(), Ordering::SeqCst);
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
-#[global_allocator]
-static ALLOCATOR: Counting = Counting;
-
-/// Peak bytes allocated while `f` runs, above what was allocated before it.
-fn peak_during<T>(f: impl FnOnce() -> T) -> (T, usize) {
-    let before = CURRENT.load(Ordering::SeqCst);
-    PEAK.store(before, Ordering::SeqCst);
-    let out = f();
-    (out, PEAK.load(Ordering::SeqCst) - before)
-}
+use counting_alloc::peak_during;
 
 fn meta() -> MapMetadata {
     MapMetadata {

@@ -13,14 +13,11 @@ use trailmark_map::{
 
 const MAPS: [&str; 3] = ["warehouse", "depot", "tb3_sandbox"];
 
+#[path = "../../../tests/support/shared_data.rs"]
+mod shared_data;
+
 fn data() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/rosmaps");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("skipped: {} not found (the Nav2 example maps)", dir.display());
-        None
-    }
+    shared_data::shared_data("rosmaps", "the Nav2 example maps")
 }
 
 /// A binary PGM read by hand: width, height and the 8-bit samples, row 0 at the top.

@@ -13,15 +13,12 @@ use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::Polygon;
 use trailmark_map::{Costmap, LETHAL};
 
+#[path = "../../../../tests/support/shared_data.rs"]
+mod shared_data;
+
 /// The Nav2 example maps, or `None` (with a message) when they are absent.
 pub fn data() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/rosmaps");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("skipped: {} not found (the Nav2 example maps)", dir.display());
-        None
-    }
+    shared_data::shared_data("rosmaps", "the Nav2 example maps")
 }
 
 /// A 0.6 m x 0.4 m car, its reference point (the rear axle) 0.15 m from the back.

@@ -104,21 +104,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone> Prm<S, N> {
     /// PRM with its milestones in (a clone of) `nearest`, which must be empty: joined to their
     /// 10 nearest neighbours, uniform samples, seed 0. It stops at the first path.
     pub fn new(nearest: N) -> Self {
-        Prm {
-            empty: nearest.clone(),
-            nearest,
-            sampler: Uniform,
-            connection: Connection::Nearest { k: 10 },
-            optimizing: false,
-            seed: 0,
-            rng: None,
-            out: Vec::new(),
-            into: Vec::new(),
-            edge_count: 0,
-            components: UnionFind::default(),
-            checks: 0,
-            _space: PhantomData,
-        }
+        Prm::empty(nearest.clone(), nearest, Uniform, Connection::Nearest { k: 10 }, false, 0)
     }
 
     /// PRM*: PRM*'s connection, improving its path until the termination.
@@ -130,13 +116,21 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone> Prm<S, N> {
 impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     /// The same planner drawing its milestones from `sampler` (the roadmap is cleared).
     pub fn with_sampler<R>(self, sampler: R) -> Prm<S, N, R> {
-        let mut prm = Prm {
-            empty: self.empty,
-            nearest: self.nearest,
+        let mut prm =
+            Prm::empty(self.empty, self.nearest, sampler, self.connection, self.optimizing, self.seed);
+        prm.reset();
+        prm
+    }
+
+    /// A planner with these settings and no roadmap yet.
+    fn empty(empty: N, nearest: N, sampler: Q, connection: Connection, optimizing: bool, seed: u64) -> Self {
+        Prm {
+            empty,
+            nearest,
             sampler,
-            connection: self.connection,
-            optimizing: self.optimizing,
-            seed: self.seed,
+            connection,
+            optimizing,
+            seed,
             rng: None,
             out: Vec::new(),
             into: Vec::new(),
@@ -144,9 +138,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
             components: UnionFind::default(),
             checks: 0,
             _space: PhantomData,
-        };
-        prm.reset();
-        prm
+        }
     }
 
     /// The same planner joining milestones by `connection` (the roadmap is cleared); a

@@ -10,7 +10,6 @@ use nalgebra::SVector;
 use proptest::prelude::*;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use trailmark_core::generate;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::termination::Termination;
 use trailmark_core::world::{Bounds, PolygonWorld};
@@ -123,18 +122,8 @@ fn bad_ends_are_refused<S, V, N>(
     }
 }
 
-/// A generated polygon world (40 x 40) and two free points in it.
-fn polygon_world(count: usize, radius: f64, seed: u64) -> Option<(PolygonWorld, Point, Point)> {
-    let world = generate::convex_obstacles(40.0, count, 6, radius, seed).ok()?;
-    let checker = world.checker();
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut free = || {
-        (0..1000)
-            .map(|_| Point::new(rng.random_range(0.0..40.0), rng.random_range(0.0..40.0)))
-            .find(|&p| checker.point_is_free(p))
-    };
-    Some((world.clone(), free()?, free()?))
-}
+mod common;
+use common::world_and_ends as polygon_world;
 
 /// Whether the segment `a`-`b` is clear of `world`'s obstacles, sampled every 1e-3.
 fn densely_clear(world: &PolygonWorld, a: Point, b: Point) -> bool {

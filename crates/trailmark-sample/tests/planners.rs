@@ -4,8 +4,6 @@
 //! run, and bad input gives typed errors.
 
 use proptest::prelude::*;
-use rand::{RngExt, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 use trailmark_core::generate;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::termination::{Stop, Termination};
@@ -17,18 +15,8 @@ use trailmark_sample::{
     Plan, PlanError, Planner, Problem, Rejection, Rrt, RrtConnect, RrtOptions, RrtStar, Solution,
 };
 
-/// A generated world of random convex obstacles (40 x 40) and two free points in it.
-fn world_and_ends(count: usize, radius: f64, seed: u64) -> Option<(PolygonWorld, Point, Point)> {
-    let world = generate::convex_obstacles(40.0, count, 6, radius, seed).ok()?;
-    let checker = world.checker();
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut free = || {
-        (0..1000)
-            .map(|_| Point::new(rng.random_range(0.0..40.0), rng.random_range(0.0..40.0)))
-            .find(|&p| checker.point_is_free(p))
-    };
-    Some((world.clone(), free()?, free()?))
-}
+mod common;
+use common::world_and_ends;
 
 fn check_r2(
     world: &PolygonWorld,

@@ -17,7 +17,7 @@ use crate::incremental::EdgeChange;
 use crate::incremental::engine::SearchDirection;
 use crate::incremental::mode::Anytime;
 use crate::incremental::planner::LifelongPlanner;
-use crate::incremental::replanner::Replanner;
+use crate::incremental::replanner::replanner_by_inherent_methods;
 use crate::stats::SearchStats;
 
 /// Changes (nodes or edges told) from which AD* treats a batch as significant and searches
@@ -81,7 +81,7 @@ pub struct AdStar<N: Debug, H> {
     last_path: Option<Path<N>>,
     /// The inflation of the last completed iteration.
     last_epsilon: f64,
-    /// When each plan made through [`Replanner::plan`] stops improving.
+    /// When each plan made through [`Replanner::plan`](crate::Replanner::plan) stops improving.
     plan_termination: Termination,
 }
 
@@ -89,6 +89,7 @@ impl<N, H> AdStar<N, H>
 where
     N: Copy + Eq + Hash + Debug,
 {
+    // Shaped like LifelongPlanner::new, which takes a mode where this takes the public schedule.
     /// A planner from `start` to `goal` with `heuristic(a, b)` a consistent lower bound on the
     /// cost from `a` to `b`, and the inflation `schedule`. Errors when an endpoint is not a node
     /// or the schedule is invalid.
@@ -156,8 +157,8 @@ where
         self
     }
 
-    /// The same planner with limits for each plan made through [`Replanner::plan`] (by default
-    /// none: each plan improves to ε = 1).
+    /// The same planner with limits for each plan made through
+    /// [`Replanner::plan`](crate::Replanner::plan) (by default none: each plan improves to ε = 1).
     pub fn with_termination_per_plan(mut self, termination: Termination) -> Self {
         self.plan_termination = termination;
         self
@@ -356,6 +357,7 @@ where
         Ok(())
     }
 
+    // DStarLite's signature, not its body: AD* also counts the changes that raise its ε.
     /// Tells the planner that edges leaving these nodes changed; see
     /// [`DStarLite::update_nodes`](crate::DStarLite::update_nodes).
     pub fn update_nodes<G>(
@@ -373,6 +375,23 @@ where
             self.changed();
         }
         Ok(())
+    }
+
+    /// One plan of [`Replanner::plan`](crate::Replanner::plan): improves within the limits of
+    /// [`with_termination_per_plan`](Self::with_termination_per_plan), then completes the
+    /// iteration in progress if they stopped it before any path (and the goal is not proved
+    /// unreachable).
+    fn plan_within_limits<G>(&mut self, graph: &G) -> Result<SearchStats, SearchError<N>>
+    where
+        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
+        H: Heuristic<G>,
+    {
+        let found = self.improve(graph, self.plan_termination.clone())?;
+        let mut stats = found.stats;
+        if found.path.is_none() && found.stop != Stop::Unreachable {
+            stats += self.improve_once(graph)?.stats;
+        }
+        Ok(stats)
     }
 
     /// After a move or a change: the last path is stale, and an interrupted iteration is not
@@ -405,61 +424,12 @@ where
     }
 }
 
-/// AD* as a replanner: each plan improves within the limits it was configured with
-/// ([`AdStar::with_termination_per_plan`]); when they stop it before this plan has a path, the
-/// iteration in progress is completed anyway, since a plan without a path is no plan.
-/// [`inflation`](Replanner::inflation) is the ε of the path's iteration.
-impl<G, H> Replanner<G> for AdStar<G::Node, H>
-where
-    G: Successors + Predecessors + IndexedGraph + ?Sized,
-    H: Heuristic<G>,
-{
-    fn update_edges(
-        &mut self,
-        graph: &G,
-        changes: &[EdgeChange<G::Node>],
-    ) -> Result<(), SearchError<G::Node>> {
-        AdStar::update_edges(self, graph, changes)
-    }
-
-    fn update_nodes(&mut self, graph: &G, nodes: &[G::Node]) -> Result<(), SearchError<G::Node>> {
-        AdStar::update_nodes(self, graph, nodes.iter().copied())
-    }
-
-    fn move_start(&mut self, graph: &G, to: G::Node) -> Result<(), SearchError<G::Node>> {
-        AdStar::move_start(self, graph, to)
-    }
-
-    fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
-        let found = self.improve(graph, self.plan_termination.clone())?;
-        let mut stats = found.stats;
-        if found.path.is_none() && found.stop != Stop::Unreachable {
-            stats += self.improve_once(graph)?.stats;
-        }
-        Ok(stats)
-    }
-
-    fn path(&self, graph: &G) -> Option<Path<G::Node>> {
-        AdStar::path(self, graph)
-    }
-
-    fn cost(&self) -> Option<Cost> {
-        AdStar::cost(self)
-    }
-
-    fn next_step(&self, graph: &G) -> Option<G::Node> {
-        AdStar::next_step(self, graph)
-    }
-
-    fn totals(&self) -> SearchStats {
-        AdStar::totals(self)
-    }
-
-    fn memory_bytes(&self) -> usize {
-        AdStar::memory_bytes(self)
-    }
-
-    fn inflation(&self) -> f64 {
-        self.path_epsilon()
-    }
-}
+replanner_by_inherent_methods!(
+    /// AD* as a replanner: each plan improves within the limits it was configured with
+    /// ([`AdStar::with_termination_per_plan`]); when they stop it before this plan has a path, the
+    /// iteration in progress is completed anyway, since a plan without a path is no plan.
+    /// [`inflation`](crate::Replanner::inflation) is the ε of the path's iteration.
+    AdStar,
+    plan: plan_within_limits,
+    inflation: path_epsilon
+);

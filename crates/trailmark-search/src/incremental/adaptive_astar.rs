@@ -84,6 +84,7 @@ impl<N, H> AdaptiveAStar<N, H>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
 {
+    // RepeatedAStar::new's public signature; this builds on it (and MpgaaStar::new on this).
     /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent estimate of the
     /// cost from `a` to `b` (the grid heuristics are). Nothing is searched until
     /// [`plan`](Replanner::plan). Errors when the start or the goal is not a node of the graph.
@@ -315,6 +316,7 @@ where
     }
 }
 
+// The trait's signatures, as every replanner's; the answers (learning, repair) are Adaptive A*'s own.
 impl<G, H> Replanner<G> for AdaptiveAStar<G::Node, H>
 where
     G: Successors + Predecessors + IndexedGraph + ?Sized,

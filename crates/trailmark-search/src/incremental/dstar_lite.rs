@@ -63,6 +63,7 @@ where
 {
     shared_lifelong_methods!(SearchDirection::Backward);
 
+    // Below, LpaStar's alike methods mean other things (in-edges, costs from the start): not shared.
     /// Moves the robot to `to` (usually [`next_step`](Self::next_step)). Cheap: the keys are
     /// adjusted when the graph next changes. Errors when `to` is not a node of the graph.
     pub fn move_start<G>(&mut self, graph: &G, to: N) -> Result<(), SearchError<N>>
@@ -138,4 +139,4 @@ where
     }
 }
 
-replanner_by_inherent_methods!(DStarLite);
+replanner_by_inherent_methods!(DStarLite, plan: compute_shortest_path);

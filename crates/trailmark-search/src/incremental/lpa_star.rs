@@ -58,6 +58,7 @@ where
 {
     shared_lifelong_methods!(SearchDirection::Forward);
 
+    // Below, DStarLite's alike methods mean other things (out-edges, costs to the goal): not shared.
     /// Tells the planner that edges entering these nodes changed, in whatever way: each node's
     /// `rhs` is recomputed from its current in-edges. Name every node with an in-edge that
     /// changed (after `GridGraph::set_cost(cell, ..)`, the cells of
@@ -136,4 +137,4 @@ where
     }
 }
 
-replanner_by_inherent_methods!(LpaStar);
+replanner_by_inherent_methods!(LpaStar, plan: compute_shortest_path);

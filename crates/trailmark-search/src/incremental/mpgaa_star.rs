@@ -55,6 +55,7 @@ impl<N, H> MpgaaStar<N, H>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
 {
+    // AdaptiveAStar::new's public signature and documentation; it builds on that constructor.
     /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent estimate of the
     /// cost from `a` to `b` (the grid heuristics are). Nothing is searched until
     /// [`plan`](Replanner::plan). Errors when the start or the goal is not a node of the graph.
@@ -94,6 +95,7 @@ where
     }
 }
 
+// The trait's signatures, as every replanner's; each answer is the wrapped AdaptiveAStar's.
 impl<G, H> Replanner<G> for MpgaaStar<G::Node, H>
 where
     G: Successors + Predecessors + IndexedGraph + ?Sized,

@@ -48,6 +48,7 @@ impl<N, H> RepeatedAStar<N, H>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
 {
+    // AdaptiveAStar and MpgaaStar take the same public signature and build on this constructor.
     /// A planner from `start` to `goal`, with `heuristic(a, b)` an admissible estimate of the
     /// cost from `a` to `b`. Nothing is searched until [`plan`](Replanner::plan). Errors when
     /// the start or the goal is not a node of the graph.
@@ -105,6 +106,7 @@ where
     }
 }
 
+// The trait's signatures, as every replanner's; the answers are A* from scratch's own.
 impl<G, H> Replanner<G> for RepeatedAStar<G::Node, H>
 where
     G: Successors + Predecessors + IndexedGraph + ?Sized,

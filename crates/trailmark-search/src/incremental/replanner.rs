@@ -117,11 +117,14 @@ where
     }
 }
 
-/// Implements [`Replanner`] for an incremental planner type by its inherent methods of the
-/// same names (`compute_shortest_path` plans): [`LpaStar`](crate::LpaStar) and
-/// [`DStarLite`](crate::DStarLite), whose own methods say how each answers.
+/// Implements [`Replanner`] for a planner type by its inherent methods of the same names, the
+/// method `$plan` planning and `$inflation`, when named, giving the inflation:
+/// [`LpaStar`](crate::LpaStar) and [`DStarLite`](crate::DStarLite) (`compute_shortest_path`
+/// plans) and [`AdStar`](crate::AdStar), whose own methods say how each answers. The impl's
+/// documentation, if any, goes first.
 macro_rules! replanner_by_inherent_methods {
-    ($planner:ident) => {
+    ($(#[$attr:meta])* $planner:ident, plan: $plan:ident $(, inflation: $inflation:ident)?) => {
+        $(#[$attr])*
         impl<G, H> $crate::incremental::replanner::Replanner<G> for $planner<G::Node, H>
         where
             G: Successors + Predecessors + IndexedGraph + ?Sized,
@@ -148,7 +151,7 @@ macro_rules! replanner_by_inherent_methods {
             }
 
             fn plan(&mut self, graph: &G) -> Result<$crate::SearchStats, $crate::SearchError<G::Node>> {
-                $planner::compute_shortest_path(self, graph)
+                $planner::$plan(self, graph)
             }
 
             fn path(&self, graph: &G) -> Option<Path<G::Node>> {
@@ -170,6 +173,12 @@ macro_rules! replanner_by_inherent_methods {
             fn memory_bytes(&self) -> usize {
                 $planner::memory_bytes(self)
             }
+
+            $(
+                fn inflation(&self) -> f64 {
+                    $planner::$inflation(self)
+                }
+            )?
         }
     };
 }

@@ -118,6 +118,7 @@ where
     Search::<Dense>::new().dijkstra(graph, start, goal)
 }
 
+// The public searches as methods: alike signatures (kept, public), one loop (`best_first`) under all.
 impl<I> Search<I> {
     /// A* from `start` to `goal` with this workspace; see [`astar`](crate::astar()).
     pub fn astar<G, H>(

@@ -43,6 +43,7 @@ use crate::limits::{MAX_NODES, MAX_WEIGHT};
 use crate::one_shot::SearchResult;
 use crate::one_shot::workspace::Search;
 
+// Each public search spells out its bounds: they are its public signature (Rust has no trait alias).
 /// A least-cost path from `start` to a node for which `success` holds, by A* with `heuristic`
 /// (admissible: never more than the least cost to a goal): `pathfinding::prelude::astar`'s
 /// arguments, trailmark's result.
@@ -85,7 +86,7 @@ where
     FH: FnMut(&N) -> Cost,
     FS: FnMut(&N) -> bool,
 {
-    best_first(start, successors, heuristic, success, 1.0, true)
+    Implicit::new(start, successors).best_first(heuristic, success, 1.0, true)
 }
 
 /// A path from `start` to a node for which `success` holds costing at most `weight` times the
@@ -108,7 +109,7 @@ where
     if !(1.0..=MAX_WEIGHT).contains(&weight) {
         return Err(SearchError::InvalidWeight(weight));
     }
-    best_first(start, successors, heuristic, success, weight, false)
+    Implicit::new(start, successors).best_first(heuristic, success, weight, false)
 }
 
 /// A least-cost path from `start` to a node for which `success` holds, by Dijkstra's algorithm
@@ -124,7 +125,7 @@ where
     IN: IntoIterator<Item = (N, Cost)>,
     FS: FnMut(&N) -> bool,
 {
-    best_first(start, successors, |_| 0.0, success, 1.0, true)
+    Implicit::new(start, successors).best_first(|_| 0.0, success, 1.0, true)
 }
 
 /// A path with the fewest moves from `start` to a node for which `success` holds, by
@@ -157,7 +158,7 @@ where
     IN: IntoIterator<Item = (N, Cost)>,
     FS: FnMut(&N) -> bool,
 {
-    uninformed::<_, _, _, _, true>(start, successors, success)
+    Implicit::new(start, successors).uninformed::<true>(success)
 }
 
 /// A path from `start` to a node for which `success` holds, by depth-first search (see
@@ -169,49 +170,7 @@ where
     IN: IntoIterator<Item = (N, Cost)>,
     FS: FnMut(&N) -> bool,
 {
-    uninformed::<_, _, _, _, false>(start, successors, success)
-}
-
-/// A*, weighted A* (`reopen` false) or Dijkstra's algorithm (a zero heuristic) over the
-/// closures' graph.
-fn best_first<N, FN, IN, FH, FS>(
-    start: &N,
-    successors: FN,
-    mut heuristic: FH,
-    mut success: FS,
-    weight: f64,
-    reopen: bool,
-) -> Result<SearchResult<N>, SearchError<N>>
-where
-    N: Eq + Hash + Clone + Debug,
-    FN: FnMut(&N) -> IN,
-    IN: IntoIterator<Item = (N, Cost)>,
-    FH: FnMut(&N) -> Cost,
-    FS: FnMut(&N) -> bool,
-{
-    let graph = Implicit::new(start, successors);
-    let h = |u| graph.ask(u, &mut heuristic);
-    let found =
-        Search::new().best_first(&graph, 0, None, h, weight, reopen, |u| graph.ask(u as u32, &mut success));
-    graph.finish(found)
-}
-
-/// Breadth-first or depth-first search over the closures' graph.
-fn uninformed<N, FN, IN, FS, const BREADTH_FIRST: bool>(
-    start: &N,
-    successors: FN,
-    mut success: FS,
-) -> Result<SearchResult<N>, SearchError<N>>
-where
-    N: Eq + Hash + Clone + Debug,
-    FN: FnMut(&N) -> IN,
-    IN: IntoIterator<Item = (N, Cost)>,
-    FS: FnMut(&N) -> bool,
-{
-    let graph = Implicit::new(start, successors);
-    let found = Search::new()
-        .uninformed::<_, _, BREADTH_FIRST>(&graph, 0, None, |u| graph.ask(u as u32, &mut success));
-    graph.finish(found)
+    Implicit::new(start, successors).uninformed::<false>(success)
 }
 
 /// The nodes met so far, numbered in the order met.
@@ -258,6 +217,31 @@ where
         let mut table = Table { nodes: Vec::new(), numbers: rustc_hash::FxHashMap::default(), full: false };
         table.number(start.clone());
         Implicit { table: RefCell::new(table), successors: RefCell::new(successors) }
+    }
+
+    /// A*, weighted A* (`reopen` false) or Dijkstra's algorithm (a zero heuristic) over this
+    /// graph, from its start.
+    fn best_first(
+        self,
+        mut heuristic: impl FnMut(&N) -> Cost,
+        mut success: impl FnMut(&N) -> bool,
+        weight: f64,
+        reopen: bool,
+    ) -> Result<SearchResult<N>, SearchError<N>> {
+        let h = |u| self.ask(u, &mut heuristic);
+        let found =
+            Search::new().best_first(&self, 0, None, h, weight, reopen, |u| self.ask(u as u32, &mut success));
+        self.finish(found)
+    }
+
+    /// Breadth-first or depth-first search over this graph, from its start.
+    fn uninformed<const BREADTH_FIRST: bool>(
+        self,
+        mut success: impl FnMut(&N) -> bool,
+    ) -> Result<SearchResult<N>, SearchError<N>> {
+        let found = Search::new()
+            .uninformed::<_, _, BREADTH_FIRST>(&self, 0, None, |u| self.ask(u as u32, &mut success));
+        self.finish(found)
     }
 
     /// `f` of the node numbered `u`.

@@ -55,6 +55,7 @@ where
     Search::<Dense>::new().dfs(graph, start, goal)
 }
 
+// The public searches as methods: alike signatures (kept, public), one loop (`uninformed`) under both.
 impl<I> Search<I> {
     /// Breadth-first search with this workspace; see [`bfs`](crate::bfs()).
     pub fn bfs<G>(

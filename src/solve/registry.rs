@@ -181,4 +181,22 @@ mod tests {
         let names = PlannerName::replanner_names();
         assert_eq!(names, "astar, lpa_star, adaptive_astar, mpgaa_star, dstar_lite, ad_star");
     }
+
+    #[test]
+    fn the_sampling_planners_are_made_planners() {
+        use trailmark_sample::{KdNearest, R2, RrtOptions, Uniform};
+        let bounds = trailmark_core::world::Bounds::new(0.0, 0.0, 10.0, 10.0).expect("bounds");
+        let space = R2::new(bounds);
+        for &planner in PlannerName::ALL {
+            let spec: PlannerSpec = serde_json::from_value(document(planner)).expect("a document");
+            let nearest = KdNearest::<R2, 2>::new(&space).expect("a tree");
+            let made = spec.sampling_planner::<R2, trailmark_core::world::CollisionChecker, _, _>(
+                nearest,
+                Uniform,
+                RrtOptions::default(),
+                0,
+            );
+            assert_eq!(made.is_some(), planner.family() == Family::Sampling, "{planner}");
+        }
+    }
 }

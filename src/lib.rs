@@ -56,6 +56,11 @@ pub use trailmark_core::{movingai, svg};
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+/// The code of the guide's page on car-like robots, run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/car.md")]
+pub struct CarDoctests;
+
 /// The code of the guide's page on navigation, run as a doc test.
 #[cfg(doctest)]
 #[doc = include_str!("../docs/navigation.md")]

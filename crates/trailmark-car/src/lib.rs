@@ -52,6 +52,7 @@ mod raster;
 mod settings;
 mod smooth;
 mod stats;
+mod validity;
 
 pub use error::CarError;
 pub use hybrid_astar::{CarPlan, HybridAStar, MAX_MOTION_CELLS};
@@ -62,3 +63,4 @@ pub use stats::HybridStats;
 /// The gear and turn of a [`Stretch`] of a car's path (from `trailmark_core`'s Reeds-Shepp and
 /// Dubins curves).
 pub use trailmark_core::{dubins::Turn, reeds_shepp::Gear};
+pub use validity::MapFootprintValidity;

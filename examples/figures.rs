@@ -145,21 +145,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 /// red.
 fn car_parking(yaml: &Path) -> Result<String, Box<dyn std::error::Error>> {
     use std::fmt::Write as _;
-    use trailmark::car::{CarMap, HybridAStar, HybridSettings};
+    use trailmark::car::{CarMap, HybridAStar, HybridOptions};
     use trailmark::core::footprint::Footprint;
     use trailmark::core::geometry::{Point, Pose, Vector};
     use trailmark::core::reeds_shepp::Gear;
     use trailmark::core::termination::Termination;
     use trailmark::core::world::Polygon;
-    use trailmark::map::{Costmap, CostmapSettings, CostmapSvg, Inflation, load_map};
+    use trailmark::map::{Costmap, CostmapOptions, CostmapSvg, Inflation, load_map};
     let corners = [(-0.15, -0.2), (0.45, -0.2), (0.45, 0.2), (-0.15, 0.2)];
     let car = Footprint::Polygon(Polygon::new(corners.iter().map(|&(x, y)| Point::new(x, y)).collect())?);
-    let settings =
-        CostmapSettings { inflation: Some(Inflation::around(&car)?), ..CostmapSettings::default() };
+    let settings = CostmapOptions { inflation: Some(Inflation::around(&car)?), ..CostmapOptions::default() };
     let costmap = Costmap::from_occupancy(&load_map(yaml)?, &settings)?;
     let map = CarMap::from_costmap(&costmap, &Default::default())?;
     let planner =
-        HybridAStar::new(&map, &car, HybridSettings { turning_radius: 0.5, ..HybridSettings::default() })?;
+        HybridAStar::new(&map, &car, HybridOptions { turning_radius: 0.5, ..HybridOptions::default() })?;
     let start = Pose::new(Vector::new(13.0, 8.5), 0.0);
     let goal = Pose::new(Vector::new(19.7, 3.1), std::f64::consts::FRAC_PI_2);
     let plan = planner.plan(&start, &goal, &Termination::unlimited())?;
@@ -247,7 +246,7 @@ fn car_parking(yaml: &Path) -> Result<String, Box<dyn std::error::Error>> {
 /// cusps in red.
 fn car_lot() -> Result<String, Box<dyn std::error::Error>> {
     use std::f64::consts::FRAC_PI_2;
-    use trailmark::car::{CarMap, HybridAStar, HybridSettings};
+    use trailmark::car::{CarMap, HybridAStar, HybridOptions};
     use trailmark::core::footprint::Footprint;
     use trailmark::core::geometry::{Point, Pose, Vector};
     use trailmark::core::svg::WorldSvg;
@@ -260,7 +259,7 @@ fn car_lot() -> Result<String, Box<dyn std::error::Error>> {
     let world = PolygonWorld::new(Bounds::new(0.0, 0.0, 12.0, 8.0)?, obstacles, 0.0)?;
     let corners = [(-0.2, -0.4), (1.0, -0.4), (1.0, 0.4), (-0.2, 0.4)];
     let car = Footprint::Polygon(Polygon::new(corners.iter().map(|&(x, y)| Point::new(x, y)).collect())?);
-    let settings = HybridSettings { turning_radius: 1.2, ..HybridSettings::default() };
+    let settings = HybridOptions { turning_radius: 1.2, ..HybridOptions::default() };
     let map = CarMap::from_world(&world, settings.turning_radius / 8.0)?;
     let planner = HybridAStar::new(&map, &car, settings)?;
     let (start, goal) = (Pose::new(Vector::new(2.0, 5.0), 0.0), Pose::new(Vector::new(6.2, 1.2), FRAC_PI_2));

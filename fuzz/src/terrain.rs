@@ -29,9 +29,9 @@ pub enum Reached {
     Parsed,
     /// Built, but too large to plan over, or refused by `plan`.
     Built,
-    /// Planned and checked.
-    Planned,
-    /// Planned, checked, and compared with the reference solver.
+    /// ContingencyPlan and checked.
+    ContingencyPlan,
+    /// ContingencyPlan, checked, and compared with the reference solver.
     Referenced,
 }
 
@@ -98,7 +98,7 @@ pub fn check_spec(spec: &TerrainSpec) -> Reached {
         );
         return Reached::Referenced;
     }
-    Reached::Planned
+    Reached::ContingencyPlan
 }
 
 #[cfg(test)]
@@ -112,7 +112,7 @@ mod tests {
         let reached = |name: &str| terrain_bytes(&std::fs::read(format!("{dir}/{name}")).unwrap());
         assert_eq!(reached("two-bridges.json"), Reached::Referenced);
         assert_eq!(reached("near-far.json"), Reached::Referenced);
-        assert!(reached("detect-4.json") >= Reached::Planned);
+        assert!(reached("detect-4.json") >= Reached::ContingencyPlan);
         assert_eq!(reached("invalid-touching.json"), Reached::Parsed);
         assert_eq!(reached("invalid-map-file.json"), Reached::Parsed);
     }

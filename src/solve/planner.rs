@@ -4,7 +4,7 @@
 use std::time::{Duration, Instant};
 
 use serde::{Deserialize, Serialize};
-use trailmark_car::HybridSettings;
+use trailmark_car::HybridOptions;
 use trailmark_core::Cost;
 use trailmark_core::graph::{IndexedGraph, Lines, Predecessors, Successors};
 use trailmark_core::grid::{Cell, Connectivity, CornerCutting, Grid, GridHeuristic};
@@ -429,7 +429,7 @@ impl AnytimeSpec {
 }
 
 /// The settings of Hybrid A*: `turning_radius` (metres) is required, the others default to
-/// Nav2 Smac Hybrid-A*'s (see [`HybridSettings`]); the footprint to the world's.
+/// Nav2 Smac Hybrid-A*'s (see [`HybridOptions`]); the footprint to the world's.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct HybridSpec {
@@ -473,9 +473,9 @@ pub struct HybridSpec {
 
 impl HybridSpec {
     /// Smac's defaults where the document says nothing.
-    pub(super) fn settings(&self) -> HybridSettings {
-        let d = HybridSettings::default();
-        HybridSettings {
+    pub(super) fn settings(&self) -> HybridOptions {
+        let d = HybridOptions::default();
+        HybridOptions {
             turning_radius: self.turning_radius,
             heading_bins: self.heading_bins.unwrap_or(d.heading_bins),
             reverse: self.reverse.unwrap_or(d.reverse),

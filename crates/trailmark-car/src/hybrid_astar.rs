@@ -24,8 +24,8 @@ use crate::error::CarError;
 use crate::heuristic::{HeuristicGrid, ObstacleHeuristic, curve_length};
 use crate::map::CarMap;
 use crate::motion::{Motion, Motions};
+use crate::options::HybridOptions;
 use crate::path::{CarPath, Stretch};
-use crate::settings::HybridSettings;
 use crate::stats::HybridStats;
 
 /// How near the goal, in turning radii, the estimate asks for the curve's length.
@@ -43,14 +43,14 @@ const CHECKS_PER_CELL: f64 = 2.0;
 pub const MAX_MOTION_CELLS: f64 = 32_768.0;
 
 /// Shots to the goal are tried within this many motions of it, whatever
-/// [`HybridSettings::analytic_expansion_max_length`] says: a setting shorter than the map's
+/// [`HybridOptions::analytic_expansion_max_length`] says: a setting shorter than the map's
 /// cells or the car's motions would leave the search no way to end.
 const SHOT_MOTIONS: f64 = 4.0;
 
 /// Hybrid A* for one car on one map: made once, asked for many queries.
 ///
 /// ```
-/// use trailmark_car::{CarMap, HybridAStar, HybridSettings};
+/// use trailmark_car::{CarMap, HybridAStar, HybridOptions};
 /// use trailmark_core::footprint::Footprint;
 /// use trailmark_core::geometry::Pose;
 /// use trailmark_core::grid::Grid;
@@ -62,7 +62,7 @@ const SHOT_MOTIONS: f64 = 4.0;
 ///     row.replace_range(60..62, "@@");
 /// }
 /// let map = CarMap::from_grid(&Grid::from_rows(&rows)?, 0.1)?;
-/// let settings = HybridSettings { turning_radius: 1.0, ..HybridSettings::default() };
+/// let settings = HybridOptions { turning_radius: 1.0, ..HybridOptions::default() };
 /// let planner = HybridAStar::new(&map, &Footprint::Radius(0.3), settings)?;
 /// let start = Pose::new(nalgebra::Vector2::new(2.0, 1.0), 0.0);
 /// let goal = Pose::new(nalgebra::Vector2::new(10.0, 1.0), std::f64::consts::PI);
@@ -75,7 +75,7 @@ const SHOT_MOTIONS: f64 = 4.0;
 #[derive(Debug, Clone)]
 pub struct HybridAStar<'m> {
     map: &'m CarMap,
-    settings: HybridSettings,
+    settings: HybridOptions,
     motions: Motions,
     checker: FootprintChecker,
     /// The footprint as it is, without the margin: which poses the margin alone refuses.
@@ -118,12 +118,12 @@ struct Node {
 impl<'m> HybridAStar<'m> {
     /// A planner for a car with `footprint` on `map`.
     ///
-    /// Errors: a setting out of range ([`HybridSettings::check`]), too few heading bins for the
+    /// Errors: a setting out of range ([`HybridOptions::check`]), too few heading bins for the
     /// turning radius (one bin's arc longer than [`MAX_MOTION_CELLS`] cells: the motions' poses
     /// are precomputed, two a cell), a footprint radius that is negative or not finite, a
     /// polygon of more than
     /// [`MAX_FOOTPRINT_VERTICES`](trailmark_core::footprint::MAX_FOOTPRINT_VERTICES) vertices.
-    pub fn new(map: &'m CarMap, footprint: &Footprint, settings: HybridSettings) -> Result<Self, CarError> {
+    pub fn new(map: &'m CarMap, footprint: &Footprint, settings: HybridOptions) -> Result<Self, CarError> {
         settings.check(map.resolution())?;
         footprint.check()?;
         let bin_arc = std::f64::consts::TAU / f64::from(settings.heading_bins) * settings.turning_radius;
@@ -163,7 +163,7 @@ impl<'m> HybridAStar<'m> {
     }
 
     /// The settings.
-    pub fn settings(&self) -> &HybridSettings {
+    pub fn settings(&self) -> &HybridOptions {
         &self.settings
     }
 
@@ -187,7 +187,7 @@ impl<'m> HybridAStar<'m> {
     }
 
     /// The longest shot to the goal the search tries: the larger of
-    /// [`HybridSettings::analytic_expansion_max_length`] and four of the car's motions.
+    /// [`HybridOptions::analytic_expansion_max_length`] and four of the car's motions.
     pub fn shot_length(&self) -> f64 {
         self.shot_length
     }

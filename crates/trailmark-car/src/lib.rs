@@ -8,7 +8,7 @@
 //! its turning radius. Poses are in the world's frame, `[x, y, heading]` as nalgebra's `Pose`.
 //!
 //! ```
-//! use trailmark_car::{CarMap, HybridAStar, HybridSettings};
+//! use trailmark_car::{CarMap, HybridAStar, HybridOptions};
 //! use trailmark_core::footprint::Footprint;
 //! use trailmark_core::geometry::{Point, Pose};
 //! use trailmark_core::grid::Grid;
@@ -26,7 +26,7 @@
 //! // A 1.6 m x 0.8 m car, its reference point 0.3 m from the back.
 //! let corners = [(-0.3, -0.4), (1.3, -0.4), (1.3, 0.4), (-0.3, 0.4)];
 //! let car = Footprint::Polygon(Polygon::new(corners.iter().map(|&(x, y)| Point::new(x, y)).collect())?);
-//! let settings = HybridSettings { turning_radius: 1.5, ..HybridSettings::default() };
+//! let settings = HybridOptions { turning_radius: 1.5, ..HybridOptions::default() };
 //! let planner = HybridAStar::new(&map, &car, settings)?;
 //! // From the aisle, facing +x, into the bay facing down (nose in or tail in, as it finds).
 //! let start = Pose::new(nalgebra::Vector2::new(1.5, 4.0), 0.0);
@@ -47,9 +47,9 @@ mod heuristic;
 mod hybrid_astar;
 mod map;
 mod motion;
+mod options;
 mod path;
 mod raster;
-mod settings;
 mod smooth;
 mod stats;
 mod validity;
@@ -57,8 +57,11 @@ mod validity;
 pub use error::CarError;
 pub use hybrid_astar::{CarPlan, HybridAStar, MAX_MOTION_CELLS};
 pub use map::CarMap;
+pub use options::{HybridOptions, MAX_HEADING_BINS};
 pub use path::{CarPath, Stretch};
-pub use settings::{HybridSettings, MAX_HEADING_BINS};
+/// Old name of [`HybridOptions`], kept for one release.
+#[deprecated(since = "0.3.0", note = "use trailmark_car::HybridOptions")]
+pub type HybridSettings = HybridOptions;
 pub use stats::HybridStats;
 /// The gear and turn of a [`Stretch`] of a car's path (from `trailmark_core`'s Reeds-Shepp and
 /// Dubins curves).

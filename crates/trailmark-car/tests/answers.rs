@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use trailmark_car::{CarError, CarMap, HybridAStar, HybridSettings};
+use trailmark_car::{CarError, CarMap, HybridAStar, HybridOptions};
 use trailmark_core::footprint::Footprint;
 use trailmark_core::geometry::Pose;
 use trailmark_core::grid::{Cell, Grid};
@@ -39,7 +39,7 @@ fn plan(
     grid: &Grid,
     resolution: f64,
     car: &Footprint,
-    settings: HybridSettings,
+    settings: HybridOptions,
     (start, goal): (&Pose, &Pose),
 ) -> Result<trailmark_car::CarPlan, CarError> {
     let map = CarMap::from_grid(grid, resolution).unwrap();
@@ -58,7 +58,7 @@ proptest! {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let grid = blocks(40, 30, 6, &mut rng);
         let map = CarMap::from_grid(&grid, 0.1).unwrap();
-        let settings = HybridSettings { turning_radius: 1.0, heading_bins: 36, ..HybridSettings::default() };
+        let settings = HybridOptions { turning_radius: 1.0, heading_bins: 36, ..HybridOptions::default() };
         let car = Footprint::Radius(0.2);
         let planner = HybridAStar::new(&map, &car, settings).unwrap();
         let mut free = || loop {
@@ -70,7 +70,7 @@ proptest! {
         let (start, goal) = (free(), free());
         let Ok(plan_1) = plan(&grid, 0.1, &car, settings, (&start, &goal)) else { return Ok(()) };
         for s in [1e-2, 100.0, 500.0] {
-            let big = HybridSettings { turning_radius: settings.turning_radius * s, ..settings };
+            let big = HybridOptions { turning_radius: settings.turning_radius * s, ..settings };
             let found = plan(&grid, 0.1 * s, &Footprint::Radius(0.2 * s), big, (&scaled(&start, s), &scaled(&goal, s)));
             match found {
                 Ok(plan_s) => prop_assert!(plan_s.path.length() < 3.0 * s * plan_1.path.length() + 1e-9 * s),
@@ -118,7 +118,7 @@ proptest! {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let grid = blocks(16, 12, 14, &mut rng);
         let map = CarMap::from_grid(&grid, 1.0).unwrap();
-        let settings = HybridSettings { turning_radius: 1.0, heading_bins: 16, ..HybridSettings::default() };
+        let settings = HybridOptions { turning_radius: 1.0, heading_bins: 16, ..HybridOptions::default() };
         let planner = HybridAStar::new(&map, &Footprint::Radius(0.0), settings).unwrap();
         let cell_of = |p: &Pose| Cell::new(p.translation.x as u32, 11 - p.translation.y as u32);
         let mut free = || loop {
@@ -147,7 +147,7 @@ fn coarse_cells_and_a_wide_turn_are_solved() {
     // motion is a 78.5 m straight (no turn fits), so no state comes within the shots' default
     // 3 m of the goal; a shot from within four motions does.
     let grid = Grid::new(20, 4).unwrap();
-    let settings = HybridSettings { turning_radius: 50.0, heading_bins: 4, ..HybridSettings::default() };
+    let settings = HybridOptions { turning_radius: 50.0, heading_bins: 4, ..HybridOptions::default() };
     let (start, goal) = (pose(15.0, 20.0, 0.0), pose(100.0, 20.0, 0.0));
     let plan = plan(&grid, 10.0, &Footprint::Radius(5.0), settings, (&start, &goal)).unwrap();
     let end = plan.path.end().unwrap();
@@ -167,7 +167,7 @@ fn a_gap_a_million_times_dearer_is_still_shot_through() {
             grid.set_blocked(cell, true).unwrap();
         }
     }
-    let settings = HybridSettings { turning_radius: 0.5, ..HybridSettings::default() };
+    let settings = HybridOptions { turning_radius: 0.5, ..HybridOptions::default() };
     let (start, goal) = (pose(1.0, 2.0, 0.0), pose(5.0, 2.0, 0.0));
     let plan = plan(&grid, 0.1, &Footprint::Radius(0.2), settings, (&start, &goal)).unwrap();
     // Through the gap: its tenth of a metre is priced at about 1e5 (the poses checked there).
@@ -185,7 +185,7 @@ fn a_lattice_that_runs_out_proves_nothing() {
         }
     }
     let settings =
-        HybridSettings { turning_radius: 2.0, reverse: false, heading_bins: 16, ..HybridSettings::default() };
+        HybridOptions { turning_radius: 2.0, reverse: false, heading_bins: 16, ..HybridOptions::default() };
     let (start, goal) = (pose(1.0, 0.6, 0.0), pose(1.0, 0.6, std::f64::consts::PI));
     match plan(&grid, 0.1, &Footprint::Radius(0.2), settings, (&start, &goal)) {
         Err(CarError::NoPath { stop: Stop::LatticeExhausted, stats }) => assert!(stats.expansions > 0),
@@ -202,7 +202,7 @@ fn a_footprint_ahead_of_its_reference_point_plans() {
         grid.set_blocked(Cell::new(0, y), true).unwrap();
     }
     let car = Footprint::polygon(vec![[0.5, -0.5], [1.5, -0.5], [1.5, 0.5], [0.5, 0.5]]).unwrap();
-    let settings = HybridSettings { turning_radius: 1.0, ..HybridSettings::default() };
+    let settings = HybridOptions { turning_radius: 1.0, ..HybridOptions::default() };
     let (start, goal) = (pose(2.0, 2.0, 0.0), pose(0.4, 2.0, 0.0));
     let plan = plan(&grid, 0.1, &car, settings, (&start, &goal)).unwrap();
     assert!(plan.stats.expansions > 0);
@@ -216,11 +216,11 @@ fn sharp_footprints_are_grown_by_the_margin_not_their_mitre() {
     // grown by the margin reached 33 m.
     let map = CarMap::from_grid(&Grid::new(200, 200).unwrap(), 0.1).unwrap();
     let thin = Footprint::polygon(vec![[-0.5, -0.0017], [0.5, 0.0], [-0.5, 0.0017]]).unwrap();
-    let planner = HybridAStar::new(&map, &thin, HybridSettings::default()).unwrap();
+    let planner = HybridAStar::new(&map, &thin, HybridOptions::default()).unwrap();
     assert!(planner.is_free(&pose(10.0, 10.0, 0.3)));
     // A 10-degree corner whose tip is 0.2 m from the wall it faces.
     let corner = Footprint::polygon(vec![[-0.5, -0.0875], [0.5, 0.0], [-0.5, 0.0875]]).unwrap();
-    let planner = HybridAStar::new(&map, &corner, HybridSettings::default()).unwrap();
+    let planner = HybridAStar::new(&map, &corner, HybridOptions::default()).unwrap();
     assert!(planner.is_free(&pose(19.3, 10.0, 0.0)));
     assert!(planner.is_free(&pose(10.0, 10.0, 1.0)));
 }
@@ -232,7 +232,7 @@ fn a_pose_free_but_within_the_margin_is_refused_naming_it() {
         grid.set_blocked(Cell::new(30, y), true).unwrap();
     }
     let map = CarMap::from_grid(&grid, 0.1).unwrap();
-    let planner = HybridAStar::new(&map, &Footprint::Radius(0.2), HybridSettings::default()).unwrap();
+    let planner = HybridAStar::new(&map, &Footprint::Radius(0.2), HybridOptions::default()).unwrap();
     let margin = planner.margin();
     assert!(margin > 0.005 && margin < 0.05, "{margin}");
     // The wall's face is at x = 3.0: a disc of 0.2 m at 2.795 is 5 mm from it.
@@ -256,7 +256,7 @@ fn a_walled_off_goal_is_proved_unreachable_for_every_footprint() {
     }
     let square = Footprint::polygon(vec![[-0.2, -0.2], [0.2, -0.2], [0.2, 0.2], [-0.2, 0.2]]).unwrap();
     for car in [Footprint::Radius(0.0), Footprint::Radius(0.2), square] {
-        let settings = HybridSettings { heading_bins: 16, ..HybridSettings::default() };
+        let settings = HybridOptions { heading_bins: 16, ..HybridOptions::default() };
         let found = plan(&grid, 0.1, &car, settings, (&pose(1.0, 1.0, 0.0), &pose(5.0, 1.0, 0.0)));
         assert!(matches!(found, Err(CarError::NoPath { stop: Stop::Unreachable, .. })), "{car:?}: {found:?}");
     }
@@ -275,7 +275,7 @@ fn a_polygon_world_laid_on_cells_proves_nothing_unreachable() {
     let world = PolygonWorld::new(Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap(), walls, 0.0).unwrap();
     let map = CarMap::from_world(&world, 0.125).unwrap();
     assert!(!map.is_exact());
-    let planner = HybridAStar::new(&map, &Footprint::Radius(0.0), HybridSettings::default()).unwrap();
+    let planner = HybridAStar::new(&map, &Footprint::Radius(0.0), HybridOptions::default()).unwrap();
     match planner.plan(&pose(2.0, 4.15, 0.0), &pose(8.0, 4.15, 0.0), &Termination::expansions(50_000)) {
         Err(CarError::NoPath { stop, .. }) => assert_eq!(stop, Stop::LatticeExhausted),
         Ok(plan) => panic!("a point passed a gap the cells close: {:?}", plan.path),

@@ -4,7 +4,7 @@
 //! tighter than the turning radius and ends at the goal.
 
 use proptest::prelude::*;
-use trailmark_car::{CarError, CarMap, HybridAStar, HybridSettings};
+use trailmark_car::{CarError, CarMap, HybridAStar, HybridOptions};
 use trailmark_core::footprint::Footprint;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::termination::Termination;
@@ -103,7 +103,7 @@ proptest! {
     fn paths_keep_the_car_off_the_polygons((world, e, reverse) in world()) {
         let map = CarMap::from_world(&world, RESOLUTION).unwrap();
         let car = Footprint::Polygon(Polygon::new(CAR.iter().map(|c| Point::new(c[0], c[1])).collect()).unwrap());
-        let settings = HybridSettings { turning_radius: TURNING_RADIUS, reverse, ..HybridSettings::default() };
+        let settings = HybridOptions { turning_radius: TURNING_RADIUS, reverse, ..HybridOptions::default() };
         let planner = HybridAStar::new(&map, &car, settings).unwrap();
         let tau = std::f64::consts::TAU;
         let start = Pose::new(nalgebra::Vector2::new(e[0] * SIZE.0, e[1] * SIZE.1), e[2] * tau);

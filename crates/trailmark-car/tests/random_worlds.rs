@@ -4,7 +4,7 @@
 //! by a point moving between cells, it reports no path.
 
 use proptest::prelude::*;
-use trailmark_car::{CarError, CarMap, HybridAStar, HybridSettings};
+use trailmark_car::{CarError, CarMap, HybridAStar, HybridOptions};
 use trailmark_core::footprint::Footprint;
 use trailmark_core::geometry::Pose;
 use trailmark_core::grid::{Cell, Connectivity, Grid};
@@ -51,7 +51,7 @@ proptest! {
     fn paths_are_valid_and_unreachable_goals_are_reported((grid, e, seed) in world()) {
         let map = CarMap::from_grid(&grid, RES).unwrap();
         let bins = [16, 36, 72][(seed % 3) as usize];
-        let settings = HybridSettings { turning_radius: 0.3, heading_bins: bins, reverse: seed % 2 == 0, ..HybridSettings::default() };
+        let settings = HybridOptions { turning_radius: 0.3, heading_bins: bins, reverse: seed % 2 == 0, ..HybridOptions::default() };
         let planner = HybridAStar::new(&map, &Footprint::Radius(RADIUS), settings).unwrap();
         let tau = std::f64::consts::TAU;
         let start = Pose::new(nalgebra::Vector2::new(e[0] * 4.0, e[1] * 3.0), e[2] * tau);

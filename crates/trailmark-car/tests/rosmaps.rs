@@ -14,11 +14,11 @@ mod common;
 use common::{TURNING_RADIUS, data, footprint, independently_free, random_pose};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use trailmark_car::{CarError, CarMap, CarPath, HybridAStar, HybridSettings};
+use trailmark_car::{CarError, CarMap, CarPath, HybridAStar, HybridOptions};
 use trailmark_core::geometry::Pose;
 use trailmark_core::reeds_shepp::Gear;
 use trailmark_core::termination::{Stop, Termination};
-use trailmark_map::{Costmap, CostmapSettings, Inflation, load_map};
+use trailmark_map::{Costmap, CostmapOptions, Inflation, load_map};
 
 fn heading_gap(a: f64, b: f64) -> f64 {
     let d = (b - a).rem_euclid(std::f64::consts::TAU);
@@ -77,10 +77,10 @@ fn queries_on(dir: &std::path::Path, name: &str, queries: usize, least: usize) {
     let car = footprint();
     let map = load_map(dir.join(format!("{name}.yaml"))).unwrap();
     let settings =
-        CostmapSettings { inflation: Some(Inflation::around(&car).unwrap()), ..CostmapSettings::default() };
+        CostmapOptions { inflation: Some(Inflation::around(&car).unwrap()), ..CostmapOptions::default() };
     let costmap = Costmap::from_occupancy(&map, &settings).unwrap();
     let car_map = CarMap::from_costmap(&costmap, &Default::default()).unwrap();
-    let hybrid = HybridSettings { turning_radius: TURNING_RADIUS, ..HybridSettings::default() };
+    let hybrid = HybridOptions { turning_radius: TURNING_RADIUS, ..HybridOptions::default() };
     let planner = HybridAStar::new(&car_map, &car, hybrid).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     let (mut times, mut solved, mut unreachable, mut stopped, mut cusps) = (Vec::new(), 0, 0, 0, 0);

@@ -11,11 +11,11 @@ mod common;
 use common::{TURNING_RADIUS, data, footprint, random_pose};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use trailmark_car::{CarMap, HybridAStar, HybridSettings};
+use trailmark_car::{CarMap, HybridAStar, HybridOptions};
 use trailmark_core::geometry::Pose;
 use trailmark_core::termination::Termination;
 use trailmark_core::world::Bounds;
-use trailmark_map::{Costmap, CostmapSettings, Inflation, TravelCost, load_map};
+use trailmark_map::{Costmap, CostmapOptions, Inflation, TravelCost, load_map};
 use trailmark_sample::{KdNearest, Planner, Problem, ReedsShepp, RrtStar, StateSpace, Validity};
 
 /// The car on the map, as Hybrid A* checks it: states by its footprint check, motions by that
@@ -43,16 +43,16 @@ fn hybrid_astar_solves_what_rrt_star_solves_and_its_length_beside_rrt_stars() {
     let car = footprint();
     let map = load_map(dir.join("depot.yaml")).unwrap();
     let settings =
-        CostmapSettings { inflation: Some(Inflation::around(&car).unwrap()), ..CostmapSettings::default() };
+        CostmapOptions { inflation: Some(Inflation::around(&car).unwrap()), ..CostmapOptions::default() };
     let costmap = Costmap::from_occupancy(&map, &settings).unwrap();
     // Every free cell priced alike: both planners minimise length.
     let flat = TravelCost { factor: 0.0, ..TravelCost::default() };
     let car_map = CarMap::from_costmap(&costmap, &flat).unwrap();
-    let hybrid = HybridSettings {
+    let hybrid = HybridOptions {
         turning_radius: TURNING_RADIUS,
         reverse_penalty: 1.0,
         non_straight_penalty: 1.0,
-        ..HybridSettings::default()
+        ..HybridOptions::default()
     };
     let planner = HybridAStar::new(&car_map, &car, hybrid).unwrap();
     let frame = costmap.frame();

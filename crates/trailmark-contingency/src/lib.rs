@@ -73,7 +73,10 @@ mod view;
 #[doc(hidden)]
 pub use abstraction::Abstraction;
 pub use plan::{Action, Drive, Execution, ExecutionError, Knowledge, Outcome, PlanNode, outcomes, worlds};
-pub use planner::{ContingencyError, ContingencyStats, Planned, PlannerOptions, plan};
+pub use planner::{ContingencyError, ContingencyPlan, ContingencyStats, PlannerOptions, plan};
+/// Old name of [`ContingencyPlan`], kept for one release.
+#[deprecated(since = "0.3.0", note = "use trailmark_contingency::ContingencyPlan")]
+pub type Planned = ContingencyPlan;
 /// The random generator [`simulate::sample_world`] draws from (`rand_chacha` 0.10), and the trait
 /// that seeds it (`rand_core` 0.10), so a caller needs no version-matched dependency.
 ///

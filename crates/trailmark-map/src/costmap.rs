@@ -3,15 +3,15 @@
 //!
 //! ```
 //! use trailmark_core::grid::Cell;
-//! use trailmark_map::{Costmap, CostmapSettings, Footprint, Inflation, MapFrame, OccupancyGrid, TravelCost};
+//! use trailmark_map::{Costmap, CostmapOptions, Footprint, Inflation, MapFrame, OccupancyGrid, TravelCost};
 //!
 //! // A 9 x 1 corridor of 0.1 m cells with a wall at its left end.
 //! let mut values = vec![0i8; 9];
 //! values[0] = 100;
 //! let map = OccupancyGrid::new(MapFrame::new(9, 1, 0.1, [0.0; 3])?, values)?;
-//! let settings = CostmapSettings {
+//! let settings = CostmapOptions {
 //!     inflation: Some(Inflation { inflation_radius: 0.5, ..Inflation::around(&Footprint::Radius(0.15))? }),
-//!     ..CostmapSettings::default()
+//!     ..CostmapOptions::default()
 //! };
 //! let costmap = Costmap::from_occupancy(&map, &settings)?;
 //! // 252 exp(-10 (d - 0.15)) beyond the inscribed radius: 152.8, 56.2, 20.7, 7.6; none past 0.5 m.
@@ -51,7 +51,7 @@ pub enum Unknown {
 
 /// How an occupancy grid becomes a costmap (Nav2's static and inflation layers).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct CostmapSettings {
+pub struct CostmapOptions {
     /// What unknown cells become.
     pub unknown: Unknown,
     /// Cells of at least this occupancy are lethal (Nav2's `lethal_cost_threshold`, 100).
@@ -63,10 +63,10 @@ pub struct CostmapSettings {
     pub inflation: Option<Inflation>,
 }
 
-impl Default for CostmapSettings {
+impl Default for CostmapOptions {
     /// Unknown cells lethal, lethal at 100, trinary, no inflation.
     fn default() -> Self {
-        CostmapSettings { unknown: Unknown::Lethal, lethal_threshold: 100, trinary: true, inflation: None }
+        CostmapOptions { unknown: Unknown::Lethal, lethal_threshold: 100, trinary: true, inflation: None }
     }
 }
 
@@ -86,7 +86,7 @@ impl Costmap {
 
     /// The costmap of an occupancy grid: each cell's value as Nav2's static layer reads it,
     /// then the inflation layer.
-    pub fn from_occupancy(map: &OccupancyGrid, settings: &CostmapSettings) -> Result<Self, MapError> {
+    pub fn from_occupancy(map: &OccupancyGrid, settings: &CostmapOptions) -> Result<Self, MapError> {
         let unknown = match settings.unknown {
             Unknown::Lethal => LETHAL,
             Unknown::Free => FREE_SPACE,

@@ -4,7 +4,7 @@
 //!
 //! ```
 //! use trailmark_core::geometry::Point;
-//! use trailmark_map::{Costmap, CostmapSettings, Footprint, Inflation, MapMetadata, TravelCost, decode_map};
+//! use trailmark_map::{Costmap, CostmapOptions, Footprint, Inflation, MapMetadata, TravelCost, decode_map};
 //!
 //! // A map as map_server saves it: the YAML fields and a PGM (254 free, 0 occupied, 205 unknown).
 //! let meta = MapMetadata::parse("image: tiny.pgm\nresolution: 0.1\norigin: [-0.2, -0.1, 0]\n\
@@ -20,9 +20,9 @@
 //! assert_eq!(map.value(cell), Some(100));
 //!
 //! // A costmap around a robot of radius 0.1 m, and the grid the planners search.
-//! let settings = CostmapSettings {
+//! let settings = CostmapOptions {
 //!     inflation: Some(Inflation::around(&Footprint::Radius(0.1))?),
-//!     ..CostmapSettings::default()
+//!     ..CostmapOptions::default()
 //! };
 //! let costmap = Costmap::from_occupancy(&map, &settings)?;
 //! assert_eq!(costmap.cost(cell), Some(254));
@@ -49,7 +49,10 @@ mod pixels;
 mod values;
 
 pub use clearance::CostmapClearance;
-pub use costmap::{Costmap, CostmapSettings, TravelCost, Unknown};
+pub use costmap::{Costmap, CostmapOptions, TravelCost, Unknown};
+/// Old name of [`CostmapOptions`], kept for one release.
+#[deprecated(since = "0.3.0", note = "use trailmark_map::CostmapOptions")]
+pub type CostmapSettings = CostmapOptions;
 pub use distance::{NO_SOURCE, squared_distances};
 pub use error::MapError;
 pub use files::{

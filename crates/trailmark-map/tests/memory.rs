@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use trailmark_map::{
-    Costmap, CostmapSettings, Footprint, Inflation, MAX_MAP_CELLS, MapError, MapMetadata, MapMode, decode_map,
+    Costmap, CostmapOptions, Footprint, Inflation, MAX_MAP_CELLS, MapError, MapMetadata, MapMode, decode_map,
 };
 
 // The facade's counting allocator, the one file both memory tests include.
@@ -82,9 +82,9 @@ fn loading_and_inflating_stay_within_their_bytes_per_cell() {
     drop((png, from_png));
 
     // The costmap, one byte a cell, and its inflation, four more for the squared distances.
-    let settings = CostmapSettings {
+    let settings = CostmapOptions {
         inflation: Some(Inflation::around(&Footprint::Radius(0.2)).unwrap()),
-        ..CostmapSettings::default()
+        ..CostmapOptions::default()
     };
     let (costmap, peak) = peak_during(|| Costmap::from_occupancy(&map, &settings).unwrap());
     assert!(peak <= 5 * cells + slack, "costmap and inflation: {peak} bytes for {cells} cells");

@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 
 use trailmark_map::{
-    Costmap, CostmapSettings, Footprint, Inflation, MapMode, OccupancyGrid, SaveOptions, load_map,
+    Costmap, CostmapOptions, Footprint, Inflation, MapMode, OccupancyGrid, SaveOptions, load_map,
     load_map_file, save_map,
 };
 
@@ -155,13 +155,13 @@ fn inflation_equals_the_formula_at_every_cell_of_the_warehouse() {
     let Some(dir) = data() else { return };
     let map: OccupancyGrid = load_map(dir.join("warehouse.yaml")).unwrap();
     let (inscribed, radius, k) = (0.2, 0.55, 10.0);
-    let settings = CostmapSettings {
+    let settings = CostmapOptions {
         inflation: Some(Inflation {
             inscribed_radius: inscribed,
             inflation_radius: radius,
             cost_scaling_factor: k,
         }),
-        ..CostmapSettings::default()
+        ..CostmapOptions::default()
     };
     let costmap = Costmap::from_occupancy(&map, &settings).unwrap();
     let frame = map.frame();

@@ -6,7 +6,7 @@ use std::path::Path;
 use trailmark_core::geometry::Point;
 use trailmark_core::grid::Cell;
 use trailmark_map::{
-    Costmap, CostmapSettings, Footprint, INSCRIBED, Inflation, MapError, TravelCost, Unknown, load_map,
+    Costmap, CostmapOptions, Footprint, INSCRIBED, Inflation, MapError, TravelCost, Unknown, load_map,
 };
 
 use crate::solve::error::{DocumentError, SolveError};
@@ -49,10 +49,10 @@ pub fn ros_costmap(world: &RosMapSpec, base_dir: impl AsRef<Path>) -> Result<Cos
         return Err(MapError::Setting { setting: "cost_factor", expected, value: factor }.into());
     }
     let map = load_map(base_dir.as_ref().join(&world.yaml))?;
-    let settings = CostmapSettings {
+    let settings = CostmapOptions {
         unknown: world.unknown.unwrap_or(Unknown::Lethal),
         inflation: Some(inflation),
-        ..CostmapSettings::default()
+        ..CostmapOptions::default()
     };
     Ok(Costmap::from_occupancy(&map, &settings)?)
 }

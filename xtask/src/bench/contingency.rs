@@ -18,7 +18,7 @@ use std::time::Instant;
 use serde::Serialize;
 use trailmark::contingency::generate::{RiverOptions, river_terrain};
 use trailmark::contingency::simulate::{monte_carlo, naive_expected_cost};
-use trailmark::contingency::{Planned, PlannerOptions, Terrain, plan};
+use trailmark::contingency::{ContingencyPlan, PlannerOptions, Terrain, plan};
 
 use crate::bench::progress::SectionProgress;
 use crate::bench::stats::median;
@@ -95,7 +95,7 @@ fn terrains(suite: Suite, movingai: Option<&Path>) -> Result<Vec<(String, Terrai
 pub struct PlannedTerrain {
     name: String,
     terrain: Terrain,
-    planned: Planned,
+    planned: ContingencyPlan,
     /// Planning time, milliseconds (median over the rounds).
     plan_ms: f64,
     /// Peak heap held while planning, bytes.

@@ -90,7 +90,7 @@ pub struct ContingencyStats {
 
 /// A plan with its expected cost and the planner's statistics.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Planned {
+pub struct ContingencyPlan {
     /// The expected cost of the plan over every outcome (stuck outcomes cost what was driven).
     pub expected_cost: Cost,
     /// The probability that the goal turns out unreachable.
@@ -126,7 +126,7 @@ pub struct Planned {
 /// assert_eq!(planned.stuck_probability, 0.0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn plan(terrain: &Terrain, options: &PlannerOptions) -> Result<Planned, ContingencyError> {
+pub fn plan(terrain: &Terrain, options: &PlannerOptions) -> Result<ContingencyPlan, ContingencyError> {
     let started = Instant::now();
     let mut search = AoStar::new(terrain, *options);
     search.run()?;
@@ -134,7 +134,7 @@ pub fn plan(terrain: &Terrain, options: &PlannerOptions) -> Result<Planned, Cont
     let mut stats = search.stats;
     stats.abstraction = search.abs.stats();
     stats.time_s = started.elapsed().as_secs_f64();
-    Ok(Planned {
+    Ok(ContingencyPlan {
         expected_cost: search.states[ROOT].f,
         stuck_probability: plan.stuck_probability(),
         plan,

@@ -12,7 +12,7 @@ mod world;
 use std::time::{Duration, Instant};
 
 use serde::Serialize;
-use trailmark::car::{CarError, CarMap, HybridAStar, HybridSettings};
+use trailmark::car::{CarError, CarMap, HybridAStar, HybridOptions};
 use trailmark::core::footprint::Footprint;
 use trailmark::core::geometry::{Pose, Vector};
 use trailmark::core::reeds_shepp::ReedsSheppPath;
@@ -134,7 +134,7 @@ pub fn bench(suite: Suite, seed: u64, ompl: Option<&OmplDriver>) -> Result<CarRe
         report.map_ms.push((w.name.clone(), clock.elapsed().as_secs_f64() * 1e3));
         let disc = Footprint::Radius(ROBOT_RADIUS);
         let settings =
-            |reverse| HybridSettings { turning_radius: TURNING_RADIUS, reverse, ..HybridSettings::default() };
+            |reverse| HybridOptions { turning_radius: TURNING_RADIUS, reverse, ..HybridOptions::default() };
         let hybrid_rs = HybridAStar::new(&map, &disc, settings(true)).map_err(|e| e.to_string())?;
         let hybrid_dubins = HybridAStar::new(&map, &disc, settings(false)).map_err(|e| e.to_string())?;
         let queries = w.queries(size.queries, seed ^ 0xca5, |p| hybrid_rs.is_free(p));

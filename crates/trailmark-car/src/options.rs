@@ -12,7 +12,7 @@ pub const MAX_HEADING_BINS: u32 = 1440;
 /// grid read with resolution 1).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
-pub struct HybridSettings {
+pub struct HybridOptions {
     /// The smallest turning radius of the car's reference point. At least half a cell: a
     /// tighter turn would not leave its cell before its heading moved a bin.
     pub turning_radius: f64,
@@ -41,13 +41,13 @@ pub struct HybridSettings {
     pub smooth: bool,
 }
 
-impl Default for HybridSettings {
+impl Default for HybridOptions {
     /// Nav2 Smac Hybrid-A*'s defaults: turning radius 0.4 m, 72 heading bins, reverse allowed
     /// with penalty 2, turning penalty 1.2, analytic shots every `h / 3.5` expansions up to
     /// 3 m. Smac has no penalty for a change of gear beyond the reverse penalty: 0. Paths are
     /// smoothed, as Smac smooths them.
     fn default() -> Self {
-        HybridSettings {
+        HybridOptions {
             turning_radius: 0.4,
             heading_bins: 72,
             reverse: true,
@@ -61,7 +61,7 @@ impl Default for HybridSettings {
     }
 }
 
-impl HybridSettings {
+impl HybridOptions {
     /// Checks every setting against its range, the turning radius against the map's cell size
     /// `resolution`.
     pub fn check(&self, resolution: f64) -> Result<(), CarError> {

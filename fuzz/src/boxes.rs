@@ -26,6 +26,8 @@ fn clear(world: &BoxesSpec, q: &[f64]) -> bool {
 
 /// Whether the segment `a`-`b` runs inside the closed box `[lo, hi]` for more than a billionth
 /// of its length (the slab test: the parameters where it lies within every axis's sides).
+/// Written here again on purpose, apart from the library's `enters`: the check must not share
+/// the code it checks.
 fn clips(a: &[f64], b: &[f64], lo: &[f64], hi: &[f64]) -> bool {
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
     for i in 0..a.len() {

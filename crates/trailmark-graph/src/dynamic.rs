@@ -111,7 +111,8 @@ impl Rebuild for Trapezoids {
     }
 }
 
-/// Why an obstacle change was refused (the roadmap is then unchanged).
+/// Why an obstacle change was refused (the roadmap is then unchanged). Its obstacle variants
+/// say what `PrmError`'s say, for the roadmaps of another type.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DynamicError {
     /// The new obstacle is not a valid polygon.

@@ -77,6 +77,9 @@ impl<'a> CostmapSvg<'a> {
         self
     }
 
+    // The marks below are `WorldSvg`'s too; they are drawn here in cell units on an image and
+    // in its own styles, so only their builders look alike.
+
     /// A path to draw, in metres (several may be drawn, in turn's colours).
     pub fn path(mut self, points: &[Point]) -> Self {
         self.paths.push(points.to_vec());

@@ -68,7 +68,8 @@ impl<A, N, Q> TreePlanner<A, N, Q> {
 pub(crate) type Grown<S> = Result<Plan<<S as StateSpace>::State>, PlanError>;
 
 /// How one tree planner grows its trees in a run that [`Planner::solve`] has checked and
-/// started: the part of a tree planner that is its own.
+/// started: the part of a tree planner that is its own. (Each planner's impl opens with the
+/// same signature: a trait's impls.)
 pub(crate) trait Grow: Sized {
     /// Its name, as [`Planner::name`] gives it.
     const NAME: &'static str;

@@ -162,6 +162,8 @@ impl<C: CarCurves> Car<C> {
     }
 }
 
+// The bounds, samples and coordinates of poses are `Se2`'s (the shared helpers of `mod.rs`);
+// the trait's shells around them look alike.
 impl<C: CarCurves> StateSpace for Car<C> {
     type State = Pose;
     const SYMMETRIC: bool = C::SYMMETRIC;

@@ -14,7 +14,7 @@ use std::time::Instant;
 
 use foldhash::HashMap;
 use trailmark_core::dubins::{DubinsPath, Turn};
-use trailmark_core::footprint::Footprint;
+use trailmark_core::footprint::{Footprint, sweep_margin};
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::reeds_shepp::{Gear, ReedsSheppPath};
 use trailmark_core::termination::{Stop, Termination, Watch};
@@ -136,10 +136,7 @@ impl<'m> HybridAStar<'m> {
         }
         let reach = footprint.circumscribed_radius()?;
         let step = map.resolution() / CHECKS_PER_CELL;
-        // Between two poses `step` apart along an arc, a point of the robot `reach` from its
-        // reference point moves at most `step (1 + reach / radius)`: a pose in between is within
-        // half of that of one of them.
-        let margin = 0.5 * step * (1.0 + reach / settings.turning_radius);
+        let margin = sweep_margin(step, reach, settings.turning_radius);
         let motions = Motions::new(
             settings.turning_radius,
             settings.heading_bins,

@@ -4,7 +4,7 @@
 //! [`ReedsShepp`](trailmark_space::ReedsShepp) poses) on costmaps, grids and polygon worlds laid
 //! on cells.
 
-use trailmark_core::footprint::Footprint;
+use trailmark_core::footprint::{Footprint, sweep_margin};
 use trailmark_core::geometry::Pose;
 use trailmark_space::{Car, CarCurves, Validity};
 
@@ -66,9 +66,7 @@ impl<'m> MapFootprintValidity<'m> {
             return Err(CarError::Setting { setting: "step", expected: "positive and finite", value: step });
         }
         let reach = footprint.circumscribed_radius()?;
-        // As Hybrid A*'s margin: a point `reach` from the reference point moves at most
-        // `step (1 + reach / radius)` between two poses `step` apart along an arc.
-        let margin = 0.5 * step * (1.0 + reach / space.turning_radius());
+        let margin = sweep_margin(step, reach, space.turning_radius());
         Ok(MapFootprintValidity {
             map,
             exact: FootprintChecker::new(footprint, 0.0),

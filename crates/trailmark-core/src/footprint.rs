@@ -33,6 +33,15 @@ use crate::world::{Polygon, PolygonError};
 /// outline is refused before it is read rather than slowing every check.
 pub const MAX_FOOTPRINT_VERTICES: usize = 1024;
 
+/// How far a footprint checked at poses `step` apart along a car's curves must be grown so that
+/// the poses between two checked ones are covered too: between two poses `step` apart along an
+/// arc of radius `turning_radius`, a point `reach` from the reference point moves at most
+/// `step (1 + reach / turning_radius)`, so a pose in between is within half of that of one of
+/// them. Hybrid A* and the car spaces' footprint validities grow their checks by it.
+pub fn sweep_margin(step: f64, reach: f64, turning_radius: f64) -> f64 {
+    0.5 * step * (1.0 + reach / turning_radius)
+}
+
 /// The robot's shape about its reference point (the point whose pose a planner plans), in the
 /// robot's frame: x forward, y to the left. Serialized as `{"radius": r}` or
 /// `{"polygon": [[x, y], ...]}` (Nav2's `robot_radius` and `footprint`); a polygon read from a

@@ -28,7 +28,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use trailmark_core::footprint::Footprint;
+use trailmark_core::footprint::{Footprint, sweep_margin};
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::{Bounds, CollisionChecker, PolygonWorld};
 
@@ -160,10 +160,7 @@ impl FootprintValidity {
         let shape = match footprint {
             Footprint::Radius(r) => FootprintShape::Disc(grown(*r, 0.0)?),
             Footprint::Polygon(polygon) => {
-                // Between two poses `step` apart along an arc, a point `reach` from the reference
-                // point moves at most `step (1 + reach / radius)`: a pose between is within half
-                // of that of one of them.
-                let margin = 0.5 * step * (1.0 + reach / space.turning_radius());
+                let margin = sweep_margin(step, reach, space.turning_radius());
                 FootprintShape::Polygon {
                     corners: polygon.vertices().to_vec(),
                     exact: Box::new(grown(0.0, 0.0)?),

@@ -20,9 +20,9 @@ impl PlannerSpec {
     }
 
     /// This planner as a [`Replanner`] from `start` to `goal` on `graph` with the heuristic
-    /// `h(a, b)`, for the planners that keep their search between plans: `astar` (A* from
-    /// scratch at every plan), `lpa_star`, `dstar_lite` and `ad_star` (whose limits apply to
-    /// each plan); `None` for the others. [`navigate`](crate::navigate::navigate) drives the
+    /// `h(a, b)`, for the planners the registry says replan (`astar`, A* from scratch at every
+    /// plan; `lpa_star`, `dstar_lite`, `adaptive_astar`, `mpgaa_star`; `ad_star`, whose limits
+    /// apply to each plan); `None` for the others. [`navigate`](crate::navigate::navigate) drives the
     /// robot with it, and `solve` runs LPA* and D* Lite through it.
     pub fn replanner<'h, G, H>(
         &self,

@@ -10,8 +10,8 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use trailmark::core::generate;
 use trailmark::graph::Trapezoids;
-use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
+use trailmark::sample::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 
 const COUNTS: [usize; 5] = [10, 50, 100, 200, 500];
 

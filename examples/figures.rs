@@ -390,10 +390,10 @@ fn roadmaps() -> Result<(), Box<dyn std::error::Error>> {
     use trailmark::core::geometry::{Point, Pose};
     use trailmark::core::svg::WorldSvg;
     use trailmark::graph::Roadmap;
-    use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
     use trailmark::graph::trapezoid::Trapezoids;
     use trailmark::graph::visibility::{Edges, VisibilityGraph};
     use trailmark::sample::Dubins;
+    use trailmark::sample::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 
     let world = generate::convex_obstacles(40.0, 24, 6, 0.5, 7)?;
     // Round corners in quarter-turn steps keep the pictures small.

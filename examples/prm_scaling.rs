@@ -8,8 +8,8 @@
 use std::time::Instant;
 
 use trailmark::core::generate::convex_obstacles;
-use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::sample::Dubins;
+use trailmark::sample::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!(

@@ -11,11 +11,11 @@ use trailmark::core::world::PolygonWorld;
 use trailmark::graph::Roadmap;
 use trailmark::graph::Trapezoids;
 use trailmark::graph::dynamic::{DynamicRoadmap, Rebuild};
-use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::graph::visibility::Edges;
 use trailmark::graph::visibility::VisibilityGraph;
 use trailmark::prelude::*;
 use trailmark::sample::Dubins;
+use trailmark::sample::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 
 mod common;
 

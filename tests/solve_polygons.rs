@@ -477,7 +477,7 @@ fn sampled_roadmaps_have_bounded_sizes() {
         r#""graph": "prm", "samples": 1000000000000, "start": [1, 1], "goal": [9, 1], "planner": {"name": "astar"}"#,
     );
     let error = solve(&too_many, ".").expect_err("too many samples");
-    assert!(matches!(error, SolveError::Prm(trailmark::graph::prm::PrmError::TooManyNodes)), "{error}");
+    assert!(matches!(error, SolveError::Prm(trailmark::sample::PrmError::TooManyNodes)), "{error}");
     let clock = std::time::Instant::now();
     let nowhere = document(
         20.0,
@@ -485,7 +485,7 @@ fn sampled_roadmaps_have_bounded_sizes() {
     );
     let error = solve(&nowhere, ".").expect_err("no free space");
     assert!(
-        matches!(error, SolveError::Prm(trailmark::graph::prm::PrmError::SamplingExhausted { .. })),
+        matches!(error, SolveError::Prm(trailmark::sample::PrmError::SamplingExhausted { .. })),
         "{error}"
     );
     assert!(clock.elapsed().as_secs() < 60, "giving up took {:?}", clock.elapsed());

@@ -6,10 +6,10 @@ use thiserror::Error;
 use trailmark_core::curve::CurveError;
 use trailmark_core::grid::{Cell, GridError, GridHeuristic};
 use trailmark_core::movingai::ReadError;
-use trailmark_graph::prm::PrmError;
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::VisibilityError;
 use trailmark_map::MapError;
+use trailmark_sample::PrmError;
 use trailmark_sample::{PlanError, SamplerError, SpaceError};
 use trailmark_search::SearchError;
 

@@ -25,9 +25,10 @@ enum Shape {
     Convex(Vec<Point>),
 }
 
-/// Checks footprints on a map.
+/// A footprint, grown by a margin, checked on a map's cells: Hybrid A*'s check, and the test a
+/// [`CarMap`] gives [`MapFootprintValidity`](crate::MapFootprintValidity).
 #[derive(Debug, Clone)]
-pub(crate) struct FootprintChecker {
+pub struct FootprintChecker {
     shape: Shape,
     /// Discs covering the grown footprint, in the robot's frame: when each is clear of
     /// obstacles by the map's distances, so is the footprint. An elongated car is covered by
@@ -37,7 +38,8 @@ pub(crate) struct FootprintChecker {
 }
 
 impl FootprintChecker {
-    /// Checks `footprint` grown by `margin`. The footprint's radius must have been checked.
+    /// Checks `footprint` grown by `margin`. The footprint must have been checked
+    /// ([`Footprint::check`]): a polygon's hull and discs are built from it as it is.
     pub fn new(footprint: &Footprint, margin: f64) -> Self {
         match footprint {
             Footprint::Radius(r) => FootprintChecker {

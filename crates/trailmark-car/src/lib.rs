@@ -54,6 +54,7 @@ mod smooth;
 mod stats;
 mod validity;
 
+pub use collision::FootprintChecker;
 pub use error::CarError;
 pub use hybrid_astar::{CarPlan, HybridAStar, MAX_MOTION_CELLS};
 pub use map::CarMap;

@@ -1,15 +1,17 @@
-//! A car's footprint on a [`CarMap`] as the configuration spaces' [`Validity`]: the check
-//! Hybrid A* makes (one footprint checker for both), for the sampling planners in
+//! A car's footprint on a [`CarMap`] as the configuration spaces' [`Validity`]: the map is a
+//! [`FootprintWorld`], so `trailmark-space`'s one [`FootprintValidity`] checks a footprint on
+//! its cells as Hybrid A* does (the same [`FootprintChecker`]), for the sampling planners in
 //! the car spaces (RRT-Connect or RRT* over [`Dubins`](trailmark_space::Dubins) or
 //! [`ReedsShepp`](trailmark_space::ReedsShepp) poses) on costmaps, grids and polygon worlds laid
 //! on cells.
 
-use trailmark_core::footprint::{Footprint, sweep_margin};
+use trailmark_core::footprint::Footprint;
 use trailmark_core::geometry::Pose;
-use trailmark_space::{Car, CarCurves, Validity};
+#[cfg(doc)]
+use trailmark_space::Validity;
+use trailmark_space::{FootprintValidity, FootprintWorld, SpaceError};
 
 use crate::collision::FootprintChecker;
-use crate::error::CarError;
 use crate::map::CarMap;
 
 /// A footprint on a map, for the car spaces: a state is valid when the footprint there stays on
@@ -41,49 +43,26 @@ use crate::map::CarMap;
 /// assert!(!validity.motion_is_valid(&space, &a, &b));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Debug, Clone)]
-pub struct MapFootprintValidity<'m> {
-    map: &'m CarMap,
-    exact: FootprintChecker,
-    swept: FootprintChecker,
-    step: f64,
-}
+pub type MapFootprintValidity<'m> = FootprintValidity<&'m CarMap>;
 
-impl<'m> MapFootprintValidity<'m> {
-    /// `footprint` on `map`, for motions along the curves of `space` checked every `step`
-    /// metres.
-    ///
-    /// Errors: a footprint that is not a valid disc or polygon, or a `step` that is not positive
-    /// and finite.
-    pub fn new<C: CarCurves>(
-        map: &'m CarMap,
-        footprint: &Footprint,
-        space: &Car<C>,
-        step: f64,
-    ) -> Result<Self, CarError> {
-        footprint.check()?;
-        if !(step > 0.0 && step.is_finite()) {
-            return Err(CarError::Setting { setting: "step", expected: "positive and finite", value: step });
-        }
-        let reach = footprint.circumscribed_radius()?;
-        let margin = sweep_margin(step, reach, space.turning_radius());
-        Ok(MapFootprintValidity {
-            map,
-            exact: FootprintChecker::new(footprint, 0.0),
-            swept: FootprintChecker::new(footprint, margin),
-            step,
-        })
-    }
-}
+/// A map's cells as a footprint's world: the footprint laid on the cells ([`FootprintChecker`],
+/// Hybrid A*'s check), at poses given in world coordinates.
+impl FootprintWorld for CarMap {
+    type Test = FootprintChecker;
 
-impl<C: CarCurves> Validity<Car<C>> for MapFootprintValidity<'_> {
-    fn state_is_valid(&self, _: &Car<C>, s: &Pose) -> bool {
-        self.exact.is_free(self.map, &self.map.to_map(s), &mut 0)
+    /// Errors: a footprint that is not a valid disc or polygon.
+    fn footprint_test(&self, footprint: &Footprint, margin: f64) -> Result<FootprintChecker, SpaceError> {
+        footprint.check().map_err(|_| SpaceError::NotPositive {
+            what: "footprint radius",
+            value: match footprint {
+                Footprint::Radius(r) => *r,
+                Footprint::Polygon(_) => f64::NAN,
+            },
+        })?;
+        Ok(FootprintChecker::new(footprint, margin))
     }
 
-    fn motion_is_valid(&self, space: &Car<C>, a: &Pose, b: &Pose) -> bool {
-        C::sample(&space.path(a, b), self.step).is_some_and(|poses| {
-            poses.iter().all(|p| self.swept.is_free(self.map, &self.map.to_map(p), &mut 0))
-        })
+    fn footprint_is_free(&self, test: &FootprintChecker, pose: &Pose) -> bool {
+        test.is_free(self, &self.to_map(pose), &mut 0)
     }
 }

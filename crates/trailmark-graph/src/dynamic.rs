@@ -111,21 +111,13 @@ impl Rebuild for Trapezoids {
     }
 }
 
-/// Why an obstacle change was refused (the roadmap is then unchanged). Its obstacle variants
-/// say what `PrmError`'s say, for the roadmaps of another type.
+/// Why an obstacle change was refused (the roadmap is then unchanged).
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DynamicError {
-    /// The new obstacle is not a valid polygon.
+    /// The new obstacle is not a valid polygon, or the obstacle to remove is not there
+    /// ([`WorldError::NoSuchObstacle`]).
     #[error(transparent)]
     World(#[from] WorldError),
-    /// There is no obstacle with that index.
-    #[error("there is no obstacle {index} (the world has {count})")]
-    NoSuchObstacle {
-        /// The index asked for.
-        index: usize,
-        /// The number of obstacles.
-        count: usize,
-    },
     /// A pinned point is not finite.
     #[error("a pinned point must be finite, got ({x}, {y})")]
     NotFinite {
@@ -204,9 +196,7 @@ impl<R: Rebuild> DynamicRoadmap<R> {
 
     /// Removes obstacle `index`; returns the edges that changed.
     pub fn remove_obstacle(&mut self, index: usize) -> Result<Vec<EdgeChange<u32>>, DynamicError> {
-        let count = self.world.obstacles().len();
-        let (world, _) =
-            self.world.without_obstacle(index).ok_or(DynamicError::NoSuchObstacle { index, count })?;
+        let (world, _) = self.world.without_obstacle(index)?;
         Ok(self.change(world))
     }
 
@@ -477,7 +467,10 @@ mod tests {
         assert_eq!(back.len(), changes.len());
         assert_eq!(roadmap.adjacency[..before.len()], old[..before.len()]);
         assert!(roadmap.adjacency[before.len()..].iter().all(Vec::is_empty));
-        assert_eq!(roadmap.remove_obstacle(5), Err(DynamicError::NoSuchObstacle { index: 5, count: 1 }));
+        assert_eq!(
+            roadmap.remove_obstacle(5),
+            Err(DynamicError::World(WorldError::NoSuchObstacle { index: 5, count: 1 }))
+        );
         assert!(matches!(roadmap.try_pin(Point::new(f64::NAN, 0.0)), Err(DynamicError::NotFinite { .. })));
     }
 }

@@ -3,18 +3,18 @@
 //! Grid graphs ([`GridGraph`]): 4- or 8-connected, with per-cell costs and a choice of
 //! corner-cutting rule. Roadmaps of polygon worlds: visibility graphs ([`VisibilityGraph`]) by
 //! Lee's rotational sweep with exact predicates, trapezoidal cell decompositions
-//! ([`Trapezoids`]), probabilistic roadmaps over the state spaces of `trailmark-space`
-//! (segments in `R2`, Dubins curves, ...) ([`PolygonPrm`]), all queried through [`RoadmapQuery`]; and
+//! ([`Trapezoids`]), all queried through [`RoadmapQuery`] (as `trailmark-sample`'s probabilistic
+//! roadmap of a polygon world is, through the same [`Roadmap`] trait); and
 //! roadmaps of worlds whose obstacles change, with stable node ids and the changed edges for
 //! D* Lite ([`DynamicRoadmap`]). The graphs implement the traits of [`trailmark_core::graph`];
 //! no builder here runs a search.
 //!
 //! Every item is documented at the crate root; the module paths
-//! (`trailmark_graph::prm::PolygonPrm`) still work, hidden, for one release.
+//! (`trailmark_graph::visibility::VisibilityGraph`) still work, hidden, for one release.
 //!
 //! **Features.** `roadmaps` (on by default) brings everything over polygon worlds and state
-//! spaces: the visibility graph, trapezoidal cells, the PRMs, [`Roadmap`] and the dynamic
-//! roadmap, with `trailmark-space`, parry2d and rand beneath them. Without it
+//! spaces: the visibility graph, trapezoidal cells, [`Roadmap`] and the dynamic
+//! roadmap, with parry2d beneath them. Without it
 //! (`default-features = false`) the crate is the grid graphs alone ([`GridGraph`],
 //! [`CornerGraph`]) on `trailmark-core`'s light build: 14 crates with `trailmark-search`, see
 //! the search guide's "A light build".
@@ -47,9 +47,6 @@ pub mod dynamic;
 pub mod grid;
 #[cfg(feature = "roadmaps")]
 #[doc(hidden)]
-pub mod prm;
-#[cfg(feature = "roadmaps")]
-#[doc(hidden)]
 pub mod roadmap;
 mod sight;
 #[cfg(feature = "roadmaps")]
@@ -63,11 +60,6 @@ pub use corners::CornerGraph;
 #[cfg(feature = "roadmaps")]
 pub use dynamic::{DynamicError, DynamicRoadmap, NodeKey, Rebuild};
 pub use grid::{CornerCutting, GridGraph, Neighbours};
-#[cfg(feature = "roadmaps")]
-pub use prm::{
-    Connection, DubinsPrm, MAX_ROADMAP_NODES, PlanarSpace, PolygonPrm, PrmError, PrmOptions, PrmQuery,
-    PrmSampler, ReedsSheppPrm,
-};
 #[cfg(feature = "roadmaps")]
 pub use roadmap::{Roadmap, RoadmapQuery};
 #[cfg(feature = "roadmaps")]

@@ -79,18 +79,26 @@ pub struct RoadmapQuery<'g, R: Roadmap> {
 }
 
 impl<'g, R: Roadmap> RoadmapQuery<'g, R> {
-    /// The query graph of `roadmap` with the given links. `from_start` and `to_goal` have one
-    /// entry per roadmap node (infinite: no edge).
-    pub(crate) fn new(
+    /// The query graph of `roadmap` with the given links: `from_start[v]` the cost of the edge
+    /// `start -> v`, `to_goal[v]` that of `v -> goal` (infinite: no edge), `direct` that of
+    /// `start -> goal`. `None` unless both have one entry per roadmap node. Each roadmap's
+    /// `query` method builds it; a roadmap of another crate does too.
+    pub fn new(
         roadmap: &'g R,
         (start, goal): (R::Position, R::Position),
         from_start: Vec<Cost>,
         to_goal: Vec<Cost>,
         direct: Option<Cost>,
-    ) -> Self {
-        debug_assert_eq!(from_start.len(), roadmap.node_count());
-        debug_assert_eq!(to_goal.len(), roadmap.node_count());
-        Self { roadmap, start, goal, from_start, to_goal, direct }
+    ) -> Option<Self> {
+        let n = roadmap.node_count();
+        (from_start.len() == n && to_goal.len() == n).then_some(Self {
+            roadmap,
+            start,
+            goal,
+            from_start,
+            to_goal,
+            direct,
+        })
     }
 
     /// The roadmap the query was made on.

@@ -469,7 +469,8 @@ impl Trapezoids {
         };
         let shared = starts.iter().any(|c| goals.contains(c));
         let direct = shared.then(|| (goal - start).norm());
-        Ok(RoadmapQuery::new(self, (start, goal), links(start, &starts), links(goal, &goals), direct))
+        Ok(RoadmapQuery::new(self, (start, goal), links(start, &starts), links(goal, &goals), direct)
+            .expect("a link per roadmap node"))
     }
 }
 

@@ -61,7 +61,7 @@ mod worlds;
 
 pub use worlds::arm;
 #[doc(hidden)]
-pub use {roadmap::prm, tree::rrt, tree::rrt_connect, tree::rrt_star, worlds::boxes};
+pub use {roadmap::polygon, roadmap::prm, tree::rrt, tree::rrt_connect, tree::rrt_star, worlds::boxes};
 
 // The configuration-space vocabulary, at the paths it had when it lived here.
 #[doc(hidden)]
@@ -72,6 +72,10 @@ pub use boxes::BoxWorld;
 pub use nalgebra::SVector;
 pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution};
 pub use planner::Planner;
+pub use polygon::{
+    DubinsPrm, MAX_ROADMAP_NODES, PlanarSpace, PolygonPrm, PrmError, PrmOptions, PrmQuery, PrmSampler,
+    ReedsSheppPrm,
+};
 pub use prm::{Growth, Prm};
 pub use problem::{Goal, GoalState, Problem, admit};
 /// The `rand` crate (0.10) the generator implements: `rand::RngExt` draws ranges and floats.

@@ -1,11 +1,15 @@
 //! Configuration spaces: the vocabulary every continuous planner of trailmark speaks, the
-//! sampling planners of `trailmark-sample` and the polygon roadmaps of `trailmark-graph` alike.
+//! sampling planners and the roadmaps of `trailmark-sample` and the car planners of
+//! `trailmark-car` alike.
 //!
 //! - [`space`]: the state spaces (sampling, distances, interpolation, steering): [`R2`],
 //!   [`Rn`], [`Se2`], the car spaces [`Dubins`] and [`ReedsShepp`], and the [`StateSpace`]
 //!   trait for your own;
 //! - [`validity`]: which states and motions are valid: exact checks against polygon worlds and
-//!   a car's footprint, motions checked at a resolution for your own spaces ([`Sampled`]);
+//!   motions checked at a resolution for your own spaces ([`Sampled`]);
+//! - [`footprint`]: a car's footprint in any world that says where a footprint fits
+//!   ([`FootprintWorld`]: a polygon world here, a map's cells in `trailmark-car`), one
+//!   [`FootprintValidity`];
 //! - [`sampler`]: where a planner draws its states: uniformly, in a Halton sequence, or near
 //!   obstacles and in narrow passages (Gaussian, bridge); a sampler sees the best cost so far
 //!   ([`Draw::best_cost`]), for informed sampling;
@@ -38,12 +42,14 @@
 #![deny(missing_docs)]
 
 mod connection;
+pub mod footprint;
 pub mod nearest;
 pub mod sampler;
 pub mod space;
 pub mod validity;
 
 pub use connection::Connection;
+pub use footprint::{FootprintValidity, FootprintWorld, PolygonFootprint};
 /// The states of [`Rn`]: nalgebra's fixed-size column vectors (nalgebra 0.35).
 pub use nalgebra::SVector;
 pub use nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
@@ -60,4 +66,4 @@ pub use space::{
     Car, CarCurves, Dubins, DubinsCurves, R2, ReedsShepp, ReedsSheppCurves, Rn, Se2, SpaceError, StateSpace,
     UnitCube,
 };
-pub use validity::{FootprintValidity, Sampled, Validity};
+pub use validity::{Sampled, Validity};

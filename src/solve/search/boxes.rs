@@ -11,7 +11,7 @@ use trailmark_sample::{
     BoxWorld, Halton, KdNearest, PlanError, Prm, Rn, StateSampler, StateSpace, Uniform, paths,
 };
 
-use trailmark_graph::{MAX_ROADMAP_NODES, PrmError};
+use trailmark_sample::{MAX_ROADMAP_NODES, PrmError};
 
 use trailmark_core::grid::GridHeuristic;
 

@@ -6,7 +6,7 @@ use std::time::Instant;
 use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
-use trailmark_graph::prm::PolygonPrm;
+use trailmark_sample::PolygonPrm;
 use trailmark_sample::StateSpace;
 use trailmark_sample::space::{Car, CarCurves};
 

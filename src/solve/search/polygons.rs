@@ -7,10 +7,10 @@ use trailmark_core::geometry::Point;
 use trailmark_core::grid::GridHeuristic;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::PolygonWorld;
-use trailmark_graph::prm::PolygonPrm;
 use trailmark_graph::trapezoid::TrapezoidError;
 use trailmark_graph::visibility::{Edges, VisibilityError};
 use trailmark_graph::{Roadmap, Trapezoids, VisibilityGraph};
+use trailmark_sample::PolygonPrm;
 use trailmark_sample::space::{DubinsCurves, ReedsSheppCurves};
 
 use super::roadmap::{grow, prm_options, search_roadmap};

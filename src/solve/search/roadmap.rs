@@ -3,8 +3,8 @@
 
 use std::time::Duration;
 
-use trailmark_graph::prm::{Connection, PlanarSpace, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark_graph::{Roadmap, RoadmapQuery};
+use trailmark_sample::{Connection, PlanarSpace, PolygonPrm, PrmOptions, PrmSampler};
 
 use crate::solve::error::{DocumentError, SolveError};
 use crate::solve::problem::{GraphKind, ProblemSpec, SamplerKind};

@@ -18,10 +18,10 @@ use trailmark::core::freespace::Location;
 use trailmark::core::generate;
 use trailmark::core::geometry::{Point, Pose, Vector};
 use trailmark::core::reeds_shepp::ReedsSheppPath;
-use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::graph::visibility::{Edges, VisibilityGraph};
 use trailmark::graph::{RoadmapQuery, Trapezoids};
 use trailmark::prelude::*;
+use trailmark::sample::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 
 use crate::bench::progress::SectionProgress;
 use crate::bench::report::table;

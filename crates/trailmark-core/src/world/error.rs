@@ -87,6 +87,14 @@ pub enum WorldError {
         /// What is wrong with it.
         error: PolygonError,
     },
+    /// An obstacle to remove is not there.
+    #[error("there is no obstacle {index} (the world has {count})")]
+    NoSuchObstacle {
+        /// The index asked for.
+        index: usize,
+        /// The number of obstacles.
+        count: usize,
+    },
 }
 
 /// The largest coordinate magnitude (of bounds, obstacle vertices and the robot radius) a

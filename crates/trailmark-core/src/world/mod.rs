@@ -126,13 +126,15 @@ impl PolygonWorld {
     }
 
     /// This world without obstacle `index` (the later ones move down by one), and the obstacle
-    /// removed; `None` if there is no such obstacle.
-    pub fn without_obstacle(&self, index: usize) -> Option<(Self, Polygon)> {
-        (index < self.obstacles.len()).then(|| {
-            let mut world = self.clone();
-            let removed = world.obstacles.remove(index);
-            (world, removed)
-        })
+    /// removed; [`WorldError::NoSuchObstacle`] if there is no such obstacle.
+    pub fn without_obstacle(&self, index: usize) -> Result<(Self, Polygon), WorldError> {
+        let count = self.obstacles.len();
+        if index >= count {
+            return Err(WorldError::NoSuchObstacle { index, count });
+        }
+        let mut world = self.clone();
+        let removed = world.obstacles.remove(index);
+        Ok((world, removed))
     }
 
     /// The world of `obstacle` alone, with these bounds and radius: its checker tells which

@@ -339,7 +339,8 @@ impl VisibilityGraph {
             });
         }
         let [from_start, from_goal] = links;
-        Ok(RoadmapQuery::new(self, (start, goal), from_start, from_goal, direct))
+        Ok(RoadmapQuery::new(self, (start, goal), from_start, from_goal, direct)
+            .expect("a link per roadmap node"))
     }
 }
 

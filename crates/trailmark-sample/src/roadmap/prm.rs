@@ -48,7 +48,6 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use trailmark_core::UnionFind;
 use trailmark_core::cost::Cost;
-use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
 use trailmark_search::Search;
 
 use crate::nearest::{Direction, NearestNeighbors};
@@ -87,17 +86,33 @@ const SEARCH_GROWTH: f64 = 0.1;
 pub struct Prm<S: StateSpace, N, Q = Uniform> {
     empty: N,
     nearest: N,
-    sampler: Q,
+    pub(super) sampler: Q,
     connection: Connection,
     optimizing: bool,
     seed: u64,
-    rng: Option<ChaCha8Rng>,
-    out: Vec<Vec<(u32, Cost)>>,
-    into: Vec<Vec<(u32, Cost)>>,
+    pub(super) rng: Option<ChaCha8Rng>,
+    /// The motions out of each milestone, with their costs: the free ones, and the blocked ones
+    /// (at infinite cost) in a roadmap that [`keeps_blocked`](Self::keeps_blocked).
+    pub(super) out: Vec<Vec<(u32, Cost)>>,
+    /// The motions into each milestone (asymmetric spaces only).
+    pub(super) into: Vec<Vec<(u32, Cost)>>,
+    /// Every motion tried, in order, in a roadmap whose world changes; empty otherwise.
+    pub(super) tried: Vec<Candidate>,
+    keeps_blocked: bool,
     edge_count: usize,
     components: UnionFind,
-    checks: u64,
+    pub(super) checks: u64,
     _space: PhantomData<fn() -> S>,
+}
+
+/// A motion a roadmap tried: free (an edge) or blocked (kept so that a change of the world can
+/// free it).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Candidate {
+    /// Tail and head (for a symmetric space, the two ends).
+    pub(super) ends: [u32; 2],
+    /// The motion's cost while free; infinite while blocked.
+    pub(super) cost: Cost,
 }
 
 impl<S: StateSpace, N: NearestNeighbors<S> + Clone> Prm<S, N> {
@@ -134,6 +149,8 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
             rng: None,
             out: Vec::new(),
             into: Vec::new(),
+            tried: Vec::new(),
+            keeps_blocked: false,
             edge_count: 0,
             components: UnionFind::default(),
             checks: 0,
@@ -180,7 +197,8 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         self.nearest.state(id)
     }
 
-    /// The edges out of milestone `id`, with their costs.
+    /// The edges out of milestone `id`, with their costs (a planner's roadmap keeps free
+    /// motions only).
     pub fn edges_from(&self, id: u32) -> &[(u32, Cost)] {
         &self.out[id as usize]
     }
@@ -255,6 +273,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         self.rng = None;
         self.out.clear();
         self.into.clear();
+        self.tried.clear();
         self.edge_count = 0;
         self.components = UnionFind::default();
         self.checks = 0;
@@ -277,14 +296,21 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     }
 
     /// The milestone at exactly `state`, if any.
-    fn find(&self, space: &S, state: &S::State) -> Option<u32> {
+    pub(super) fn find(&self, space: &S, state: &S::State) -> Option<u32> {
         let (id, d) = self.nearest.nearest(space, state, Direction::ToQuery)?;
         (d == 0.0 && self.nearest.state(id) == state).then_some(id)
     }
 
-    /// The neighbours a new milestone at `state` joins, in `direction`.
-    fn neighbours(&self, space: &S, state: &S::State, direction: Direction) -> Vec<(u32, f64)> {
-        match self.connection.neighbour_count(self.nearest.len() + 1, space.dimension()) {
+    /// The milestones a state joins, in `direction`, in a roadmap of `n` milestones (counting
+    /// it), nearest first.
+    pub(super) fn neighbours(
+        &self,
+        space: &S,
+        state: &S::State,
+        direction: Direction,
+        n: usize,
+    ) -> Vec<(u32, f64)> {
+        match self.connection.neighbour_count(n, space.dimension()) {
             Some(k) => self.nearest.k_nearest(space, state, k, direction),
             None => {
                 let Connection::Radius { radius } = self.connection else { unreachable!("a radius rule") };
@@ -296,49 +322,128 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     /// Adds the admitted `state` as a milestone joined to its neighbours (motion checks stop
     /// when `watch` is interrupted); its id, or the id of the milestone already there.
     fn add<V: Validity<S>>(&mut self, space: &S, validity: &V, state: S::State, watch: &Watch<'_>) -> u32 {
-        if let Some(id) = self.find(space, &state) {
-            return id;
+        let motion =
+            |from: &S::State, to: &S::State, d: f64| validity.motion_is_valid(space, from, to).then_some(d);
+        let (id, _) = self
+            .add_checked(space, state, usize::MAX, motion, || watch.interrupted().is_some())
+            .expect("no limit");
+        id
+    }
+
+    /// Adds `state` as a milestone joined to its neighbours, each motion's cost given by
+    /// `motion` (from, to, their distance; `None` when blocked) until `interrupted`: its id and
+    /// `true`, or the id of the milestone already at `state` and `false`; `None` if the roadmap
+    /// already has `limit` milestones.
+    pub(super) fn add_checked(
+        &mut self,
+        space: &S,
+        state: S::State,
+        limit: usize,
+        mut motion: impl FnMut(&S::State, &S::State, f64) -> Option<Cost>,
+        interrupted: impl Fn() -> bool,
+    ) -> Option<(u32, bool)> {
+        let n = self.node_count() + 1;
+        let into = self.neighbours(space, &state, Direction::ToQuery, n);
+        // A milestone at `state` is at distance 0, so it leads the neighbours (every rule keeps
+        // the nearest once the roadmap has a milestone).
+        let mut at_zero = into.iter().take_while(|&&(_, d)| d == 0.0);
+        if let Some(&(v, _)) = at_zero.find(|&&(v, _)| *self.nearest.state(v) == state) {
+            return Some((v, false));
         }
-        let into = self.neighbours(space, &state, Direction::ToQuery);
+        if self.node_count() >= limit {
+            return None;
+        }
         let out =
-            if S::SYMMETRIC { Vec::new() } else { self.neighbours(space, &state, Direction::FromQuery) };
+            if S::SYMMETRIC { Vec::new() } else { self.neighbours(space, &state, Direction::FromQuery, n) };
+        let id = self.push(space, state);
+        let ends = into.into_iter().map(|(v, d)| (v, id, d)).chain(out.into_iter().map(|(v, d)| (id, v, d)));
+        for (from, to, d) in ends {
+            if interrupted() {
+                break;
+            }
+            self.checks += 1;
+            let cost = motion(self.nearest.state(from), self.nearest.state(to), d);
+            self.record(from, to, cost);
+        }
+        Some((id, true))
+    }
+
+    /// Stores `state` as a new milestone without edges (its own component); its id.
+    pub(super) fn push(&mut self, space: &S, state: S::State) -> u32 {
         let id = self.nearest.insert(space, state);
         self.out.push(Vec::new());
         if !S::SYMMETRIC {
             self.into.push(Vec::new());
         }
         self.components.push();
-        for (v, d) in into {
-            if watch.interrupted().is_some() {
-                return id;
-            }
-            self.checks += 1;
-            if validity.motion_is_valid(space, self.nearest.state(v), self.nearest.state(id)) {
-                self.join(v, id, d);
-            }
-        }
-        for (v, d) in out {
-            if watch.interrupted().is_some() {
-                return id;
-            }
-            self.checks += 1;
-            if validity.motion_is_valid(space, self.nearest.state(id), self.nearest.state(v)) {
-                self.join(id, v, d);
-            }
-        }
         id
     }
 
-    /// The edge `from -> to` of cost `cost` (both ways in a symmetric space).
-    fn join(&mut self, from: u32, to: u32, cost: Cost) {
+    /// Records the motion `from -> to`: an edge of cost `cost` (both ways in a symmetric
+    /// space), or, when blocked, nothing unless the roadmap keeps blocked motions.
+    pub(super) fn record(&mut self, from: u32, to: u32, cost: Option<Cost>) {
+        if cost.is_none() && !self.keeps_blocked {
+            return;
+        }
+        let cost = cost.unwrap_or(Cost::INFINITY);
+        if self.keeps_blocked {
+            self.tried.push(Candidate { ends: [from, to], cost });
+        }
         self.out[from as usize].push((to, cost));
         if S::SYMMETRIC {
             self.out[to as usize].push((from, cost));
         } else {
             self.into[to as usize].push((from, cost));
         }
-        self.edge_count += 1;
-        self.components.union(from, to);
+        if cost.is_finite() {
+            self.edge_count += 1;
+            self.components.union(from, to);
+        }
+    }
+
+    /// Keeps every motion tried from now on, blocked ones too, for a roadmap whose world
+    /// changes ([`set_cost`](Self::set_cost)).
+    pub(super) fn keep_blocked(&mut self) {
+        self.keeps_blocked = true;
+    }
+
+    /// Sets the cost of the tried motion `id` (infinite: blocked), in both directions of a
+    /// symmetric space; the components are rebuilt by [`rebuild_components`](Self::rebuild_components).
+    pub(super) fn set_cost(&mut self, id: usize, cost: Cost) {
+        let candidate = &mut self.tried[id];
+        let [from, to] = candidate.ends;
+        match (candidate.cost.is_finite(), cost.is_finite()) {
+            (true, false) => self.edge_count -= 1,
+            (false, true) => self.edge_count += 1,
+            _ => {}
+        }
+        candidate.cost = cost;
+        let set = |list: &mut Vec<(u32, Cost)>, other: u32| {
+            if let Some(entry) = list.iter_mut().find(|(v, _)| *v == other) {
+                entry.1 = cost;
+            }
+        };
+        set(&mut self.out[from as usize], to);
+        if S::SYMMETRIC {
+            set(&mut self.out[to as usize], from);
+        } else {
+            set(&mut self.into[to as usize], from);
+        }
+    }
+
+    /// The components again from the free motions tried (after [`set_cost`](Self::set_cost)).
+    pub(super) fn rebuild_components(&mut self) {
+        self.components = UnionFind::new(self.node_count());
+        for &Candidate { ends: [a, b], cost } in &self.tried {
+            if cost.is_finite() {
+                self.components.union(a, b);
+            }
+        }
+    }
+
+    /// A representative of milestone `id`'s component (ignoring direction).
+    pub(super) fn component(&self, id: u32) -> u32 {
+        self.components.root(id)
     }
 
     /// Whether a start and a goal milestone share a component.
@@ -517,44 +622,5 @@ where
 
     fn optimizes(&self) -> bool {
         self.optimizing
-    }
-}
-
-impl<S: StateSpace, N, Q> Graph for Prm<S, N, Q> {
-    type Node = u32;
-
-    fn contains(&self, node: u32) -> bool {
-        (node as usize) < self.out.len()
-    }
-}
-
-impl<S: StateSpace, N, Q> Successors for Prm<S, N, Q> {
-    fn for_each_successor<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
-        for &(v, c) in &self.out[node as usize] {
-            visit(v, c);
-        }
-    }
-}
-
-impl<S: StateSpace, N, Q> Predecessors for Prm<S, N, Q> {
-    fn for_each_predecessor<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
-        let edges = if S::SYMMETRIC { &self.out } else { &self.into };
-        for &(u, c) in &edges[node as usize] {
-            visit(u, c);
-        }
-    }
-}
-
-impl<S: StateSpace, N, Q> IndexedGraph for Prm<S, N, Q> {
-    fn node_bound(&self) -> usize {
-        self.out.len()
-    }
-
-    fn index_of(&self, node: u32) -> usize {
-        node as usize
-    }
-
-    fn node_at(&self, index: usize) -> u32 {
-        index as u32
     }
 }

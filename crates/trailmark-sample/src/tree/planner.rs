@@ -8,7 +8,7 @@ use super::options::{RrtOptions, checked_range};
 use crate::nearest::NearestNeighbors;
 use crate::plan::{Plan, PlanError};
 use crate::planner::Planner;
-use crate::problem::Problem;
+use crate::problem::{Goal, Problem};
 use crate::run::{Run, check_empty};
 use crate::sampler::{StateSampler, Uniform};
 use crate::space::StateSpace;
@@ -68,8 +68,7 @@ impl<A, N, Q> TreePlanner<A, N, Q> {
 pub(crate) type Grown<S> = Result<Plan<<S as StateSpace>::State>, PlanError>;
 
 /// How one tree planner grows its trees in a run that [`Planner::solve`] has checked and
-/// started: the part of a tree planner that is its own. (Each planner's impl opens with the
-/// same signature: a trait's impls.)
+/// started: the part of a tree planner that is its own.
 pub(crate) trait Grow: Sized {
     /// Its name, as [`Planner::name`] gives it.
     const NAME: &'static str;
@@ -78,10 +77,19 @@ pub(crate) trait Grow: Sized {
 
     /// The trees grown until the run stops, and the plan.
     fn grow<S: StateSpace, V: Validity<S>, N: NearestNeighbors<S> + Clone, Q: StateSampler<S>>(
-        planner: &mut TreePlanner<Self, N, Q>,
-        problem: &Problem<'_, S, V>,
-        run: Run<'_>,
+        job: Job<'_, S, V, Self, N, Q>,
     ) -> Grown<S>;
+}
+
+/// A run of a tree planner that [`Planner::solve`] has checked and started: the planner, the
+/// problem and its parts, and the run, as every planner's growth begins with them.
+pub(crate) struct Job<'r, S: StateSpace, V, A, N, Q> {
+    pub(crate) planner: &'r mut TreePlanner<A, N, Q>,
+    pub(crate) problem: &'r Problem<'r, S, V>,
+    pub(crate) space: &'r S,
+    pub(crate) validity: &'r V,
+    pub(crate) goal: &'r dyn Goal<S>,
+    pub(crate) run: Run<'r>,
 }
 
 impl<S, V, A, N, Q> Planner<S, V> for TreePlanner<A, N, Q>
@@ -119,7 +127,8 @@ where
         let watch = Watch::start(termination);
         let range = checked_range(problem.space, &self.options)?;
         let run = Run::checked(problem, watch, range, self.seed)?;
-        A::grow(self, problem, run)
+        let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
+        A::grow(Job { planner: self, problem, space, validity, goal, run })
     }
 }
 

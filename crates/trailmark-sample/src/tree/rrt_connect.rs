@@ -32,7 +32,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::planner::{Grow, Grown, Spent, TreePlanner};
+use super::planner::{Grow, Grown, Job, Spent, TreePlanner};
 use super::{Extension, Tree};
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{PlanError, Rejection};
@@ -132,11 +132,9 @@ impl Grow for ConnectGrowth {
     const OPTIMIZES: bool = false;
 
     fn grow<S: StateSpace, V: Validity<S>, N: NearestNeighbors<S> + Clone, Q: StateSampler<S>>(
-        planner: &mut TreePlanner<Self, N, Q>,
-        problem: &Problem<'_, S, V>,
-        mut run: Run<'_>,
+        job: Job<'_, S, V, Self, N, Q>,
     ) -> Grown<S> {
-        let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
+        let Job { planner, problem, space, validity, goal, mut run } = job;
         let mut trees = [
             Tree::new(planner.nearest.clone(), Direction::ToQuery),
             Tree::new(planner.nearest.clone(), Direction::FromQuery),

@@ -32,12 +32,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::planner::{Grow, Grown, TreePlanner};
+use super::planner::{Grow, Grown, Job, TreePlanner};
 use super::{ROOT, Tree};
 use crate::nearest::{Direction, NearestNeighbors};
 
-use crate::problem::Problem;
-use crate::run::Run;
 use crate::sampler::StateSampler;
 use crate::sampler::Uniform;
 use crate::space::StateSpace;
@@ -64,11 +62,9 @@ impl Grow for StarGrowth {
     const OPTIMIZES: bool = true;
 
     fn grow<S: StateSpace, V: Validity<S>, N: NearestNeighbors<S> + Clone, Q: StateSampler<S>>(
-        planner: &mut TreePlanner<Self, N, Q>,
-        problem: &Problem<'_, S, V>,
-        mut run: Run<'_>,
+        job: Job<'_, S, V, Self, N, Q>,
     ) -> Grown<S> {
-        let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
+        let Job { planner, problem, space, validity, goal, mut run } = job;
         let mut tree = Tree::new(planner.nearest.clone(), Direction::ToQuery);
         let mut costs = Vec::new();
         let mut children: Vec<Vec<u32>> = Vec::new();

@@ -12,8 +12,8 @@ use std::time::Instant;
 
 use serde::Serialize;
 use trailmark::core::geometry::Point;
-use trailmark::graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 use trailmark::prelude::*;
+use trailmark::sample::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 
 use crate::bench::ompl::{OmplDriver, OmplInput};
 use crate::bench::sampling::world::{PlaneQuery, SamplingWorld, ompl_queries, points};

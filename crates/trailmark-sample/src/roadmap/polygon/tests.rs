@@ -4,7 +4,7 @@ use std::collections::BTreeSet;
 
 use trailmark_core::generate::convex_obstacles;
 use trailmark_core::geometry::Vector;
-use trailmark_core::world::Bounds;
+use trailmark_core::world::{Bounds, WorldError};
 use trailmark_space::{Dubins, ReedsShepp};
 
 use trailmark_core::graph::{Predecessors, Successors};
@@ -188,7 +188,8 @@ fn obstacle_changes_report_exactly_the_changed_edges() {
     let changes = prm.add_obstacle(block).unwrap();
     let checker = prm.world().checker();
     let free_now = |prm: &PolygonPrm| -> BTreeSet<(u32, u32)> {
-        prm.candidates
+        prm.roadmap
+            .tried
             .iter()
             .filter(|c| checker_free(&checker, prm, c.ends))
             .map(|c| (c.ends[0], c.ends[1]))
@@ -209,7 +210,10 @@ fn obstacle_changes_report_exactly_the_changed_edges() {
     let restored: BTreeSet<(u32, u32)> = prm.edges().map(|(a, b, _)| (a, b)).collect();
     assert_eq!(restored, before);
     assert_eq!(changes.len(), 2 * lost.len());
-    assert!(matches!(prm.remove_obstacle(99), Err(PrmError::NoSuchObstacle { index: 99, .. })));
+    assert!(matches!(
+        prm.remove_obstacle(99),
+        Err(PrmError::World(WorldError::NoSuchObstacle { index: 99, .. }))
+    ));
 }
 
 fn checker_free(checker: &CollisionChecker, prm: &PolygonPrm, [a, b]: [u32; 2]) -> bool {

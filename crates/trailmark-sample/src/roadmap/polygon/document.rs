@@ -2,10 +2,11 @@
 
 use serde::{Deserialize, Serialize};
 use trailmark_core::world::PolygonWorld;
-use trailmark_space::nearest::NearestNeighbors;
 use trailmark_space::sampler::Halton;
 
 use super::{Drawer, PlanarSpace, PolygonPrm, PrmError, PrmOptions};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
 
 /// A saved roadmap: the world, the space, the settings, the nodes, every edge tried and where
 /// the sample stream stands.
@@ -40,20 +41,22 @@ impl<S: PlanarSpace + Serialize> Serialize for PolygonPrm<S> {
             space: self.space.clone(),
             options: self.options,
             nodes: (0..self.node_count() as u32)
-                .map(|u| self.space.coordinates(self.nearest.state(u)))
+                .map(|u| self.space.coordinates(self.roadmap.state(u)))
                 .collect(),
             edges: self
-                .candidates
+                .roadmap
+                .tried
                 .iter()
                 .map(|c| [c.ends[0], c.ends[1], u32::from(c.cost.is_finite())])
                 .collect(),
             stream: StreamDocument {
-                word_position: self.stream.rng.get_word_pos().to_string(),
-                halton_index: match &self.stream.drawer {
+                // A stream not drawn from yet is at its start.
+                word_position: self.roadmap.rng.as_ref().map_or(0, |rng| rng.get_word_pos()).to_string(),
+                halton_index: match &self.roadmap.sampler {
                     Drawer::Halton(halton) => halton.drawn(),
                     _ => 0,
                 },
-                attempts: self.stream.attempts,
+                attempts: self.attempts,
             },
         }
         .serialize(serializer)
@@ -75,28 +78,31 @@ impl<S: PlanarSpace> PolygonPrm<S> {
         for (index, coordinates) in d.nodes.iter().enumerate() {
             let state =
                 prm.space.state_from_coordinates(coordinates).ok_or(PrmError::InvalidNode { index })?;
-            if !prm.is_free(&state) || prm.find(&state).is_some() {
+            if !prm.is_free(&state) || prm.roadmap.find(&prm.space, &state).is_some() {
                 return Err(PrmError::InvalidNode { index });
             }
-            prm.push_node(state);
+            prm.roadmap.push(&prm.space, state);
         }
         let n = prm.node_count() as u32;
         for (index, &[from, to, free]) in d.edges.iter().enumerate() {
             if from >= n || to >= n || from == to || free > 1 {
                 return Err(PrmError::InvalidEdge { index });
             }
-            prm.try_edge(from, to);
-            if prm.candidates[index].cost.is_finite() != (free == 1) {
+            let cost = prm.local_path(&prm.checker, from, to);
+            prm.roadmap.record(from, to, cost);
+            if cost.is_some() != (free == 1) {
                 return Err(PrmError::InvalidEdge { index });
             }
         }
         let word_position: u128 = d.stream.word_position.parse().map_err(|_| PrmError::InvalidStream)?;
-        prm.stream.rng.set_word_pos(word_position);
-        if let Drawer::Halton(halton) = &mut prm.stream.drawer {
+        let mut rng = ChaCha8Rng::seed_from_u64(prm.options.sampler.seed());
+        rng.set_word_pos(word_position);
+        prm.roadmap.rng = Some(rng);
+        if let Drawer::Halton(halton) = &mut prm.roadmap.sampler {
             *halton = Halton::after(d.stream.halton_index);
         }
-        prm.stream.attempts = d.stream.attempts;
-        prm.local_paths_checked = 0;
+        prm.attempts = d.stream.attempts;
+        prm.roadmap.checks = 0;
         Ok(prm)
     }
 }

@@ -4,8 +4,10 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use trailmark_core::world::WorldError;
 use trailmark_space::Connection;
-use trailmark_space::sampler::{Bridge, Gaussian, Halton, SamplerError};
+use trailmark_space::sampler::{Bridge, Draw, Gaussian, Halton, SamplerError, StateSampler, Uniform};
 use trailmark_space::space::SpaceError;
+use trailmark_space::space::UnitCube;
+use trailmark_space::validity::Validity;
 
 /// How samples are drawn: which of `trailmark-sample`'s samplers, with its settings.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -53,6 +55,17 @@ impl Drawer {
             PrmSampler::Gaussian { std_dev, .. } => Drawer::Gaussian(Gaussian::new(std_dev)?),
             PrmSampler::Bridge { std_dev, .. } => Drawer::Bridge(Bridge::new(std_dev)?),
         })
+    }
+}
+
+impl<S: UnitCube> StateSampler<S> for Drawer {
+    fn sample<V: Validity<S>>(&self, space: &S, validity: &V, draw: &mut Draw<'_>) -> Option<S::State> {
+        match self {
+            Drawer::Uniform => Uniform.sample(space, validity, draw),
+            Drawer::Halton(halton) => halton.sample(space, validity, draw),
+            Drawer::Gaussian(gaussian) => gaussian.sample(space, validity, draw),
+            Drawer::Bridge(bridge) => bridge.sample(space, validity, draw),
+        }
     }
 }
 
@@ -142,18 +155,10 @@ pub enum PrmError {
     /// The roadmap would pass [`MAX_ROADMAP_NODES`] nodes.
     #[error("a roadmap holds at most {max} nodes", max = MAX_ROADMAP_NODES)]
     TooManyNodes,
-    /// The world rejected an obstacle change.
+    /// The world rejected an obstacle change: an invalid polygon, or an obstacle to remove that
+    /// is not there ([`WorldError::NoSuchObstacle`]).
     #[error(transparent)]
     World(#[from] WorldError),
-    /// [`PolygonPrm::remove_obstacle`](crate::PolygonPrm::remove_obstacle) named an obstacle that does
-    /// not exist.
-    #[error("there is no obstacle {index} (the world has {count})")]
-    NoSuchObstacle {
-        /// The index given.
-        index: usize,
-        /// The number of obstacles.
-        count: usize,
-    },
     /// A saved roadmap's node is malformed, collides, or repeats an earlier node.
     #[error("saved node {index} is malformed, collides, or repeats an earlier node")]
     InvalidNode {

@@ -7,7 +7,8 @@
 //! path is checked exactly against the obstacles by the world's [`CollisionChecker`] (segment
 //! and arc distances, not sampling); nearest neighbours come from a k-d tree (kiddo).
 //!
-//! The states, motions and distances are a state space of `trailmark-sample` ([`PlanarSpace`]):
+//! It is [`Prm`](crate::Prm), the one roadmap of this crate, with the world kept beside it: the
+//! states, motions and distances are a state space of `trailmark-space` ([`PlanarSpace`]):
 //! [`R2`] segments for a disc robot (an undirected
 //! roadmap over points), or [`Dubins`](trailmark_space::Dubins) curves for a car-like robot (a directed roadmap
 //! over poses, since a Dubins path from `a` to `b` is not the reverse of one from `b` to `a`).
@@ -21,7 +22,7 @@
 //! ```
 //! use trailmark_core::geometry::Point;
 //! use trailmark_core::world::{Bounds, PolygonWorld};
-//! use trailmark_graph::prm::{Connection, PolygonPrm, PrmOptions, PrmSampler};
+//! use trailmark_sample::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 //!
 //! let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0)?;
 //! let wall = vec![Point::new(4.0, 0.0), Point::new(6.0, 0.0), Point::new(6.0, 8.0), Point::new(4.0, 8.0)];
@@ -39,22 +40,18 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use std::fmt::Debug;
-
-use rand::SeedableRng;
-use rand_chacha::ChaCha8Rng;
-use trailmark_core::UnionFind;
 use trailmark_core::cost::Cost;
 use trailmark_core::geometry::Point;
 use trailmark_core::graph::EdgeChange;
 use trailmark_core::world::{CollisionChecker, PolygonWorld};
-use trailmark_space::nearest::{Direction, KdNearest, NearestNeighbors};
-use trailmark_space::sampler::{Draw, StateSampler, Uniform};
+use trailmark_graph::RoadmapQuery;
+use trailmark_space::nearest::{Direction, KdNearest};
+use trailmark_space::sampler::{Draw, StateSampler};
 use trailmark_space::space::R2;
 
 pub use trailmark_space::Connection;
 
-use crate::roadmap::RoadmapQuery;
+use super::prm::{Candidate, Prm};
 
 mod document;
 mod graph;
@@ -66,24 +63,6 @@ pub use options::{MAX_ROADMAP_NODES, PrmError, PrmOptions, PrmSampler};
 use space::ExactValidity;
 pub use space::PlanarSpace;
 
-/// An edge the roadmap tried: free (in the graph) or blocked (kept so an obstacle removal can
-/// restore it).
-#[derive(Clone, Copy, Debug)]
-struct Candidate {
-    /// Tail and head (for an undirected roadmap, the two ends).
-    ends: [u32; 2],
-    /// The local path's cost while free; infinite while blocked.
-    cost: Cost,
-}
-
-/// The state of the sample stream, so a grown, saved and reloaded roadmap continues it.
-#[derive(Clone, Debug)]
-struct Stream {
-    rng: ChaCha8Rng,
-    drawer: Drawer,
-    attempts: u64,
-}
-
 /// A probabilistic roadmap over a polygon world, in any [`PlanarSpace`]: [`R2`] (straight
 /// segments for a disc robot, an undirected roadmap over points) by default, or
 /// [`Dubins`](trailmark_space::Dubins) (a directed roadmap over poses, since a Dubins path
@@ -91,23 +70,18 @@ struct Stream {
 /// [`PolygonPrm::position`]; edges cost their motion's distance in the space.
 ///
 /// It implements the graph traits itself (with permanent nodes from [`PolygonPrm::insert`]) and
-/// [`Roadmap`](crate::Roadmap), so [`PolygonPrm::query`] joins a start and a goal without changing it.
+/// [`Roadmap`](trailmark_graph::Roadmap), so [`PolygonPrm::query`] joins a start and a goal without changing it.
 #[derive(Clone, Debug)]
 pub struct PolygonPrm<S: PlanarSpace = R2> {
     checker: CollisionChecker,
     space: S,
     options: PrmOptions,
-    nearest: KdNearest<S, 2>,
-    candidates: Vec<Candidate>,
-    /// Candidate ids leaving each node (both ends' lists when undirected).
-    out: Vec<Vec<u32>>,
-    /// Candidate ids entering each node (directed roadmaps only).
-    into: Vec<Vec<u32>>,
-    edge_count: usize,
-    /// The connected components over free edges (ignoring direction).
-    components: UnionFind,
-    stream: Stream,
-    local_paths_checked: u64,
+    /// The milestones and every motion tried between them, blocked ones too (for
+    /// [`add_obstacle`](Self::add_obstacle) and [`remove_obstacle`](Self::remove_obstacle)),
+    /// drawn by the options' sampler from the roadmap's own stream.
+    roadmap: Prm<S, KdNearest<S, 2>, Drawer>,
+    /// Draws made by the sampler so far.
+    attempts: u64,
 }
 
 /// A probabilistic roadmap of Dubins paths between poses.
@@ -143,19 +117,12 @@ impl<S: PlanarSpace> PolygonPrm<S> {
         }
         let nearest = KdNearest::new(&space)?;
         let drawer = Drawer::new(options.sampler)?;
-        Ok(PolygonPrm {
-            checker: world.checker(),
-            space,
-            options,
-            nearest,
-            candidates: Vec::new(),
-            out: Vec::new(),
-            into: Vec::new(),
-            edge_count: 0,
-            components: UnionFind::default(),
-            stream: Stream { rng: ChaCha8Rng::seed_from_u64(options.sampler.seed()), drawer, attempts: 0 },
-            local_paths_checked: 0,
-        })
+        let mut roadmap = Prm::new(nearest)
+            .with_connection(options.connection)
+            .with_seed(options.sampler.seed())
+            .with_sampler(drawer);
+        roadmap.keep_blocked();
+        Ok(PolygonPrm { checker: world.checker(), space, options, roadmap, attempts: 0 })
     }
 
     /// Draws `samples` more free configurations and joins each to the roadmap; returns the
@@ -213,12 +180,12 @@ impl<S: PlanarSpace> PolygonPrm<S> {
         let n = self.node_count();
         let (mut from_start, mut to_goal) = (vec![Cost::INFINITY; n], vec![Cost::INFINITY; n]);
         for (u, _) in self.neighbours_of(&start, Direction::FromQuery, n + 1) {
-            if let Some(c) = self.connect(&self.checker, &start, self.nearest.state(u)) {
+            if let Some(c) = self.connect(&self.checker, &start, self.roadmap.state(u)) {
                 from_start[u as usize] = c;
             }
         }
         for (u, _) in self.neighbours_of(&goal, Direction::ToQuery, n + 1) {
-            if let Some(c) = self.connect(&self.checker, self.nearest.state(u), &goal) {
+            if let Some(c) = self.connect(&self.checker, self.roadmap.state(u), &goal) {
                 to_goal[u as usize] = c;
             }
         }
@@ -229,7 +196,8 @@ impl<S: PlanarSpace> PolygonPrm<S> {
         } else {
             None
         };
-        Ok(RoadmapQuery::new(self, (start, goal), from_start, to_goal, direct))
+        Ok(RoadmapQuery::new(self, (start, goal), from_start, to_goal, direct)
+            .expect("a link per roadmap node"))
     }
 
     /// Adds an obstacle (checked like the world's) and blocks the edges it collides with.
@@ -242,15 +210,14 @@ impl<S: PlanarSpace> PolygonPrm<S> {
         let alone = world.only(added).checker();
         self.checker = world.checker();
         let mut changes = Vec::new();
-        for id in 0..self.candidates.len() {
-            let Candidate { ends: [a, b], cost } = self.candidates[id];
+        for id in 0..self.roadmap.tried.len() {
+            let Candidate { ends: [a, b], cost } = self.roadmap.tried[id];
             if cost.is_finite() && self.local_path(&alone, a, b).is_none() {
-                self.candidates[id].cost = Cost::INFINITY;
-                self.edge_count -= 1;
+                self.roadmap.set_cost(id, Cost::INFINITY);
                 self.report(&mut changes, a, b);
             }
         }
-        self.rebuild_components();
+        self.roadmap.rebuild_components();
         Ok(changes)
     }
 
@@ -258,24 +225,21 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     /// alone blocked. Returns the changed edges, as
     /// [`add_obstacle`](Self::add_obstacle) does.
     pub fn remove_obstacle(&mut self, index: usize) -> Result<Vec<EdgeChange<u32>>, PrmError> {
-        let count = self.checker.world().obstacles().len();
-        let (world, removed) =
-            self.checker.world().without_obstacle(index).ok_or(PrmError::NoSuchObstacle { index, count })?;
+        let (world, removed) = self.checker.world().without_obstacle(index)?;
         let alone = world.only(removed).checker();
         self.checker = world.checker();
         let mut changes = Vec::new();
-        for id in 0..self.candidates.len() {
-            let Candidate { ends: [a, b], cost } = self.candidates[id];
+        for id in 0..self.roadmap.tried.len() {
+            let Candidate { ends: [a, b], cost } = self.roadmap.tried[id];
             if cost.is_infinite()
                 && self.local_path(&alone, a, b).is_none()
                 && let Some(c) = self.local_path(&self.checker, a, b)
             {
-                self.candidates[id].cost = c;
-                self.edge_count += 1;
+                self.roadmap.set_cost(id, c);
                 self.report(&mut changes, a, b);
             }
         }
-        self.rebuild_components();
+        self.roadmap.rebuild_components();
         Ok(changes)
     }
 
@@ -301,17 +265,17 @@ impl<S: PlanarSpace> PolygonPrm<S> {
 
     /// The number of nodes.
     pub fn node_count(&self) -> usize {
-        self.nearest.len()
+        self.roadmap.node_count()
     }
 
     /// The number of free edges (each undirected edge once).
     pub fn edge_count(&self) -> usize {
-        self.edge_count
+        self.roadmap.edge_count()
     }
 
     /// The number of edges tried, free or blocked.
     pub fn candidate_count(&self) -> usize {
-        self.candidates.len()
+        self.roadmap.tried.len()
     }
 
     /// The configuration of `node`.
@@ -321,7 +285,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     /// If `node` is not below [`node_count`](Self::node_count): node ids are indices, as a
     /// slice's. [`get_position`](Self::get_position) is the checked form.
     pub fn position(&self, node: u32) -> S::State {
-        *self.nearest.state(node)
+        *self.roadmap.state(node)
     }
 
     /// The configuration of `node`, `None` if the roadmap has no such node.
@@ -331,22 +295,22 @@ impl<S: PlanarSpace> PolygonPrm<S> {
 
     /// The free edges, as `(from, to, cost)`, each undirected edge once.
     pub fn edges(&self) -> impl Iterator<Item = (u32, u32, Cost)> + '_ {
-        self.candidates.iter().filter(|c| c.cost.is_finite()).map(|c| (c.ends[0], c.ends[1], c.cost))
+        self.roadmap.tried.iter().filter(|c| c.cost.is_finite()).map(|c| (c.ends[0], c.ends[1], c.cost))
     }
 
     /// Draws made by the sampler so far (accepted or not).
     pub fn attempts(&self) -> u64 {
-        self.stream.attempts
+        self.attempts
     }
 
     /// Local paths collision-checked so far (building and querying a copy do not share this).
     pub fn local_paths_checked(&self) -> u64 {
-        self.local_paths_checked
+        self.roadmap.checks
     }
 
     /// The number of connected components (ignoring edge direction).
     pub fn component_count(&self) -> usize {
-        self.components.set_count()
+        self.roadmap.component_count()
     }
 
     /// A representative of `node`'s connected component (ignoring edge direction): two nodes
@@ -357,7 +321,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     /// If `node` is not below [`node_count`](Self::node_count).
     /// [`get_component`](Self::get_component) is the checked form.
     pub fn component(&self, node: u32) -> u32 {
-        self.components.root(node)
+        self.roadmap.component(node)
     }
 
     /// The representative of `node`'s connected component, `None` if the roadmap has no such
@@ -368,17 +332,13 @@ impl<S: PlanarSpace> PolygonPrm<S> {
 
     /// One draw of the sampler (`None` when it found nothing).
     fn draw(&mut self) -> Option<S::State> {
-        self.stream.attempts += 1;
+        self.attempts += 1;
         let validity = ExactValidity(&self.checker);
         let mut checks = 0;
-        let mut draw = Draw::new(&mut self.stream.rng, &mut checks);
-        let space = &self.space;
-        match &self.stream.drawer {
-            Drawer::Uniform => Uniform.sample(space, &validity, &mut draw),
-            Drawer::Halton(halton) => halton.sample(space, &validity, &mut draw),
-            Drawer::Gaussian(gaussian) => gaussian.sample(space, &validity, &mut draw),
-            Drawer::Bridge(bridge) => bridge.sample(space, &validity, &mut draw),
-        }
+        let roadmap = &mut self.roadmap;
+        let seed = self.options.sampler.seed();
+        let rng = roadmap.rng.get_or_insert_with(|| rand::SeedableRng::seed_from_u64(seed));
+        roadmap.sampler.sample(&self.space, &validity, &mut Draw::new(rng, &mut checks))
     }
 
     /// Whether `state` is within the space's bounds and free.
@@ -392,22 +352,10 @@ impl<S: PlanarSpace> PolygonPrm<S> {
         self.space.motion_is_free(checker, from, to).then(|| self.space.distance(from, to))
     }
 
-    /// The node at exactly `state`, if any.
-    fn find(&self, state: &S::State) -> Option<u32> {
-        let (id, d) = self.nearest.nearest(&self.space, state, Direction::ToQuery)?;
-        (d == 0.0 && self.nearest.state(id) == state).then_some(id)
-    }
-
     /// The nodes a configuration `state` joins in a roadmap of `n` nodes, nearest first, with
     /// their distances measured the way `direction` says.
     fn neighbours_of(&self, state: &S::State, direction: Direction, n: usize) -> Vec<(u32, f64)> {
-        match self.options.connection.neighbour_count(n, self.space.dimension()) {
-            Some(k) => self.nearest.k_nearest(&self.space, state, k, direction),
-            None => {
-                let Connection::Radius { radius } = self.options.connection else { unreachable!() };
-                self.nearest.within(&self.space, state, radius, direction)
-            }
-        }
+        self.roadmap.neighbours(&self.space, state, direction, n)
     }
 
     /// Whether `goal` is among the neighbours of `start` (the motions out of it) by the
@@ -430,59 +378,17 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     /// Adds `state` as a node joined to its neighbours: its index and `true`, or the index of
     /// the node already at `state` and `false`.
     fn add_node(&mut self, state: S::State) -> Result<(u32, bool), PrmError> {
-        let n = self.node_count() + 1;
-        let into = self.neighbours_of(&state, Direction::ToQuery, n);
-        // A node at `state` is at distance 0, so it leads the neighbours (every rule keeps the
-        // nearest once the roadmap has a node); the search for neighbours finds it too.
-        let mut at_zero = into.iter().take_while(|&&(_, d)| d == 0.0);
-        if let Some(&(v, _)) = at_zero.find(|&&(v, _)| *self.nearest.state(v) == state) {
-            return Ok((v, false));
-        }
-        if self.node_count() >= MAX_ROADMAP_NODES {
-            return Err(PrmError::TooManyNodes);
-        }
-        let out = if S::SYMMETRIC { Vec::new() } else { self.neighbours_of(&state, Direction::FromQuery, n) };
-        let u = self.push_node(state);
-        for (v, _) in into {
-            self.try_edge(v, u);
-        }
-        for (v, _) in out {
-            self.try_edge(u, v);
-        }
-        Ok((u, true))
-    }
-
-    /// Stores `state` as a new node without edges (its own component) and returns its index.
-    fn push_node(&mut self, state: S::State) -> u32 {
-        let u = self.nearest.insert(&self.space, state);
-        self.out.push(Vec::new());
-        if !S::SYMMETRIC {
-            self.into.push(Vec::new());
-        }
-        self.components.push();
-        u
-    }
-
-    /// Checks the local path `from -> to` and records it as a candidate.
-    fn try_edge(&mut self, from: u32, to: u32) {
-        let cost = self.local_path(&self.checker, from, to).unwrap_or(Cost::INFINITY);
-        self.local_paths_checked += 1;
-        let id = self.candidates.len() as u32;
-        self.candidates.push(Candidate { ends: [from, to], cost });
-        self.out[from as usize].push(id);
-        if S::SYMMETRIC {
-            self.out[to as usize].push(id);
-        } else {
-            self.into[to as usize].push(id);
-        }
-        if cost.is_finite() {
-            self.edge_count += 1;
-            self.components.union(from, to);
-        }
+        let (space, checker) = (&self.space, &self.checker);
+        let motion = |from: &S::State, to: &S::State, _| {
+            space.motion_is_free(checker, from, to).then(|| space.distance(from, to))
+        };
+        self.roadmap
+            .add_checked(space, state, MAX_ROADMAP_NODES, motion, || false)
+            .ok_or(PrmError::TooManyNodes)
     }
 
     fn local_path(&self, checker: &CollisionChecker, from: u32, to: u32) -> Option<Cost> {
-        self.connect(checker, self.nearest.state(from), self.nearest.state(to))
+        self.connect(checker, self.roadmap.state(from), self.roadmap.state(to))
     }
 
     fn report(&self, changes: &mut Vec<EdgeChange<u32>>, a: u32, b: u32) {
@@ -490,20 +396,6 @@ impl<S: PlanarSpace> PolygonPrm<S> {
         if S::SYMMETRIC {
             changes.push(EdgeChange::new(b, a));
         }
-    }
-
-    fn rebuild_components(&mut self) {
-        self.components = UnionFind::new(self.node_count());
-        for &Candidate { ends: [a, b], cost } in &self.candidates {
-            if cost.is_finite() {
-                self.components.union(a, b);
-            }
-        }
-    }
-
-    fn other_end(&self, id: u32, node: u32) -> (u32, Cost) {
-        let c = &self.candidates[id as usize];
-        (c.ends[0] ^ c.ends[1] ^ node, c.cost)
     }
 }
 

@@ -1,22 +1,22 @@
-//! A polygon roadmap as a graph of the core traits and as a [`Roadmap`].
+//! A polygon roadmap as a graph of the core traits and as a [`Roadmap`]: its [`Prm`](crate::Prm)'s
+//! edges.
 
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{Graph, IndexedGraph, Predecessors, Successors};
-use trailmark_space::nearest::NearestNeighbors;
+use trailmark_graph::Roadmap;
 
 use super::{PlanarSpace, PolygonPrm};
-use crate::roadmap::Roadmap;
 
 impl<S: PlanarSpace> Roadmap for PolygonPrm<S> {
     type Position = S::State;
     const DIRECTED: bool = !S::SYMMETRIC;
 
     fn node_count(&self) -> usize {
-        self.nearest.len()
+        self.roadmap.node_count()
     }
 
     fn position(&self, node: u32) -> S::State {
-        *self.nearest.state(node)
+        *self.roadmap.state(node)
     }
 
     /// The space's distance: every edge costs its motion's distance, and a path of motions is
@@ -26,25 +26,12 @@ impl<S: PlanarSpace> Roadmap for PolygonPrm<S> {
         self.space.distance(&a, &b)
     }
 
-    fn for_each_out<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
-        for &id in &self.out[node as usize] {
-            let (v, c) = self.other_end(id, node);
-            if c.is_finite() {
-                visit(v, c);
-            }
-        }
+    fn for_each_out<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
+        self.roadmap.for_each_successor(node, visit)
     }
 
-    fn for_each_in<F: FnMut(u32, Cost)>(&self, node: u32, mut visit: F) {
-        if S::SYMMETRIC {
-            return self.for_each_out(node, visit);
-        }
-        for &id in &self.into[node as usize] {
-            let (u, c) = self.other_end(id, node);
-            if c.is_finite() {
-                visit(u, c);
-            }
-        }
+    fn for_each_in<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
+        self.roadmap.for_each_predecessor(node, visit)
     }
 }
 
@@ -52,25 +39,25 @@ impl<S: PlanarSpace> Graph for PolygonPrm<S> {
     type Node = u32;
 
     fn contains(&self, node: u32) -> bool {
-        (node as usize) < self.nearest.len()
+        self.roadmap.contains(node)
     }
 }
 
 impl<S: PlanarSpace> Successors for PolygonPrm<S> {
     fn for_each_successor<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
-        self.for_each_out(node, visit)
+        self.roadmap.for_each_successor(node, visit)
     }
 }
 
 impl<S: PlanarSpace> Predecessors for PolygonPrm<S> {
     fn for_each_predecessor<F: FnMut(u32, Cost)>(&self, node: u32, visit: F) {
-        self.for_each_in(node, visit)
+        self.roadmap.for_each_predecessor(node, visit)
     }
 }
 
 impl<S: PlanarSpace> IndexedGraph for PolygonPrm<S> {
     fn node_bound(&self) -> usize {
-        self.nearest.len()
+        self.roadmap.node_bound()
     }
 
     fn index_of(&self, node: u32) -> usize {

@@ -14,6 +14,7 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::fmt::Debug;
+use std::marker::PhantomData;
 
 use trailmark_core::cost::Cost;
 use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
@@ -28,6 +29,22 @@ use crate::incremental::repeated_astar::RepeatedAStar;
 use crate::incremental::replanner::Replanner;
 use crate::incremental::values::grow_zeroed;
 use crate::stats::SearchStats;
+
+/// What an [`AdaptivePlanner`] keeps from one plan for the next besides its learned
+/// heuristic: nothing more ([`LearnOnly`]: Adaptive A*) or the paths it found too
+/// ([`ReusePaths`](crate::ReusePaths): MPGAA*).
+pub trait Memory: Clone + Debug + Default {
+    /// Whether the paths of earlier plans are kept, and a plan ends where it meets one.
+    const REUSES_PATHS: bool;
+}
+
+/// Adaptive A*'s memory: the learned heuristic alone.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct LearnOnly;
+
+impl Memory for LearnOnly {
+    const REUSES_PATHS: bool = false;
+}
 
 /// Adaptive A* from a moving start to a fixed goal, behind the [`Replanner`] interface.
 ///
@@ -56,8 +73,13 @@ use crate::stats::SearchStats;
 /// # let _ = first;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+pub type AdaptiveAStar<N, H> = AdaptivePlanner<LearnOnly, N, H>;
+
+/// A planner that runs A* from the robot at every plan with a heuristic learned from the plans
+/// before, kept consistent when costs rise and fall; its memory `K` says whether it also reuses
+/// earlier paths. [`AdaptiveAStar`] and [`MpgaaStar`](crate::MpgaaStar) are its two kinds.
 #[derive(Debug, Clone)]
-pub struct AdaptiveAStar<N, H> {
+pub struct AdaptivePlanner<K, N, H> {
     /// A* from scratch: its workspace, heuristic, ends, last path and totals.
     base: RepeatedAStar<N, H>,
     /// The learned heuristic per node index; 0 where nothing was learned. Empty until a plan
@@ -78,13 +100,14 @@ pub struct AdaptiveAStar<N, H> {
     pub(crate) reuse: Option<PathReuse>,
     /// Where the last plan's search ended on a kept path (its path goes on along it).
     tail: Option<usize>,
+    memory: PhantomData<K>,
 }
 
-impl<N, H> AdaptiveAStar<N, H>
+impl<K: Memory, N, H> AdaptivePlanner<K, N, H>
 where
     N: Copy + Eq + std::hash::Hash + Debug,
 {
-    // RepeatedAStar::new's public signature; this builds on it (and MpgaaStar::new on this).
+    // RepeatedAStar::new's public signature; this builds on it.
     /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent estimate of the
     /// cost from `a` to `b` (the grid heuristics are). Nothing is searched until
     /// [`plan`](Replanner::plan). Errors when the start or the goal is not a node of the graph.
@@ -95,14 +118,15 @@ where
     {
         let mut base = RepeatedAStar::new(graph, start, goal, heuristic)?;
         base.search.expanded_log = Some(Vec::new());
-        Ok(AdaptiveAStar {
+        Ok(AdaptivePlanner {
             base,
             learned: Vec::new(),
             touched: Vec::new(),
             changed: Vec::new(),
             repair: BinaryHeap::new(),
-            reuse: None,
+            reuse: K::REUSES_PATHS.then(PathReuse::new),
             tail: None,
+            memory: PhantomData,
         })
     }
 
@@ -126,7 +150,7 @@ where
         self.base.totals()
     }
 
-    /// Bytes held by the search workspace and the learned heuristic.
+    /// Bytes held by the search workspace, the learned heuristic and the kept paths.
     pub fn memory_bytes(&self) -> usize {
         self.base.memory_bytes()
             + self.learned.capacity() * 8
@@ -229,7 +253,7 @@ where
     {
         let goal = self.base.goal();
         let hx = Self::h_at(graph, &self.learned, &mut self.base.heuristic, x, i, goal);
-        let AdaptiveAStar { learned, repair, reuse, .. } = self;
+        let AdaptivePlanner { learned, repair, reuse, .. } = self;
         graph.for_each_predecessor_index(i, |k, p, c| {
             if let Some(reuse) = reuse.as_mut().filter(|_| check)
                 && reuse.next_of(k) == Some(i)
@@ -317,7 +341,7 @@ where
 }
 
 // The trait's signatures, as every replanner's; the answers (learning, repair) are Adaptive A*'s own.
-impl<G, H> Replanner<G> for AdaptiveAStar<G::Node, H>
+impl<G, H, K: Memory> Replanner<G> for AdaptivePlanner<K, G::Node, H>
 where
     G: Successors + Predecessors + IndexedGraph + ?Sized,
     H: Heuristic<G>,
@@ -394,7 +418,7 @@ where
     }
 
     fn cost(&self) -> Option<Cost> {
-        AdaptiveAStar::cost(self)
+        AdaptivePlanner::cost(self)
     }
 
     fn next_step(&self, graph: &G) -> Option<G::Node> {
@@ -407,10 +431,10 @@ where
     }
 
     fn totals(&self) -> SearchStats {
-        AdaptiveAStar::totals(self)
+        AdaptivePlanner::totals(self)
     }
 
     fn memory_bytes(&self) -> usize {
-        AdaptiveAStar::memory_bytes(self)
+        AdaptivePlanner::memory_bytes(self)
     }
 }

@@ -8,9 +8,7 @@ use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
 use trailmark_core::path::Path;
 
 use crate::error::SearchError;
-use crate::heuristic::Heuristic;
-use crate::incremental::engine::SearchDirection;
-use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
+use crate::incremental::lifelong::{Costs, Lifelong};
 use crate::incremental::replanner::replanner_by_inherent_methods;
 
 /// D* Lite (Koenig and Likhachev, 2002), the optimized version: a search from the goal back to
@@ -52,18 +50,21 @@ use crate::incremental::replanner::replanner_by_inherent_methods;
 /// assert!(stats.expansions > 0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Debug, Clone)]
-pub struct DStarLite<N: Debug, H> {
-    planner: LifelongPlanner<N, H>,
+pub type DStarLite<N, H> = Lifelong<CostsToGoal, N, H>;
+
+/// D* Lite's values: costs to the goal, searched from the goal back to the robot.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct CostsToGoal;
+
+impl Costs for CostsToGoal {
+    const TO_GOAL: bool = true;
 }
 
 impl<N, H> DStarLite<N, H>
 where
     N: Copy + Eq + Hash + Debug,
 {
-    shared_lifelong_methods!(SearchDirection::Backward);
-
-    // Below, LpaStar's alike methods mean other things (in-edges, costs from the start): not shared.
+    // D* Lite's own: its start moves with the robot.
     /// Moves the robot to `to` (usually [`next_step`](Self::next_step)). Cheap: the keys are
     /// adjusted when the graph next changes. Errors when `to` is not a node of the graph.
     pub fn move_start<G>(&mut self, graph: &G, to: N) -> Result<(), SearchError<N>>
@@ -71,31 +72,6 @@ where
         G: IndexedGraph<Node = N> + ?Sized,
     {
         self.planner.move_start(graph, to)
-    }
-
-    /// Tells the planner that edges leaving these nodes changed, in whatever way: each node's
-    /// `rhs` is recomputed from its current out-edges. Name every node with an out-edge that
-    /// changed (after `GridGraph::set_cost(cell, ..)`, the cells of
-    /// `GridGraph::cells_affected_by(cell)`). Nodes are checked first, as in
-    /// [`update_edges`](Self::update_edges).
-    pub fn update_nodes<G>(
-        &mut self,
-        graph: &G,
-        nodes: impl IntoIterator<Item = N>,
-    ) -> Result<(), SearchError<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-        H: Heuristic<G>,
-    {
-        self.planner.update_nodes(graph, nodes).map(|_| ())
-    }
-
-    /// A shortest path from the start to the goal, following the best successor from each node.
-    pub fn path<G>(&self, graph: &G) -> Option<Path<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.path(graph)
     }
 
     /// The node the robot should move to next; `None` at the goal or when it is unreachable.
@@ -106,36 +82,10 @@ where
         self.planner.next_step(graph)
     }
 
-    /// The robot's current node.
-    pub fn start(&self) -> N {
-        self.planner.start
-    }
-
-    /// The goal.
-    pub fn goal(&self) -> N {
-        self.planner.goal
-    }
-
     /// The key modifier `k_m`: the heuristic distances the robot covered, added up at each
     /// change of the graph.
     pub fn key_modifier(&self) -> Cost {
         self.planner.k_m
-    }
-
-    /// `g` of `node`: its cost to the goal when last expanded (`+inf` if never).
-    pub fn g<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
-    where
-        G: IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.g(graph, node)
-    }
-
-    /// `rhs` of `node`: `min over successors s of c(node, s) + g(s)` (0 at the goal).
-    pub fn rhs<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
-    where
-        G: IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.rhs(graph, node)
     }
 }
 

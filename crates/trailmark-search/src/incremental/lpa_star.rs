@@ -9,8 +9,7 @@ use trailmark_core::path::Path;
 
 use crate::error::SearchError;
 use crate::heuristic::Heuristic;
-use crate::incremental::engine::SearchDirection;
-use crate::incremental::planner::{LifelongPlanner, shared_lifelong_methods};
+use crate::incremental::lifelong::{Costs, Lifelong};
 use crate::incremental::replanner::replanner_by_inherent_methods;
 
 /// Lifelong Planning A* (Koenig, Likhachev and Furcy, 2004): A* that, after edge costs change,
@@ -47,44 +46,21 @@ use crate::incremental::replanner::replanner_by_inherent_methods;
 /// assert!(!planner.path(&graph).unwrap().nodes.contains(&middle));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Debug, Clone)]
-pub struct LpaStar<N: Debug, H> {
-    planner: LifelongPlanner<N, H>,
+pub type LpaStar<N, H> = Lifelong<CostsFromStart, N, H>;
+
+/// LPA*'s values: costs from the start.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct CostsFromStart;
+
+impl Costs for CostsFromStart {
+    const TO_GOAL: bool = false;
 }
 
 impl<N, H> LpaStar<N, H>
 where
     N: Copy + Eq + Hash + Debug,
 {
-    shared_lifelong_methods!(SearchDirection::Forward);
-
-    // Below, DStarLite's alike methods mean other things (out-edges, costs to the goal): not shared.
-    /// Tells the planner that edges entering these nodes changed, in whatever way: each node's
-    /// `rhs` is recomputed from its current in-edges. Name every node with an in-edge that
-    /// changed (after `GridGraph::set_cost(cell, ..)`, the cells of
-    /// `GridGraph::cells_affected_by(cell)`). Nodes are checked first, as in
-    /// [`update_edges`](Self::update_edges).
-    pub fn update_nodes<G>(
-        &mut self,
-        graph: &G,
-        nodes: impl IntoIterator<Item = N>,
-    ) -> Result<(), SearchError<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-        H: Heuristic<G>,
-    {
-        self.planner.update_nodes(graph, nodes).map(|_| ())
-    }
-
-    /// A shortest path from the start to the goal, traced back from the goal along the best
-    /// predecessors.
-    pub fn path<G>(&self, graph: &G) -> Option<Path<N>>
-    where
-        G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.path(graph)
-    }
-
+    // LPA*'s own: a moved start is a new query.
     /// Moves the start to `to`. A forward search cannot keep its values when its start moves
     /// (they are costs from the start), so this starts a new query from `to` to the goal, as
     /// [`reset`](Self::reset) does, keeping the planner's memory; the same start changes
@@ -108,32 +84,6 @@ where
         G: Successors + Predecessors + IndexedGraph<Node = N> + ?Sized,
     {
         self.path(graph)?.nodes.get(1).copied()
-    }
-
-    /// The start.
-    pub fn start(&self) -> N {
-        self.planner.start
-    }
-
-    /// The goal.
-    pub fn goal(&self) -> N {
-        self.planner.goal
-    }
-
-    /// `g` of `node`: its cost from the start when last expanded (`+inf` if never).
-    pub fn g<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
-    where
-        G: IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.g(graph, node)
-    }
-
-    /// `rhs` of `node`: `min over predecessors p of g(p) + c(p, node)` (0 at the start).
-    pub fn rhs<G>(&self, graph: &G, node: N) -> Result<Cost, SearchError<N>>
-    where
-        G: IndexedGraph<Node = N> + ?Sized,
-    {
-        self.planner.rhs(graph, node)
     }
 }
 

@@ -29,6 +29,7 @@ pub use trailmark_core::graph::EdgeChange;
 pub(crate) mod adaptive_astar;
 pub(crate) mod dstar_lite;
 pub(crate) mod engine;
+pub(crate) mod lifelong;
 pub(crate) mod lpa_star;
 pub(crate) mod mode;
 pub(crate) mod mpgaa_star;

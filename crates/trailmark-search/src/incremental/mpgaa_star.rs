@@ -1,19 +1,11 @@
 //! MPGAA*: Adaptive A* that also reuses the paths of earlier plans (Multipath Generalized
 //! Adaptive A*, Hernández, Baier and Asín, AAAI 2015).
 
-use std::fmt::Debug;
-
-use trailmark_core::cost::Cost;
-use trailmark_core::graph::{IndexedGraph, Predecessors, Successors};
-use trailmark_core::path::Path;
-
-use crate::error::SearchError;
-use crate::heuristic::Heuristic;
-use crate::incremental::EdgeChange;
+#[cfg(doc)]
 use crate::incremental::adaptive_astar::AdaptiveAStar;
-use crate::incremental::path_reuse::PathReuse;
+use crate::incremental::adaptive_astar::{AdaptivePlanner, Memory};
+#[cfg(doc)]
 use crate::incremental::replanner::Replanner;
-use crate::stats::SearchStats;
 
 /// MPGAA* from a moving start to a fixed goal, behind the [`Replanner`] interface.
 ///
@@ -48,96 +40,12 @@ use crate::stats::SearchStats;
 /// assert_eq!(planner.cost(), fresh.cost()); // the least cost, as A* from scratch
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Debug, Clone)]
-pub struct MpgaaStar<N, H>(AdaptiveAStar<N, H>);
+pub type MpgaaStar<N, H> = AdaptivePlanner<ReusePaths, N, H>;
 
-impl<N, H> MpgaaStar<N, H>
-where
-    N: Copy + Eq + std::hash::Hash + Debug,
-{
-    // AdaptiveAStar::new's public signature and documentation; it builds on that constructor.
-    /// A planner from `start` to `goal`, with `heuristic(a, b)` a consistent estimate of the
-    /// cost from `a` to `b` (the grid heuristics are). Nothing is searched until
-    /// [`plan`](Replanner::plan). Errors when the start or the goal is not a node of the graph.
-    pub fn new<G>(graph: &G, start: N, goal: N, heuristic: H) -> Result<Self, SearchError<N>>
-    where
-        G: IndexedGraph<Node = N> + ?Sized,
-        H: Heuristic<G>,
-    {
-        let mut planner = AdaptiveAStar::new(graph, start, goal, heuristic)?;
-        planner.reuse = Some(PathReuse::new());
-        Ok(MpgaaStar(planner))
-    }
+/// MPGAA*'s memory: the learned heuristic and the paths of earlier plans.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ReusePaths;
 
-    /// The start.
-    pub fn start(&self) -> N {
-        self.0.start()
-    }
-
-    /// The goal.
-    pub fn goal(&self) -> N {
-        self.0.goal()
-    }
-
-    /// The cost of the last plan's path (`None` without one).
-    pub fn cost(&self) -> Option<Cost> {
-        self.0.cost()
-    }
-
-    /// Counters summed over every plan since the planner was made.
-    pub fn totals(&self) -> SearchStats {
-        self.0.totals()
-    }
-
-    /// Bytes held by the search workspace, the learned heuristic and the kept paths.
-    pub fn memory_bytes(&self) -> usize {
-        self.0.memory_bytes()
-    }
-}
-
-// The trait's signatures, as every replanner's; each answer is the wrapped AdaptiveAStar's.
-impl<G, H> Replanner<G> for MpgaaStar<G::Node, H>
-where
-    G: Successors + Predecessors + IndexedGraph + ?Sized,
-    H: Heuristic<G>,
-{
-    fn update_edges(
-        &mut self,
-        graph: &G,
-        changes: &[EdgeChange<G::Node>],
-    ) -> Result<(), SearchError<G::Node>> {
-        self.0.update_edges(graph, changes)
-    }
-
-    fn update_nodes(&mut self, graph: &G, nodes: &[G::Node]) -> Result<(), SearchError<G::Node>> {
-        self.0.update_nodes(graph, nodes)
-    }
-
-    fn move_start(&mut self, graph: &G, to: G::Node) -> Result<(), SearchError<G::Node>> {
-        self.0.move_start(graph, to)
-    }
-
-    fn plan(&mut self, graph: &G) -> Result<SearchStats, SearchError<G::Node>> {
-        self.0.plan(graph)
-    }
-
-    fn path(&self, graph: &G) -> Option<Path<G::Node>> {
-        self.0.path(graph)
-    }
-
-    fn cost(&self) -> Option<Cost> {
-        self.0.cost()
-    }
-
-    fn next_step(&self, graph: &G) -> Option<G::Node> {
-        self.0.next_step(graph)
-    }
-
-    fn totals(&self) -> SearchStats {
-        self.0.totals()
-    }
-
-    fn memory_bytes(&self) -> usize {
-        self.0.memory_bytes()
-    }
+impl Memory for ReusePaths {
+    const REUSES_PATHS: bool = true;
 }

@@ -7,10 +7,10 @@
 //! | module | crate | what it holds |
 //! |---|---|---|
 //! | [`core`] | `trailmark-core` | geometry, costs, graph traits, grids, MovingAI files, JSON, SVG |
-//! | [`graph`] | `trailmark-graph` | builders from a world to a graph: grid graphs, visibility graphs, trapezoidal cells, PRM and Dubins roadmaps, roadmaps of changing worlds |
+//! | [`graph`] | `trailmark-graph` | builders from a world to a graph: grid graphs, visibility graphs, trapezoidal cells, roadmaps of changing worlds |
 //! | [`search`] | `trailmark-search` | BFS, DFS, Dijkstra, A*, weighted A*, ARA*; LPA*, D* Lite, AD*; indexed priority queue |
 //! | [`space`] | `trailmark-space` | configuration spaces (R², Rⁿ, SE(2), Dubins, Reeds-Shepp, your own), validity, samplers, exact nearest neighbours, connection rules |
-//! | [`sample`] | `trailmark-sample` | sampling planners: RRT, RRT-Connect, RRT*, PRM over any space of [`space`]; path shortcutting |
+//! | [`sample`] | `trailmark-sample` | sampling planners: RRT, RRT-Connect, RRT*, PRM over any space of [`space`]; the PRM roadmap of a polygon world (Dubins and Reeds-Shepp roadmaps too); path shortcutting |
 //! | [`contingency`] | `trailmark-contingency` | contingency route planning over choke points that may be blocked |
 //! | [`map`] | `trailmark-map` | robot maps: ROS map_server files and `nav_msgs/OccupancyGrid`, map frames in metres, Nav2-style costmaps and inflation |
 //! | [`car`] | `trailmark-car` | car-like robots: footprints checked on a costmap's cells, Hybrid A* with Reeds-Shepp or Dubins shots |

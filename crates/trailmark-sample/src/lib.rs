@@ -12,6 +12,9 @@
 //! - [`planner`]: the one interface of every planner, so they swap at run time; [`rrt`](mod@rrt),
 //!   [`rrt_connect`](mod@rrt_connect), [`rrt_star`](mod@rrt_star) and [`prm`] (PRM and PRM*,
 //!   multi-query) implement it;
+//! - [`PolygonPrm`]: the same PRM built alone over a polygon world kept beside it: obstacles
+//!   added and removed with the changed edges reported for D* Lite, saved and loaded, Dubins and
+//!   Reeds-Shepp roadmaps for cars; its queries go through `trailmark-graph`'s `Roadmap`;
 //! - [`boxes`]: worlds of axis-aligned boxes in `N` dimensions, checked exactly; [`arm`]: a
 //!   planar arm of revolute joints among polygons, for planning in its joint space;
 //! - [`benchmark`]: seeded runs of any planner, measured, and logs in OMPL's format;

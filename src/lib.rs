@@ -14,6 +14,7 @@
 //! | [`contingency`] | `trailmark-contingency` | contingency route planning over choke points that may be blocked |
 //! | [`map`] | `trailmark-map` | robot maps: ROS map_server files and `nav_msgs/OccupancyGrid`, map frames in metres, Nav2-style costmaps and inflation |
 //! | [`car`] | `trailmark-car` | car-like robots: footprints checked on a costmap's cells, Hybrid A* with Reeds-Shepp or Dubins shots |
+//! | [`robot`] | `trailmark-robot` | robot arms in 3-D: URDF and SRDF, MoveIt scenes and requests, sphere collision checks, a group's joint space for the sampling planners |
 //!
 //! ```
 //! use trailmark::prelude::*;
@@ -42,6 +43,7 @@ pub use trailmark_contingency as contingency;
 pub use trailmark_core as core;
 pub use trailmark_graph as graph;
 pub use trailmark_map as map;
+pub use trailmark_robot as robot;
 pub use trailmark_sample as sample;
 pub use trailmark_search as search;
 pub use trailmark_space as space;

@@ -61,6 +61,8 @@ pub mod termination;
 pub mod union_find;
 #[cfg(feature = "geometry")]
 pub mod world;
+#[cfg(feature = "yaml")]
+pub mod yaml;
 
 // One documented path per item: the vocabulary's families above (`grid::Cell`,
 // `graph::Successors`). The everyday names stay usable from the root, undocumented there.

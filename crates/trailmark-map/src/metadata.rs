@@ -13,15 +13,12 @@
 //! ```
 
 use serde::{Deserialize, Serialize};
-use yaml_rust2::parser::{Event, Parser};
-use yaml_rust2::{Yaml, YamlLoader};
+#[cfg(test)]
+use trailmark_core::yaml::MAX_DEPTH as MAX_YAML_DEPTH;
+use trailmark_core::yaml::{self, Yaml, number};
 
 use crate::error::MapError;
 use crate::frame::{check_origin, check_resolution};
-
-/// The deepest nesting of lists and mappings a map YAML file may have (map_server's files have
-/// two: the fields, and `origin`'s list).
-const MAX_YAML_DEPTH: usize = 16;
 
 /// How pixels become occupancy values (map_server's `mode`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
@@ -78,9 +75,7 @@ impl MapMetadata {
     /// refused ([`MapError::Yaml`]), as is nesting deeper than 16 lists and mappings: both are
     /// found by reading the text's events, before any document is built.
     pub fn parse(text: &str) -> Result<Self, MapError> {
-        screen(text)?;
-        let docs = YamlLoader::load_from_str(text).map_err(|e| MapError::Yaml { reason: e.to_string() })?;
-        let doc = docs.into_iter().next().ok_or(MapError::Yaml { reason: "the file is empty".into() })?;
+        let doc = yaml::load(text, "map files").map_err(|reason| MapError::Yaml { reason })?;
         if doc.as_hash().is_none() {
             return Err(MapError::Yaml { reason: "the document is not a mapping of fields".into() });
         }
@@ -160,46 +155,6 @@ impl MapMetadata {
     }
 }
 
-/// Refuses anchors, aliases and deep nesting, reading the parser's events one at a time (the
-/// parser keeps its nesting on the heap). The loader copies an anchored node wherever an alias
-/// names it, so a few hundred bytes of aliases naming aliases expand to billions of nodes; and
-/// a deeply nested document is dropped by recursion deeper than a thread's stack.
-fn screen(text: &str) -> Result<(), MapError> {
-    let mut parser = Parser::new_from_str(text);
-    let mut depth = 0usize;
-    loop {
-        let (event, mark) = parser.next_token().map_err(|e| MapError::Yaml { reason: e.to_string() })?;
-        let refuse = |what: &str, why: &str| {
-            let (line, column) = (mark.line(), mark.col() + 1);
-            Err(MapError::Yaml { reason: format!("{what} at line {line} column {column}: {why}") })
-        };
-        let no_aliases = "map files use no anchors or aliases";
-        let anchor = match &event {
-            Event::Scalar(_, _, anchor, _)
-            | Event::SequenceStart(anchor, _)
-            | Event::MappingStart(anchor, _) => *anchor,
-            _ => 0,
-        };
-        // The parser numbers anchors from 1; 0 is a node without one.
-        if anchor != 0 {
-            return refuse("an anchor (`&name`)", no_aliases);
-        }
-        match event {
-            Event::StreamEnd => return Ok(()),
-            Event::Alias(_) => return refuse("an alias (`*name`)", no_aliases),
-            Event::SequenceStart(..) | Event::MappingStart(..) => {
-                depth += 1;
-                if depth > MAX_YAML_DEPTH {
-                    let why = format!("lists and mappings nest at most {MAX_YAML_DEPTH} deep");
-                    return refuse("a list or mapping", &why);
-                }
-            }
-            Event::SequenceEnd | Event::MappingEnd => depth = depth.saturating_sub(1),
-            _ => {}
-        }
-    }
-}
-
 pub(crate) fn check_thresholds(free: f64, occupied: f64) -> Result<(), MapError> {
     if (0.0..=1.0).contains(&free) && (0.0..=1.0).contains(&occupied) && free < occupied {
         Ok(())
@@ -212,14 +167,6 @@ fn field<'a>(doc: &'a Yaml, name: &'static str) -> Result<&'a Yaml, MapError> {
     match &doc[name] {
         Yaml::BadValue => Err(MapError::MissingField { field: name }),
         value => Ok(value),
-    }
-}
-
-fn number(value: &Yaml) -> Option<f64> {
-    match value {
-        Yaml::Integer(i) => Some(*i as f64),
-        Yaml::Real(_) => value.as_f64(),
-        _ => None,
     }
 }
 

@@ -1,0 +1,338 @@
+//! Whether a group's configurations and motions are free: the robot's spheres against the
+//! scene's obstacles and against each other, in `f64`, one configuration at a time.
+//!
+//! **States** are checked exactly for the spheres: a sphere collides with a box, a cylinder or a
+//! sphere when its centre is within its radius of the shape (touching counts), and two spheres
+//! of links checked against each other when their centres are within the sum of their radii.
+//!
+//! **Motions** (straight lines in joint space) are checked at states along them such that no
+//! sphere moves more than `step` metres between two checked states, with every sphere grown by
+//! `step / 2`: each state between two checked ones is then within `step / 2` of one of them
+//! for every sphere, so nothing is missed between samples. How far a sphere moves is bounded
+//! per joint: a revolute joint turning by `dq` moves a point at most `dq` times its distance
+//! from the joint, and that distance is at most the lengths of the joint frames between the
+//! joint and the sphere's link plus the sphere's offset in it (for a prismatic joint, `dq`
+//! itself); the bound of a motion is the sum over the group's joints.
+
+use nalgebra::{Point3, SVector};
+use trailmark_space::{Rn, SpaceError, Validity};
+
+use crate::error::RobotError;
+use crate::robot::{Group, Robot};
+use crate::scene::{Obstacle, Scene, Shape};
+use crate::spheres::SphereModel;
+use crate::srdf::Srdf;
+use crate::urdf::JointKind;
+
+/// The default `step`: 1 cm, the farthest any sphere moves between two checked states.
+pub const DEFAULT_STEP: f64 = 0.01;
+
+/// The spheres of one robot's group in one scene, checked as the [module](self) says.
+#[derive(Debug, Clone)]
+pub struct ArmChecker {
+    robot: Robot,
+    model: SphereModel,
+    obstacles: Vec<Obstacle>,
+    /// For each obstacle, the links allowed to touch it.
+    allowed_links: Vec<Vec<usize>>,
+    group: Group,
+    /// A value per joint of the robot: the start state's, for the joints outside the group.
+    template: Vec<f64>,
+    /// Sphere pairs checked against each other (at least one of them moves with the group).
+    pairs: Vec<(u32, u32)>,
+    /// Per group joint, how far any sphere moves per unit of its value.
+    reach: Vec<f64>,
+    step: f64,
+}
+
+impl ArmChecker {
+    /// The checker of `group` of `robot` in `scene`: the robot's spheres
+    /// ([`SphereModel::new`], with the scene's allowed pairs), joints outside the group at
+    /// `start` (a value per joint of the robot), motions checked every `step` metres of the
+    /// farthest-moving sphere. Errors on a mesh without spheres, unknown names, a `start` of
+    /// another length or not finite, and a `step` that is not positive and finite.
+    pub fn new(
+        robot: Robot,
+        srdf: &Srdf,
+        group: Group,
+        scene: &Scene,
+        start: Vec<f64>,
+        step: f64,
+    ) -> Result<ArmChecker, RobotError> {
+        robot.link_poses(&start)?;
+        if !(step.is_finite() && step > 0.0) {
+            return Err(RobotError::Invalid {
+                element: "checker".into(),
+                attribute: "step",
+                reason: "a positive finite length",
+                value: step.to_string(),
+            });
+        }
+        let model = SphereModel::new(&robot, srdf, &scene.allowed)?;
+        let moving = moving_links(&robot, &group);
+        let spheres = &model.spheres;
+        let mut pairs = Vec::new();
+        for a in 0..spheres.len() {
+            for b in a + 1..spheres.len() {
+                let (la, lb) = (spheres[a].link, spheres[b].link);
+                if (moving[la] || moving[lb]) && model.checks(la, lb) {
+                    pairs.push((a as u32, b as u32));
+                }
+            }
+        }
+        let allowed_links = scene
+            .obstacles
+            .iter()
+            .map(|o| {
+                let other = |(a, b): &(String, String)| {
+                    if *a == o.id {
+                        Some(b.clone())
+                    } else if *b == o.id {
+                        Some(a.clone())
+                    } else {
+                        None
+                    }
+                };
+                scene.allowed.iter().filter_map(other).filter_map(|name| robot.link_index(&name)).collect()
+            })
+            .collect();
+        let reach = reach(&robot, &group, &model);
+        Ok(ArmChecker {
+            robot,
+            model,
+            obstacles: scene.obstacles.clone(),
+            allowed_links,
+            group,
+            template: start,
+            pairs,
+            reach,
+            step,
+        })
+    }
+
+    /// The group planned for.
+    pub fn group(&self) -> &Group {
+        &self.group
+    }
+
+    /// The robot.
+    pub fn robot(&self) -> &Robot {
+        &self.robot
+    }
+
+    /// The step of motion checks, in metres.
+    pub fn step(&self) -> f64 {
+        self.step
+    }
+
+    /// The joint space of the group: a box of its joints' limits, `N` of them. Errors when the
+    /// group has another number of joints.
+    pub fn space<const N: usize>(&self) -> Result<Rn<N>, RobotError> {
+        if self.group.joints.len() != N {
+            return Err(RobotError::Dimension { expected: N, found: self.group.joints.len() });
+        }
+        let low = SVector::<f64, N>::from_fn(|i, _| self.group.bounds[i].0);
+        let high = SVector::<f64, N>::from_fn(|i, _| self.group.bounds[i].1);
+        Rn::new(low, high).map_err(|e: SpaceError| RobotError::Invalid {
+            element: self.group.name.clone(),
+            attribute: "limits",
+            reason: "a box of positive width on every joint",
+            value: e.to_string(),
+        })
+    }
+
+    /// Whether the group at `q` (a value per group joint) is free: every sphere clear of every
+    /// obstacle and of the spheres it is checked against. `false` for a `q` of another length
+    /// or not finite.
+    pub fn is_free(&self, q: &[f64]) -> bool {
+        self.is_free_grown(q, 0.0)
+    }
+
+    /// Whether the straight motion from `a` to `b` in joint space is free, as the
+    /// [module](self) says.
+    pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
+        if a.len() != self.reach.len() || b.len() != self.reach.len() {
+            return false;
+        }
+        let travel: f64 = self.reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum();
+        let steps = (travel / self.step).ceil();
+        if !steps.is_finite() || steps > 1e7 {
+            return false;
+        }
+        let n = (steps as usize).max(1);
+        let grow = self.step / 2.0;
+        let at = |i: usize| -> Vec<f64> {
+            let t = i as f64 / n as f64;
+            a.iter().zip(b).map(|(x, y)| x + (y - x) * t).collect()
+        };
+        if !self.is_free_grown(&at(n), grow) || !self.is_free_grown(&at(0), grow) {
+            return false;
+        }
+        // Coarse to fine (the states at odd multiples of each power of two), so a collision in
+        // the middle is met early.
+        let mut level = 1usize << (usize::BITS - 1 - n.leading_zeros());
+        while level > 0 {
+            let mut i = level;
+            while i < n {
+                if !self.is_free_grown(&at(i), grow) {
+                    return false;
+                }
+                i += 2 * level;
+            }
+            level /= 2;
+        }
+        true
+    }
+
+    fn is_free_grown(&self, q: &[f64], grow: f64) -> bool {
+        if q.len() != self.group.joints.len() || !q.iter().all(|v| v.is_finite()) {
+            return false;
+        }
+        let mut values = self.template.clone();
+        for (&j, &v) in self.group.joints.iter().zip(q) {
+            values[j] = v;
+        }
+        let mut poses = Vec::new();
+        self.robot.poses_into(&values, &mut poses);
+        let centres: Vec<Point3<f64>> =
+            self.model.spheres.iter().map(|s| poses[s.link] * Point3::from(s.centre)).collect();
+        for (s, c) in self.model.spheres.iter().zip(&centres) {
+            let r = s.radius + grow;
+            for (o, allowed) in self.obstacles.iter().zip(&self.allowed_links) {
+                if touches(o, c, r) && !allowed.contains(&s.link) {
+                    return false;
+                }
+            }
+        }
+        self.pairs.iter().all(|&(a, b)| {
+            let (sa, sb) = (&self.model.spheres[a as usize], &self.model.spheres[b as usize]);
+            let reach = sa.radius + sb.radius + 2.0 * grow;
+            (centres[a as usize] - centres[b as usize]).norm_squared() > reach * reach
+        })
+    }
+}
+
+/// Whether a sphere at `c` of radius `r` touches obstacle `o`.
+fn touches(o: &Obstacle, c: &Point3<f64>, r: f64) -> bool {
+    let p = o.pose.inverse_transform_point(c);
+    let squared = match o.shape {
+        Shape::Box { half } => {
+            let d = p.coords.abs() - half;
+            d.map(|x| x.max(0.0)).norm_squared()
+        }
+        Shape::Cylinder { radius, half_height } => {
+            let radial = (p.x.hypot(p.y) - radius).max(0.0);
+            let axial = (p.z.abs() - half_height).max(0.0);
+            radial * radial + axial * axial
+        }
+        Shape::Sphere { radius } => {
+            let d = (p.coords.norm() - radius).max(0.0);
+            d * d
+        }
+    };
+    squared <= r * r
+}
+
+/// Which links move when the group's joints (or joints mimicking them) move.
+fn moving_links(robot: &Robot, group: &Group) -> Vec<bool> {
+    let joints = &robot.urdf().joints;
+    let mut moving = vec![false; robot.urdf().links.len()];
+    let moves = |j: usize| {
+        group.joints.contains(&j)
+            || robot.mimic(j).is_some_and(|(followed, _, _)| group.joints.contains(&followed))
+    };
+    for &j in robot.joints_in_order() {
+        let (parent, child) = robot.joint_links(j);
+        moving[child] = moving[parent] || (joints[j].kind != JointKind::Fixed && moves(j));
+    }
+    moving
+}
+
+/// Per group joint, how far any sphere moves per unit of its value (see the [module](self)).
+fn reach(robot: &Robot, group: &Group, model: &SphereModel) -> Vec<f64> {
+    let joints = &robot.urdf().joints;
+    // For each joint, the farthest any sphere below it can be from the joint's frame.
+    let per_joint = |j: usize| -> f64 {
+        if joints[j].kind == JointKind::Prismatic {
+            return 1.0;
+        }
+        let below = robot.joint_links(j).1;
+        model
+            .spheres
+            .iter()
+            .filter_map(|s| chain_length(robot, below, s.link).map(|l| l + s.centre.norm()))
+            .fold(0.0, f64::max)
+    };
+    group
+        .joints
+        .iter()
+        .map(|&k| {
+            let mimics: f64 = (0..joints.len())
+                .filter_map(|m| {
+                    robot.mimic(m).filter(|&(f, _, _)| f == k).map(|(_, mult, _)| mult.abs() * per_joint(m))
+                })
+                .sum();
+            per_joint(k) + mimics
+        })
+        .collect()
+}
+
+/// The longest `link` can be from `top`'s frame, over every configuration, when `link` is at or
+/// below `top`: the lengths of the joint frames between them (prismatic joints at their farthest
+/// extension); `None` when it is not below.
+fn chain_length(robot: &Robot, top: usize, link: usize) -> Option<f64> {
+    let joints = &robot.urdf().joints;
+    let mut length = 0.0;
+    let mut at = link;
+    while at != top {
+        let j = robot.parent_joint(at)?;
+        length += joints[j].origin.translation.vector.norm();
+        if let (JointKind::Prismatic, Some(l)) = (joints[j].kind, joints[j].limits) {
+            length += l.lower.abs().max(l.upper.abs());
+        }
+        at = robot.joint_links(j).0;
+    }
+    Some(length)
+}
+
+impl<const N: usize> Validity<Rn<N>> for ArmChecker {
+    fn state_is_valid(&self, _: &Rn<N>, q: &SVector<f64, N>) -> bool {
+        self.is_free(q.as_slice())
+    }
+
+    fn motion_is_valid(&self, _: &Rn<N>, a: &SVector<f64, N>, b: &SVector<f64, N>) -> bool {
+        self.motion_is_free(a.as_slice(), b.as_slice())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use nalgebra::Isometry3;
+
+    use super::*;
+
+    #[test]
+    fn a_sphere_touching_a_box_face_collides_and_one_beyond_does_not() {
+        let o = Obstacle {
+            id: "b".into(),
+            shape: Shape::Box { half: nalgebra::Vector3::new(1.0, 1.0, 1.0) },
+            pose: Isometry3::identity(),
+        };
+        assert!(touches(&o, &Point3::new(1.5, 0.0, 0.0), 0.5));
+        assert!(!touches(&o, &Point3::new(1.5 + 1e-9, 0.0, 0.0), 0.5));
+        // Near a corner the distance is to the corner, not to the faces' planes.
+        assert!(!touches(&o, &Point3::new(1.4, 1.4, 0.0), 0.5));
+    }
+
+    #[test]
+    fn a_sphere_near_a_cylinder_rim_is_measured_to_the_rim() {
+        let o = Obstacle {
+            id: "c".into(),
+            shape: Shape::Cylinder { radius: 1.0, half_height: 1.0 },
+            pose: Isometry3::identity(),
+        };
+        assert!(touches(&o, &Point3::new(0.0, 0.0, 1.5), 0.5));
+        assert!(!touches(&o, &Point3::new(1.3, 0.0, 1.3), 0.4)); // 0.42 from the rim
+        assert!(touches(&o, &Point3::new(1.3, 0.0, 1.3), 0.43));
+    }
+}

@@ -73,6 +73,11 @@ pub struct NavigationDoctests;
 #[doc = include_str!("../docs/ros-maps.md")]
 pub struct RosMapsGuideDoctests;
 
+/// The code of the guide's page on robot arms, compiled as a doc test (it reads the shared data).
+#[cfg(doctest)]
+#[doc = include_str!("../docs/arms.md")]
+pub struct ArmsGuideDoctests;
+
 /// The code of the guide's page on jump point search, run as a doc test.
 #[cfg(doctest)]
 #[doc = include_str!("../docs/jump-points.md")]

@@ -67,5 +67,8 @@ pub mod urdf;
 
 pub use checker::{ArmChecker, DEFAULT_STEP};
 pub use error::RobotError;
+/// nalgebra (0.35), whose poses, vectors and axes the robot's model is written in, so a user names
+/// them without a version-matched dependency of their own.
+pub use nalgebra;
 pub use robot::{Group, Robot};
 pub use spheres::{LinkSphere, SphereModel};

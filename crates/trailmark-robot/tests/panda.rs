@@ -169,7 +169,10 @@ fn plan_sets(dir: &Path, per_set: usize) {
             let to = |v: &[f64]| nalgebra::SVector::<f64, 7>::from_column_slice(v);
             let problem = Problem::new(&space, &checker, to(&start), to(&goal));
             let mut planner = RrtConnect::new(KdNearest::<Rn<7>, 7>::new(&space).unwrap()).with_seed(1);
+            let clock = std::time::Instant::now();
             let plan = planner.solve(&problem, &Termination::iterations(50_000)).unwrap();
+            // Printed, not asserted: the planning time of the scalar checker (run with --nocapture).
+            println!("{name}: planned in {:.3} ms", clock.elapsed().as_secs_f64() * 1e3);
             let path = plan.path().unwrap_or_else(|| panic!("{name}: no path"));
             assert_eq!(path[0].as_slice(), &start[..]);
             assert_eq!(path[path.len() - 1].as_slice(), &goal[..]);

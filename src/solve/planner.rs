@@ -1,5 +1,6 @@
 //! The planners' settings in a problem document and how [`solve`](super::solve) runs each one;
-//! their names and families are the registry's (`registry.rs`).
+//! their names and families are the registry's (`registry.rs`). Every optional setting carries
+//! the same serde attribute (absent in a document: the default; `None`: not written back).
 
 use std::time::{Duration, Instant};
 

@@ -43,6 +43,9 @@ use crate::limits::{MAX_NODES, MAX_WEIGHT};
 use crate::one_shot::SearchResult;
 use crate::one_shot::workspace::Search;
 
+// Each search below states its closures' bounds in full, as `pathfinding` does, so a user reads
+// one signature; the bodies are one line each onto `Implicit`.
+
 // Each public search spells out its bounds: they are its public signature (Rust has no trait alias).
 /// A least-cost path from `start` to a node for which `success` holds, by A* with `heuristic`
 /// (admissible: never more than the least cost to a goal): `pathfinding::prelude::astar`'s

@@ -349,7 +349,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     /// The cost of the motion from `from` to `to` in the world of `checker`, `None` if it
     /// collides.
     fn connect(&self, checker: &CollisionChecker, from: &S::State, to: &S::State) -> Option<Cost> {
-        self.space.motion_is_free(checker, from, to).then(|| self.space.distance(from, to))
+        motion_cost(&self.space, checker, from, to)
     }
 
     /// The nodes a configuration `state` joins in a roadmap of `n` nodes, nearest first, with
@@ -379,9 +379,7 @@ impl<S: PlanarSpace> PolygonPrm<S> {
     /// the node already at `state` and `false`.
     fn add_node(&mut self, state: S::State) -> Result<(u32, bool), PrmError> {
         let (space, checker) = (&self.space, &self.checker);
-        let motion = |from: &S::State, to: &S::State, _| {
-            space.motion_is_free(checker, from, to).then(|| space.distance(from, to))
-        };
+        let motion = |from: &S::State, to: &S::State, _| motion_cost(space, checker, from, to);
         self.roadmap
             .add_checked(space, state, MAX_ROADMAP_NODES, motion, || false)
             .ok_or(PrmError::TooManyNodes)
@@ -397,6 +395,17 @@ impl<S: PlanarSpace> PolygonPrm<S> {
             changes.push(EdgeChange::new(b, a));
         }
     }
+}
+
+/// The cost of `space`'s motion from `from` to `to` in the world of `checker`, `None` if it
+/// collides.
+fn motion_cost<S: PlanarSpace>(
+    space: &S,
+    checker: &CollisionChecker,
+    from: &S::State,
+    to: &S::State,
+) -> Option<Cost> {
+    space.motion_is_free(checker, from, to).then(|| space.distance(from, to))
 }
 
 #[cfg(test)]

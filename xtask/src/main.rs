@@ -4,7 +4,8 @@
 //!   in `../shared/movingai` when present) beside peer libraries, and writes a report.
 //! - `cargo xtask verify movingai DIR` checks every scenario of a MovingAI benchmark folder
 //!   against its published optimal length; `cargo xtask verify anyangle DIR` checks the GPPC
-//!   any-angle track on visibility graphs.
+//!   any-angle track on visibility graphs; `cargo xtask verify mbm DIR --urdf F --srdf F` plans
+//!   every MotionBenchMaker problem of a folder and checks each path again.
 //! - `cargo xtask solve PROBLEM.json` solves one problem document and prints the result JSON;
 //!   `cargo xtask render PROBLEM.json OUT.svg` also draws the world, its graph and the path.
 //! - `cargo xtask navigate` runs a robot through partly known terrain with each incremental
@@ -25,6 +26,7 @@ mod output;
 
 mod bench;
 mod contingency;
+mod mbm;
 mod memory;
 mod navigate;
 mod reference;
@@ -100,6 +102,9 @@ enum VerifySet {
         #[arg(long)]
         all_edges: bool,
     },
+    /// Every MotionBenchMaker problem of a folder (requestNNNN.yaml beside sceneNNNN.yaml, at
+    /// any depth), planned and its path checked again by the f64 sphere checker.
+    Mbm(mbm::Args),
 }
 
 /// Every allocation is counted, for the benchmark's peak-memory figures.
@@ -126,6 +131,7 @@ fn main() -> ExitCode {
             let edges = if all_edges { Edges::All } else { Edges::Tangent };
             verify::anyangle(&dir, every, rel, edges)
         }
+        Command::Verify { set: VerifySet::Mbm(args) } => mbm::run(&args),
         Command::Solve { problem } => solve::run(&problem),
         Command::Render { problem, out } => solve::render(&problem, &out),
         Command::Navigate(args) => navigate::run(&args),

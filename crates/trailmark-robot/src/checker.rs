@@ -30,19 +30,19 @@ pub const DEFAULT_STEP: f64 = 0.01;
 /// The spheres of one robot's group in one scene, checked as the [module](self) says.
 #[derive(Debug, Clone)]
 pub struct ArmChecker {
-    robot: Robot,
-    model: SphereModel,
-    obstacles: Vec<Obstacle>,
+    pub(crate) robot: Robot,
+    pub(crate) model: SphereModel,
+    pub(crate) obstacles: Vec<Obstacle>,
     /// For each obstacle, the links allowed to touch it.
-    allowed_links: Vec<Vec<usize>>,
-    group: Group,
+    pub(crate) allowed_links: Vec<Vec<usize>>,
+    pub(crate) group: Group,
     /// A value per joint of the robot: the start state's, for the joints outside the group.
-    template: Vec<f64>,
+    pub(crate) template: Vec<f64>,
     /// Sphere pairs checked against each other (at least one of them moves with the group).
-    pairs: Vec<(u32, u32)>,
+    pub(crate) pairs: Vec<(u32, u32)>,
     /// Per group joint, how far any sphere moves per unit of its value.
-    reach: Vec<f64>,
-    step: f64,
+    pub(crate) reach: Vec<f64>,
+    pub(crate) step: f64,
 }
 
 impl ArmChecker {
@@ -151,20 +151,9 @@ impl ArmChecker {
     /// Whether the straight motion from `a` to `b` in joint space is free, as the
     /// [module](self) says.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
-        if a.len() != self.reach.len() || b.len() != self.reach.len() {
-            return false;
-        }
-        let travel: f64 = self.reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum();
-        let steps = (travel / self.step).ceil();
-        if !steps.is_finite() || steps > 1e7 {
-            return false;
-        }
-        let n = (steps as usize).max(1);
+        let Some(n) = self.motion_steps(a, b) else { return false };
         let grow = self.step / 2.0;
-        let at = |i: usize| -> Vec<f64> {
-            let t = i as f64 / n as f64;
-            a.iter().zip(b).map(|(x, y)| x + (y - x) * t).collect()
-        };
+        let at = |i: usize| -> Vec<f64> { a.iter().zip(b).map(|(x, y)| along(*x, *y, i, n)).collect() };
         if !self.is_free_grown(&at(n), grow) || !self.is_free_grown(&at(0), grow) {
             return false;
         }
@@ -184,18 +173,20 @@ impl ArmChecker {
         true
     }
 
+    /// How many steps the motion from `a` to `b` is checked in: states `0..=n` along it, so that
+    /// no sphere moves more than `step` between two of them. `None` for vectors of another length
+    /// and motions of over ten million steps (or not finite).
+    pub(crate) fn motion_steps(&self, a: &[f64], b: &[f64]) -> Option<usize> {
+        if a.len() != self.reach.len() || b.len() != self.reach.len() {
+            return None;
+        }
+        let travel: f64 = self.reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum();
+        let steps = (travel / self.step).ceil();
+        (steps.is_finite() && steps <= 1e7).then(|| (steps as usize).max(1))
+    }
+
     fn is_free_grown(&self, q: &[f64], grow: f64) -> bool {
-        if q.len() != self.group.joints.len() || !q.iter().all(|v| v.is_finite()) {
-            return false;
-        }
-        let mut values = self.template.clone();
-        for (&j, &v) in self.group.joints.iter().zip(q) {
-            values[j] = v;
-        }
-        let mut poses = Vec::new();
-        self.robot.poses_into(&values, &mut poses);
-        let centres: Vec<Point3<f64>> =
-            self.model.spheres.iter().map(|s| poses[s.link] * Point3::from(s.centre)).collect();
+        let Some(centres) = self.centres(q) else { return false };
         for (s, c) in self.model.spheres.iter().zip(&centres) {
             let r = s.radius + grow;
             for (o, allowed) in self.obstacles.iter().zip(&self.allowed_links) {
@@ -210,12 +201,84 @@ impl ArmChecker {
             (centres[a as usize] - centres[b as usize]).norm_squared() > reach * reach
         })
     }
+
+    /// Every sphere's centre at `q`; `None` for a `q` of another length or not finite.
+    fn centres(&self, q: &[f64]) -> Option<Vec<Point3<f64>>> {
+        if q.len() != self.group.joints.len() || !q.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let mut values = self.template.clone();
+        for (&j, &v) in self.group.joints.iter().zip(q) {
+            values[j] = v;
+        }
+        let mut poses = Vec::new();
+        self.robot.poses_into(&values, &mut poses);
+        Some(self.model.spheres.iter().map(|s| poses[s.link] * Point3::from(s.centre)).collect())
+    }
+
+    /// What touches at `q`, for telling why a state is not free: a contact per link and
+    /// obstacle, or pair of links, with the deepest overlap of their spheres. Errors on a `q` of
+    /// another length or not finite.
+    pub fn contacts(&self, q: &[f64]) -> Result<Vec<Contact>, RobotError> {
+        let centres =
+            self.centres(q).ok_or(RobotError::Dimension { expected: self.reach.len(), found: q.len() })?;
+        let links = &self.robot.urdf().links;
+        let mut found: Vec<Contact> = Vec::new();
+        let mut add = |link: usize, with: String, depth: f64| {
+            let link = links[link].name.clone();
+            match found.iter_mut().find(|c| c.link == link && c.with == with) {
+                Some(c) => c.depth = c.depth.max(depth),
+                None => found.push(Contact { link, with, depth }),
+            }
+        };
+        for (s, c) in self.model.spheres.iter().zip(&centres) {
+            for (o, allowed) in self.obstacles.iter().zip(&self.allowed_links) {
+                let depth = s.radius - clearance(o, c);
+                if depth >= 0.0 && !allowed.contains(&s.link) {
+                    add(s.link, o.id.clone(), depth);
+                }
+            }
+        }
+        for &(a, b) in &self.pairs {
+            let (sa, sb) = (&self.model.spheres[a as usize], &self.model.spheres[b as usize]);
+            let depth = sa.radius + sb.radius - (centres[a as usize] - centres[b as usize]).norm();
+            if depth >= 0.0 {
+                add(sa.link, links[sb.link].name.clone(), depth);
+            }
+        }
+        Ok(found)
+    }
+}
+
+/// Two things touching: a link and an obstacle (by its id) or another link (by its name).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Contact {
+    /// The link's name.
+    pub link: String,
+    /// The obstacle's id or the other link's name.
+    pub with: String,
+    /// How far their deepest spheres overlap, in metres (0 when they just touch).
+    pub depth: f64,
+}
+
+/// Joint value `i` of `n` steps from `x` to `y`: the one formula both checkers check motions at.
+pub(crate) fn along(x: f64, y: f64, i: usize, n: usize) -> f64 {
+    x + (y - x) * (i as f64 / n as f64)
 }
 
 /// Whether a sphere at `c` of radius `r` touches obstacle `o`.
 fn touches(o: &Obstacle, c: &Point3<f64>, r: f64) -> bool {
+    squared_distance(o, c) <= r * r
+}
+
+/// How far `c` is from obstacle `o` (0 inside it).
+pub(crate) fn clearance(o: &Obstacle, c: &Point3<f64>) -> f64 {
+    squared_distance(o, c).sqrt()
+}
+
+fn squared_distance(o: &Obstacle, c: &Point3<f64>) -> f64 {
     let p = o.pose.inverse_transform_point(c);
-    let squared = match o.shape {
+    match o.shape {
         Shape::Box { half } => {
             let d = p.coords.abs() - half;
             d.map(|x| x.max(0.0)).norm_squared()
@@ -229,8 +292,7 @@ fn touches(o: &Obstacle, c: &Point3<f64>, r: f64) -> bool {
             let d = (p.coords.norm() - radius).max(0.0);
             d * d
         }
-    };
-    squared <= r * r
+    }
 }
 
 /// Which links move when the group's joints (or joints mimicking them) move.

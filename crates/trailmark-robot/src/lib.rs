@@ -56,6 +56,7 @@
 
 #![deny(missing_docs)]
 
+pub mod batch;
 pub mod checker;
 mod error;
 pub mod request;
@@ -65,7 +66,8 @@ mod spheres;
 pub mod srdf;
 pub mod urdf;
 
-pub use checker::{ArmChecker, DEFAULT_STEP};
+pub use batch::{BatchChecker, Simd};
+pub use checker::{ArmChecker, Contact, DEFAULT_STEP};
 pub use error::RobotError;
 /// nalgebra (0.35), whose poses, vectors and axes the robot's model is written in, so a user names
 /// them without a version-matched dependency of their own.

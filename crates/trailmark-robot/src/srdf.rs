@@ -64,6 +64,11 @@ impl Srdf {
         Ok(srdf)
     }
 
+    /// Reads the SRDF file at `path`.
+    pub fn from_file(path: impl AsRef<std::path::Path>) -> Result<Srdf, RobotError> {
+        Srdf::parse(&crate::robot::read(path.as_ref())?)
+    }
+
     /// The group named `name`.
     pub fn group(&self, name: &str) -> Option<&GroupSpec> {
         self.groups.iter().find(|g| g.name == name)

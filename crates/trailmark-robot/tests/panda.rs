@@ -12,7 +12,7 @@ use trailmark_core::termination::Termination;
 use trailmark_robot::request::Request;
 use trailmark_robot::scene::Scene;
 use trailmark_robot::srdf::Srdf;
-use trailmark_robot::{ArmChecker, DEFAULT_STEP, Robot};
+use trailmark_robot::{ArmChecker, BatchChecker, DEFAULT_STEP, Robot, Simd};
 use trailmark_sample::{KdNearest, Planner, Problem, Rn, RrtConnect};
 
 #[path = "../../../tests/support/shared_data.rs"]
@@ -167,12 +167,23 @@ fn plan_sets(dir: &Path, per_set: usize) {
             assert!(checker.is_free(&start) && checker.is_free(&goal), "{name}: start or goal collides");
             let space = checker.space::<7>().unwrap();
             let to = |v: &[f64]| nalgebra::SVector::<f64, 7>::from_column_slice(v);
-            let problem = Problem::new(&space, &checker, to(&start), to(&goal));
+            let fast = BatchChecker::new(checker.clone());
             let mut planner = RrtConnect::new(KdNearest::<Rn<7>, 7>::new(&space).unwrap()).with_seed(1);
             let clock = std::time::Instant::now();
+            let problem = Problem::new(&space, &checker, to(&start), to(&goal));
+            let scalar = planner.solve(&problem, &Termination::iterations(50_000)).unwrap();
+            let scalar_time = clock.elapsed().as_secs_f64();
+            assert!(scalar.path().is_some(), "{name}: no path with the scalar checker");
+            let mut planner = RrtConnect::new(KdNearest::<Rn<7>, 7>::new(&space).unwrap()).with_seed(1);
+            let clock = std::time::Instant::now();
+            let problem = Problem::new(&space, &fast, to(&start), to(&goal));
             let plan = planner.solve(&problem, &Termination::iterations(50_000)).unwrap();
-            // Printed, not asserted: the planning time of the scalar checker (run with --nocapture).
-            println!("{name}: planned in {:.3} ms", clock.elapsed().as_secs_f64() * 1e3);
+            // Printed, not asserted (run with --nocapture).
+            println!(
+                "{name}: planned in {:.3} ms (scalar checker {:.3} ms)",
+                clock.elapsed().as_secs_f64() * 1e3,
+                scalar_time * 1e3
+            );
             let path = plan.path().unwrap_or_else(|| panic!("{name}: no path"));
             assert_eq!(path[0].as_slice(), &start[..]);
             assert_eq!(path[path.len() - 1].as_slice(), &goal[..]);
@@ -181,4 +192,58 @@ fn plan_sets(dir: &Path, per_set: usize) {
             }
         }
     }
+}
+
+/// The batch checker, on both its codes, against the `f64` checker on the first problems of
+/// every set: configurations drawn in the limits and near the start-goal line (where contacts
+/// are close calls), and motions between them. Never free where the `f64` checker collides,
+/// rarely colliding where it is free (only within the `f32` slack of a contact), and the vector
+/// and portable codes always agree.
+#[test]
+fn the_batch_checker_is_conservative_and_its_codes_agree() {
+    let Some(dir) = panda() else { return };
+    let robot = Robot::from_file(dir.join("panda_spherized.urdf")).unwrap();
+    let srdf = srdf(&dir);
+    let group = robot.group(&srdf, "panda_arm").unwrap();
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    let (mut states, mut stricter) = (0usize, 0usize);
+    for set in SETS {
+        for (scene_file, request_file) in problems(&dir, set).into_iter().take(2) {
+            let scene = Scene::from_file(&scene_file).unwrap();
+            let request = Request::from_file(&request_file).unwrap();
+            let start_values = request.start_values(&robot).unwrap();
+            let (start, goal) = request.ends(&group).unwrap();
+            let checker =
+                ArmChecker::new(robot.clone(), &srdf, group.clone(), &scene, start_values, DEFAULT_STEP)
+                    .unwrap();
+            let vector = BatchChecker::new(checker.clone());
+            let portable = vector.clone().with_simd(Simd::Portable);
+            let draw = |rng: &mut ChaCha8Rng| -> Vec<f64> {
+                if rng.random_bool(0.5) {
+                    (0..7).map(|i| rng.random_range(group.bounds[i].0..group.bounds[i].1)).collect()
+                } else {
+                    let t: f64 = rng.random_range(0.0..1.0);
+                    (0..7)
+                        .map(|i| start[i] + (goal[i] - start[i]) * t + rng.random_range(-0.05..0.05))
+                        .collect()
+                }
+            };
+            for _ in 0..300 {
+                let q = draw(&mut rng);
+                let exact = checker.is_free(&q);
+                let fast = vector.is_free(&q);
+                assert_eq!(fast, portable.is_free(&q), "{q:?}");
+                assert!(!fast || exact, "{}: free in f32 but not in f64 at {q:?}", request_file.display());
+                states += 1;
+                stricter += usize::from(exact && !fast);
+                let r = draw(&mut rng);
+                let exact = checker.motion_is_free(&q, &r);
+                let fast = vector.motion_is_free(&q, &r);
+                assert_eq!(fast, portable.motion_is_free(&q, &r));
+                assert!(!fast || exact, "{}: a motion free in f32 but not in f64", request_file.display());
+            }
+        }
+    }
+    println!("{stricter} of {states} states colliding only in f32");
+    assert!(stricter * 100 <= states, "{stricter} of {states} states colliding only in f32");
 }

@@ -1,0 +1,318 @@
+//! An [`ArmChecker`] compiled for the batch kernel: the moving frames in order, each turning
+//! about its own z axis (or sliding), the spheres in those frames, the obstacles as inverse
+//! poses, all in `f32` and grown by a bound on the rounding of the `f32` arithmetic.
+//!
+//! A frame is a group joint's child link, or a joint mimicking one: every other joint keeps its
+//! value (fixed, or the start state's) and is folded into constant transforms. A revolute joint
+//! about any axis is a turn about z between two constant rotations (the one carrying z onto
+//! the axis, and its inverse folded into what hangs below), so the kernel turns only about z.
+
+use nalgebra::{Isometry3, Point3, Rotation3, Unit, UnitQuaternion, Vector3};
+
+use crate::checker::{ArmChecker, clearance};
+use crate::scene::Shape;
+use crate::urdf::JointKind;
+
+/// A 3 x 4 rigid transform in `f32`: rotation rows, then the translation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Pose32 {
+    pub(crate) rotation: [[f32; 3]; 3],
+    pub(crate) translation: [f32; 3],
+}
+
+impl Pose32 {
+    fn new(pose: &Isometry3<f64>) -> Pose32 {
+        let r = pose.rotation.to_rotation_matrix();
+        let t = pose.translation.vector;
+        Pose32 {
+            rotation: std::array::from_fn(|i| std::array::from_fn(|j| r[(i, j)] as f32)),
+            translation: std::array::from_fn(|i| t[i] as f32),
+        }
+    }
+}
+
+/// How a frame moves with its joint value `multiplier * q[variable] + offset`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Motion {
+    /// Turning about the frame's z axis.
+    Turn,
+    /// Sliding along this axis of the frame.
+    Slide([f32; 3]),
+}
+
+/// One moving frame: `parent * constant * motion(value)`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Frame {
+    /// The frame above, or `None` for the world.
+    pub(crate) parent: Option<usize>,
+    pub(crate) constant: Pose32,
+    pub(crate) motion: Motion,
+    /// The group joint it follows, and how.
+    pub(crate) variable: usize,
+    pub(crate) multiplier: f32,
+    pub(crate) offset: f32,
+    /// Its spheres (centre, radius) in its own coordinates.
+    pub(crate) spheres: Vec<([f32; 3], f32)>,
+    /// One sphere containing them all.
+    pub(crate) bound: ([f32; 3], f32),
+}
+
+/// An obstacle's shape in its own frame, and that frame's inverse.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Obstacle32 {
+    pub(crate) inverse: Pose32,
+    pub(crate) shape: Shape32,
+}
+
+/// [`Shape`] in `f32`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Shape32 {
+    Box([f32; 3]),
+    Cylinder { radius: f32, half_height: f32 },
+    Sphere { centre: [f32; 3], radius: f32 },
+}
+
+/// The spheres of a frame to test against an obstacle (those whose link may not touch it).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct WorldTest {
+    pub(crate) obstacle: usize,
+    pub(crate) spheres: Vec<u16>,
+}
+
+/// Sphere pairs of two frames (or of a frame and the robot's still part, `other: None`, whose
+/// spheres are then given in world coordinates).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct PairTest {
+    pub(crate) frame: usize,
+    pub(crate) other: Option<usize>,
+    /// Sphere indices in `frame`, and in `other` (or in [`Program::still`]).
+    pub(crate) pairs: Vec<(u16, u16)>,
+    /// A sphere containing the `other` side's spheres of these pairs, when it is still.
+    pub(crate) still_bound: ([f32; 3], f32),
+}
+
+/// The whole compiled checker.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Program {
+    pub(crate) frames: Vec<Frame>,
+    pub(crate) obstacles: Vec<Obstacle32>,
+    /// Per frame, its tests against the world.
+    pub(crate) world: Vec<Vec<WorldTest>>,
+    pub(crate) pairs: Vec<PairTest>,
+    /// Spheres that never move with the group, in world coordinates.
+    pub(crate) still: Vec<([f32; 3], f32)>,
+    /// The smallest gap between checked spheres whose distance never changes (both on the still
+    /// part, or both on one frame): growing each by half of it collides.
+    pub(crate) fixed_gap: f64,
+    /// The smallest gap between a still sphere and an obstacle it may not touch.
+    pub(crate) still_clearance: f64,
+    /// Added to every radius: more than the `f32` arithmetic can be off by.
+    pub(crate) slack: f32,
+}
+
+/// Relative size of [`Program::slack`] to the largest coordinate the arithmetic meets: about a
+/// thousand times the `f32` rounding of a chain of a dozen transforms and a distance.
+const SLACK_PER_METRE: f64 = 1e-4;
+
+/// Where a link is: a frame (or the world) and its pose in it.
+#[derive(Clone, Copy)]
+struct Place {
+    frame: Option<usize>,
+    offset: Isometry3<f64>,
+}
+
+impl Program {
+    pub(crate) fn new(checker: &ArmChecker) -> Program {
+        let robot = &checker.robot;
+        let joints = &robot.urdf().joints;
+        let group = &checker.group;
+        let values = &checker.template;
+        let mut places = vec![Place { frame: None, offset: Isometry3::identity() }; robot.urdf().links.len()];
+        let mut frames: Vec<Frame> = Vec::new();
+        let driver = |j: usize| -> Option<(usize, f64, f64)> {
+            if let Some(v) = group.joints.iter().position(|&g| g == j) {
+                return Some((v, 1.0, 0.0));
+            }
+            let (followed, multiplier, offset) = robot.mimic(j)?;
+            group.joints.iter().position(|&g| g == followed).map(|v| (v, multiplier, offset))
+        };
+        // The frames' lengths, for the slack.
+        let mut reach = 0.0f64;
+        for &j in robot.joints_in_order() {
+            let (parent, child) = robot.joint_links(j);
+            let above = places[parent];
+            let joint = &joints[j];
+            reach += joint.origin.translation.vector.norm();
+            let moving =
+                matches!(joint.kind, JointKind::Revolute | JointKind::Continuous | JointKind::Prismatic);
+            match driver(j).filter(|_| moving) {
+                Some((variable, multiplier, offset)) => {
+                    let (turn, motion) = if joint.kind == JointKind::Prismatic {
+                        if let Some(l) = joint.limits {
+                            reach += multiplier.abs() * l.lower.abs().max(l.upper.abs()) + offset.abs();
+                        }
+                        let a = joint.axis.into_inner();
+                        (UnitQuaternion::identity(), Motion::Slide([a.x as f32, a.y as f32, a.z as f32]))
+                    } else {
+                        (z_onto(&joint.axis), Motion::Turn)
+                    };
+                    frames.push(Frame {
+                        parent: above.frame,
+                        constant: Pose32::new(&(above.offset * joint.origin * turn)),
+                        motion,
+                        variable,
+                        multiplier: multiplier as f32,
+                        offset: offset as f32,
+                        spheres: Vec::new(),
+                        bound: ([0.0; 3], 0.0),
+                    });
+                    let offset = Isometry3::from_parts(Default::default(), turn.inverse());
+                    places[child] = Place { frame: Some(frames.len() - 1), offset };
+                }
+                None => {
+                    // Values outside the group stay the start state's (mimic joints included).
+                    places[child] =
+                        Place { frame: above.frame, offset: above.offset * robot.joint_transform(j, values) };
+                }
+            }
+        }
+        // Spheres into their frames; the still ones into the world.
+        let spheres = &checker.model.spheres;
+        let mut slot = Vec::with_capacity(spheres.len());
+        let mut links = vec![Vec::new(); frames.len()];
+        let mut still64 = Vec::new();
+        let mut still_clearance = f64::INFINITY;
+        let mut radius = 0.0f64;
+        for s in spheres {
+            let place = places[s.link];
+            let centre = place.offset * Point3::from(s.centre);
+            radius = radius.max(s.centre.norm() + s.radius);
+            match place.frame {
+                Some(f) => {
+                    slot.push((Some(f), frames[f].spheres.len()));
+                    frames[f].spheres.push((point32(&centre), s.radius as f32));
+                    links[f].push(s.link);
+                }
+                None => {
+                    slot.push((None, still64.len()));
+                    still64.push((centre, s.radius));
+                    for (o, allowed) in checker.obstacles.iter().zip(&checker.allowed_links) {
+                        if !allowed.contains(&s.link) {
+                            still_clearance = still_clearance.min(clearance(o, &centre) - s.radius);
+                        }
+                    }
+                }
+            }
+        }
+        let mut far = reach + radius;
+        for o in &checker.obstacles {
+            let extent = match o.shape {
+                Shape::Box { half } => half.norm(),
+                Shape::Cylinder { radius, half_height } => radius.hypot(half_height),
+                Shape::Sphere { radius } => radius,
+            };
+            far = far.max(o.pose.translation.vector.norm() + extent);
+        }
+        let slack = (SLACK_PER_METRE * far.max(1.0)) as f32;
+        for f in &mut frames {
+            f.bound = bounding(&f.spheres);
+        }
+        let obstacles = checker
+            .obstacles
+            .iter()
+            .map(|o| Obstacle32 {
+                inverse: Pose32::new(&o.pose.inverse()),
+                shape: match o.shape {
+                    Shape::Box { half } => Shape32::Box(std::array::from_fn(|i| half[i] as f32)),
+                    Shape::Cylinder { radius, half_height } => {
+                        Shape32::Cylinder { radius: radius as f32, half_height: half_height as f32 }
+                    }
+                    Shape::Sphere { radius } => Shape32::Sphere {
+                        centre: point32(&o.pose.translation.vector.into()),
+                        radius: radius as f32,
+                    },
+                },
+            })
+            .collect();
+        let world = (0..frames.len())
+            .map(|f| {
+                (0..checker.obstacles.len())
+                    .filter_map(|o| {
+                        let tested: Vec<u16> = (0..frames[f].spheres.len())
+                            .filter(|&i| !checker.allowed_links[o].contains(&links[f][i]))
+                            .map(|i| i as u16)
+                            .collect();
+                        (!tested.is_empty()).then_some(WorldTest { obstacle: o, spheres: tested })
+                    })
+                    .collect()
+            })
+            .collect();
+        // Pairs grouped by their frames; pairs that never change measured now.
+        let mut pairs: Vec<PairTest> = Vec::new();
+        let mut fixed_gap = f64::INFINITY;
+        // At the start state's values: only pairs whose distance never changes use these.
+        let mut poses = Vec::new();
+        robot.poses_into(&checker.template, &mut poses);
+        let world_centre = |k: usize| poses[spheres[k].link] * Point3::from(spheres[k].centre);
+        for &(a, b) in &checker.pairs {
+            let (a, b) = (a as usize, b as usize);
+            let ((fa, ia), (fb, ib)) = (slot[a], slot[b]);
+            let (frame, i, other, j) = match (fa, fb) {
+                (Some(x), Some(y)) if x < y => (y, ib, Some(x), ia),
+                (Some(x), other) if other != Some(x) => (x, ia, other, ib),
+                (None, Some(y)) => (y, ib, None, ia),
+                _ => {
+                    let gap =
+                        (world_centre(a) - world_centre(b)).norm() - spheres[a].radius - spheres[b].radius;
+                    fixed_gap = fixed_gap.min(gap);
+                    continue;
+                }
+            };
+            let test = match pairs.iter().position(|p| p.frame == frame && p.other == other) {
+                Some(t) => t,
+                None => {
+                    pairs.push(PairTest { frame, other, pairs: Vec::new(), still_bound: ([0.0; 3], 0.0) });
+                    pairs.len() - 1
+                }
+            };
+            pairs[test].pairs.push((i as u16, j as u16));
+        }
+        let still: Vec<([f32; 3], f32)> = still64.iter().map(|(c, r)| (point32(c), *r as f32)).collect();
+        for p in pairs.iter_mut().filter(|p| p.other.is_none()) {
+            let used: Vec<([f32; 3], f32)> = p.pairs.iter().map(|&(_, j)| still[j as usize]).collect();
+            p.still_bound = bounding(&used);
+        }
+        Program { frames, obstacles, world, pairs, still, fixed_gap, still_clearance, slack }
+    }
+}
+
+/// The rotation carrying z onto `axis`.
+fn z_onto(axis: &Unit<Vector3<f64>>) -> UnitQuaternion<f64> {
+    UnitQuaternion::rotation_between(&Vector3::z(), axis).unwrap_or_else(|| {
+        // Opposite: half a turn about x.
+        UnitQuaternion::from_rotation_matrix(&Rotation3::from_axis_angle(
+            &Vector3::x_axis(),
+            std::f64::consts::PI,
+        ))
+    })
+}
+
+fn point32(p: &Point3<f64>) -> [f32; 3] {
+    [p.x as f32, p.y as f32, p.z as f32]
+}
+
+/// A sphere containing every one of `spheres` (about their centres' mean; not the smallest).
+fn bounding(spheres: &[([f32; 3], f32)]) -> ([f32; 3], f32) {
+    if spheres.is_empty() {
+        return ([0.0; 3], 0.0);
+    }
+    let n = spheres.len() as f64;
+    let mean: [f32; 3] =
+        std::array::from_fn(|i| (spheres.iter().map(|(c, _)| c[i] as f64).sum::<f64>() / n) as f32);
+    let radius = spheres
+        .iter()
+        .map(|(c, r)| (0..3).map(|i| (c[i] as f64 - mean[i] as f64).powi(2)).sum::<f64>().sqrt() + *r as f64)
+        .fold(0.0, f64::max);
+    // Rounded up: the bound must contain what it bounds.
+    (mean, (radius * (1.0 + 1e-6)) as f32)
+}

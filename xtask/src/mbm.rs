@@ -1,0 +1,322 @@
+//! `cargo xtask verify mbm DIR --urdf FILE --srdf FILE`: every MotionBenchMaker problem of a
+//! folder (a `requestNNNN.yaml` beside its `sceneNNNN.yaml`, at any depth) planned for the
+//! request's group, each returned path checked again by the `f64` sphere checker at a tenth of
+//! the planning step (start, goal, joint limits, every motion), and one JSON line a problem.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use serde_json::json;
+use trailmark::core::termination::Termination;
+use trailmark::robot::request::Request;
+use trailmark::robot::scene::Scene;
+use trailmark::robot::srdf::Srdf;
+use trailmark::robot::{ArmChecker, BatchChecker, DEFAULT_STEP, Robot, RobotError};
+use trailmark::sample::{KdNearest, Planner, Problem, Rn, RrtConnect};
+
+/// The arguments of `verify mbm`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct Args {
+    /// The folder of problems (searched at any depth).
+    pub dir: PathBuf,
+    /// The robot's URDF (with spheres, or primitives).
+    #[arg(long)]
+    pub urdf: PathBuf,
+    /// The robot's SRDF.
+    #[arg(long)]
+    pub srdf: PathBuf,
+    /// The planner.
+    #[arg(long, value_enum, default_value = "rrt_connect")]
+    pub planner: ArmPlanner,
+    /// The collision checker planned with.
+    #[arg(long, value_enum, default_value = "batch")]
+    pub checker: CheckerKind,
+    /// Each problem's time limit, in seconds.
+    #[arg(long, default_value_t = 1.0)]
+    pub time_limit: f64,
+    /// The planner's seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Check every K-th problem of each folder only.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// A file to write one JSON line a problem to.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+}
+
+/// A planner `verify mbm` runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ArmPlanner {
+    /// RRT-Connect.
+    #[value(name = "rrt_connect")]
+    RrtConnect,
+}
+
+/// The collision checker planned with.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum CheckerKind {
+    /// Eight configurations at once in `f32` lanes ([`BatchChecker`]).
+    Batch,
+    /// One configuration at a time in `f64` ([`ArmChecker`]).
+    Scalar,
+}
+
+/// One problem: its name (`<folder>/<requestNNNN>`), scene and request.
+pub struct MbmProblem {
+    pub name: String,
+    pub scene: PathBuf,
+    pub request: PathBuf,
+}
+
+/// Every request of `dir` with its scene, in name order.
+pub fn problems(dir: &Path) -> Result<Vec<MbmProblem>, String> {
+    let mut found = Vec::new();
+    let mut folders = vec![dir.to_path_buf()];
+    while let Some(folder) = folders.pop() {
+        let entries =
+            std::fs::read_dir(&folder).map_err(|e| format!("cannot list {}: {e}", folder.display()))?;
+        for entry in entries {
+            let path = entry.map_err(|e| e.to_string())?.path();
+            let name = path.file_name().unwrap_or_default().to_string_lossy().into_owned();
+            if path.is_dir() {
+                folders.push(path);
+            } else if let Some(number) = name.strip_prefix("request").and_then(|n| n.strip_suffix(".yaml")) {
+                let scene = folder.join(format!("scene{number}.yaml"));
+                let set = folder.file_name().unwrap_or_default().to_string_lossy().into_owned();
+                let name = format!("{set}/request{number}");
+                found.push(MbmProblem { name, scene, request: path });
+            }
+        }
+    }
+    found.sort_by(|a, b| a.name.cmp(&b.name));
+    Ok(found)
+}
+
+/// What planning one problem gave.
+pub struct Outcome {
+    /// `solved`, `no_path`, `stopped` or `error`.
+    pub status: &'static str,
+    /// Planning time, without reading the files and compiling the checker.
+    pub time: Duration,
+    pub path: Vec<Vec<f64>>,
+    pub checks: u64,
+    /// The group's joints, in the path's order.
+    pub joints: Vec<String>,
+    /// Why the path fails the independent check, or the error.
+    pub failure: Option<String>,
+}
+
+/// The robot and its semantic description, read once.
+pub struct Arm {
+    pub robot: Robot,
+    pub srdf: Srdf,
+}
+
+impl Arm {
+    pub fn read(urdf: &Path, srdf: &Path) -> Result<Arm, RobotError> {
+        Ok(Arm { robot: Robot::from_file(urdf)?, srdf: Srdf::from_file(srdf)? })
+    }
+}
+
+/// Plans `problem` with `checker`'s kind of checker and checks the path independently.
+pub fn solve(arm: &Arm, problem: &MbmProblem, checker: CheckerKind, limit: Duration, seed: u64) -> Outcome {
+    let error = |e: RobotError| Outcome {
+        status: "error",
+        time: Duration::ZERO,
+        path: Vec::new(),
+        checks: 0,
+        joints: Vec::new(),
+        failure: Some(e.to_string()),
+    };
+    let setup = || -> Result<_, RobotError> {
+        let scene = Scene::from_file(&problem.scene)?;
+        let request = Request::from_file(&problem.request)?;
+        let group = arm.robot.group(&arm.srdf, &request.group)?;
+        let values = request.start_values(&arm.robot)?;
+        let (start, goal) = request.ends(&group)?;
+        let scalar = ArmChecker::new(arm.robot.clone(), &arm.srdf, group, &scene, values, DEFAULT_STEP)?;
+        let reference = ArmChecker::new(
+            arm.robot.clone(),
+            &arm.srdf,
+            scalar.group().clone(),
+            &scene,
+            request.start_values(&arm.robot)?,
+            DEFAULT_STEP / 10.0,
+        )?;
+        Ok((scalar, reference, start, goal))
+    };
+    let (scalar, reference, start, goal) = match setup() {
+        Ok(s) => s,
+        Err(e) => return error(e),
+    };
+    for (end, q) in [("start", &start), ("goal", &goal)] {
+        if let Ok(contacts) = reference.contacts(q)
+            && !contacts.is_empty()
+        {
+            let list: Vec<String> = contacts
+                .iter()
+                .map(|c| format!("{} with {} ({:.2} mm deep)", c.link, c.with, c.depth * 1e3))
+                .collect();
+            return Outcome {
+                status: "no_path",
+                failure: Some(format!("the {end} collides: {}", list.join(", "))),
+                ..error(RobotError::Dimension { expected: 0, found: 0 })
+            };
+        }
+    }
+    let batch = BatchChecker::new(scalar.clone());
+    macro_rules! by_dimension {
+        ($($n:literal)*) => {
+            match scalar.group().joints.len() {
+                $($n => match checker {
+                    CheckerKind::Batch => plan::<$n, _>(&scalar, &batch, &start, &goal, limit, seed),
+                    CheckerKind::Scalar => plan::<$n, _>(&scalar, &scalar, &start, &goal, limit, seed),
+                },)*
+                n => Err(RobotError::Dimension { expected: 7, found: n }),
+            }
+        };
+    }
+    let outcome = by_dimension!(1 2 3 4 5 6 7 8 9 10 11 12);
+    let mut outcome = match outcome {
+        Ok(o) => o,
+        Err(e) => return error(e),
+    };
+    outcome.joints = scalar.group().names.clone();
+    if outcome.status == "solved" {
+        outcome.failure = check_path(&reference, &outcome.path, &start, &goal);
+    }
+    outcome
+}
+
+fn plan<const N: usize, V: trailmark::sample::Validity<Rn<N>>>(
+    scalar: &ArmChecker,
+    validity: &V,
+    start: &[f64],
+    goal: &[f64],
+    limit: Duration,
+    seed: u64,
+) -> Result<Outcome, RobotError> {
+    let space = scalar.space::<N>()?;
+    let to = |v: &[f64]| trailmark::robot::nalgebra::SVector::<f64, N>::from_column_slice(v);
+    let problem = Problem::new(&space, validity, to(start), to(goal));
+    let nearest = KdNearest::<Rn<N>, N>::new(&space).map_err(|e| RobotError::Invalid {
+        element: scalar.group().name.clone(),
+        attribute: "limits",
+        reason: "a joint space the nearest-neighbour search takes",
+        value: e.to_string(),
+    })?;
+    let mut planner = RrtConnect::new(nearest).with_seed(seed);
+    let clock = Instant::now();
+    let result = planner.solve(&problem, &Termination::time(limit));
+    let time = clock.elapsed();
+    Ok(match result {
+        Ok(plan) => match plan.path() {
+            Some(path) => Outcome {
+                status: "solved",
+                time,
+                path: path.iter().map(|q| q.as_slice().to_vec()).collect(),
+                checks: plan.stats.collision_checks,
+                joints: Vec::new(),
+                failure: None,
+            },
+            None => Outcome {
+                status: "stopped",
+                time,
+                path: Vec::new(),
+                checks: plan.stats.collision_checks,
+                joints: Vec::new(),
+                failure: None,
+            },
+        },
+        Err(e) => Outcome {
+            status: "no_path",
+            time,
+            path: Vec::new(),
+            checks: 0,
+            joints: Vec::new(),
+            failure: Some(e.to_string()),
+        },
+    })
+}
+
+/// Why `path` fails the independent check, if it does.
+fn check_path(reference: &ArmChecker, path: &[Vec<f64>], start: &[f64], goal: &[f64]) -> Option<String> {
+    if path.first().map(Vec::as_slice) != Some(start) || path.last().map(Vec::as_slice) != Some(goal) {
+        return Some("the path does not run from the start to the goal".into());
+    }
+    let bounds = &reference.group().bounds;
+    for q in path {
+        if q.iter().zip(bounds).any(|(v, (low, high))| v < low || v > high) {
+            return Some(format!("a state beyond the joint limits: {q:?}"));
+        }
+    }
+    for (i, m) in path.windows(2).enumerate() {
+        if !reference.motion_is_free(&m[0], &m[1]) {
+            return Some(format!("motion {i} collides under the fine check"));
+        }
+    }
+    None
+}
+
+/// `verify mbm`: prints a line a failure and `N passed, M failed`, with the times.
+pub fn run(args: &Args) -> ExitCode {
+    let problems = match problems(&args.dir) {
+        Ok(p) => p,
+        Err(e) => return crate::output::error_report(e),
+    };
+    let arm = match Arm::read(&args.urdf, &args.srdf) {
+        Ok(a) => a,
+        Err(e) => return crate::output::error_report(e),
+    };
+    if !(args.time_limit.is_finite() && args.time_limit > 0.0) {
+        return crate::output::error_report("--time-limit must be a positive number of seconds");
+    }
+    let mut out = match &args.out {
+        Some(path) => match std::fs::File::create(path) {
+            Ok(f) => Some(std::io::BufWriter::new(f)),
+            Err(e) => return crate::output::error_report(format!("cannot write {}: {e}", path.display())),
+        },
+        None => None,
+    };
+    let limit = Duration::from_secs_f64(args.time_limit);
+    let (mut passed, mut failed) = (0u64, 0u64);
+    let mut times = Vec::new();
+    let mut checks = 0u64;
+    for problem in problems.iter().step_by(args.every as usize) {
+        let outcome = solve(&arm, problem, args.checker, limit, args.seed);
+        let ok = outcome.status == "solved" && outcome.failure.is_none();
+        if ok {
+            passed += 1;
+        } else {
+            failed += 1;
+            println!("{}: {} {}", problem.name, outcome.status, outcome.failure.as_deref().unwrap_or(""));
+        }
+        times.push(outcome.time.as_secs_f64());
+        checks += outcome.checks;
+        if let Some(out) = &mut out {
+            let line = json!({
+                "problem": problem.name,
+                "status": if outcome.status == "solved" && outcome.failure.is_some() { "error" } else { outcome.status },
+                "time_s": outcome.time.as_secs_f64(),
+                "joints": outcome.joints,
+                "path": outcome.path,
+            });
+            if writeln!(out, "{line}").is_err() {
+                return crate::output::error_report("cannot write the results");
+            }
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    let at = |q: f64| times.get(((times.len() as f64 - 1.0) * q).round() as usize).copied().unwrap_or(0.0);
+    println!(
+        "{passed} passed, {failed} failed; planning time median {:.1} µs, 95th percentile {:.1} µs, max {:.1} µs; {checks} checks in {:.3} s",
+        at(0.5) * 1e6,
+        at(0.95) * 1e6,
+        at(1.0) * 1e6,
+        times.iter().sum::<f64>()
+    );
+    if failed == 0 { ExitCode::SUCCESS } else { ExitCode::FAILURE }
+}

@@ -2,11 +2,38 @@
 //! frame's spheres tested against the world as soon as it is placed (a sphere about the whole
 //! frame first), then the sphere pairs of the robot (their frames' spheres first). Any lane
 //! colliding ends the test.
+//!
+//! No closures and no `array::from_fn` or `map` here: each is a function of its own, compiled
+//! without the CPU features of the function that called the kernel, and the vector intrinsics
+//! inside would stay calls instead of single instructions.
 
 use super::lanes::{LANES, Lanes, sin_cos};
 use super::program::{Motion, Obstacle32, Pose32, Program, Shape32};
 
 type Point<L> = [L; 3];
+
+/// Where the kernel keeps placed frames and sphere centres between its steps: reused from call
+/// to call, so no test allocates.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    /// Per frame, its rotation rows and translation: 12 lanes.
+    frames: Vec<[f32; LANES]>,
+    /// Per sphere of a frame, its centre: 3 lanes.
+    centres: Vec<[f32; LANES]>,
+    /// Per frame, whether its centres are placed.
+    filled: Vec<bool>,
+}
+
+impl Scratch {
+    /// Room for `program`, every frame's centres marked unplaced.
+    pub(crate) fn prepare(&mut self, program: &Program) {
+        let frames = program.frames.len();
+        self.frames.resize(frames * 12, [0.0; LANES]);
+        self.centres.resize(program.sphere_count * 3, [0.0; LANES]);
+        self.filled.clear();
+        self.filled.resize(frames, false);
+    }
+}
 
 /// A frame's pose in every lane: rotation rows and translation.
 #[derive(Clone, Copy)]
@@ -18,29 +45,64 @@ struct Placed<L> {
 impl<L: Lanes> Placed<L> {
     #[inline(always)]
     fn constant(pose: &Pose32) -> Self {
-        Placed {
-            rotation: pose.rotation.map(|row| row.map(L::splat)),
-            translation: pose.translation.map(L::splat),
-        }
+        let r = &pose.rotation;
+        Placed { rotation: [splat3(r[0]), splat3(r[1]), splat3(r[2])], translation: splat3(pose.translation) }
     }
 
     /// `self * pose`.
     #[inline(always)]
     fn then(&self, pose: &Pose32) -> Self {
-        let r = &self.rotation;
         let c = &pose.rotation;
-        let rotation = std::array::from_fn(|i| {
-            std::array::from_fn(|j| dot(&r[i], [c[0][j], c[1][j], c[2][j]], L::splat(0.0)))
-        });
-        let translation = std::array::from_fn(|i| dot(&r[i], pose.translation, self.translation[i]));
-        Placed { rotation, translation }
+        let columns = [[c[0][0], c[1][0], c[2][0]], [c[0][1], c[1][1], c[2][1]], [c[0][2], c[1][2], c[2][2]]];
+        let zero = L::splat(0.0);
+        let mut rotation = [[zero; 3]; 3];
+        for i in 0..3 {
+            for j in 0..3 {
+                rotation[i][j] = dot(&self.rotation[i], columns[j], zero);
+            }
+        }
+        Placed { rotation, translation: self.apply(pose.translation) }
     }
 
     /// `self * point`.
     #[inline(always)]
     fn apply(&self, point: [f32; 3]) -> Point<L> {
-        std::array::from_fn(|i| dot(&self.rotation[i], point, self.translation[i]))
+        let (r, t) = (&self.rotation, &self.translation);
+        [dot(&r[0], point, t[0]), dot(&r[1], point, t[1]), dot(&r[2], point, t[2])]
     }
+
+    #[inline(always)]
+    fn store(&self, out: &mut [[f32; LANES]]) {
+        for i in 0..3 {
+            for j in 0..3 {
+                self.rotation[i][j].store(&mut out[3 * i + j]);
+            }
+            self.translation[i].store(&mut out[9 + i]);
+        }
+    }
+
+    #[inline(always)]
+    fn load(from: &[[f32; LANES]]) -> Self {
+        let zero = L::splat(0.0);
+        let mut placed = Placed { rotation: [[zero; 3]; 3], translation: [zero; 3] };
+        for i in 0..3 {
+            for j in 0..3 {
+                placed.rotation[i][j] = L::load(&from[3 * i + j]);
+            }
+            placed.translation[i] = L::load(&from[9 + i]);
+        }
+        placed
+    }
+}
+
+#[inline(always)]
+fn splat3<L: Lanes>(v: [f32; 3]) -> Point<L> {
+    [L::splat(v[0]), L::splat(v[1]), L::splat(v[2])]
+}
+
+#[inline(always)]
+fn load3<L: Lanes>(from: &[[f32; LANES]]) -> Point<L> {
+    [L::load(&from[0]), L::load(&from[1]), L::load(&from[2])]
 }
 
 /// `row · v + plus`, from the last term to the first, each step rounded once.
@@ -49,37 +111,38 @@ fn dot<L: Lanes>(row: &[L; 3], v: [f32; 3], plus: L) -> L {
     row[0].mul_add(L::splat(v[0]), row[1].mul_add(L::splat(v[1]), row[2].mul_add(L::splat(v[2]), plus)))
 }
 
+/// The row `i` of `inverse` applied to `c`.
+#[inline(always)]
+fn local_row<L: Lanes>(inverse: &Pose32, c: &Point<L>, i: usize) -> L {
+    let m = &inverse.rotation[i];
+    c[0].mul_add(
+        L::splat(m[0]),
+        c[1].mul_add(L::splat(m[1]), c[2].mul_add(L::splat(m[2]), L::splat(inverse.translation[i]))),
+    )
+}
+
 /// Where the batch's lanes touch obstacle `o` with spheres at `c` of radius `r`: a bit a lane.
 #[inline(always)]
 fn touches<L: Lanes>(o: &Obstacle32, c: &Point<L>, r: f32) -> u8 {
     let zero = L::splat(0.0);
-    let local = |inverse: &Pose32| -> Point<L> {
-        let m = &inverse.rotation;
-        std::array::from_fn(|i| {
-            c[0].mul_add(
-                L::splat(m[i][0]),
-                c[1].mul_add(
-                    L::splat(m[i][1]),
-                    c[2].mul_add(L::splat(m[i][2]), L::splat(inverse.translation[i])),
-                ),
-            )
-        })
-    };
     match o.shape {
         Shape32::Sphere { centre, radius } => {
-            let d: Point<L> = std::array::from_fn(|i| c[i].sub(L::splat(centre[i])));
+            let d =
+                [c[0].sub(L::splat(centre[0])), c[1].sub(L::splat(centre[1])), c[2].sub(L::splat(centre[2]))];
             let reach = radius + r;
             squared(&d).le(L::splat(reach * reach))
         }
         Shape32::Box(half) => {
-            let p = local(&o.inverse);
-            let d: Point<L> = std::array::from_fn(|i| p[i].abs().sub(L::splat(half[i])).max(zero));
-            squared(&d).le(L::splat(r * r))
+            let x = local_row(&o.inverse, c, 0).abs().sub(L::splat(half[0])).max(zero);
+            let y = local_row(&o.inverse, c, 1).abs().sub(L::splat(half[1])).max(zero);
+            let z = local_row(&o.inverse, c, 2).abs().sub(L::splat(half[2])).max(zero);
+            squared(&[x, y, z]).le(L::splat(r * r))
         }
         Shape32::Cylinder { radius, half_height } => {
-            let p = local(&o.inverse);
-            let radial = p[0].mul_add(p[0], p[1].mul(p[1])).sqrt().sub(L::splat(radius)).max(zero);
-            let axial = p[2].abs().sub(L::splat(half_height)).max(zero);
+            let (x, y) = (local_row(&o.inverse, c, 0), local_row(&o.inverse, c, 1));
+            let z = local_row(&o.inverse, c, 2);
+            let radial = x.mul_add(x, y.mul(y)).sqrt().sub(L::splat(radius)).max(zero);
+            let axial = z.abs().sub(L::splat(half_height)).max(zero);
             radial.mul_add(radial, axial.mul(axial)).le(L::splat(r * r))
         }
     }
@@ -93,34 +156,43 @@ fn squared<L: Lanes>(d: &Point<L>) -> L {
 /// Whether spheres at `a` and `b` with radii adding to `reach` are apart in every lane.
 #[inline(always)]
 fn apart<L: Lanes>(a: &Point<L>, b: &Point<L>, reach: f32) -> bool {
-    let d: Point<L> = std::array::from_fn(|i| a[i].sub(b[i]));
+    let d = [a[0].sub(b[0]), a[1].sub(b[1]), a[2].sub(b[2])];
     squared(&d).le(L::splat(reach * reach)) == 0
 }
 
-/// Whether all eight configurations `q` (per group joint, its eight values) are free with every
-/// sphere grown by `grow`.
+/// Places frame `f`'s sphere centres in `s`, once per test.
 #[inline(always)]
-pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32) -> bool {
+fn fill<L: Lanes>(p: &Program, s: &mut Scratch, f: usize) {
+    if s.filled[f] {
+        return;
+    }
+    s.filled[f] = true;
+    let frame = &p.frames[f];
+    let placed = Placed::<L>::load(&s.frames[12 * f..12 * f + 12]);
+    for (k, sphere) in frame.spheres.iter().enumerate() {
+        let c = placed.apply(sphere.0);
+        let at = 3 * (frame.first + k);
+        for i in 0..3 {
+            c[i].store(&mut s.centres[at + i]);
+        }
+    }
+}
+
+/// Whether all eight configurations `q` (per group joint, its eight values) are free with every
+/// sphere grown by `grow`. `s` must be [prepared](Scratch::prepare) for `p`.
+#[inline(always)]
+pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32, s: &mut Scratch) -> bool {
     let grow64 = f64::from(grow) + f64::from(p.slack);
     if p.still_clearance <= grow64 || p.fixed_gap <= 2.0 * grow64 {
         return false;
     }
     let pad = p.slack + grow;
-    let mut placed: Vec<Placed<L>> = Vec::with_capacity(p.frames.len());
-    // Each frame's sphere centres, placed when first needed.
-    let mut centres: Vec<Vec<Point<L>>> = vec![Vec::new(); p.frames.len()];
-    let fill = |centres: &mut Vec<Vec<Point<L>>>, placed: &[Placed<L>], f: usize| {
-        if centres[f].is_empty() {
-            centres[f] = p.frames[f].spheres.iter().map(|(c, _)| placed[f].apply(*c)).collect();
-        }
-    };
     for (f, frame) in p.frames.iter().enumerate() {
         let above = match frame.parent {
-            Some(parent) => placed[parent].then(&frame.constant),
+            Some(parent) => Placed::<L>::load(&s.frames[12 * parent..12 * parent + 12]).then(&frame.constant),
             None => Placed::constant(&frame.constant),
         };
-        let value =
-            L::from_array(q[frame.variable]).mul_add(L::splat(frame.multiplier), L::splat(frame.offset));
+        let value = L::load(&q[frame.variable]).mul_add(L::splat(frame.multiplier), L::splat(frame.offset));
         let mut at = above;
         match frame.motion {
             Motion::Turn => {
@@ -138,7 +210,7 @@ pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32) -> 
                 }
             }
         }
-        placed.push(at);
+        at.store(&mut s.frames[12 * f..12 * f + 12]);
         let tests = &p.world[f];
         if tests.is_empty() {
             continue;
@@ -150,9 +222,11 @@ pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32) -> 
             if touches(o, &bound, bound_radius + pad) == 0 {
                 continue;
             }
-            fill(&mut centres, &placed, f);
+            fill::<L>(p, s, f);
             for &i in &test.spheres {
-                if touches(o, &centres[f][i as usize], frame.spheres[i as usize].1 + pad) != 0 {
+                let at = 3 * (frame.first + i as usize);
+                let c = load3::<L>(&s.centres[at..at + 3]);
+                if touches(o, &c, frame.spheres[i as usize].1 + pad) != 0 {
                     return false;
                 }
             }
@@ -160,25 +234,34 @@ pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32) -> 
     }
     for test in &p.pairs {
         let frame = &p.frames[test.frame];
-        let bound = placed[test.frame].apply(frame.bound.0);
+        let placed = Placed::<L>::load(&s.frames[12 * test.frame..12 * test.frame + 12]);
+        let bound = placed.apply(frame.bound.0);
         let (other, other_radius) = match test.other {
-            Some(o) => (placed[o].apply(p.frames[o].bound.0), p.frames[o].bound.1),
-            None => (test.still_bound.0.map(L::splat), test.still_bound.1),
+            Some(o) => {
+                let placed = Placed::<L>::load(&s.frames[12 * o..12 * o + 12]);
+                (placed.apply(p.frames[o].bound.0), p.frames[o].bound.1)
+            }
+            None => (splat3(test.still_bound.0), test.still_bound.1),
         };
         if apart(&bound, &other, frame.bound.1 + other_radius + 2.0 * pad) {
             continue;
         }
-        fill(&mut centres, &placed, test.frame);
+        fill::<L>(p, s, test.frame);
         if let Some(o) = test.other {
-            fill(&mut centres, &placed, o);
+            fill::<L>(p, s, o);
         }
         for &(i, j) in &test.pairs {
-            let a = &centres[test.frame][i as usize];
+            let at = 3 * (frame.first + i as usize);
+            let a = load3::<L>(&s.centres[at..at + 3]);
             let (b, rb) = match test.other {
-                Some(o) => (centres[o][j as usize], p.frames[o].spheres[j as usize].1),
-                None => (p.still[j as usize].0.map(L::splat), p.still[j as usize].1),
+                Some(o) => {
+                    let other = &p.frames[o];
+                    let at = 3 * (other.first + j as usize);
+                    (load3::<L>(&s.centres[at..at + 3]), other.spheres[j as usize].1)
+                }
+                None => (splat3(p.still[j as usize].0), p.still[j as usize].1),
             };
-            if !apart(a, &b, frame.spheres[i as usize].1 + rb + 2.0 * pad) {
+            if !apart(&a, &b, frame.spheres[i as usize].1 + rb + 2.0 * pad) {
                 return false;
             }
         }

@@ -10,7 +10,9 @@ pub(crate) trait Lanes: Copy {
     /// Every lane `x`.
     fn splat(x: f32) -> Self;
     /// The lanes of `x`.
-    fn from_array(x: [f32; LANES]) -> Self;
+    fn load(x: &[f32; LANES]) -> Self;
+    /// Writes the lanes to `out`.
+    fn store(self, out: &mut [f32; LANES]);
     /// `self - b`.
     fn sub(self, b: Self) -> Self;
     /// `self * b`.
@@ -47,8 +49,12 @@ impl Lanes for Portable {
         Portable([x; LANES])
     }
     #[inline(always)]
-    fn from_array(x: [f32; LANES]) -> Self {
-        Portable(x)
+    fn load(x: &[f32; LANES]) -> Self {
+        Portable(*x)
+    }
+    #[inline(always)]
+    fn store(self, out: &mut [f32; LANES]) {
+        *out = self.0;
     }
     #[inline(always)]
     fn sub(self, b: Self) -> Self {
@@ -98,7 +104,7 @@ mod avx {
     /// `avx2` and `fma` and entered after `is_x86_feature_detected!` said the CPU has both,
     /// which is what makes the intrinsics below sound to call.
     #[derive(Debug, Clone, Copy)]
-    pub(crate) struct Avx(pub(super) __m256);
+    pub(crate) struct Avx(__m256);
 
     impl Lanes for Avx {
         #[inline(always)]
@@ -106,8 +112,12 @@ mod avx {
             Avx(unsafe { _mm256_set1_ps(x) })
         }
         #[inline(always)]
-        fn from_array(x: [f32; LANES]) -> Self {
+        fn load(x: &[f32; LANES]) -> Self {
             Avx(unsafe { _mm256_loadu_ps(x.as_ptr()) })
+        }
+        #[inline(always)]
+        fn store(self, out: &mut [f32; LANES]) {
+            unsafe { _mm256_storeu_ps(out.as_mut_ptr(), self.0) }
         }
         #[inline(always)]
         fn sub(self, b: Self) -> Self {
@@ -219,17 +229,15 @@ mod tests {
         }
         #[target_feature(enable = "avx2,fma")]
         fn vector(x: [f32; LANES]) -> ([f32; LANES], [f32; LANES]) {
-            let (s, c) = sin_cos(Avx::from_array(x));
+            let (s, c) = sin_cos(Avx::load(&x));
             let mut out = ([0.0; LANES], [0.0; LANES]);
-            unsafe {
-                std::arch::x86_64::_mm256_storeu_ps(out.0.as_mut_ptr(), s.0);
-                std::arch::x86_64::_mm256_storeu_ps(out.1.as_mut_ptr(), c.0);
-            }
+            s.store(&mut out.0);
+            c.store(&mut out.1);
             out
         }
         for i in 0..1000 {
             let x: [f32; LANES] = std::array::from_fn(|l| (i * LANES + l) as f32 * 0.0137 - 50.0);
-            let (s, c) = sin_cos(Portable::from_array(x));
+            let (s, c) = sin_cos(Portable::load(&x));
             let (vs, vc) = unsafe { vector(x) };
             assert_eq!(s.0.map(f32::to_bits), vs.map(f32::to_bits));
             assert_eq!(c.0.map(f32::to_bits), vc.map(f32::to_bits));

@@ -16,10 +16,13 @@ mod kernel;
 mod lanes;
 mod program;
 
+use std::cell::RefCell;
+
 use nalgebra::SVector;
 use trailmark_space::{Rn, Validity};
 
 use crate::checker::{ArmChecker, along};
+use kernel::Scratch;
 use lanes::{LANES, Portable};
 use program::Program;
 
@@ -110,19 +113,27 @@ impl BatchChecker {
     }
 
     fn run(&self, q: &[[f32; LANES]], grow: f32) -> bool {
-        match self.simd {
-            // SAFETY: `Simd::Avx2` is only ever set after `Simd::detect` found AVX2 and FMA.
-            #[cfg(target_arch = "x86_64")]
-            Simd::Avx2 => unsafe { all_free_avx2(&self.program, q, grow) },
-            _ => kernel::all_free::<Portable>(&self.program, q, grow),
-        }
+        SCRATCH.with_borrow_mut(|s| {
+            s.prepare(&self.program);
+            match self.simd {
+                // SAFETY: `Simd::Avx2` is only ever set after `Simd::detect` found AVX2 and FMA.
+                #[cfg(target_arch = "x86_64")]
+                Simd::Avx2 => unsafe { all_free_avx2(&self.program, q, grow, s) },
+                _ => kernel::all_free::<Portable>(&self.program, q, grow, s),
+            }
+        })
     }
+}
+
+thread_local! {
+    /// The kernel's working space, one per thread.
+    static SCRATCH: RefCell<Scratch> = RefCell::default();
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn all_free_avx2(program: &Program, q: &[[f32; LANES]], grow: f32) -> bool {
-    kernel::all_free::<lanes::Avx>(program, q, grow)
+fn all_free_avx2(program: &Program, q: &[[f32; LANES]], grow: f32, s: &mut Scratch) -> bool {
+    kernel::all_free::<lanes::Avx>(program, q, grow, s)
 }
 
 impl<const N: usize> Validity<Rn<N>> for BatchChecker {

@@ -51,6 +51,8 @@ pub(crate) struct Frame {
     pub(crate) variable: usize,
     pub(crate) multiplier: f32,
     pub(crate) offset: f32,
+    /// Where its spheres start in the frames' spheres one after another.
+    pub(crate) first: usize,
     /// Its spheres (centre, radius) in its own coordinates.
     pub(crate) spheres: Vec<([f32; 3], f32)>,
     /// One sphere containing them all.
@@ -95,6 +97,8 @@ pub(crate) struct PairTest {
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Program {
     pub(crate) frames: Vec<Frame>,
+    /// How many spheres the frames have.
+    pub(crate) sphere_count: usize,
     pub(crate) obstacles: Vec<Obstacle32>,
     /// Per frame, its tests against the world.
     pub(crate) world: Vec<Vec<WorldTest>>,
@@ -163,6 +167,7 @@ impl Program {
                         variable,
                         multiplier: multiplier as f32,
                         offset: offset as f32,
+                        first: 0,
                         spheres: Vec::new(),
                         bound: ([0.0; 3], 0.0),
                     });
@@ -214,8 +219,11 @@ impl Program {
             far = far.max(o.pose.translation.vector.norm() + extent);
         }
         let slack = (SLACK_PER_METRE * far.max(1.0)) as f32;
+        let mut sphere_count = 0;
         for f in &mut frames {
             f.bound = bounding(&f.spheres);
+            f.first = sphere_count;
+            sphere_count += f.spheres.len();
         }
         let obstacles = checker
             .obstacles
@@ -282,7 +290,7 @@ impl Program {
             let used: Vec<([f32; 3], f32)> = p.pairs.iter().map(|&(_, j)| still[j as usize]).collect();
             p.still_bound = bounding(&used);
         }
-        Program { frames, obstacles, world, pairs, still, fixed_gap, still_clearance, slack }
+        Program { frames, sphere_count, obstacles, world, pairs, still, fixed_gap, still_clearance, slack }
     }
 }
 

@@ -14,7 +14,7 @@ use trailmark::robot::request::Request;
 use trailmark::robot::scene::Scene;
 use trailmark::robot::srdf::Srdf;
 use trailmark::robot::{ArmChecker, BatchChecker, DEFAULT_STEP, Robot, RobotError};
-use trailmark::sample::{KdNearest, Planner, Problem, Rn, RrtConnect};
+use trailmark::sample::{KdNearest, Planner, Problem, Rn, RrtConnect, RrtOptions};
 
 /// The arguments of `verify mbm`.
 #[derive(Debug, Clone, clap::Args)]
@@ -39,6 +39,10 @@ pub struct Args {
     /// The planner's seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// The longest motion the planner adds at once, in joint-space units (default: the
+    /// planner's own, a fifth of the joint space's extent).
+    #[arg(long)]
+    pub range: Option<f64>,
     /// Check every K-th problem of each folder only.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
     pub every: u64,
@@ -103,6 +107,8 @@ pub struct Outcome {
     pub time: Duration,
     pub path: Vec<Vec<f64>>,
     pub checks: u64,
+    /// Batches of eight states the batch checker tested (0 with the scalar checker).
+    pub batches: u64,
     /// The group's joints, in the path's order.
     pub joints: Vec<String>,
     /// Why the path fails the independent check, or the error.
@@ -122,12 +128,20 @@ impl Arm {
 }
 
 /// Plans `problem` with `checker`'s kind of checker and checks the path independently.
-pub fn solve(arm: &Arm, problem: &MbmProblem, checker: CheckerKind, limit: Duration, seed: u64) -> Outcome {
+pub fn solve(
+    arm: &Arm,
+    problem: &MbmProblem,
+    checker: CheckerKind,
+    limit: Duration,
+    seed: u64,
+    range: Option<f64>,
+) -> Outcome {
     let error = |e: RobotError| Outcome {
         status: "error",
         time: Duration::ZERO,
         path: Vec::new(),
         checks: 0,
+        batches: 0,
         joints: Vec::new(),
         failure: Some(e.to_string()),
     };
@@ -172,8 +186,8 @@ pub fn solve(arm: &Arm, problem: &MbmProblem, checker: CheckerKind, limit: Durat
         ($($n:literal)*) => {
             match scalar.group().joints.len() {
                 $($n => match checker {
-                    CheckerKind::Batch => plan::<$n, _>(&scalar, &batch, &start, &goal, limit, seed),
-                    CheckerKind::Scalar => plan::<$n, _>(&scalar, &scalar, &start, &goal, limit, seed),
+                    CheckerKind::Batch => plan::<$n, _>(&scalar, &batch, &start, &goal, limit, seed, range),
+                    CheckerKind::Scalar => plan::<$n, _>(&scalar, &scalar, &start, &goal, limit, seed, range),
                 },)*
                 n => Err(RobotError::Dimension { expected: 7, found: n }),
             }
@@ -185,6 +199,7 @@ pub fn solve(arm: &Arm, problem: &MbmProblem, checker: CheckerKind, limit: Durat
         Err(e) => return error(e),
     };
     outcome.joints = scalar.group().names.clone();
+    outcome.batches = batch.batches();
     if outcome.status == "solved" {
         outcome.failure = check_path(&reference, &outcome.path, &start, &goal);
     }
@@ -198,6 +213,7 @@ fn plan<const N: usize, V: trailmark::sample::Validity<Rn<N>>>(
     goal: &[f64],
     limit: Duration,
     seed: u64,
+    range: Option<f64>,
 ) -> Result<Outcome, RobotError> {
     let space = scalar.space::<N>()?;
     let to = |v: &[f64]| trailmark::robot::nalgebra::SVector::<f64, N>::from_column_slice(v);
@@ -208,7 +224,8 @@ fn plan<const N: usize, V: trailmark::sample::Validity<Rn<N>>>(
         reason: "a joint space the nearest-neighbour search takes",
         value: e.to_string(),
     })?;
-    let mut planner = RrtConnect::new(nearest).with_seed(seed);
+    let options = RrtOptions { range, ..RrtOptions::default() };
+    let mut planner = RrtConnect::new(nearest).with_seed(seed).with_options(options);
     let clock = Instant::now();
     let result = planner.solve(&problem, &Termination::time(limit));
     let time = clock.elapsed();
@@ -219,6 +236,7 @@ fn plan<const N: usize, V: trailmark::sample::Validity<Rn<N>>>(
                 time,
                 path: path.iter().map(|q| q.as_slice().to_vec()).collect(),
                 checks: plan.stats.collision_checks,
+                batches: 0,
                 joints: Vec::new(),
                 failure: None,
             },
@@ -227,6 +245,7 @@ fn plan<const N: usize, V: trailmark::sample::Validity<Rn<N>>>(
                 time,
                 path: Vec::new(),
                 checks: plan.stats.collision_checks,
+                batches: 0,
                 joints: Vec::new(),
                 failure: None,
             },
@@ -236,6 +255,7 @@ fn plan<const N: usize, V: trailmark::sample::Validity<Rn<N>>>(
             time,
             path: Vec::new(),
             checks: 0,
+            batches: 0,
             joints: Vec::new(),
             failure: Some(e.to_string()),
         },
@@ -285,8 +305,9 @@ pub fn run(args: &Args) -> ExitCode {
     let (mut passed, mut failed) = (0u64, 0u64);
     let mut times = Vec::new();
     let mut checks = 0u64;
+    let mut batches = 0u64;
     for problem in problems.iter().step_by(args.every as usize) {
-        let outcome = solve(&arm, problem, args.checker, limit, args.seed);
+        let outcome = solve(&arm, problem, args.checker, limit, args.seed, args.range);
         let ok = outcome.status == "solved" && outcome.failure.is_none();
         if ok {
             passed += 1;
@@ -296,6 +317,7 @@ pub fn run(args: &Args) -> ExitCode {
         }
         times.push(outcome.time.as_secs_f64());
         checks += outcome.checks;
+        batches += outcome.batches;
         if let Some(out) = &mut out {
             let line = json!({
                 "problem": problem.name,
@@ -312,7 +334,7 @@ pub fn run(args: &Args) -> ExitCode {
     times.sort_by(f64::total_cmp);
     let at = |q: f64| times.get(((times.len() as f64 - 1.0) * q).round() as usize).copied().unwrap_or(0.0);
     println!(
-        "{passed} passed, {failed} failed; planning time median {:.1} µs, 95th percentile {:.1} µs, max {:.1} µs; {checks} checks in {:.3} s",
+        "{passed} passed, {failed} failed; planning time median {:.1} µs, 95th percentile {:.1} µs, max {:.1} µs; {checks} checks, {batches} batches in {:.3} s",
         at(0.5) * 1e6,
         at(0.95) * 1e6,
         at(1.0) * 1e6,

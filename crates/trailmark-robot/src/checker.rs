@@ -5,27 +5,29 @@
 //! sphere when its centre is within its radius of the shape (touching counts), and two spheres
 //! of links checked against each other when their centres are within the sum of their radii.
 //!
-//! **Motions** (straight lines in joint space) are checked at states along them such that no
-//! sphere moves more than `step` metres between two checked states, with every sphere grown by
-//! `step / 2`: each state between two checked ones is then within `step / 2` of one of them
-//! for every sphere, so nothing is missed between samples. How far a sphere moves is bounded
-//! per joint: a revolute joint turning by `dq` moves a point at most `dq` times its distance
-//! from the joint, and that distance is at most the lengths of the joint frames between the
-//! joint and the sphere's link plus the sphere's offset in it (for a prismatic joint, `dq`
-//! itself); the bound of a motion is the sum over the group's joints.
+//! **Motions** (straight lines in joint space) are covered by checked states with grown spheres
+//! ([`motion`](crate::motion) rule, shared with the [`BatchChecker`](crate::BatchChecker)), so
+//! nothing between checked states is missed; a motion passing within `step / 2` of anything is
+//! refused. How fast a sphere moves is bounded per joint: a revolute joint turning by `dq` moves
+//! a point at most `dq` times its distance from the joint, and that distance is at most the
+//! lengths of the joint frames between the joint and the sphere's link plus the sphere's offset
+//! in it (for a prismatic joint, `dq` itself); a sphere's bound over a motion is the sum over
+//! the group's joints above it.
 
 use nalgebra::{Point3, SVector};
 use trailmark_space::{Rn, SpaceError, Validity};
 
 use crate::error::RobotError;
+use crate::motion;
 use crate::robot::{Group, Robot};
 use crate::scene::{Obstacle, Scene, Shape};
 use crate::spheres::SphereModel;
 use crate::srdf::Srdf;
 use crate::urdf::JointKind;
 
-/// The default `step`: 1 cm, the farthest any sphere moves between two checked states.
-pub const DEFAULT_STEP: f64 = 0.01;
+/// The default `step`: 5 mm, twice the finest growth of a motion's spheres (motions passing
+/// within 2.5 mm of anything are refused).
+pub const DEFAULT_STEP: f64 = 0.005;
 
 /// The spheres of one robot's group in one scene, checked as the [module](self) says.
 #[derive(Debug, Clone)]
@@ -40,16 +42,16 @@ pub struct ArmChecker {
     pub(crate) template: Vec<f64>,
     /// Sphere pairs checked against each other (at least one of them moves with the group).
     pub(crate) pairs: Vec<(u32, u32)>,
-    /// Per group joint, how far any sphere moves per unit of its value.
-    pub(crate) reach: Vec<f64>,
+    /// Per sphere, per group joint: how far the sphere moves per unit of the joint's value.
+    pub(crate) reach: Vec<Vec<f64>>,
     pub(crate) step: f64,
 }
 
 impl ArmChecker {
     /// The checker of `group` of `robot` in `scene`: the robot's spheres
     /// ([`SphereModel::new`], with the scene's allowed pairs), joints outside the group at
-    /// `start` (a value per joint of the robot), motions checked every `step` metres of the
-    /// farthest-moving sphere. Errors on a mesh without spheres, unknown names, a `start` of
+    /// `start` (a value per joint of the robot), motions refused that pass within `step / 2` of
+    /// anything (see the [module](self)). Errors on a mesh without spheres, unknown names, a `start` of
     /// another length or not finite, and a `step` that is not positive and finite.
     pub fn new(
         robot: Robot,
@@ -120,7 +122,7 @@ impl ArmChecker {
         &self.robot
     }
 
-    /// The step of motion checks, in metres.
+    /// Twice the finest growth of a motion's spheres, in metres.
     pub fn step(&self) -> f64 {
         self.step
     }
@@ -145,50 +147,49 @@ impl ArmChecker {
     /// obstacle and of the spheres it is checked against. `false` for a `q` of another length
     /// or not finite.
     pub fn is_free(&self, q: &[f64]) -> bool {
-        self.is_free_grown(q, 0.0)
+        self.is_free_grown(q, &[])
     }
 
     /// Whether the straight motion from `a` to `b` in joint space is free, as the
     /// [module](self) says.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
-        let Some(n) = self.motion_steps(a, b) else { return false };
-        let grow = self.step / 2.0;
-        let at = |i: usize| -> Vec<f64> { a.iter().zip(b).map(|(x, y)| along(*x, *y, i, n)).collect() };
-        if !self.is_free_grown(&at(n), grow) || !self.is_free_grown(&at(0), grow) {
-            return false;
-        }
-        // Coarse to fine (the states at odd multiples of each power of two), so a collision in
-        // the middle is met early.
-        let mut level = 1usize << (usize::BITS - 1 - n.leading_zeros());
-        while level > 0 {
-            let mut i = level;
-            while i < n {
-                if !self.is_free_grown(&at(i), grow) {
-                    return false;
-                }
-                i += 2 * level;
+        let Some(speeds) = self.speeds(a, b) else { return false };
+        let rate = speeds.iter().fold(0.0, |m: f64, &v| m.max(v));
+        let mut q = vec![0.0; a.len()];
+        let mut grows = vec![0.0; speeds.len()];
+        motion::covered(rate, self.step / 2.0, 1, |batch, _| {
+            let s = batch[0];
+            for (d, v) in q.iter_mut().enumerate() {
+                *v = lerp(a[d], b[d], s.t);
             }
-            level /= 2;
-        }
-        true
+            for (g, v) in grows.iter_mut().zip(&speeds) {
+                *g = if rate > 0.0 { s.grow * v / rate } else { 0.0 };
+            }
+            u32::from(!self.is_free_grown(&q, &grows))
+        })
     }
 
-    /// How many steps the motion from `a` to `b` is checked in: states `0..=n` along it, so that
-    /// no sphere moves more than `step` between two of them. `None` for vectors of another length
-    /// and motions of over ten million steps (or not finite).
-    pub(crate) fn motion_steps(&self, a: &[f64], b: &[f64]) -> Option<usize> {
-        if a.len() != self.reach.len() || b.len() != self.reach.len() {
+    /// How fast each sphere moves along the motion from `a` to `b` at most, in metres per unit
+    /// of the motion; `None` for vectors of another length or not finite.
+    pub(crate) fn speeds(&self, a: &[f64], b: &[f64]) -> Option<Vec<f64>> {
+        let dims = self.group.joints.len();
+        if a.len() != dims || b.len() != dims || !a.iter().chain(b).all(|v| v.is_finite()) {
             return None;
         }
-        let travel: f64 = self.reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum();
-        let steps = (travel / self.step).ceil();
-        (steps.is_finite() && steps <= 1e7).then(|| (steps as usize).max(1))
+        Some(
+            self.reach
+                .iter()
+                .map(|r| r.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum())
+                .collect(),
+        )
     }
 
-    fn is_free_grown(&self, q: &[f64], grow: f64) -> bool {
+    /// Whether `q` is free with each sphere grown by its entry of `grows` (none when empty).
+    fn is_free_grown(&self, q: &[f64], grows: &[f64]) -> bool {
         let Some(centres) = self.centres(q) else { return false };
-        for (s, c) in self.model.spheres.iter().zip(&centres) {
-            let r = s.radius + grow;
+        let grow = |s: usize| grows.get(s).copied().unwrap_or(0.0);
+        for (k, (s, c)) in self.model.spheres.iter().zip(&centres).enumerate() {
+            let r = s.radius + grow(k);
             for (o, allowed) in self.obstacles.iter().zip(&self.allowed_links) {
                 if touches(o, c, r) && !allowed.contains(&s.link) {
                     return false;
@@ -197,7 +198,7 @@ impl ArmChecker {
         }
         self.pairs.iter().all(|&(a, b)| {
             let (sa, sb) = (&self.model.spheres[a as usize], &self.model.spheres[b as usize]);
-            let reach = sa.radius + sb.radius + 2.0 * grow;
+            let reach = sa.radius + sb.radius + grow(a as usize) + grow(b as usize);
             (centres[a as usize] - centres[b as usize]).norm_squared() > reach * reach
         })
     }
@@ -220,8 +221,9 @@ impl ArmChecker {
     /// obstacle, or pair of links, with the deepest overlap of their spheres. Errors on a `q` of
     /// another length or not finite.
     pub fn contacts(&self, q: &[f64]) -> Result<Vec<Contact>, RobotError> {
-        let centres =
-            self.centres(q).ok_or(RobotError::Dimension { expected: self.reach.len(), found: q.len() })?;
+        let centres = self
+            .centres(q)
+            .ok_or(RobotError::Dimension { expected: self.group.joints.len(), found: q.len() })?;
         let links = &self.robot.urdf().links;
         let mut found: Vec<Contact> = Vec::new();
         let mut add = |link: usize, with: String, depth: f64| {
@@ -261,9 +263,10 @@ pub struct Contact {
     pub depth: f64,
 }
 
-/// Joint value `i` of `n` steps from `x` to `y`: the one formula both checkers check motions at.
-pub(crate) fn along(x: f64, y: f64, i: usize, n: usize) -> f64 {
-    x + (y - x) * (i as f64 / n as f64)
+/// The joint value at `t` of the way from `x` to `y`: the one formula both checkers check
+/// motions at.
+pub(crate) fn lerp(x: f64, y: f64, t: f64) -> f64 {
+    x + (y - x) * t
 }
 
 /// Whether a sphere at `c` of radius `r` touches obstacle `o`.
@@ -310,31 +313,38 @@ fn moving_links(robot: &Robot, group: &Group) -> Vec<bool> {
     moving
 }
 
-/// Per group joint, how far any sphere moves per unit of its value (see the [module](self)).
-fn reach(robot: &Robot, group: &Group, model: &SphereModel) -> Vec<f64> {
+/// Per sphere, per group joint: how far the sphere moves per unit of the joint's value (see
+/// the [module](self)); mimic joints add their multiple.
+fn reach(robot: &Robot, group: &Group, model: &SphereModel) -> Vec<Vec<f64>> {
     let joints = &robot.urdf().joints;
-    // For each joint, the farthest any sphere below it can be from the joint's frame.
-    let per_joint = |j: usize| -> f64 {
-        if joints[j].kind == JointKind::Prismatic {
-            return 1.0;
-        }
+    let per_joint = |j: usize, link: usize, centre: f64| -> f64 {
         let below = robot.joint_links(j).1;
-        model
-            .spheres
-            .iter()
-            .filter_map(|s| chain_length(robot, below, s.link).map(|l| l + s.centre.norm()))
-            .fold(0.0, f64::max)
+        match (joints[j].kind, chain_length(robot, below, link)) {
+            (_, None) => 0.0,
+            (JointKind::Prismatic, Some(_)) => 1.0,
+            (_, Some(l)) => l + centre,
+        }
     };
-    group
-        .joints
+    model
+        .spheres
         .iter()
-        .map(|&k| {
-            let mimics: f64 = (0..joints.len())
-                .filter_map(|m| {
-                    robot.mimic(m).filter(|&(f, _, _)| f == k).map(|(_, mult, _)| mult.abs() * per_joint(m))
+        .map(|s| {
+            let centre = s.centre.norm();
+            group
+                .joints
+                .iter()
+                .map(|&k| {
+                    let mimics: f64 = (0..joints.len())
+                        .filter_map(|m| {
+                            robot
+                                .mimic(m)
+                                .filter(|&(f, _, _)| f == k)
+                                .map(|(_, mult, _)| mult.abs() * per_joint(m, s.link, centre))
+                        })
+                        .sum();
+                    per_joint(k, s.link, centre) + mimics
                 })
-                .sum();
-            per_joint(k) + mimics
+                .collect()
         })
         .collect()
 }

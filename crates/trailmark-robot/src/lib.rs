@@ -59,6 +59,7 @@
 pub mod batch;
 pub mod checker;
 mod error;
+mod motion;
 pub mod request;
 mod robot;
 pub mod scene;

@@ -56,9 +56,9 @@ impl<L: Lanes> Placed<L> {
         let columns = [[c[0][0], c[1][0], c[2][0]], [c[0][1], c[1][1], c[2][1]], [c[0][2], c[1][2], c[2][2]]];
         let zero = L::splat(0.0);
         let mut rotation = [[zero; 3]; 3];
-        for i in 0..3 {
-            for j in 0..3 {
-                rotation[i][j] = dot(&self.rotation[i], columns[j], zero);
+        for (out, row) in rotation.iter_mut().zip(&self.rotation) {
+            for (value, column) in out.iter_mut().zip(columns) {
+                *value = dot(row, column, zero);
             }
         }
         Placed { rotation, translation: self.apply(pose.translation) }
@@ -123,27 +123,27 @@ fn local_row<L: Lanes>(inverse: &Pose32, c: &Point<L>, i: usize) -> L {
 
 /// Where the batch's lanes touch obstacle `o` with spheres at `c` of radius `r`: a bit a lane.
 #[inline(always)]
-fn touches<L: Lanes>(o: &Obstacle32, c: &Point<L>, r: f32) -> u8 {
+fn touches<L: Lanes>(o: &Obstacle32, c: &Point<L>, r: L) -> u8 {
     let zero = L::splat(0.0);
     match o.shape {
         Shape32::Sphere { centre, radius } => {
             let d =
                 [c[0].sub(L::splat(centre[0])), c[1].sub(L::splat(centre[1])), c[2].sub(L::splat(centre[2]))];
-            let reach = radius + r;
-            squared(&d).le(L::splat(reach * reach))
+            let reach = r.add(L::splat(radius));
+            squared(&d).le(reach.mul(reach))
         }
         Shape32::Box(half) => {
             let x = local_row(&o.inverse, c, 0).abs().sub(L::splat(half[0])).max(zero);
             let y = local_row(&o.inverse, c, 1).abs().sub(L::splat(half[1])).max(zero);
             let z = local_row(&o.inverse, c, 2).abs().sub(L::splat(half[2])).max(zero);
-            squared(&[x, y, z]).le(L::splat(r * r))
+            squared(&[x, y, z]).le(r.mul(r))
         }
         Shape32::Cylinder { radius, half_height } => {
             let (x, y) = (local_row(&o.inverse, c, 0), local_row(&o.inverse, c, 1));
             let z = local_row(&o.inverse, c, 2);
             let radial = x.mul_add(x, y.mul(y)).sqrt().sub(L::splat(radius)).max(zero);
             let axial = z.abs().sub(L::splat(half_height)).max(zero);
-            radial.mul_add(radial, axial.mul(axial)).le(L::splat(r * r))
+            radial.mul_add(radial, axial.mul(axial)).le(r.mul(r))
         }
     }
 }
@@ -153,11 +153,11 @@ fn squared<L: Lanes>(d: &Point<L>) -> L {
     d[0].mul_add(d[0], d[1].mul_add(d[1], d[2].mul(d[2])))
 }
 
-/// Whether spheres at `a` and `b` with radii adding to `reach` are apart in every lane.
+/// Where spheres at `a` and `b` with radii adding to `reach` touch: a bit a lane.
 #[inline(always)]
-fn apart<L: Lanes>(a: &Point<L>, b: &Point<L>, reach: f32) -> bool {
+fn meet<L: Lanes>(a: &Point<L>, b: &Point<L>, reach: L) -> u8 {
     let d = [a[0].sub(b[0]), a[1].sub(b[1]), a[2].sub(b[2])];
-    squared(&d).le(L::splat(reach * reach)) == 0
+    squared(&d).le(reach.mul(reach))
 }
 
 /// Places frame `f`'s sphere centres in `s`, once per test.
@@ -172,22 +172,30 @@ fn fill<L: Lanes>(p: &Program, s: &mut Scratch, f: usize) {
     for (k, sphere) in frame.spheres.iter().enumerate() {
         let c = placed.apply(sphere.0);
         let at = 3 * (frame.first + k);
-        for i in 0..3 {
-            c[i].store(&mut s.centres[at + i]);
+        for (i, coordinate) in c.into_iter().enumerate() {
+            coordinate.store(&mut s.centres[at + i]);
         }
     }
 }
 
-/// Whether all eight configurations `q` (per group joint, its eight values) are free with every
-/// sphere grown by `grow`. `s` must be [prepared](Scratch::prepare) for `p`.
+/// Which of the eight configurations `q` (per group joint, its eight values) collide, a bit a
+/// lane, with frame `f`'s spheres grown by `grow` times `scale[f]` in each lane (and all by the
+/// slack). A lane of `stop` colliding ends the search at once (other lanes not set then may
+/// collide too). `s` must be [prepared](Scratch::prepare) for `p`.
 #[inline(always)]
-pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32, s: &mut Scratch) -> bool {
-    let grow64 = f64::from(grow) + f64::from(p.slack);
-    if p.still_clearance <= grow64 || p.fixed_gap <= 2.0 * grow64 {
-        return false;
-    }
-    let pad = p.slack + grow;
+pub(crate) fn hits<L: Lanes>(
+    p: &Program,
+    q: &[[f32; LANES]],
+    grow: &[f32; LANES],
+    scale: &[f32],
+    stop: u8,
+    s: &mut Scratch,
+) -> u8 {
+    let mut found = 0u8;
+    let grow = L::load(grow);
+    let slack = L::splat(p.slack);
     for (f, frame) in p.frames.iter().enumerate() {
+        let pad = grow.mul_add(L::splat(scale[f]), slack);
         let above = match frame.parent {
             Some(parent) => Placed::<L>::load(&s.frames[12 * parent..12 * parent + 12]).then(&frame.constant),
             None => Placed::constant(&frame.constant),
@@ -219,15 +227,22 @@ pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32, s: 
         let bound = at.apply(bound_centre);
         for test in tests {
             let o = &p.obstacles[test.obstacle];
-            if touches(o, &bound, bound_radius + pad) == 0 {
+            if touches(o, &bound, pad.add(L::splat(bound_radius))) == 0 {
                 continue;
             }
             fill::<L>(p, s, f);
-            for &i in &test.spheres {
-                let at = 3 * (frame.first + i as usize);
-                let c = load3::<L>(&s.centres[at..at + 3]);
-                if touches(o, &c, frame.spheres[i as usize].1 + pad) != 0 {
-                    return false;
+            for (group_bound, spheres) in &test.groups {
+                if touches(o, &at.apply(group_bound.0), pad.add(L::splat(group_bound.1))) == 0 {
+                    continue;
+                }
+                for &i in spheres {
+                    let at = 3 * (frame.first + i as usize);
+                    let c = load3::<L>(&s.centres[at..at + 3]);
+                    let hit = touches(o, &c, pad.add(L::splat(frame.spheres[i as usize].1)));
+                    found |= hit;
+                    if found & stop != 0 {
+                        return found;
+                    }
                 }
             }
         }
@@ -236,6 +251,12 @@ pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32, s: 
         let frame = &p.frames[test.frame];
         let placed = Placed::<L>::load(&s.frames[12 * test.frame..12 * test.frame + 12]);
         let bound = placed.apply(frame.bound.0);
+        // Both sides' growth: the other frame's, or the slack of the still part.
+        let other_pad = match test.other {
+            Some(o) => grow.mul_add(L::splat(scale[o]), slack),
+            None => slack,
+        };
+        let pad = grow.mul_add(L::splat(scale[test.frame]), slack).add(other_pad);
         let (other, other_radius) = match test.other {
             Some(o) => {
                 let placed = Placed::<L>::load(&s.frames[12 * o..12 * o + 12]);
@@ -243,28 +264,47 @@ pub(crate) fn all_free<L: Lanes>(p: &Program, q: &[[f32; LANES]], grow: f32, s: 
             }
             None => (splat3(test.still_bound.0), test.still_bound.1),
         };
-        if apart(&bound, &other, frame.bound.1 + other_radius + 2.0 * pad) {
+        if meet(&bound, &other, pad.add(L::splat(frame.bound.1 + other_radius))) == 0 {
             continue;
         }
         fill::<L>(p, s, test.frame);
-        if let Some(o) = test.other {
-            fill::<L>(p, s, o);
-        }
-        for &(i, j) in &test.pairs {
-            let at = 3 * (frame.first + i as usize);
-            let a = load3::<L>(&s.centres[at..at + 3]);
-            let (b, rb) = match test.other {
-                Some(o) => {
-                    let other = &p.frames[o];
-                    let at = 3 * (other.first + j as usize);
-                    (load3::<L>(&s.centres[at..at + 3]), other.spheres[j as usize].1)
+        let other_placed = match test.other {
+            Some(o) => {
+                fill::<L>(p, s, o);
+                Placed::<L>::load(&s.frames[12 * o..12 * o + 12])
+            }
+            None => Placed::constant(&Pose32::IDENTITY),
+        };
+        for link in &test.links {
+            let a = placed.apply(link.bound.0);
+            let b = other_placed.apply(link.other_bound.0);
+            if meet(&a, &b, pad.add(L::splat(link.bound.1 + link.other_bound.1))) == 0 {
+                continue;
+            }
+            for (i, row) in &link.rows {
+                let at = 3 * (frame.first + *i as usize);
+                let a = load3::<L>(&s.centres[at..at + 3]);
+                let ra = frame.spheres[*i as usize].1;
+                if meet(&a, &b, pad.add(L::splat(ra + link.other_bound.1))) == 0 {
+                    continue;
                 }
-                None => (splat3(p.still[j as usize].0), p.still[j as usize].1),
-            };
-            if !apart(&a, &b, frame.spheres[i as usize].1 + rb + 2.0 * pad) {
-                return false;
+                for &j in row {
+                    let (c, rb) = match test.other {
+                        Some(o) => {
+                            let other = &p.frames[o];
+                            let at = 3 * (other.first + j as usize);
+                            (load3::<L>(&s.centres[at..at + 3]), other.spheres[j as usize].1)
+                        }
+                        None => (splat3(p.still[j as usize].0), p.still[j as usize].1),
+                    };
+                    let hit = meet(&a, &c, pad.add(L::splat(ra + rb)));
+                    found |= hit;
+                    if found & stop != 0 {
+                        return found;
+                    }
+                }
             }
         }
     }
-    true
+    found
 }

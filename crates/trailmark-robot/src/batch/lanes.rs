@@ -13,6 +13,8 @@ pub(crate) trait Lanes: Copy {
     fn load(x: &[f32; LANES]) -> Self;
     /// Writes the lanes to `out`.
     fn store(self, out: &mut [f32; LANES]);
+    /// `self + b`.
+    fn add(self, b: Self) -> Self;
     /// `self - b`.
     fn sub(self, b: Self) -> Self;
     /// `self * b`.
@@ -55,6 +57,10 @@ impl Lanes for Portable {
     #[inline(always)]
     fn store(self, out: &mut [f32; LANES]) {
         *out = self.0;
+    }
+    #[inline(always)]
+    fn add(self, b: Self) -> Self {
+        self.map2(b, |x, y| x + y)
     }
     #[inline(always)]
     fn sub(self, b: Self) -> Self {
@@ -118,6 +124,10 @@ mod avx {
         #[inline(always)]
         fn store(self, out: &mut [f32; LANES]) {
             unsafe { _mm256_storeu_ps(out.as_mut_ptr(), self.0) }
+        }
+        #[inline(always)]
+        fn add(self, b: Self) -> Self {
+            Avx(unsafe { _mm256_add_ps(self.0, b.0) })
         }
         #[inline(always)]
         fn sub(self, b: Self) -> Self {

@@ -7,21 +7,24 @@
 //! calls colliding is never free here; a configuration within that bound of touching may be
 //! called colliding here and free there.
 //!
-//! **Motions** are checked at exactly the states the [`ArmChecker`] checks (the same step
-//! bound, the same growth by half a step, so nothing is missed between them), eight a batch in
-//! VAMP's "rake" order: the first batch spread over the whole motion, each next one shifted by
-//! a state, so a collision anywhere is met within a few batches.
+//! **Motions** follow the [`ArmChecker`]'s rule (states covering the motion with grown
+//! spheres, so nothing is missed between them; [`checker`](crate::checker)), eight states a
+//! batch, the first batches in VAMP's "rake" order: spread over the whole motion, each next
+//! one shifted by a state, so a collision anywhere is met within a few batches. A frame's
+//! spheres are grown by the speed of its fastest sphere.
 
 mod kernel;
 mod lanes;
 mod program;
 
 use std::cell::RefCell;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use nalgebra::SVector;
 use trailmark_space::{Rn, Validity};
 
-use crate::checker::{ArmChecker, along};
+use crate::checker::{ArmChecker, lerp};
+use crate::motion;
 use kernel::Scratch;
 use lanes::{LANES, Portable};
 use program::Program;
@@ -47,18 +50,32 @@ impl Simd {
 }
 
 /// An [`ArmChecker`] compiled for batches, as the [module](self) says.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct BatchChecker {
     checker: ArmChecker,
     program: Program,
     simd: Simd,
+    /// Batches tested so far.
+    batches: AtomicU64,
+}
+
+impl Clone for BatchChecker {
+    /// The same checker, its count of batches from zero.
+    fn clone(&self) -> Self {
+        BatchChecker {
+            checker: self.checker.clone(),
+            program: self.program.clone(),
+            simd: self.simd,
+            batches: AtomicU64::new(0),
+        }
+    }
 }
 
 impl BatchChecker {
     /// The fast checker of what `checker` checks, on the fastest code this CPU runs.
     pub fn new(checker: ArmChecker) -> BatchChecker {
         let program = Program::new(&checker);
-        BatchChecker { checker, program, simd: Simd::detect() }
+        BatchChecker { checker, program, simd: Simd::detect(), batches: AtomicU64::new(0) }
     }
 
     /// The same checker on `simd`'s code; [`Simd::Portable`] where this CPU cannot run it.
@@ -72,6 +89,12 @@ impl BatchChecker {
         self.simd
     }
 
+    /// How many batches of eight states it has tested (a state check is one batch): a
+    /// measure of the work done, for collision checks per second.
+    pub fn batches(&self) -> u64 {
+        self.batches.load(Ordering::Relaxed)
+    }
+
     /// The `f64` checker this one was compiled from.
     pub fn checker(&self) -> &ArmChecker {
         &self.checker
@@ -81,45 +104,61 @@ impl BatchChecker {
     /// length or not finite.
     pub fn is_free(&self, q: &[f64]) -> bool {
         let dims = self.checker.group.joints.len();
-        if q.len() != dims || !q.iter().all(|v| v.is_finite()) {
+        if self.program.blocked || q.len() != dims || !q.iter().all(|v| v.is_finite()) {
             return false;
         }
         let lanes: Vec<[f32; LANES]> = q.iter().map(|&v| [v as f32; LANES]).collect();
-        self.run(&lanes, 0.0)
+        let scale = vec![0.0; self.program.frames.len()];
+        self.run(&lanes, &[0.0; LANES], &scale, u8::MAX) == 0
     }
 
-    /// Whether the straight motion from `a` to `b` is free, checked at the [`ArmChecker`]'s
-    /// states in rake order.
+    /// Whether the straight motion from `a` to `b` is free, by the rule the [`ArmChecker`]
+    /// follows ([module](crate::checker)), eight states a batch.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
-        if !a.iter().chain(b).all(|v| v.is_finite()) {
+        let dims = self.checker.group.joints.len();
+        if self.program.blocked
+            || a.len() != dims
+            || b.len() != dims
+            || !a.iter().chain(b).all(|v| v.is_finite())
+        {
             return false;
         }
-        let Some(n) = self.checker.motion_steps(a, b) else { return false };
-        let grow = (self.checker.step / 2.0) as f32;
-        let batches = (n + 1).div_ceil(LANES);
-        let mut lanes = vec![[0.0f32; LANES]; a.len()];
-        for k in 0..batches {
+        let speeds: Vec<f64> = self
+            .program
+            .frames
+            .iter()
+            .map(|f| f.reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum())
+            .collect();
+        let rate = speeds.iter().fold(0.0, |m: f64, &v| m.max(v));
+        let scale: Vec<f32> =
+            speeds.iter().map(|&v| if rate > 0.0 { (v / rate) as f32 } else { 0.0 }).collect();
+        let mut lanes = vec![[0.0f32; LANES]; dims];
+        let mut grow = [0.0f32; LANES];
+        motion::covered(rate, self.checker.step / 2.0, LANES, |batch, stop| {
             for l in 0..LANES {
-                let i = (l * batches + k).min(n);
+                // Lanes beyond the batch repeat its first state.
+                let sample = batch.get(l).unwrap_or(&batch[0]);
                 for (d, lane) in lanes.iter_mut().enumerate() {
-                    lane[l] = along(a[d], b[d], i, n) as f32;
+                    lane[l] = lerp(a[d], b[d], sample.t) as f32;
                 }
+                grow[l] = sample.grow as f32;
             }
-            if !self.run(&lanes, grow) {
-                return false;
-            }
-        }
-        true
+            // Lanes beyond the batch repeat its first state: they stop when it does.
+            let beyond = u8::MAX.checked_shl(batch.len() as u32).unwrap_or(0);
+            let stop = if stop & 1 != 0 { stop as u8 | beyond } else { stop as u8 };
+            u32::from(self.run(&lanes, &grow, &scale, stop) & !beyond)
+        })
     }
 
-    fn run(&self, q: &[[f32; LANES]], grow: f32) -> bool {
+    fn run(&self, q: &[[f32; LANES]], grow: &[f32; LANES], scale: &[f32], stop: u8) -> u8 {
+        self.batches.fetch_add(1, Ordering::Relaxed);
         SCRATCH.with_borrow_mut(|s| {
             s.prepare(&self.program);
             match self.simd {
                 // SAFETY: `Simd::Avx2` is only ever set after `Simd::detect` found AVX2 and FMA.
                 #[cfg(target_arch = "x86_64")]
-                Simd::Avx2 => unsafe { all_free_avx2(&self.program, q, grow, s) },
-                _ => kernel::all_free::<Portable>(&self.program, q, grow, s),
+                Simd::Avx2 => unsafe { hits_avx2(&self.program, q, grow, scale, stop, s) },
+                _ => kernel::hits::<Portable>(&self.program, q, grow, scale, stop, s),
             }
         })
     }
@@ -132,8 +171,15 @@ thread_local! {
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn all_free_avx2(program: &Program, q: &[[f32; LANES]], grow: f32, s: &mut Scratch) -> bool {
-    kernel::all_free::<lanes::Avx>(program, q, grow, s)
+fn hits_avx2(
+    program: &Program,
+    q: &[[f32; LANES]],
+    grow: &[f32; LANES],
+    scale: &[f32],
+    stop: u8,
+    s: &mut Scratch,
+) -> u8 {
+    kernel::hits::<lanes::Avx>(program, q, grow, scale, stop, s)
 }
 
 impl<const N: usize> Validity<Rn<N>> for BatchChecker {

@@ -21,6 +21,9 @@ pub(crate) struct Pose32 {
 }
 
 impl Pose32 {
+    pub(crate) const IDENTITY: Pose32 =
+        Pose32 { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: [0.0; 3] };
+
     fn new(pose: &Isometry3<f64>) -> Pose32 {
         let r = pose.rotation.to_rotation_matrix();
         let t = pose.translation.vector;
@@ -57,6 +60,8 @@ pub(crate) struct Frame {
     pub(crate) spheres: Vec<([f32; 3], f32)>,
     /// One sphere containing them all.
     pub(crate) bound: ([f32; 3], f32),
+    /// Per group joint, how far its spheres move per unit of the joint's value at most.
+    pub(crate) reach: Vec<f64>,
 }
 
 /// An obstacle's shape in its own frame, and that frame's inverse.
@@ -74,23 +79,36 @@ pub(crate) enum Shape32 {
     Sphere { centre: [f32; 3], radius: f32 },
 }
 
-/// The spheres of a frame to test against an obstacle (those whose link may not touch it).
+/// A sphere: centre and radius.
+pub(crate) type Ball = ([f32; 3], f32);
+
+/// The spheres of a frame to test against an obstacle (those whose link may not touch it), a
+/// group a link, each with a sphere containing it.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct WorldTest {
     pub(crate) obstacle: usize,
-    pub(crate) spheres: Vec<u16>,
+    pub(crate) groups: Vec<(Ball, Vec<u16>)>,
 }
 
 /// Sphere pairs of two frames (or of a frame and the robot's still part, `other: None`, whose
-/// spheres are then given in world coordinates).
+/// spheres are then given in world coordinates), grouped by their links.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct PairTest {
     pub(crate) frame: usize,
     pub(crate) other: Option<usize>,
-    /// Sphere indices in `frame`, and in `other` (or in [`Program::still`]).
-    pub(crate) pairs: Vec<(u16, u16)>,
     /// A sphere containing the `other` side's spheres of these pairs, when it is still.
-    pub(crate) still_bound: ([f32; 3], f32),
+    pub(crate) still_bound: Ball,
+    pub(crate) links: Vec<LinkPair>,
+}
+
+/// The sphere pairs of two links: spheres containing each link's spheres (in their frames'
+/// coordinates), and per sphere of the first, the spheres of the second it is checked with.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct LinkPair {
+    pub(crate) links: (usize, usize),
+    pub(crate) bound: Ball,
+    pub(crate) other_bound: Ball,
+    pub(crate) rows: Vec<(u16, Vec<u16>)>,
 }
 
 /// The whole compiled checker.
@@ -105,11 +123,10 @@ pub(crate) struct Program {
     pub(crate) pairs: Vec<PairTest>,
     /// Spheres that never move with the group, in world coordinates.
     pub(crate) still: Vec<([f32; 3], f32)>,
-    /// The smallest gap between checked spheres whose distance never changes (both on the still
-    /// part, or both on one frame): growing each by half of it collides.
-    pub(crate) fixed_gap: f64,
-    /// The smallest gap between a still sphere and an obstacle it may not touch.
-    pub(crate) still_clearance: f64,
+    /// A still sphere touches an obstacle, or two checked spheres whose distance never changes
+    /// (both still, or both on one frame) touch: nothing is free. (Spheres that do not move
+    /// are never grown for motions.)
+    pub(crate) blocked: bool,
     /// Added to every radius: more than the `f32` arithmetic can be off by.
     pub(crate) slack: f32,
 }
@@ -170,6 +187,7 @@ impl Program {
                         first: 0,
                         spheres: Vec::new(),
                         bound: ([0.0; 3], 0.0),
+                        reach: vec![0.0; group.joints.len()],
                     });
                     let offset = Isometry3::from_parts(Default::default(), turn.inverse());
                     places[child] = Place { frame: Some(frames.len() - 1), offset };
@@ -188,7 +206,7 @@ impl Program {
         let mut still64 = Vec::new();
         let mut still_clearance = f64::INFINITY;
         let mut radius = 0.0f64;
-        for s in spheres {
+        for (k, s) in spheres.iter().enumerate() {
             let place = places[s.link];
             let centre = place.offset * Point3::from(s.centre);
             radius = radius.max(s.centre.norm() + s.radius);
@@ -196,6 +214,9 @@ impl Program {
                 Some(f) => {
                     slot.push((Some(f), frames[f].spheres.len()));
                     frames[f].spheres.push((point32(&centre), s.radius as f32));
+                    for (r, &v) in frames[f].reach.iter_mut().zip(&checker.reach[k]) {
+                        *r = r.max(v);
+                    }
                     links[f].push(s.link);
                 }
                 None => {
@@ -242,15 +263,33 @@ impl Program {
                 },
             })
             .collect();
+        // A frame's spheres a link at a time: runs of one link, as the model lists them.
+        let link_bound = |f: usize, link: usize| -> Ball {
+            let of: Vec<Ball> = (0..frames[f].spheres.len())
+                .filter(|&i| links[f][i] == link)
+                .map(|i| frames[f].spheres[i])
+                .collect();
+            bounding(&of)
+        };
         let world = (0..frames.len())
             .map(|f| {
                 (0..checker.obstacles.len())
                     .filter_map(|o| {
-                        let tested: Vec<u16> = (0..frames[f].spheres.len())
-                            .filter(|&i| !checker.allowed_links[o].contains(&links[f][i]))
-                            .map(|i| i as u16)
-                            .collect();
-                        (!tested.is_empty()).then_some(WorldTest { obstacle: o, spheres: tested })
+                        let mut groups: Vec<(Ball, Vec<u16>)> = Vec::new();
+                        let mut last = None;
+                        for (i, &link) in links[f].iter().enumerate() {
+                            if checker.allowed_links[o].contains(&link) {
+                                continue;
+                            }
+                            if last != Some(link) {
+                                groups.push((link_bound(f, link), Vec::new()));
+                                last = Some(link);
+                            }
+                            if let Some(group) = groups.last_mut() {
+                                group.1.push(i as u16);
+                            }
+                        }
+                        (!groups.is_empty()).then_some(WorldTest { obstacle: o, groups })
                     })
                     .collect()
             })
@@ -265,10 +304,11 @@ impl Program {
         for &(a, b) in &checker.pairs {
             let (a, b) = (a as usize, b as usize);
             let ((fa, ia), (fb, ib)) = (slot[a], slot[b]);
-            let (frame, i, other, j) = match (fa, fb) {
-                (Some(x), Some(y)) if x < y => (y, ib, Some(x), ia),
-                (Some(x), other) if other != Some(x) => (x, ia, other, ib),
-                (None, Some(y)) => (y, ib, None, ia),
+            // The pair as (the later frame's sphere, the other's), and their links.
+            let (frame, i, other, j, link, other_link) = match (fa, fb) {
+                (Some(x), Some(y)) if x < y => (y, ib, Some(x), ia, spheres[b].link, spheres[a].link),
+                (Some(x), other) if other != Some(x) => (x, ia, other, ib, spheres[a].link, spheres[b].link),
+                (None, Some(y)) => (y, ib, None, ia, spheres[b].link, spheres[a].link),
                 _ => {
                     let gap =
                         (world_centre(a) - world_centre(b)).norm() - spheres[a].radius - spheres[b].radius;
@@ -279,18 +319,46 @@ impl Program {
             let test = match pairs.iter().position(|p| p.frame == frame && p.other == other) {
                 Some(t) => t,
                 None => {
-                    pairs.push(PairTest { frame, other, pairs: Vec::new(), still_bound: ([0.0; 3], 0.0) });
+                    pairs.push(PairTest { frame, other, still_bound: ([0.0; 3], 0.0), links: Vec::new() });
                     pairs.len() - 1
                 }
             };
-            pairs[test].pairs.push((i as u16, j as u16));
+            let group = match pairs[test].links.iter().position(|g| g.links == (link, other_link)) {
+                Some(g) => g,
+                None => {
+                    let bound = link_bound(frame, link);
+                    let other_bound = match other {
+                        Some(o) => link_bound(o, other_link),
+                        None => ([0.0; 3], 0.0),
+                    };
+                    pairs[test].links.push(LinkPair {
+                        links: (link, other_link),
+                        bound,
+                        other_bound,
+                        rows: Vec::new(),
+                    });
+                    pairs[test].links.len() - 1
+                }
+            };
+            let rows = &mut pairs[test].links[group].rows;
+            match rows.iter_mut().find(|r| r.0 == i as u16) {
+                Some(row) => row.1.push(j as u16),
+                None => rows.push((i as u16, vec![j as u16])),
+            }
         }
-        let still: Vec<([f32; 3], f32)> = still64.iter().map(|(c, r)| (point32(c), *r as f32)).collect();
+        let still: Vec<Ball> = still64.iter().map(|(c, r)| (point32(c), *r as f32)).collect();
         for p in pairs.iter_mut().filter(|p| p.other.is_none()) {
-            let used: Vec<([f32; 3], f32)> = p.pairs.iter().map(|&(_, j)| still[j as usize]).collect();
-            p.still_bound = bounding(&used);
+            let mut all = Vec::new();
+            for g in &mut p.links {
+                let used: Vec<Ball> =
+                    g.rows.iter().flat_map(|r| r.1.iter().map(|&j| still[j as usize])).collect();
+                g.other_bound = bounding(&used);
+                all.extend(used);
+            }
+            p.still_bound = bounding(&all);
         }
-        Program { frames, sphere_count, obstacles, world, pairs, still, fixed_gap, still_clearance, slack }
+        let blocked = still_clearance <= f64::from(slack) || fixed_gap <= 2.0 * f64::from(slack);
+        Program { frames, sphere_count, obstacles, world, pairs, still, blocked, slack }
     }
 }
 

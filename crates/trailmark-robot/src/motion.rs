@@ -1,0 +1,151 @@
+//! How both checkers decide a motion (a straight line in joint space) is free: by covering it
+//! with checked states whose spheres are grown enough to contain every state between them.
+//!
+//! Along a motion `t ∈ [0, 1]`, no sphere moves faster than `rate` metres per unit of `t` (a
+//! bound from the joints' motions and the spheres' distances from the joints, see
+//! [`checker`](crate::checker)). A state at `t` found free with every sphere grown by `g`
+//! therefore stands for every state in `[t - g / rate, t + g / rate]`: each sphere there is
+//! inside its grown copy. The motion is free when such windows cover `[0, 1]`:
+//!
+//! 1. first, evenly spaced states with a coarse growth (`3 x fine`), windows just touching;
+//! 2. a state whose grown spheres touch something is replaced by two states with half its
+//!    growth, covering its window, and the state itself is checked with no growth: touching
+//!    there, the motion collides;
+//! 3. a state that still touches at the finest growth (`fine`, half the checker's `step`) makes
+//!    the motion colliding: motions passing closer than that to anything are refused.
+//!
+//! So nothing between checked states is missed, far from obstacles a motion takes few states,
+//! and near them the states are as dense as the clearance requires. Each sphere's growth is
+//! `g` times its own speed over `rate` (a sphere near the base moves slowly and is grown less),
+//! and spheres that do not move are not grown.
+
+/// A state of a motion to test: where along it, and how much the fastest sphere is grown.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Sample {
+    pub(crate) t: f64,
+    pub(crate) grow: f64,
+}
+
+/// The coarse growth as a multiple of the finest.
+pub(crate) const COARSE: f64 = 3.0;
+
+/// The most states one motion is checked at (beyond it, the motion is refused).
+pub(crate) const MAX_SAMPLES: usize = 10_000_000;
+
+/// Whether the motion is covered, as the [module](self) says. `test(samples, stop)` checks up
+/// to `width` samples and returns a bit per sample found touching; it may return as soon as a
+/// sample of `stop` (a bit per sample: those whose touching ends the motion) touches.
+pub(crate) fn covered(
+    rate: f64,
+    fine: f64,
+    width: usize,
+    mut test: impl FnMut(&[Sample], u32) -> u32,
+) -> bool {
+    if !(rate.is_finite() && rate >= 0.0) {
+        return false;
+    }
+    if rate == 0.0 {
+        // No sphere moves: every state is the first.
+        return test(&[Sample { t: 0.0, grow: 0.0 }], 1) == 0;
+    }
+    let coarse = COARSE * fine;
+    let count = (rate / (2.0 * coarse)).ceil();
+    if count + 1.0 > MAX_SAMPLES as f64 {
+        return false;
+    }
+    let n = (count as usize).max(1);
+    // Windows of `1 / (2n)` each side: the growth that gives them, at most `coarse`.
+    let first = rate / (2.0 * n as f64);
+    // A stack: the last pushed is tested first. The even states go in rake order (the first
+    // batch spread over the whole motion), so collisions anywhere are met early.
+    let batches = (n + 1).div_ceil(width);
+    let mut stack: Vec<Sample> = Vec::with_capacity(n + 1);
+    for k in (0..batches).rev() {
+        for l in (0..width).rev() {
+            let i = l * batches + k;
+            if i <= n {
+                stack.push(Sample { t: i as f64 / n as f64, grow: first });
+            }
+        }
+    }
+    let mut tested = 0usize;
+    let mut batch = Vec::with_capacity(width);
+    while !stack.is_empty() {
+        batch.clear();
+        while batch.len() < width
+            && let Some(s) = stack.pop()
+        {
+            batch.push(s);
+        }
+        tested += batch.len();
+        if tested > MAX_SAMPLES {
+            return false;
+        }
+        let stop = batch.iter().enumerate().filter(|(_, s)| s.grow <= fine).fold(0, |m, (i, _)| m | 1 << i);
+        let hits = test(&batch, stop);
+        if hits & stop != 0 {
+            return false;
+        }
+        for (i, s) in batch.iter().enumerate() {
+            if hits & (1 << i) == 0 {
+                continue;
+            }
+            let half = s.grow / 2.0;
+            let w = half / rate;
+            if s.t > 0.0 {
+                stack.push(Sample { t: (s.t - w).max(0.0), grow: half });
+            }
+            if s.t < 1.0 {
+                stack.push(Sample { t: (s.t + w).min(1.0), grow: half });
+            }
+            // Tested first: a collision at the state itself ends the motion at once.
+            stack.push(Sample { t: s.t, grow: 0.0 });
+        }
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A one-dimensional "robot" at position `t * rate` among `walls` (points): a sample
+    /// touches when a wall is within its growth.
+    fn free_between(walls: &[f64], rate: f64, fine: f64, width: usize) -> (bool, usize) {
+        let mut states = 0;
+        let free = covered(rate, fine, width, |batch, _| {
+            states += batch.len();
+            let mut hits = 0;
+            for (i, s) in batch.iter().enumerate() {
+                if walls.iter().any(|w| (w - s.t * rate).abs() <= s.grow) {
+                    hits |= 1 << i;
+                }
+            }
+            hits
+        });
+        (free, states)
+    }
+
+    #[test]
+    fn a_wall_on_the_motion_is_found_and_one_beyond_the_finest_growth_is_passed() {
+        for width in [1, 8] {
+            // A motion of 1 m: a wall at 0.5377 m is on it.
+            assert!(!free_between(&[0.5377], 1.0, 0.001, width).0);
+            // Walls just past either end, farther than the finest growth.
+            assert!(free_between(&[-0.0011, 1.0011], 1.0, 0.001, width).0);
+            // On the motion, just before its end.
+            assert!(!free_between(&[0.9995], 1.0, 0.001, width).0);
+        }
+    }
+
+    #[test]
+    fn open_motions_take_few_states_and_near_walls_refine() {
+        let (free, open) = free_between(&[], 1.0, 0.001, 8);
+        assert!(free);
+        // Windows of 3 mm each side: 6 mm apart, 168 states.
+        assert_eq!(open, 168);
+        let (free, near) = free_between(&[1.002], 1.0, 0.001, 8);
+        assert!(free);
+        assert!(near > open && near < 3 * open, "{near}");
+    }
+}

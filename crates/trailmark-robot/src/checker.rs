@@ -44,6 +44,9 @@ pub struct ArmChecker {
     pub(crate) pairs: Vec<(u32, u32)>,
     /// Per sphere, per group joint: how far the sphere moves per unit of the joint's value.
     pub(crate) reach: Vec<Vec<f64>>,
+    /// Per pair of `pairs`, per group joint: how much the pair's distance changes per unit of
+    /// the joint's value (joints moving both spheres together change nothing).
+    pub(crate) pair_reach: Vec<Vec<f64>>,
     pub(crate) step: f64,
 }
 
@@ -98,7 +101,23 @@ impl ArmChecker {
                 scene.allowed.iter().filter_map(other).filter_map(|name| robot.link_index(&name)).collect()
             })
             .collect();
-        let reach = reach(&robot, &group, &model);
+        let moved = moved_by(&robot, &group, &model);
+        let by_joint = |instances: &mut dyn Iterator<Item = &Moved>| {
+            let mut r = vec![0.0; group.joints.len()];
+            for m in instances {
+                r[m.variable] += m.weight;
+            }
+            r
+        };
+        let reach = moved.iter().map(|m| by_joint(&mut m.iter())).collect();
+        let pair_reach = pairs
+            .iter()
+            .map(|&(a, b)| {
+                let (ma, mb) = (&moved[a as usize], &moved[b as usize]);
+                let only = |x: &'_ Moved, other: &[Moved]| !other.iter().any(|o| o.joint == x.joint);
+                by_joint(&mut ma.iter().filter(|x| only(x, mb)).chain(mb.iter().filter(|x| only(x, ma))))
+            })
+            .collect();
         Ok(ArmChecker {
             robot,
             model,
@@ -108,6 +127,7 @@ impl ArmChecker {
             template: start,
             pairs,
             reach,
+            pair_reach,
             step,
         })
     }
@@ -147,45 +167,36 @@ impl ArmChecker {
     /// obstacle and of the spheres it is checked against. `false` for a `q` of another length
     /// or not finite.
     pub fn is_free(&self, q: &[f64]) -> bool {
-        self.is_free_grown(q, &[])
+        self.is_free_grown(q, &[], &[])
     }
 
     /// Whether the straight motion from `a` to `b` in joint space is free, as the
     /// [module](self) says.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
-        let Some(speeds) = self.speeds(a, b) else { return false };
+        let dims = self.group.joints.len();
+        if a.len() != dims || b.len() != dims || !a.iter().chain(b).all(|v| v.is_finite()) {
+            return false;
+        }
+        let speeds: Vec<f64> = self.reach.iter().map(|r| speed(r, a, b)).collect();
+        let pair_speeds: Vec<f64> = self.pair_reach.iter().map(|r| speed(r, a, b)).collect();
         let rate = speeds.iter().fold(0.0, |m: f64, &v| m.max(v));
         let mut q = vec![0.0; a.len()];
-        let mut grows = vec![0.0; speeds.len()];
+        let (mut grows, mut pair_grows) = (vec![0.0; speeds.len()], vec![0.0; pair_speeds.len()]);
         motion::covered(rate, self.step / 2.0, 1, |batch, _| {
             let s = batch[0];
             for (d, v) in q.iter_mut().enumerate() {
                 *v = lerp(a[d], b[d], s.t);
             }
-            for (g, v) in grows.iter_mut().zip(&speeds) {
+            for (g, v) in grows.iter_mut().zip(&speeds).chain(pair_grows.iter_mut().zip(&pair_speeds)) {
                 *g = if rate > 0.0 { s.grow * v / rate } else { 0.0 };
             }
-            u32::from(!self.is_free_grown(&q, &grows))
+            u32::from(!self.is_free_grown(&q, &grows, &pair_grows))
         })
     }
 
-    /// How fast each sphere moves along the motion from `a` to `b` at most, in metres per unit
-    /// of the motion; `None` for vectors of another length or not finite.
-    pub(crate) fn speeds(&self, a: &[f64], b: &[f64]) -> Option<Vec<f64>> {
-        let dims = self.group.joints.len();
-        if a.len() != dims || b.len() != dims || !a.iter().chain(b).all(|v| v.is_finite()) {
-            return None;
-        }
-        Some(
-            self.reach
-                .iter()
-                .map(|r| r.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum())
-                .collect(),
-        )
-    }
-
-    /// Whether `q` is free with each sphere grown by its entry of `grows` (none when empty).
-    fn is_free_grown(&self, q: &[f64], grows: &[f64]) -> bool {
+    /// Whether `q` is free with each sphere grown by its entry of `grows` against obstacles, and
+    /// each pair's sum of radii by its entry of `pair_grows` (none where empty).
+    fn is_free_grown(&self, q: &[f64], grows: &[f64], pair_grows: &[f64]) -> bool {
         let Some(centres) = self.centres(q) else { return false };
         let grow = |s: usize| grows.get(s).copied().unwrap_or(0.0);
         for (k, (s, c)) in self.model.spheres.iter().zip(&centres).enumerate() {
@@ -196,9 +207,9 @@ impl ArmChecker {
                 }
             }
         }
-        self.pairs.iter().all(|&(a, b)| {
+        self.pairs.iter().enumerate().all(|(p, &(a, b))| {
             let (sa, sb) = (&self.model.spheres[a as usize], &self.model.spheres[b as usize]);
-            let reach = sa.radius + sb.radius + grow(a as usize) + grow(b as usize);
+            let reach = sa.radius + sb.radius + pair_grows.get(p).copied().unwrap_or(0.0);
             (centres[a as usize] - centres[b as usize]).norm_squared() > reach * reach
         })
     }
@@ -313,46 +324,61 @@ fn moving_links(robot: &Robot, group: &Group) -> Vec<bool> {
     moving
 }
 
-/// Per sphere, per group joint: how far the sphere moves per unit of the joint's value (see
-/// the [module](self)); mimic joints add their multiple.
-fn reach(robot: &Robot, group: &Group, model: &SphereModel) -> Vec<Vec<f64>> {
+/// How far a joint that a group joint drives moves a sphere, per unit of the group joint's
+/// value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Moved {
+    /// The joint of the robot (the group joint, or one mimicking it).
+    pub(crate) joint: usize,
+    /// The group joint's index in the group.
+    pub(crate) variable: usize,
+    /// The distance bound (see the [module](self)) times the mimic's multiplier.
+    pub(crate) weight: f64,
+}
+
+/// Per sphere, the driven joints above it and how far each moves it.
+fn moved_by(robot: &Robot, group: &Group, model: &SphereModel) -> Vec<Vec<Moved>> {
     let joints = &robot.urdf().joints;
-    let per_joint = |j: usize, link: usize, centre: f64| -> f64 {
-        let below = robot.joint_links(j).1;
-        match (joints[j].kind, chain_length(robot, below, link)) {
-            (_, None) => 0.0,
-            (JointKind::Prismatic, Some(_)) => 1.0,
-            (_, Some(l)) => l + centre,
-        }
-    };
+    let driven: Vec<(usize, usize, f64)> = (0..joints.len())
+        .filter_map(|j| {
+            if let Some(v) = group.joints.iter().position(|&g| g == j) {
+                return Some((j, v, 1.0));
+            }
+            let (followed, multiplier, _) = robot.mimic(j)?;
+            group.joints.iter().position(|&g| g == followed).map(|v| (j, v, multiplier.abs()))
+        })
+        .filter(|&(j, _, _)| joints[j].kind != JointKind::Fixed)
+        .collect();
     model
         .spheres
         .iter()
         .map(|s| {
-            let centre = s.centre.norm();
-            group
-                .joints
+            driven
                 .iter()
-                .map(|&k| {
-                    let mimics: f64 = (0..joints.len())
-                        .filter_map(|m| {
-                            robot
-                                .mimic(m)
-                                .filter(|&(f, _, _)| f == k)
-                                .map(|(_, mult, _)| mult.abs() * per_joint(m, s.link, centre))
-                        })
-                        .sum();
-                    per_joint(k, s.link, centre) + mimics
+                .filter_map(|&(joint, variable, multiplier)| {
+                    let length = chain_length(robot, robot.joint_links(joint).1, s.link)?;
+                    let distance = if joints[joint].kind == JointKind::Prismatic {
+                        1.0
+                    } else {
+                        length + s.centre.norm()
+                    };
+                    Some(Moved { joint, variable, weight: multiplier * distance })
                 })
                 .collect()
         })
         .collect()
 }
 
+/// How fast something moves along the motion from `a` to `b` at most, for its `reach` per
+/// group joint: `Σ reach[k] |b[k] - a[k]|`.
+pub(crate) fn speed(reach: &[f64], a: &[f64], b: &[f64]) -> f64 {
+    reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum()
+}
+
 /// The longest `link` can be from `top`'s frame, over every configuration, when `link` is at or
 /// below `top`: the lengths of the joint frames between them (prismatic joints at their farthest
 /// extension); `None` when it is not below.
-fn chain_length(robot: &Robot, top: usize, link: usize) -> Option<f64> {
+pub(crate) fn chain_length(robot: &Robot, top: usize, link: usize) -> Option<f64> {
     let joints = &robot.urdf().joints;
     let mut length = 0.0;
     let mut at = link;

@@ -7,7 +7,7 @@
 //! therefore stands for every state in `[t - g / rate, t + g / rate]`: each sphere there is
 //! inside its grown copy. The motion is free when such windows cover `[0, 1]`:
 //!
-//! 1. first, evenly spaced states with a coarse growth (`3 x fine`), windows just touching;
+//! 1. first, evenly spaced states with a coarse growth (`16 x fine`), windows just touching;
 //! 2. a state whose grown spheres touch something is replaced by two states with half its
 //!    growth, covering its window, and the state itself is checked with no growth: touching
 //!    there, the motion collides;
@@ -27,7 +27,7 @@ pub(crate) struct Sample {
 }
 
 /// The coarse growth as a multiple of the finest.
-pub(crate) const COARSE: f64 = 3.0;
+pub(crate) const COARSE: f64 = 16.0;
 
 /// The most states one motion is checked at (beyond it, the motion is refused).
 pub(crate) const MAX_SAMPLES: usize = 10_000_000;
@@ -142,9 +142,9 @@ mod tests {
     fn open_motions_take_few_states_and_near_walls_refine() {
         let (free, open) = free_between(&[], 1.0, 0.001, 8);
         assert!(free);
-        // Windows of 3 mm each side: 6 mm apart, 168 states.
-        assert_eq!(open, 168);
-        let (free, near) = free_between(&[1.002], 1.0, 0.001, 8);
+        // Windows of 16 mm each side: 32 mm apart, 33 states.
+        assert_eq!(open, 33);
+        let (free, near) = free_between(&[1.005], 1.0, 0.001, 8);
         assert!(free);
         assert!(near > open && near < 3 * open, "{near}");
     }

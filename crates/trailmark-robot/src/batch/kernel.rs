@@ -179,7 +179,8 @@ fn fill<L: Lanes>(p: &Program, s: &mut Scratch, f: usize) {
 }
 
 /// Which of the eight configurations `q` (per group joint, its eight values) collide, a bit a
-/// lane, with frame `f`'s spheres grown by `grow` times `scale[f]` in each lane (and all by the
+/// lane, with frame `f`'s spheres grown by `grow` times `scale[f]` in each lane against
+/// obstacles, and the pairs of pair test `t` by `grow` times `scale[frames + t]` (and all by the
 /// slack). A lane of `stop` colliding ends the search at once (other lanes not set then may
 /// collide too). `s` must be [prepared](Scratch::prepare) for `p`.
 #[inline(always)]
@@ -231,8 +232,10 @@ pub(crate) fn hits<L: Lanes>(
                 continue;
             }
             fill::<L>(p, s, f);
+            // One group is (nearly) the frame itself: its bound was just tested.
+            let several = test.groups.len() > 1;
             for (group_bound, spheres) in &test.groups {
-                if touches(o, &at.apply(group_bound.0), pad.add(L::splat(group_bound.1))) == 0 {
+                if several && touches(o, &at.apply(group_bound.0), pad.add(L::splat(group_bound.1))) == 0 {
                     continue;
                 }
                 for &i in spheres {
@@ -247,16 +250,12 @@ pub(crate) fn hits<L: Lanes>(
             }
         }
     }
-    for test in &p.pairs {
+    for (t, test) in p.pairs.iter().enumerate() {
         let frame = &p.frames[test.frame];
         let placed = Placed::<L>::load(&s.frames[12 * test.frame..12 * test.frame + 12]);
         let bound = placed.apply(frame.bound.0);
-        // Both sides' growth: the other frame's, or the slack of the still part.
-        let other_pad = match test.other {
-            Some(o) => grow.mul_add(L::splat(scale[o]), slack),
-            None => slack,
-        };
-        let pad = grow.mul_add(L::splat(scale[test.frame]), slack).add(other_pad);
+        // The pair's growth, and both sides' slack.
+        let pad = grow.mul_add(L::splat(scale[p.frames.len() + t]), slack.add(slack));
         let (other, other_radius) = match test.other {
             Some(o) => {
                 let placed = Placed::<L>::load(&s.frames[12 * o..12 * o + 12]);
@@ -275,10 +274,13 @@ pub(crate) fn hits<L: Lanes>(
             }
             None => Placed::constant(&Pose32::IDENTITY),
         };
+        let several = test.links.len() > 1;
         for link in &test.links {
-            let a = placed.apply(link.bound.0);
             let b = other_placed.apply(link.other_bound.0);
-            if meet(&a, &b, pad.add(L::splat(link.bound.1 + link.other_bound.1))) == 0 {
+            if several
+                && meet(&placed.apply(link.bound.0), &b, pad.add(L::splat(link.bound.1 + link.other_bound.1)))
+                    == 0
+            {
                 continue;
             }
             for (i, row) in &link.rows {

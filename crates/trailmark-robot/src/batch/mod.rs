@@ -23,7 +23,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use nalgebra::SVector;
 use trailmark_space::{Rn, Validity};
 
-use crate::checker::{ArmChecker, lerp};
+use crate::checker::{ArmChecker, lerp, speed};
 use crate::motion;
 use kernel::Scratch;
 use lanes::{LANES, Portable};
@@ -108,7 +108,7 @@ impl BatchChecker {
             return false;
         }
         let lanes: Vec<[f32; LANES]> = q.iter().map(|&v| [v as f32; LANES]).collect();
-        let scale = vec![0.0; self.program.frames.len()];
+        let scale = vec![0.0; self.program.frames.len() + self.program.pairs.len()];
         self.run(&lanes, &[0.0; LANES], &scale, u8::MAX) == 0
     }
 
@@ -123,15 +123,15 @@ impl BatchChecker {
         {
             return false;
         }
-        let speeds: Vec<f64> = self
-            .program
-            .frames
+        let frames: Vec<f64> = self.program.frames.iter().map(|f| speed(&f.reach, a, b)).collect();
+        let rate = frames.iter().fold(0.0, |m: f64, &v| m.max(v));
+        let pairs = self.program.pairs.iter().map(|t| speed(&t.reach, a, b));
+        let scale: Vec<f32> = frames
             .iter()
-            .map(|f| f.reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum())
+            .copied()
+            .chain(pairs)
+            .map(|v| if rate > 0.0 { (v / rate) as f32 } else { 0.0 })
             .collect();
-        let rate = speeds.iter().fold(0.0, |m: f64, &v| m.max(v));
-        let scale: Vec<f32> =
-            speeds.iter().map(|&v| if rate > 0.0 { (v / rate) as f32 } else { 0.0 }).collect();
         let mut lanes = vec![[0.0f32; LANES]; dims];
         let mut grow = [0.0f32; LANES];
         motion::covered(rate, self.checker.step / 2.0, LANES, |batch, stop| {

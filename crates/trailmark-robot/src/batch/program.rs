@@ -9,7 +9,8 @@
 
 use nalgebra::{Isometry3, Point3, Rotation3, Unit, UnitQuaternion, Vector3};
 
-use crate::checker::{ArmChecker, clearance};
+use crate::checker::{ArmChecker, chain_length, clearance};
+use crate::motion;
 use crate::scene::Shape;
 use crate::urdf::JointKind;
 
@@ -99,6 +100,9 @@ pub(crate) struct PairTest {
     /// A sphere containing the `other` side's spheres of these pairs, when it is still.
     pub(crate) still_bound: Ball,
     pub(crate) links: Vec<LinkPair>,
+    /// Per group joint, how much the distance of any of its pairs changes per unit of the
+    /// joint's value at most.
+    pub(crate) reach: Vec<f64>,
 }
 
 /// The sphere pairs of two links: spheres containing each link's spheres (in their frames'
@@ -150,6 +154,8 @@ impl Program {
         let values = &checker.template;
         let mut places = vec![Place { frame: None, offset: Isometry3::identity() }; robot.urdf().links.len()];
         let mut frames: Vec<Frame> = Vec::new();
+        // Per frame, the joint that moves it.
+        let mut frame_joints: Vec<usize> = Vec::new();
         let driver = |j: usize| -> Option<(usize, f64, f64)> {
             if let Some(v) = group.joints.iter().position(|&g| g == j) {
                 return Some((v, 1.0, 0.0));
@@ -189,6 +195,7 @@ impl Program {
                         bound: ([0.0; 3], 0.0),
                         reach: vec![0.0; group.joints.len()],
                     });
+                    frame_joints.push(j);
                     let offset = Isometry3::from_parts(Default::default(), turn.inverse());
                     places[child] = Place { frame: Some(frames.len() - 1), offset };
                 }
@@ -203,6 +210,7 @@ impl Program {
         let spheres = &checker.model.spheres;
         let mut slot = Vec::with_capacity(spheres.len());
         let mut links = vec![Vec::new(); frames.len()];
+        let mut frame_models = vec![Vec::new(); frames.len()];
         let mut still64 = Vec::new();
         let mut still_clearance = f64::INFINITY;
         let mut radius = 0.0f64;
@@ -218,6 +226,7 @@ impl Program {
                         *r = r.max(v);
                     }
                     links[f].push(s.link);
+                    frame_models[f].push(k);
                 }
                 None => {
                     slot.push((None, still64.len()));
@@ -271,9 +280,34 @@ impl Program {
                 .collect();
             bounding(&of)
         };
+        // Where a frame can be: every frame descends from one moving about a fixed point (a
+        // turning frame below the still part), its spheres within their chain's length of it;
+        // obstacles beyond, by more than the largest growth, are never tested against it.
+        let largest_growth = motion::COARSE * checker.step / 2.0 + 2.0 * f64::from(slack);
+        let reachable = |f: usize, o: &crate::scene::Obstacle| -> bool {
+            let mut root = f;
+            while let Some(parent) = frames[root].parent {
+                root = parent;
+            }
+            if frames[root].motion != Motion::Turn {
+                return true;
+            }
+            let t = frames[root].constant.translation;
+            let pivot = Point3::new(f64::from(t[0]), f64::from(t[1]), f64::from(t[2]));
+            let below = robot.joint_links(frame_joints[root]).1;
+            let far = frame_models[f]
+                .iter()
+                .map(|&k| {
+                    let s = &spheres[k];
+                    chain_length(robot, below, s.link).unwrap_or(f64::INFINITY) + s.centre.norm() + s.radius
+                })
+                .fold(0.0, f64::max);
+            clearance(o, &pivot) <= far + largest_growth + 1e-6 * far
+        };
         let world = (0..frames.len())
             .map(|f| {
                 (0..checker.obstacles.len())
+                    .filter(|&o| reachable(f, &checker.obstacles[o]))
                     .filter_map(|o| {
                         let mut groups: Vec<(Ball, Vec<u16>)> = Vec::new();
                         let mut last = None;
@@ -301,7 +335,7 @@ impl Program {
         let mut poses = Vec::new();
         robot.poses_into(&checker.template, &mut poses);
         let world_centre = |k: usize| poses[spheres[k].link] * Point3::from(spheres[k].centre);
-        for &(a, b) in &checker.pairs {
+        for (index, &(a, b)) in checker.pairs.iter().enumerate() {
             let (a, b) = (a as usize, b as usize);
             let ((fa, ia), (fb, ib)) = (slot[a], slot[b]);
             // The pair as (the later frame's sphere, the other's), and their links.
@@ -319,10 +353,20 @@ impl Program {
             let test = match pairs.iter().position(|p| p.frame == frame && p.other == other) {
                 Some(t) => t,
                 None => {
-                    pairs.push(PairTest { frame, other, still_bound: ([0.0; 3], 0.0), links: Vec::new() });
+                    let reach = vec![0.0; group.joints.len()];
+                    pairs.push(PairTest {
+                        frame,
+                        other,
+                        still_bound: ([0.0; 3], 0.0),
+                        links: Vec::new(),
+                        reach,
+                    });
                     pairs.len() - 1
                 }
             };
+            for (r, &v) in pairs[test].reach.iter_mut().zip(&checker.pair_reach[index]) {
+                *r = r.max(v);
+            }
             let group = match pairs[test].links.iter().position(|g| g.links == (link, other_link)) {
                 Some(g) => g,
                 None => {

@@ -5,14 +5,28 @@
 //! sphere when its centre is within its radius of the shape (touching counts), and two spheres
 //! of links checked against each other when their centres are within the sum of their radii.
 //!
-//! **Motions** (straight lines in joint space) are covered by checked states with grown spheres
-//! ([`motion`](crate::motion) rule, shared with the [`BatchChecker`](crate::BatchChecker)), so
-//! nothing between checked states is missed; a motion passing within `step / 2` of anything is
-//! refused. How fast a sphere moves is bounded per joint: a revolute joint turning by `dq` moves
-//! a point at most `dq` times its distance from the joint, and that distance is at most the
-//! lengths of the joint frames between the joint and the sphere's link plus the sphere's offset
-//! in it (for a prismatic joint, `dq` itself); a sphere's bound over a motion is the sum over
-//! the group's joints above it.
+//! **Motions** (straight lines in joint space, `t` from 0 to 1) are covered by checked states
+//! with grown spheres, by one rule that the [`BatchChecker`](crate::BatchChecker) follows too:
+//!
+//! - no sphere moves faster than `rate` metres per unit of `t`, so a state at `t` found free
+//!   with its spheres grown by `g` stands for every state within `g / rate` of it: the motion is
+//!   free when such windows cover `[0, 1]`;
+//! - first, evenly spaced states grown by a coarse `g` (80 times the finest: 4 cm at the
+//!   default step), windows just touching;
+//! - a state whose grown spheres touch something is replaced by two with half its growth,
+//!   covering its window, and is itself checked with no growth (touching there, the motion
+//!   collides);
+//! - a state that still touches at the finest growth, `step / 2`, makes the motion colliding: a
+//!   motion passing closer than that to something may be refused.
+//!
+//! Each sphere is grown by `g` times its own speed over `rate` (spheres near the base move
+//! slowly, spheres that do not move are not grown), and a pair of spheres by `g` times how fast
+//! their distance can change over `rate` (joints moving both together change nothing). How fast
+//! a sphere moves is bounded per joint: a revolute joint turning by `dq` moves a point at most
+//! `dq` times its distance from the joint, and that distance is at most the lengths of the joint
+//! frames between the joint and the sphere's link plus the sphere's offset in it (for a
+//! prismatic joint, `dq` itself); a sphere's bound over a motion is the sum over the group's
+//! joints above it.
 
 use nalgebra::{Point3, SVector};
 use trailmark_space::{Rn, SpaceError, Validity};
@@ -25,9 +39,9 @@ use crate::spheres::SphereModel;
 use crate::srdf::Srdf;
 use crate::urdf::JointKind;
 
-/// The default `step`: 5 mm, twice the finest growth of a motion's spheres (motions passing
-/// within 2.5 mm of anything are refused).
-pub const DEFAULT_STEP: f64 = 0.005;
+/// The default `step`: 1 mm, twice the finest growth of a motion's spheres (a state checked with
+/// spheres grown by 0.5 mm that still touches makes its motion colliding).
+pub const DEFAULT_STEP: f64 = 0.001;
 
 /// The spheres of one robot's group in one scene, checked as the [module](self) says.
 #[derive(Debug, Clone)]
@@ -53,8 +67,8 @@ pub struct ArmChecker {
 impl ArmChecker {
     /// The checker of `group` of `robot` in `scene`: the robot's spheres
     /// ([`SphereModel::new`], with the scene's allowed pairs), joints outside the group at
-    /// `start` (a value per joint of the robot), motions refused that pass within `step / 2` of
-    /// anything (see the [module](self)). Errors on a mesh without spheres, unknown names, a `start` of
+    /// `start` (a value per joint of the robot), motions checked down to a growth of `step / 2`
+    /// (see the [module](self)). Errors on a mesh without spheres, unknown names, a `start` of
     /// another length or not finite, and a `step` that is not positive and finite.
     pub fn new(
         robot: Robot,

@@ -20,7 +20,8 @@ use std::path::Path;
 use trailmark_core::yaml::{self, Yaml};
 
 use crate::error::RobotError;
-use crate::robot::{Group, Robot, read};
+use crate::robot::{Group, Robot};
+use crate::urdf::read;
 
 /// How far outside a joint's limits a request's value may be and still be taken, on the limit:
 /// files write `3.14159265` where the URDF says `3.14159`, or round `±π` the other way.

@@ -5,11 +5,10 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use nalgebra::{Isometry3, Translation3, UnitQuaternion};
-use trailmark_core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
 
 use crate::error::RobotError;
 use crate::srdf::Srdf;
-use crate::urdf::{JointKind, Urdf};
+use crate::urdf::{JointKind, Urdf, read};
 
 /// A robot whose links and joints form one tree, ready for forward kinematics.
 ///
@@ -269,11 +268,4 @@ impl Robot {
         visiting.pop();
         Ok(())
     }
-}
-
-/// The text of the file at `path`, at most [`MAX_DOCUMENT_BYTES`] long (core's capped reader, as
-/// every other reader of user files uses).
-pub(crate) fn read(path: &Path) -> Result<String, RobotError> {
-    read_to_string_capped(path, MAX_DOCUMENT_BYTES)
-        .map_err(|e| RobotError::Io { path: path.display().to_string(), reason: e.to_string() })
 }

@@ -22,7 +22,7 @@ use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use trailmark_core::yaml::{self, Yaml};
 
 use crate::error::RobotError;
-use crate::robot::read;
+use crate::urdf::read;
 
 /// The most collision objects and primitives a scene may have.
 pub const MAX_OBSTACLES: usize = 100_000;

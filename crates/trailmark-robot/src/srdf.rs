@@ -66,7 +66,7 @@ impl Srdf {
 
     /// Reads the SRDF file at `path`.
     pub fn from_file(path: impl AsRef<std::path::Path>) -> Result<Srdf, RobotError> {
-        Srdf::parse(&crate::robot::read(path.as_ref())?)
+        Srdf::parse(&crate::urdf::read(path.as_ref())?)
     }
 
     /// The group named `name`.

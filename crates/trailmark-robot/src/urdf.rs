@@ -23,6 +23,8 @@
 use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
 use roxmltree::{Document, Node};
 
+use trailmark_core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
+
 use crate::error::RobotError;
 
 /// The most links, joints or collision shapes one file may have: a real robot has tens to
@@ -390,4 +392,11 @@ fn described(node: Node<'_, '_>) -> String {
         Some(name) => format!("{} name={name:?}", node.tag_name().name()),
         None => node.tag_name().name().to_string(),
     }
+}
+
+/// The text of the file at `path`, at most [`MAX_DOCUMENT_BYTES`] long (core's capped reader, as
+/// every other reader of user files uses).
+pub(crate) fn read(path: &std::path::Path) -> Result<String, RobotError> {
+    read_to_string_capped(path, MAX_DOCUMENT_BYTES)
+        .map_err(|e| RobotError::Io { path: path.display().to_string(), reason: e.to_string() })
 }

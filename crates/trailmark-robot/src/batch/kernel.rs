@@ -192,6 +192,10 @@ pub(crate) fn hits<L: Lanes>(
     stop: u8,
     s: &mut Scratch,
 ) -> u8 {
+    let mut top_grow = 0.0f32;
+    for &g in grow {
+        top_grow = top_grow.max(g);
+    }
     let mut found = 0u8;
     let grow = L::load(grow);
     let slack = L::splat(p.slack);
@@ -251,6 +255,11 @@ pub(crate) fn hits<L: Lanes>(
         }
     }
     for (t, test) in p.pairs.iter().enumerate() {
+        // The most any lane grows these pairs: pairs whose floor is beyond cannot touch.
+        let limit = top_grow * scale[p.frames.len() + t] + 2.0 * p.slack;
+        if test.floor > limit {
+            continue;
+        }
         let frame = &p.frames[test.frame];
         let placed = Placed::<L>::load(&s.frames[12 * test.frame..12 * test.frame + 12]);
         let bound = placed.apply(frame.bound.0);
@@ -276,6 +285,9 @@ pub(crate) fn hits<L: Lanes>(
         };
         let several = test.links.len() > 1;
         for link in &test.links {
+            if link.floor > limit {
+                continue;
+            }
             let b = other_placed.apply(link.other_bound.0);
             if several
                 && meet(&placed.apply(link.bound.0), &b, pad.add(L::splat(link.bound.1 + link.other_bound.1)))
@@ -283,14 +295,20 @@ pub(crate) fn hits<L: Lanes>(
             {
                 continue;
             }
-            for (i, row) in &link.rows {
-                let at = 3 * (frame.first + *i as usize);
+            for row in &link.rows {
+                if row.floor > limit {
+                    continue;
+                }
+                let at = 3 * (frame.first + row.sphere as usize);
                 let a = load3::<L>(&s.centres[at..at + 3]);
-                let ra = frame.spheres[*i as usize].1;
+                let ra = frame.spheres[row.sphere as usize].1;
                 if meet(&a, &b, pad.add(L::splat(ra + link.other_bound.1))) == 0 {
                     continue;
                 }
-                for &j in row {
+                for &(j, floor) in &row.others {
+                    if floor > limit {
+                        continue;
+                    }
                     let (c, rb) = match test.other {
                         Some(o) => {
                             let other = &p.frames[o];

@@ -113,7 +113,7 @@ impl BatchChecker {
     }
 
     /// Whether the straight motion from `a` to `b` is free, by the rule the [`ArmChecker`]
-    /// follows ([module](crate::checker)), eight states a batch.
+    /// follows ([`checker`](crate::checker)), eight states a batch.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
         let dims = self.checker.group.joints.len();
         if self.program.blocked
@@ -189,5 +189,119 @@ impl<const N: usize> Validity<Rn<N>> for BatchChecker {
 
     fn motion_is_valid(&self, _: &Rn<N>, a: &SVector<f64, N>, b: &SVector<f64, N>) -> bool {
         self.motion_is_free(a.as_slice(), b.as_slice())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::robot::Robot;
+    use crate::scene::Scene;
+    use crate::srdf::Srdf;
+    use crate::urdf::Urdf;
+
+    /// A three-joint arm on a post (turning about z, then two about y), two spheres a link, and
+    /// a scene of one box, one cylinder and one sphere where the strategy puts them.
+    fn world(obstacles: [(f64, f64, f64); 3], size: f64) -> (ArmChecker, BatchChecker) {
+        let link = |name: &str, length: f64| {
+            format!(
+                r#"<link name="{name}"><collision><origin xyz="{} 0 0"/><geometry><sphere radius="0.02"/></geometry></collision>
+                   <collision><origin xyz="{length} 0 0"/><geometry><sphere radius="0.01"/></geometry></collision></link>"#,
+                length / 2.0
+            )
+        };
+        let urdf = format!(
+            r#"<robot name="arm"><link name="base"/>{}{}{}
+              <joint name="a" type="revolute"><parent link="base"/><child link="one"/><origin xyz="0 0 0.3"/><axis xyz="0 0 1"/><limit lower="-3" upper="3"/></joint>
+              <joint name="b" type="revolute"><parent link="one"/><child link="two"/><origin xyz="0.4 0 0"/><axis xyz="0 1 0"/><limit lower="-2.5" upper="2.5"/></joint>
+              <joint name="c" type="revolute"><parent link="two"/><child link="three"/><origin xyz="0.35 0 0"/><axis xyz="0 1 0"/><limit lower="-2.5" upper="2.5"/></joint>
+            </robot>"#,
+            link("one", 0.4),
+            link("two", 0.35),
+            link("three", 0.3)
+        );
+        let srdf = Srdf::parse(r#"<robot name="arm"><group name="arm"><chain base_link="base" tip_link="three"/></group></robot>"#)
+            .unwrap();
+        let [(bx, by, bz), (cx, cy, cz), (sx, sy, sz)] = obstacles;
+        let scene = Scene::parse(&format!(
+            "
+world:
+  collision_objects:
+    - id: box
+      primitives: [{{type: box, dimensions: [{size}, {size}, {size}]}}]
+      primitive_poses: [{{position: [{bx}, {by}, {bz}], orientation: [0, 0.3826834, 0, 0.9238795]}}]
+    - id: can
+      primitives: [{{type: cylinder, dimensions: [{size}, {}]}}]
+      primitive_poses: [{{position: [{cx}, {cy}, {cz}], orientation: [0, 0, 0, 1]}}]
+    - id: ball
+      primitives: [{{type: sphere, dimensions: [{}]}}]
+      primitive_poses: [{{position: [{sx}, {sy}, {sz}], orientation: [0, 0, 0, 1]}}]
+",
+            size / 3.0,
+            size / 2.0
+        ))
+        .unwrap();
+        let robot = Robot::new(Urdf::parse(&urdf).unwrap()).unwrap();
+        let group = robot.group(&srdf, "arm").unwrap();
+        let checker =
+            ArmChecker::new(robot, &srdf, group, &scene, vec![0.0; 3], crate::DEFAULT_STEP).unwrap();
+        (checker.clone(), BatchChecker::new(checker))
+    }
+
+    /// Where the arm reaches: around the post, about the shoulder's height.
+    fn place() -> impl Strategy<Value = (f64, f64, f64)> {
+        (0.2..1.0f64, -3.2..3.2f64, 0.0..0.6f64)
+            .prop_map(|(r, angle, z)| (r * angle.cos(), r * angle.sin(), z))
+    }
+
+    fn joints() -> impl Strategy<Value = Vec<f64>> {
+        prop::collection::vec(-2.5..2.5f64, 3)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// States: never free where the `f64` checker collides; the two codes agree.
+        #[test]
+        fn states_are_never_freer_than_in_f64(
+            obstacles in [place(), place(), place()],
+            size in 0.05..0.6f64,
+            qs in prop::collection::vec(joints(), 40),
+        ) {
+            let (exact, fast) = world(obstacles, size);
+            let portable = fast.clone().with_simd(Simd::Portable);
+            for q in &qs {
+                let free = fast.is_free(q);
+                prop_assert_eq!(free, portable.is_free(q));
+                prop_assert!(!free || exact.is_free(q), "free in f32, colliding in f64 at {:?}", q);
+            }
+        }
+
+        /// Motions: one called free by either checker has every state along it free (sampled a
+        /// thousand times, far finer than either checks), and the two codes agree. Small
+        /// obstacles, which a motion checked too sparsely would pass through.
+        #[test]
+        fn free_motions_are_free_all_along(
+            obstacles in [place(), place(), place()],
+            size in 0.005..0.2f64,
+            ends in prop::collection::vec((joints(), joints()), 30),
+        ) {
+            let (exact, fast) = world(obstacles, size);
+            let portable = fast.clone().with_simd(Simd::Portable);
+            for (a, b) in &ends {
+                let free = fast.motion_is_free(a, b);
+                prop_assert_eq!(free, portable.motion_is_free(a, b));
+                for called in [free, exact.motion_is_free(a, b)] {
+                    if called {
+                        for i in 0..=1000 {
+                            let q: Vec<f64> = a.iter().zip(b).map(|(x, y)| lerp(*x, *y, i as f64 / 1000.0)).collect();
+                            prop_assert!(exact.is_free(&q), "a free motion collides at {}", i);
+                        }
+                    }
+                }
+            }
+        }
     }
 }

@@ -103,6 +103,8 @@ pub(crate) struct PairTest {
     /// Per group joint, how much the distance of any of its pairs changes per unit of the
     /// joint's value at most.
     pub(crate) reach: Vec<f64>,
+    /// The least gap of its pairs over every configuration (see [`Row`]).
+    pub(crate) floor: f32,
 }
 
 /// The sphere pairs of two links: spheres containing each link's spheres (in their frames'
@@ -112,7 +114,19 @@ pub(crate) struct LinkPair {
     pub(crate) links: (usize, usize),
     pub(crate) bound: Ball,
     pub(crate) other_bound: Ball,
-    pub(crate) rows: Vec<(u16, Vec<u16>)>,
+    pub(crate) rows: Vec<Row>,
+    /// The least gap of its pairs over every configuration.
+    pub(crate) floor: f32,
+}
+
+/// A sphere of a link and the spheres of the other link it is checked with, each with the
+/// least gap their surfaces can have over every configuration (`-inf` where not known): a
+/// pair whose floor exceeds the growth of a test cannot touch in it and is passed over.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Row {
+    pub(crate) sphere: u16,
+    pub(crate) others: Vec<(u16, f32)>,
+    pub(crate) floor: f32,
 }
 
 /// The whole compiled checker.
@@ -211,6 +225,7 @@ impl Program {
         let mut slot = Vec::with_capacity(spheres.len());
         let mut links = vec![Vec::new(); frames.len()];
         let mut frame_models = vec![Vec::new(); frames.len()];
+        let mut still_models = Vec::new();
         let mut still64 = Vec::new();
         let mut still_clearance = f64::INFINITY;
         let mut radius = 0.0f64;
@@ -231,6 +246,7 @@ impl Program {
                 None => {
                     slot.push((None, still64.len()));
                     still64.push((centre, s.radius));
+                    still_models.push(k);
                     for (o, allowed) in checker.obstacles.iter().zip(&checker.allowed_links) {
                         if !allowed.contains(&s.link) {
                             still_clearance = still_clearance.min(clearance(o, &centre) - s.radius);
@@ -360,6 +376,7 @@ impl Program {
                         still_bound: ([0.0; 3], 0.0),
                         links: Vec::new(),
                         reach,
+                        floor: f32::NEG_INFINITY,
                     });
                     pairs.len() - 1
                 }
@@ -380,22 +397,46 @@ impl Program {
                         bound,
                         other_bound,
                         rows: Vec::new(),
+                        floor: f32::NEG_INFINITY,
                     });
                     pairs[test].links.len() - 1
                 }
             };
             let rows = &mut pairs[test].links[group].rows;
-            match rows.iter_mut().find(|r| r.0 == i as u16) {
-                Some(row) => row.1.push(j as u16),
-                None => rows.push((i as u16, vec![j as u16])),
+            let pair = (j as u16, f32::NEG_INFINITY);
+            match rows.iter_mut().find(|r| r.sphere == i as u16) {
+                Some(row) => row.others.push(pair),
+                None => rows.push(Row { sphere: i as u16, others: vec![pair], floor: f32::NEG_INFINITY }),
             }
+        }
+        // Floors: the least gap of each pair (pairs passed over in tests that cannot reach them).
+        for test in &mut pairs {
+            let model = |side: Option<usize>, i: u16| match side {
+                Some(f) => frame_models[f][i as usize],
+                None => still_models[i as usize],
+            };
+            let sides = (Some(test.frame), test.other);
+            let floors = least_gaps(checker, &frames, test, sides, &model);
+            for link in &mut test.links {
+                for row in &mut link.rows {
+                    for (j, floor) in &mut row.others {
+                        if let Some(gap) = floors.get(&(model(sides.0, row.sphere), model(sides.1, *j))) {
+                            // Rounded down into f32.
+                            *floor = (gap - 1e-6 * (1.0 + gap.abs())) as f32;
+                        }
+                    }
+                    row.floor = row.others.iter().map(|o| o.1).fold(f32::INFINITY, f32::min);
+                }
+                link.floor = link.rows.iter().map(|r| r.floor).fold(f32::INFINITY, f32::min);
+            }
+            test.floor = test.links.iter().map(|l| l.floor).fold(f32::INFINITY, f32::min);
         }
         let still: Vec<Ball> = still64.iter().map(|(c, r)| (point32(c), *r as f32)).collect();
         for p in pairs.iter_mut().filter(|p| p.other.is_none()) {
             let mut all = Vec::new();
             for g in &mut p.links {
                 let used: Vec<Ball> =
-                    g.rows.iter().flat_map(|r| r.1.iter().map(|&j| still[j as usize])).collect();
+                    g.rows.iter().flat_map(|r| r.others.iter().map(|&(j, _)| still[j as usize])).collect();
                 g.other_bound = bounding(&used);
                 all.extend(used);
             }
@@ -404,6 +445,73 @@ impl Program {
         let blocked = still_clearance <= f64::from(slack) || fixed_gap <= 2.0 * f64::from(slack);
         Program { frames, sphere_count, obstacles, world, pairs, still, blocked, slack }
     }
+}
+
+/// The least gap of each sphere pair (model indices) of `test` over every configuration, where
+/// at most two group joints move the pair's spheres relative to each other: on a grid of those
+/// joints' values, each pair's smallest gap, less how much it can shrink between grid points
+/// (its relative speed bound times half a cell). Empty for tests with more such joints.
+fn least_gaps(
+    checker: &ArmChecker,
+    frames: &[Frame],
+    test: &PairTest,
+    sides: (Option<usize>, Option<usize>),
+    model: &dyn Fn(Option<usize>, u16) -> usize,
+) -> std::collections::HashMap<(usize, usize), f64> {
+    let ancestors = |mut at: Option<usize>| {
+        let mut all = Vec::new();
+        while let Some(f) = at {
+            all.push(f);
+            at = frames[f].parent;
+        }
+        all
+    };
+    let (a, b) = (ancestors(sides.0), ancestors(sides.1));
+    let mut variables: Vec<usize> = a
+        .iter()
+        .filter(|f| !b.contains(f))
+        .chain(b.iter().filter(|f| !a.contains(f)))
+        .map(|&f| frames[f].variable)
+        .collect();
+    variables.sort_unstable();
+    variables.dedup();
+    let cells = match variables.len() {
+        1 => 1024,
+        2 => 48,
+        _ => return Default::default(),
+    };
+    let bounds = &checker.group.bounds;
+    let width = |k: usize| (bounds[variables[k]].1 - bounds[variables[k]].0) / cells as f64;
+    // How much a pair's gap can shrink from the nearest grid point (half a cell each way).
+    let shrink: f64 = (0..variables.len()).map(|k| test.reach[variables[k]] * width(k) / 2.0).sum();
+    let pairs: Vec<(usize, usize)> = test
+        .links
+        .iter()
+        .flat_map(|l| {
+            l.rows
+                .iter()
+                .flat_map(|r| r.others.iter().map(|&(j, _)| (model(sides.0, r.sphere), model(sides.1, j))))
+        })
+        .collect();
+    let mut smallest = vec![f64::INFINITY; pairs.len()];
+    let mut values = checker.template.clone();
+    let mut poses = Vec::new();
+    let spheres = &checker.model.spheres;
+    let points = if variables.len() == 1 { cells } else { cells * cells };
+    for n in 0..points {
+        for (k, &v) in variables.iter().enumerate() {
+            let cell = if k == 0 { n % cells } else { n / cells };
+            values[checker.group.joints[v]] = bounds[v].0 + (cell as f64 + 0.5) * width(k);
+        }
+        checker.robot.poses_into(&values, &mut poses);
+        for (gap, &(x, y)) in smallest.iter_mut().zip(&pairs) {
+            let (sx, sy) = (&spheres[x], &spheres[y]);
+            let d =
+                (poses[sx.link] * Point3::from(sx.centre) - poses[sy.link] * Point3::from(sy.centre)).norm();
+            *gap = gap.min(d - sx.radius - sy.radius);
+        }
+    }
+    pairs.into_iter().zip(smallest.into_iter().map(|gap| gap - shrink)).collect()
 }
 
 /// The rotation carrying z onto `axis`.

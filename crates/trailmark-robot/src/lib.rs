@@ -8,9 +8,11 @@
 //! - [`scene`] and [`request`]: MoveIt's `PlanningScene` and `MotionPlanRequest` as YAML;
 //! - [`SphereModel`] and [`ArmChecker`]: the robot as spheres (a spherized URDF's, or one sphere
 //!   containing each primitive), checked against the scene and against each other; states
-//!   exactly for the spheres, motions at a step that misses nothing between checked states
+//!   exactly for the spheres, motions covered by checked states that miss nothing between them
 //!   (see [`checker`]). It is the planners' `Validity` over the group's joint space
-//!   ([`ArmChecker::space`]).
+//!   ([`ArmChecker::space`]);
+//! - [`BatchChecker`]: the same checks for eight configurations at once in SIMD lanes, the fast
+//!   path (see [`batch`]).
 //!
 //! ```
 //! use trailmark_core::termination::Termination;

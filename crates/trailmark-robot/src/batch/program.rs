@@ -477,7 +477,7 @@ fn least_gaps(
     variables.dedup();
     let cells = match variables.len() {
         1 => 1024,
-        2 => 48,
+        2 => 32,
         _ => return Default::default(),
     };
     let bounds = &checker.group.bounds;

@@ -16,6 +16,7 @@ pub mod generate;
 pub mod grid;
 pub mod movingai;
 pub mod polygon;
+pub mod robot;
 pub mod ros_map;
 pub mod terrain;
 

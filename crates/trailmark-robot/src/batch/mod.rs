@@ -101,10 +101,10 @@ impl BatchChecker {
     }
 
     /// Whether the group at `q` (a value per group joint) is free; `false` for a `q` of another
-    /// length or not finite.
+    /// length, not finite, or beyond the joints' limits (the checks it passes over assume
+    /// them).
     pub fn is_free(&self, q: &[f64]) -> bool {
-        let dims = self.checker.group.joints.len();
-        if self.program.blocked || q.len() != dims || !q.iter().all(|v| v.is_finite()) {
+        if self.program.blocked || !self.within_limits(q) {
             return false;
         }
         let lanes: Vec<[f32; LANES]> = q.iter().map(|&v| [v as f32; LANES]).collect();
@@ -115,14 +115,11 @@ impl BatchChecker {
     /// Whether the straight motion from `a` to `b` is free, by the rule the [`ArmChecker`]
     /// follows ([`checker`](crate::checker)), eight states a batch.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
-        let dims = self.checker.group.joints.len();
-        if self.program.blocked
-            || a.len() != dims
-            || b.len() != dims
-            || !a.iter().chain(b).all(|v| v.is_finite())
-        {
+        // Both ends within the limits: so is every state between (the limits are a box).
+        if self.program.blocked || !self.within_limits(a) || !self.within_limits(b) {
             return false;
         }
+        let dims = a.len();
         let frames: Vec<f64> = self.program.frames.iter().map(|f| speed(&f.reach, a, b)).collect();
         let rate = frames.iter().fold(0.0, |m: f64, &v| m.max(v));
         let pairs = self.program.pairs.iter().map(|t| speed(&t.reach, a, b));
@@ -148,6 +145,12 @@ impl BatchChecker {
             let stop = if stop & 1 != 0 { stop as u8 | beyond } else { stop as u8 };
             u32::from(self.run(&lanes, &grow, &scale, stop) & !beyond)
         })
+    }
+
+    /// Whether `q` has a finite value per group joint, each within the joint's limits.
+    fn within_limits(&self, q: &[f64]) -> bool {
+        let bounds = &self.checker.group.bounds;
+        q.len() == bounds.len() && q.iter().zip(bounds).all(|(v, (low, high))| low <= v && v <= high)
     }
 
     fn run(&self, q: &[[f32; LANES]], grow: &[f32; LANES], scale: &[f32], stop: u8) -> u8 {

@@ -61,6 +61,8 @@ pub struct ArmChecker {
     /// Per pair of `pairs`, per group joint: how much the pair's distance changes per unit of
     /// the joint's value (joints moving both spheres together change nothing).
     pub(crate) pair_reach: Vec<Vec<f64>>,
+    /// Per joint of the robot, the largest magnitude its value takes ([`extension`]).
+    pub(crate) extension: Vec<f64>,
     pub(crate) step: f64,
 }
 
@@ -115,7 +117,8 @@ impl ArmChecker {
                 scene.allowed.iter().filter_map(other).filter_map(|name| robot.link_index(&name)).collect()
             })
             .collect();
-        let moved = moved_by(&robot, &group, &model);
+        let extension = extension(&robot, &group, &start);
+        let moved = moved_by(&robot, &group, &model, &extension);
         let by_joint = |instances: &mut dyn Iterator<Item = &Moved>| {
             let mut r = vec![0.0; group.joints.len()];
             for m in instances {
@@ -142,6 +145,7 @@ impl ArmChecker {
             pairs,
             reach,
             pair_reach,
+            extension,
             step,
         })
     }
@@ -351,7 +355,7 @@ pub(crate) struct Moved {
 }
 
 /// Per sphere, the driven joints above it and how far each moves it.
-fn moved_by(robot: &Robot, group: &Group, model: &SphereModel) -> Vec<Vec<Moved>> {
+fn moved_by(robot: &Robot, group: &Group, model: &SphereModel, extension: &[f64]) -> Vec<Vec<Moved>> {
     let joints = &robot.urdf().joints;
     let driven: Vec<(usize, usize, f64)> = (0..joints.len())
         .filter_map(|j| {
@@ -370,7 +374,7 @@ fn moved_by(robot: &Robot, group: &Group, model: &SphereModel) -> Vec<Vec<Moved>
             driven
                 .iter()
                 .filter_map(|&(joint, variable, multiplier)| {
-                    let length = chain_length(robot, robot.joint_links(joint).1, s.link)?;
+                    let length = chain_length(robot, extension, robot.joint_links(joint).1, s.link)?;
                     let distance = if joints[joint].kind == JointKind::Prismatic {
                         1.0
                     } else {
@@ -392,19 +396,35 @@ pub(crate) fn speed(reach: &[f64], a: &[f64], b: &[f64]) -> f64 {
 /// The longest `link` can be from `top`'s frame, over every configuration, when `link` is at or
 /// below `top`: the lengths of the joint frames between them (prismatic joints at their farthest
 /// extension); `None` when it is not below.
-pub(crate) fn chain_length(robot: &Robot, top: usize, link: usize) -> Option<f64> {
+pub(crate) fn chain_length(robot: &Robot, extension: &[f64], top: usize, link: usize) -> Option<f64> {
     let joints = &robot.urdf().joints;
     let mut length = 0.0;
     let mut at = link;
     while at != top {
         let j = robot.parent_joint(at)?;
         length += joints[j].origin.translation.vector.norm();
-        if let (JointKind::Prismatic, Some(l)) = (joints[j].kind, joints[j].limits) {
-            length += l.lower.abs().max(l.upper.abs());
+        if joints[j].kind == JointKind::Prismatic {
+            length += extension[j];
         }
         at = robot.joint_links(j).0;
     }
     Some(length)
+}
+
+/// Per joint of the robot, the largest magnitude its value takes: a group joint's limits, a
+/// mimic's multiple of its leader's plus its offset, any other joint's value in `template`
+/// (the start state's, which it keeps, even beyond its limits).
+pub(crate) fn extension(robot: &Robot, group: &Group, template: &[f64]) -> Vec<f64> {
+    let own = |j: usize| match group.joints.iter().position(|&g| g == j) {
+        Some(v) => group.bounds[v].0.abs().max(group.bounds[v].1.abs()),
+        None => template[j].abs(),
+    };
+    (0..robot.urdf().joints.len())
+        .map(|j| match robot.mimic(j) {
+            Some((leader, multiplier, offset)) => multiplier.abs() * own(leader) + offset.abs(),
+            None => own(j),
+        })
+        .collect()
 }
 
 impl<const N: usize> Validity<Rn<N>> for ArmChecker {

@@ -170,8 +170,9 @@ const TAU_HIGH: f32 = 6.28125;
 const TAU_LOW: f32 = (std::f64::consts::TAU - 6.28125) as f32;
 
 /// The sine and cosine of every lane: reduced to `[-π, π]` by whole turns, then Taylor series to
-/// the 17th and 18th powers (their remainders below 3e-8 there). Lanes beyond a thousand turns
-/// lose accuracy; the checker's joint limits are within that.
+/// the 17th and 18th powers (their remainders below 3e-8 there). The turn count is exact to
+/// 2^16 turns; the compiled checker refuses joint values beyond `MAX_JOINT_VALUE` (about 1,600
+/// turns) and its slack covers the rounding below that.
 #[inline(always)]
 pub(crate) fn sin_cos<L: Lanes>(x: L) -> (L, L) {
     let turns = x.mul(L::splat(std::f32::consts::FRAC_1_PI * 0.5)).round();

@@ -3,9 +3,11 @@
 //! arrays elsewhere, giving the same answers).
 //!
 //! **Conservative**: every radius is grown by a bound on the `f32` rounding (a ten-thousandth
-//! of the largest coordinate met, at least 0.1 mm), so a configuration the `f64` [`ArmChecker`]
-//! calls colliding is never free here; a configuration within that bound of touching may be
-//! called colliding here and free there.
+//! of the largest coordinate met, at least 0.1 mm, and the rounding of the joint values times
+//! the arm's reach), so a configuration the `f64` [`ArmChecker`] calls colliding is never free
+//! here; a configuration within that bound of touching may be called colliding here and free
+//! there. A group whose joint values reach beyond 10,000 (radians or metres) has nothing free
+//! here: check it with the [`ArmChecker`].
 //!
 //! **Motions** follow the [`ArmChecker`]'s rule (states covering the motion with grown
 //! spheres, so nothing is missed between them; [`checker`](crate::checker)), eight states a
@@ -251,6 +253,38 @@ world:
         let checker =
             ArmChecker::new(robot, &srdf, group, &scene, vec![0.0; 3], crate::DEFAULT_STEP).unwrap();
         (checker.clone(), BatchChecker::new(checker))
+    }
+
+    /// A prismatic joint outside the group keeps its start value, even beyond its limits: the
+    /// reach that culls obstacles counts that value, not the limits.
+    #[test]
+    fn a_joint_held_beyond_its_limits_reaches_as_far_as_it_is() {
+        let urdf = r#"<robot name="r"><link name="base"/><link name="one"/>
+            <link name="two"><collision><geometry><sphere radius="0.02"/></geometry></collision></link>
+            <joint name="a" type="revolute"><parent link="base"/><child link="one"/><origin xyz="0 0 0.3"/><axis xyz="0 0 1"/><limit lower="-3" upper="3"/></joint>
+            <joint name="p" type="prismatic"><parent link="one"/><child link="two"/><axis xyz="1 0 0"/><limit lower="0" upper="0.1"/></joint>
+          </robot>"#;
+        let srdf =
+            Srdf::parse(r#"<robot name="r"><group name="arm"><joint name="a"/></group></robot>"#).unwrap();
+        let scene = Scene::parse(
+            "
+world:
+  collision_objects:
+    - id: box
+      primitives: [{type: box, dimensions: [0.1, 0.1, 0.1]}]
+      primitive_poses: [{position: [1, 0, 0.3], orientation: [0, 0, 0, 1]}]
+",
+        )
+        .unwrap();
+        let robot = Robot::new(Urdf::parse(urdf).unwrap()).unwrap();
+        let group = robot.group(&srdf, "arm").unwrap();
+        let exact =
+            ArmChecker::new(robot, &srdf, group, &scene, vec![0.0, 1.0], crate::DEFAULT_STEP).unwrap();
+        let fast = BatchChecker::new(exact.clone());
+        assert!(!exact.is_free(&[0.0]));
+        assert!(!fast.is_free(&[0.0]));
+        assert!(exact.is_free(&[1.0]) && fast.is_free(&[1.0]));
+        assert!(!fast.motion_is_free(&[1.0], &[-1.0]) && !exact.motion_is_free(&[1.0], &[-1.0]));
     }
 
     /// Where the arm reaches: around the post, about the shoulder's height.

@@ -153,6 +153,10 @@ pub(crate) struct Program {
 /// thousand times the `f32` rounding of a chain of a dozen transforms and a distance.
 const SLACK_PER_METRE: f64 = 1e-4;
 
+/// The largest joint value (radians or metres) the lanes take: beyond it a group's every state
+/// is called colliding (the `ArmChecker` checks such groups).
+pub(crate) const MAX_JOINT_VALUE: f64 = 1e4;
+
 /// Where a link is: a frame (or the world) and its pose in it.
 #[derive(Clone, Copy)]
 struct Place {
@@ -184,14 +188,14 @@ impl Program {
             let above = places[parent];
             let joint = &joints[j];
             reach += joint.origin.translation.vector.norm();
+            if joint.kind == JointKind::Prismatic {
+                reach += checker.extension[j];
+            }
             let moving =
                 matches!(joint.kind, JointKind::Revolute | JointKind::Continuous | JointKind::Prismatic);
             match driver(j).filter(|_| moving) {
                 Some((variable, multiplier, offset)) => {
                     let (turn, motion) = if joint.kind == JointKind::Prismatic {
-                        if let Some(l) = joint.limits {
-                            reach += multiplier.abs() * l.lower.abs().max(l.upper.abs()) + offset.abs();
-                        }
                         let a = joint.axis.into_inner();
                         (UnitQuaternion::identity(), Motion::Slide([a.x as f32, a.y as f32, a.z as f32]))
                     } else {
@@ -264,7 +268,13 @@ impl Program {
             };
             far = far.max(o.pose.translation.vector.norm() + extent);
         }
-        let slack = (SLACK_PER_METRE * far.max(1.0)) as f32;
+        // Joint values rounded to f32 (and their sines): an angle off by its magnitude times
+        // 2^-22, and 4e-6 of the series, moves what hangs on it by that times its reach, once
+        // per frame down the chain.
+        let largest_value = frame_joints.iter().map(|&j| checker.extension[j]).fold(0.0, f64::max);
+        let angle = largest_value * 2f64.powi(-22) + 4e-6;
+        let far = far.max(1.0);
+        let slack = (SLACK_PER_METRE * far + angle * far * frames.len() as f64) as f32;
         let mut sphere_count = 0;
         for f in &mut frames {
             f.bound = bounding(&f.spheres);
@@ -315,7 +325,9 @@ impl Program {
                 .iter()
                 .map(|&k| {
                     let s = &spheres[k];
-                    chain_length(robot, below, s.link).unwrap_or(f64::INFINITY) + s.centre.norm() + s.radius
+                    chain_length(robot, &checker.extension, below, s.link).unwrap_or(f64::INFINITY)
+                        + s.centre.norm()
+                        + s.radius
                 })
                 .fold(0.0, f64::max);
             clearance(o, &pivot) <= far + largest_growth + 1e-6 * far
@@ -442,7 +454,10 @@ impl Program {
             }
             p.still_bound = bounding(&all);
         }
-        let blocked = still_clearance <= f64::from(slack) || fixed_gap <= 2.0 * f64::from(slack);
+        // Beyond MAX_JOINT_VALUE the lanes' turn counting is not exact: nothing is called free.
+        let blocked = still_clearance <= f64::from(slack)
+            || fixed_gap <= 2.0 * f64::from(slack)
+            || largest_value > MAX_JOINT_VALUE;
         Program { frames, sphere_count, obstacles, world, pairs, still, blocked, slack }
     }
 }

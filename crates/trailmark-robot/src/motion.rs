@@ -3,6 +3,8 @@
 //! spaced and their states pushed in VAMP's rake order (each batch spread over the whole
 //! motion), the refinements tested first.
 
+use std::cell::Cell;
+
 /// A state of a motion to test: where along it, and how much the fastest sphere is grown.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Sample {
@@ -43,7 +45,9 @@ pub(crate) fn covered(
     // A stack: the last pushed is tested first. The even states go in rake order (the first
     // batch spread over the whole motion), so collisions anywhere are met early.
     let batches = (n + 1).div_ceil(width);
-    let mut stack: Vec<Sample> = Vec::with_capacity(n + 1);
+    // The buffers of the thread's last motion, kept for the next (none when one is in use).
+    let (mut stack, mut batch) = BUFFERS.take();
+    stack.clear();
     for k in (0..batches).rev() {
         for l in (0..width).rev() {
             let i = l * batches + k;
@@ -52,8 +56,32 @@ pub(crate) fn covered(
             }
         }
     }
+    let free = refine(&mut stack, &mut batch, rate, fine, width, test);
+    // Kept unless a long motion made them large.
+    if stack.capacity() <= KEPT {
+        BUFFERS.set((stack, batch));
+    }
+    free
+}
+
+/// The most samples the kept stack holds.
+const KEPT: usize = 1 << 14;
+
+thread_local! {
+    /// The stack of samples and the batch `covered` uses, between motions.
+    static BUFFERS: Cell<(Vec<Sample>, Vec<Sample>)> = const { Cell::new((Vec::new(), Vec::new())) };
+}
+
+/// Tests the samples of `stack` in batches, pushing the halves of those that touch.
+fn refine(
+    stack: &mut Vec<Sample>,
+    batch: &mut Vec<Sample>,
+    rate: f64,
+    fine: f64,
+    width: usize,
+    mut test: impl FnMut(&[Sample], u32) -> u32,
+) -> bool {
     let mut tested = 0usize;
-    let mut batch = Vec::with_capacity(width);
     while !stack.is_empty() {
         batch.clear();
         while batch.len() < width
@@ -66,7 +94,7 @@ pub(crate) fn covered(
             return false;
         }
         let stop = batch.iter().enumerate().filter(|(_, s)| s.grow <= fine).fold(0, |m, (i, _)| m | 1 << i);
-        let hits = test(&batch, stop);
+        let hits = test(batch, stop);
         if hits & stop != 0 {
             return false;
         }

@@ -19,7 +19,8 @@
 //!   planar arm of revolute joints among polygons, for planning in its joint space;
 //! - [`benchmark`]: seeded runs of any planner, measured, and logs in OMPL's format;
 //! - [`paths`]: a path's length, interpolation to a resolution, and a re-check of every state and
-//!   motion; [`simplify`]: shortcutting. Smoothing with curves is in `trailmark_core::smooth`.
+//!   motion; [`simplify`](mod@simplify): shortcutting and corner cutting. Smoothing with curves
+//!   is in `trailmark_core::smooth`.
 //!
 //! ```
 //! use trailmark_core::geometry::Point;
@@ -89,7 +90,7 @@ pub use rand_chacha::ChaCha8Rng;
 pub use rrt::{Rrt, RrtGrowth};
 pub use rrt_connect::{ConnectGrowth, MAX_CONNECT_STEPS, MAX_GOAL_ROOTS, RrtConnect};
 pub use rrt_star::{RrtStar, StarGrowth, neighbour_count};
-pub use simplify::shortcut;
+pub use simplify::{shortcut, simplify, smooth};
 /// The configuration-space vocabulary of `trailmark-space`: spaces, validity, samplers, nearest
 /// neighbours, connection rules.
 pub use trailmark_space::{

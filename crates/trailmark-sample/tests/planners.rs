@@ -9,7 +9,7 @@ use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::termination::{Stop, Termination};
 use trailmark_core::world::PolygonWorld;
 use trailmark_sample::nearest::{BruteForce, KdNearest, NearestNeighbors};
-use trailmark_sample::simplify::shortcut;
+use trailmark_sample::simplify::{shortcut, simplify};
 use trailmark_sample::space::{Car, CarCurves, Dubins, DubinsCurves, R2, ReedsSheppCurves, StateSpace};
 use trailmark_sample::{
     Plan, PlanError, Planner, Problem, Rejection, Rrt, RrtConnect, RrtOptions, RrtStar, Solution,
@@ -74,6 +74,11 @@ proptest! {
             check_r2(&world, &shortened, start, goal)?;
             prop_assert!(cost(&short) <= plan.cost().unwrap() + 1e-9);
             prop_assert!(short.len() <= path.len());
+            // So do shortcuts followed by corner cutting.
+            let round = simplify(&space, &checker, path, 100, 4, seed);
+            let rounded = Plan { solution: Solution::Exact { path: round.clone(), cost: cost(&round) }, ..plan.clone() };
+            check_r2(&world, &rounded, start, goal)?;
+            prop_assert!(cost(&round) <= cost(&short) + 1e-9);
         }
         let options = RrtOptions { goal_bias: 0.1, ..RrtOptions::default() };
         let plan = Rrt::new(kd).with_options(options).with_seed(seed).solve(&problem, &Termination::iterations(3000)).unwrap();

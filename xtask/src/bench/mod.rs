@@ -6,7 +6,7 @@
 //! ([`report`], [`plots`]), the progress display and the peers (OMPL, [`peer`] for
 //! `pathfinding`). Above it, one module per
 //! section ([`grid`], [`navigation`], [`anytime`], [`roadmaps`], [`sampling`], [`cars`],
-//! [`contingency`], [`rosmaps`]),
+//! [`contingency`], [`rosmaps`], [`arms`]),
 //! none of which uses another. At the top, this module: the options, which sections run, and the
 //! report assembled from each section's part.
 //!
@@ -15,6 +15,7 @@
 //! and [`times`] records both for the report's time line.
 
 mod anytime;
+mod arms;
 mod cars;
 mod contingency;
 mod grid;
@@ -37,6 +38,7 @@ use std::process::ExitCode;
 use serde::Serialize;
 
 use anytime::{AnytimePart, AnytimeRow};
+use arms::ArmReport;
 use cars::CarReport;
 use contingency::ContingencyRow;
 use grid::{GridPlanner, GridRow, PeerRatio};
@@ -76,12 +78,13 @@ pub struct Args {
     json: bool,
     /// The sections to run: grid search beside the peers, unknown-terrain navigation
     /// (incremental planners), anytime planners, geometric roadmaps, sampling planners,
-    /// car-like robots, contingency plans over choke points, ROS maps (comma-separated).
+    /// car-like robots, contingency plans over choke points, ROS maps, robot arms
+    /// (comma-separated).
     #[arg(
         long,
         value_enum,
         value_delimiter = ',',
-        default_value = "grid,navigation,anytime,roadmaps,sampling,cars,contingency,rosmaps"
+        default_value = "grid,navigation,anytime,roadmaps,sampling,cars,contingency,rosmaps,arms"
     )]
     sections: Vec<Section>,
     /// Also run OMPL's planners on the sampling and car sections' problems (needs libompl-dev and
@@ -111,6 +114,9 @@ pub enum Section {
     Contingency,
     /// ROS maps: loading, inflation, A* beside `pathfinding` on the costmap, Theta*.
     Rosmaps,
+    /// The Panda arm on MotionBenchMaker's problems: the batch and scalar checkers, beside OMPL
+    /// with FCL.
+    Arms,
 }
 
 /// What the report holds, in the order of `results.json`.
@@ -139,6 +145,8 @@ struct BenchReport {
     cars: Option<CarReport>,
     contingency: Vec<ContingencyRow>,
     rosmaps: Vec<RosMapRow>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    arms: Option<ArmReport>,
 }
 
 /// A map of the suite in the report.
@@ -173,6 +181,7 @@ impl BenchReport {
         goals.extend(navigation::best_goals(&self.replanner_ratios));
         goals.push(rosmaps::goal(&self.rosmaps));
         goals.extend(sampling::goals(self.sampling.as_ref()));
+        goals.extend(arms::goals(self.arms.as_ref()));
         goals
     }
 
@@ -184,6 +193,7 @@ impl BenchReport {
             + self.cars.as_ref().map_or(0, |c| c.errors())
             + self.contingency.iter().filter(|r| r.error).count()
             + self.rosmaps.iter().map(|r| r.cost_errors).sum::<usize>()
+            + self.arms.as_ref().map_or(0, |a| a.errors())
     }
 
     /// The report: `time_line` after the versions, `anytime_plot` (the anytime section's plot
@@ -243,6 +253,9 @@ impl BenchReport {
             out.push_str(&contingency::markdown(&self.contingency));
         }
         out.push_str(&rosmaps::markdown(&self.rosmaps));
+        if let Some(arms) = &self.arms {
+            out.push_str(&arms::markdown(arms));
+        }
         out
     }
 }
@@ -288,6 +301,7 @@ struct Parts {
     cars: Option<CarReport>,
     contingency: Vec<ContingencyRow>,
     rosmaps: Vec<RosMapRow>,
+    arms: Option<ArmReport>,
     date: String,
 }
 
@@ -363,6 +377,10 @@ fn run_parts<'scope>(
     if wants(Section::Rosmaps) && args.only.is_empty() {
         rosmaps = times.section("rosmaps", || rosmaps::bench(args.suite, args.seed, args.runs))?;
     }
+    let mut arms = None;
+    if wants(Section::Arms) && args.only.is_empty() {
+        arms = Some(times.section("arms", || arms::bench(args.suite, args.seed))?);
+    }
     Ok(Parts {
         maps,
         results,
@@ -374,6 +392,7 @@ fn run_parts<'scope>(
         cars,
         contingency,
         rosmaps,
+        arms,
         date,
     })
 }
@@ -430,6 +449,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         cars: parts.cars,
         contingency: parts.contingency,
         rosmaps: parts.rosmaps,
+        arms: parts.arms,
     };
     let mut figures: Vec<Figure> = Vec::new();
     if !report.results.is_empty() {

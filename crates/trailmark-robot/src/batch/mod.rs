@@ -19,7 +19,7 @@ mod kernel;
 mod lanes;
 mod program;
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use nalgebra::SVector;
@@ -121,19 +121,18 @@ impl BatchChecker {
         if self.program.blocked || !self.within_limits(a) || !self.within_limits(b) {
             return false;
         }
-        let dims = a.len();
-        let frames: Vec<f64> = self.program.frames.iter().map(|f| speed(&f.reach, a, b)).collect();
-        let rate = frames.iter().fold(0.0, |m: f64, &v| m.max(v));
-        let pairs = self.program.pairs.iter().map(|t| speed(&t.reach, a, b));
-        let scale: Vec<f32> = frames
-            .iter()
-            .copied()
-            .chain(pairs)
-            .map(|v| if rate > 0.0 { (v / rate) as f32 } else { 0.0 })
-            .collect();
-        let mut lanes = vec![[0.0f32; LANES]; dims];
+        // The buffers of the thread's last motion, kept for the next (none when one is in use).
+        let (mut speeds, mut scale, mut lanes) = BUFFERS.take();
+        speeds.clear();
+        speeds.extend(self.program.frames.iter().map(|f| speed(&f.reach, a, b)));
+        let rate = speeds.iter().fold(0.0, |m: f64, &v| m.max(v));
+        speeds.extend(self.program.pairs.iter().map(|t| speed(&t.reach, a, b)));
+        scale.clear();
+        scale.extend(speeds.iter().map(|&v| if rate > 0.0 { (v / rate) as f32 } else { 0.0 }));
+        lanes.clear();
+        lanes.resize(a.len(), [0.0f32; LANES]);
         let mut grow = [0.0f32; LANES];
-        motion::covered(rate, self.checker.step / 2.0, LANES, |batch, stop| {
+        let free = motion::covered(rate, self.checker.step / 2.0, LANES, |batch, stop| {
             for l in 0..LANES {
                 // Lanes beyond the batch repeat its first state.
                 let sample = batch.get(l).unwrap_or(&batch[0]);
@@ -146,7 +145,9 @@ impl BatchChecker {
             let beyond = u8::MAX.checked_shl(batch.len() as u32).unwrap_or(0);
             let stop = if stop & 1 != 0 { stop as u8 | beyond } else { stop as u8 };
             u32::from(self.run(&lanes, &grow, &scale, stop) & !beyond)
-        })
+        });
+        BUFFERS.set((speeds, scale, lanes));
+        free
     }
 
     /// Whether `q` has a finite value per group joint, each within the joint's limits.
@@ -172,7 +173,12 @@ impl BatchChecker {
 thread_local! {
     /// The kernel's working space, one per thread.
     static SCRATCH: RefCell<Scratch> = RefCell::default();
+    /// A motion's buffers, between motions.
+    static BUFFERS: Cell<MotionBuffers> = const { Cell::new((Vec::new(), Vec::new(), Vec::new())) };
 }
+
+/// A motion's speeds, growth scales and lanes of joint values.
+type MotionBuffers = (Vec<f64>, Vec<f32>, Vec<[f32; LANES]>);
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]

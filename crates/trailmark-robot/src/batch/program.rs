@@ -9,7 +9,7 @@
 
 use nalgebra::{Isometry3, Point3, Rotation3, Unit, UnitQuaternion, Vector3};
 
-use crate::checker::{ArmChecker, chain_length, clearance};
+use crate::checker::{ArmChecker, chain_length, clearance, driver};
 use crate::motion;
 use crate::scene::Shape;
 use crate::urdf::JointKind;
@@ -174,13 +174,6 @@ impl Program {
         let mut frames: Vec<Frame> = Vec::new();
         // Per frame, the joint that moves it.
         let mut frame_joints: Vec<usize> = Vec::new();
-        let driver = |j: usize| -> Option<(usize, f64, f64)> {
-            if let Some(v) = group.joints.iter().position(|&g| g == j) {
-                return Some((v, 1.0, 0.0));
-            }
-            let (followed, multiplier, offset) = robot.mimic(j)?;
-            group.joints.iter().position(|&g| g == followed).map(|v| (v, multiplier, offset))
-        };
         // The frames' lengths, for the slack.
         let mut reach = 0.0f64;
         for &j in robot.joints_in_order() {
@@ -193,7 +186,7 @@ impl Program {
             }
             let moving =
                 matches!(joint.kind, JointKind::Revolute | JointKind::Continuous | JointKind::Prismatic);
-            match driver(j).filter(|_| moving) {
+            match driver(robot, group, j).filter(|_| moving) {
                 Some((variable, multiplier, offset)) => {
                     let (turn, motion) = if joint.kind == JointKind::Prismatic {
                         let a = joint.axis.into_inner();

@@ -1,0 +1,252 @@
+//! The arms section: the Panda arm on MotionBenchMaker's problems (`../shared/mbm/panda`, when
+//! present), planned by RRT-Connect with the batch checker and with the scalar one, each path
+//! simplified and checked again by the `f64` checker at a tenth of the step; beside OMPL's
+//! RRTConnect with FCL on the same spheres and primitives when `--with-ompl` builds it.
+//! The quick suite plans four problems a set, the full one all 700.
+
+use std::path::PathBuf;
+
+use serde::Serialize;
+
+use crate::bench::progress::SectionProgress;
+use crate::bench::report::{GoalRow, table};
+use crate::bench::stats::{median, quantile, sorted};
+use crate::bench::suite::Suite;
+use crate::mbm::{self, Arm, CheckerKind, MbmProblem, Outcome, Settings};
+
+/// The Panda's files and problems, beside the project.
+fn panda() -> PathBuf {
+    crate::workspace::root().join("../shared/mbm/panda")
+}
+
+/// One planner and checker over the problems planned.
+#[derive(Debug, Clone, Serialize)]
+pub struct ArmRow {
+    /// `trailmark batch`, `trailmark scalar` or `OMPL RRTConnect + FCL`.
+    planner: String,
+    problems: usize,
+    /// Solved within the time limit, the path passing the independent check.
+    solved: usize,
+    /// Paths returned that failed the independent check (must be 0).
+    pub check_failures: usize,
+    /// Planning time, µs: median and 95th percentile over the problems (unsolved ones at their
+    /// time limit).
+    median_us: f64,
+    p95_us: f64,
+    /// Planning and simplifying, µs.
+    simplified_median_us: f64,
+    simplified_p95_us: f64,
+    /// Validity calls (states and motions) per second of planning, as the planner counts them.
+    checks_per_s: f64,
+    /// Configurations tested per second of planning (`None` where not counted).
+    states_per_s: Option<f64>,
+    /// Median joint-space path length, radians: as planned, and simplified.
+    length: f64,
+    simplified_length: f64,
+}
+
+/// One set's figures with the batch checker.
+#[derive(Debug, Clone, Serialize)]
+pub struct ArmSetRow {
+    set: String,
+    problems: usize,
+    solved: usize,
+    median_us: f64,
+    simplified_median_us: f64,
+}
+
+/// The section's figures.
+#[derive(Debug, Clone, Serialize, Default)]
+pub struct ArmReport {
+    pub rows: Vec<ArmRow>,
+    sets: Vec<ArmSetRow>,
+    /// Why the section did not run, when it did not.
+    skipped: Option<String>,
+}
+
+impl ArmReport {
+    /// Paths that failed the independent check.
+    pub fn errors(&self) -> usize {
+        self.rows.iter().map(|r| r.check_failures).sum()
+    }
+}
+
+/// The problems of the suite: every 25th of each set in the quick suite, all in the full one.
+fn chosen(suite: Suite, all: Vec<MbmProblem>) -> Vec<MbmProblem> {
+    let every = match suite {
+        Suite::Quick => 25,
+        Suite::Full => 1,
+    };
+    all.into_iter().enumerate().filter(|(i, _)| i % every == 0).map(|(_, p)| p).collect()
+}
+
+/// Plans the suite's problems with both checkers; a report that says why when the data is
+/// missing.
+pub fn bench(suite: Suite, seed: u64) -> Result<ArmReport, String> {
+    let dir = panda();
+    let (urdf, srdf) = (dir.join("panda_spherized.urdf"), dir.join("panda.srdf"));
+    if !urdf.is_file() {
+        let why = format!("{} not found", dir.display());
+        errln!("arms section skipped: {why}");
+        return Ok(ArmReport { skipped: Some(why), ..ArmReport::default() });
+    }
+    let arm = Arm::read(&urdf, &srdf).map_err(|e| e.to_string())?;
+    let problems = chosen(suite, mbm::problems(&dir.join("problems"))?);
+    let mut progress = SectionProgress::new("arms", 2 * problems.len());
+    let mut rows = Vec::new();
+    let mut batch_outcomes = Vec::new();
+    for (checker, name) in
+        [(CheckerKind::Batch, "trailmark batch"), (CheckerKind::Scalar, "trailmark scalar")]
+    {
+        let settings = Settings {
+            checker,
+            limit: std::time::Duration::from_secs(1),
+            seed,
+            range: Some(1.0),
+            simplify: true,
+        };
+        let outcomes: Vec<Outcome> = problems
+            .iter()
+            .map(|p| {
+                progress.step(format!("{name}: {}", p.name));
+                mbm::solve(&arm, p, settings)
+            })
+            .collect();
+        rows.push(row(name, &outcomes));
+        if checker == CheckerKind::Batch {
+            batch_outcomes = outcomes;
+        }
+    }
+    let set_of = |p: &MbmProblem| p.name.split('/').next().unwrap_or_default().to_string();
+    let mut names: Vec<String> = problems.iter().map(set_of).collect();
+    names.dedup();
+    let sets = names
+        .into_iter()
+        .map(|set| {
+            let of_set: Vec<&Outcome> = problems
+                .iter()
+                .zip(&batch_outcomes)
+                .filter(|(p, _)| set_of(p) == set)
+                .map(|(_, o)| o)
+                .collect();
+            let times = sorted(of_set.iter().map(|o| o.time.as_secs_f64() * 1e6).collect());
+            let simplified =
+                sorted(of_set.iter().map(|o| (o.time + o.simplify_time).as_secs_f64() * 1e6).collect());
+            ArmSetRow {
+                set,
+                problems: of_set.len(),
+                solved: of_set.iter().filter(|o| passed(o)).count(),
+                median_us: median(&times),
+                simplified_median_us: median(&simplified),
+            }
+        })
+        .collect();
+    Ok(ArmReport { rows, sets, skipped: None })
+}
+
+/// Whether the problem was solved and its path passed the independent check.
+fn passed(o: &Outcome) -> bool {
+    o.status == "solved" && o.failure.is_none()
+}
+
+fn row(planner: &str, outcomes: &[Outcome]) -> ArmRow {
+    let times = sorted(outcomes.iter().map(|o| o.time.as_secs_f64() * 1e6).collect());
+    let simplified =
+        sorted(outcomes.iter().map(|o| (o.time + o.simplify_time).as_secs_f64() * 1e6).collect());
+    let planning: f64 = outcomes.iter().map(|o| o.time.as_secs_f64()).sum();
+    let checks: u64 = outcomes.iter().map(|o| o.checks).sum();
+    let batches: u64 = outcomes.iter().map(|o| o.batches).sum();
+    let solved: Vec<&Outcome> = outcomes.iter().filter(|o| passed(o)).collect();
+    ArmRow {
+        planner: planner.to_string(),
+        problems: outcomes.len(),
+        solved: solved.len(),
+        check_failures: outcomes.iter().filter(|o| o.status == "solved" && o.failure.is_some()).count(),
+        median_us: median(&times),
+        p95_us: quantile(&times, 0.95),
+        simplified_median_us: median(&simplified),
+        simplified_p95_us: quantile(&simplified, 0.95),
+        checks_per_s: checks as f64 / planning.max(1e-9),
+        states_per_s: (batches > 0).then(|| 8.0 * batches as f64 / planning.max(1e-9)),
+        length: median(&sorted(solved.iter().map(|o| o.planned_length).collect())),
+        simplified_length: median(&sorted(solved.iter().map(|o| mbm::joint_length(&o.path)).collect())),
+    }
+}
+
+/// The section's goals: the median against 100 µs, and the batch checker against the others.
+pub fn goals(report: Option<&ArmReport>) -> Vec<GoalRow> {
+    let rows = report.map_or(&[][..], |r| &r.rows[..]);
+    let batch = rows.iter().find(|r| r.planner == "trailmark batch");
+    let mut figures = Vec::new();
+    let mut speedups = Vec::new();
+    if let Some(b) = batch {
+        figures.push(("Panda, median over the problems".to_string(), 100.0 / b.median_us));
+        for other in rows.iter().filter(|r| r.planner != b.planner) {
+            speedups.push((other.planner.clone(), other.median_us / b.median_us));
+        }
+    }
+    vec![
+        GoalRow {
+            goal: "A Panda MotionBenchMaker problem planned in at most 100 µs (median; 100 µs / median)",
+            figures,
+            target: 1.0,
+            unit: "x",
+            missing: "the arms section did not run (needs ../shared/mbm)",
+        },
+        GoalRow {
+            goal: "The batch checker's RRT-Connect at least 100x OMPL RRTConnect with FCL (median time)",
+            figures: speedups.into_iter().filter(|(name, _)| name.starts_with("OMPL")).collect(),
+            target: 100.0,
+            unit: "x",
+            missing: "run with --with-ompl (libompl-dev, libfcl-dev)",
+        },
+    ]
+}
+
+/// The section of the report.
+pub fn markdown(report: &ArmReport) -> String {
+    if let Some(why) = &report.skipped {
+        return format!("\n## Robot arms\n\nSkipped: {why}.\n");
+    }
+    let mut out = String::from(
+        "\n## Robot arms\n\nThe Panda (59 spheres) on MotionBenchMaker's problems, RRT-Connect (range 1 rad, 1 s limit per \
+         problem), each path checked again by the `f64` sphere checker at a tenth of the 1 mm step; times on one core, the \
+         simplified ones including the planning. Checks are validity calls (states and motions), states the configurations \
+         tested.\n\n",
+    );
+    out.push_str(&table(
+        "| planner | problems | solved | check failures | median µs | p95 µs | simplified median µs | simplified p95 µs | checks/s | states/s | length (rad) | simplified length |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        &report.rows,
+        |r| {
+            format!(
+                "| {} | {} | {} | {} | {:.0} | {:.0} | {:.0} | {:.0} | {:.0} | {} | {:.2} | {:.2} |",
+                r.planner,
+                r.problems,
+                r.solved,
+                r.check_failures,
+                r.median_us,
+                r.p95_us,
+                r.simplified_median_us,
+                r.simplified_p95_us,
+                r.checks_per_s,
+                r.states_per_s.map_or("-".to_string(), |s| format!("{s:.0}")),
+                r.length,
+                r.simplified_length
+            )
+        },
+    ));
+    out.push_str("\nPer set, the batch checker:\n\n");
+    out.push_str(&table(
+        "| set | problems | solved | median µs | simplified median µs |",
+        "|---|---:|---:|---:|---:|",
+        &report.sets,
+        |s| {
+            format!(
+                "| {} | {} | {} | {:.0} | {:.0} |",
+                s.set, s.problems, s.solved, s.median_us, s.simplified_median_us
+            )
+        },
+    ));
+    out
+}

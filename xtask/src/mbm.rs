@@ -14,7 +14,7 @@ use trailmark::robot::request::Request;
 use trailmark::robot::scene::Scene;
 use trailmark::robot::srdf::Srdf;
 use trailmark::robot::{ArmChecker, BatchChecker, DEFAULT_STEP, Robot, RobotError};
-use trailmark::sample::{KdNearest, Planner, Problem, Rn, RrtConnect, RrtOptions, paths, simplify};
+use trailmark::sample::{Joints, KdNearest, Planner, Problem, RrtConnect, RrtOptions, paths, simplify};
 
 /// The arguments of `verify mbm`.
 #[derive(Debug, Clone, clap::Args)]
@@ -207,14 +207,21 @@ pub fn solve(arm: &Arm, problem: &MbmProblem, settings: Settings) -> Outcome {
         }
     }
     let batch = BatchChecker::new(scalar.clone());
+    // A k-d tree over the joints' positions: N coordinates, twice that with continuous joints
+    // (their cosines and sines).
+    let wraps = scalar.group().wraps.contains(&true);
     macro_rules! by_dimension {
         ($($n:literal)*) => {
-            match scalar.group().joints.len() {
-                $($n => match settings.checker {
-                    CheckerKind::Batch => plan::<$n, _>(&scalar, &batch, &start, &goal, settings),
-                    CheckerKind::Scalar => plan::<$n, _>(&scalar, &scalar, &start, &goal, settings),
+            match (scalar.group().joints.len(), wraps) {
+                $(($n, false) => match settings.checker {
+                    CheckerKind::Batch => plan::<$n, $n, _>(&scalar, &batch, &start, &goal, settings),
+                    CheckerKind::Scalar => plan::<$n, $n, _>(&scalar, &scalar, &start, &goal, settings),
+                },
+                ($n, true) => match settings.checker {
+                    CheckerKind::Batch => plan::<$n, { 2 * $n }, _>(&scalar, &batch, &start, &goal, settings),
+                    CheckerKind::Scalar => plan::<$n, { 2 * $n }, _>(&scalar, &scalar, &start, &goal, settings),
                 },)*
-                n => Err(RobotError::Dimension { expected: 7, found: n }),
+                (n, _) => Err(RobotError::Dimension { expected: 7, found: n }),
             }
         };
     }
@@ -231,17 +238,17 @@ pub fn solve(arm: &Arm, problem: &MbmProblem, settings: Settings) -> Outcome {
     outcome
 }
 
-fn plan<const N: usize, V: trailmark::sample::Validity<Rn<N>>>(
+fn plan<const N: usize, const D: usize, V: trailmark::sample::Validity<Joints<N>>>(
     scalar: &ArmChecker,
     validity: &V,
     start: &[f64],
     goal: &[f64],
     settings: Settings,
 ) -> Result<Outcome, RobotError> {
-    let space = scalar.space::<N>()?;
+    let space = scalar.joint_space::<N>()?;
     let to = |v: &[f64]| trailmark::robot::nalgebra::SVector::<f64, N>::from_column_slice(v);
     let problem = Problem::new(&space, validity, to(start), to(goal));
-    let nearest = KdNearest::<Rn<N>, N>::new(&space).map_err(|e| RobotError::Invalid {
+    let nearest = KdNearest::<Joints<N>, D>::new(&space).map_err(|e| RobotError::Invalid {
         element: scalar.group().name.clone(),
         attribute: "limits",
         reason: "a joint space the nearest-neighbour search takes",

@@ -29,7 +29,7 @@
 //! joints above it.
 
 use nalgebra::{Point3, SVector};
-use trailmark_space::{Rn, SpaceError, Validity};
+use trailmark_space::{Joints, Rn, SpaceError, Validity};
 
 use crate::error::RobotError;
 use crate::motion;
@@ -165,15 +165,41 @@ impl ArmChecker {
         self.step
     }
 
-    /// The joint space of the group: a box of its joints' limits, `N` of them. Errors when the
-    /// group has another number of joints.
+    /// The joint space of the group as a box of its joints' limits, `N` of them. Errors when
+    /// the group has another number of joints, or a continuous joint (a box would not wrap it:
+    /// [`joint_space`](Self::joint_space) does).
     pub fn space<const N: usize>(&self) -> Result<Rn<N>, RobotError> {
+        if self.group.joints.len() != N {
+            return Err(RobotError::Dimension { expected: N, found: self.group.joints.len() });
+        }
+        if let Some(i) = self.group.wraps.iter().position(|&w| w) {
+            return Err(RobotError::UnsupportedJoint {
+                joint: self.group.names[i].clone(),
+                kind: "continuous",
+            });
+        }
+        let low = SVector::<f64, N>::from_fn(|i, _| self.group.bounds[i].0);
+        let high = SVector::<f64, N>::from_fn(|i, _| self.group.bounds[i].1);
+        Rn::new(low, high).map_err(|e: SpaceError| RobotError::Invalid {
+            element: self.group.name.clone(),
+            attribute: "limits",
+            reason: "a box of positive width on every joint",
+            value: e.to_string(),
+        })
+    }
+
+    /// The joint space of any group, `N` joints: its joints' limits, the continuous joints
+    /// wrapping around (moved the short way round, as the checkers move them). A k-d tree over
+    /// it needs `N` plus [`Joints::wrapping`] coordinates. Errors when the group has another
+    /// number of joints.
+    pub fn joint_space<const N: usize>(&self) -> Result<Joints<N>, RobotError> {
         if self.group.joints.len() != N {
             return Err(RobotError::Dimension { expected: N, found: self.group.joints.len() });
         }
         let low = SVector::<f64, N>::from_fn(|i, _| self.group.bounds[i].0);
         let high = SVector::<f64, N>::from_fn(|i, _| self.group.bounds[i].1);
-        Rn::new(low, high).map_err(|e: SpaceError| RobotError::Invalid {
+        let wraps = std::array::from_fn(|i| self.group.wraps[i]);
+        Joints::new(low, high, wraps).map_err(|e: SpaceError| RobotError::Invalid {
             element: self.group.name.clone(),
             attribute: "limits",
             reason: "a box of positive width on every joint",
@@ -189,21 +215,23 @@ impl ArmChecker {
     }
 
     /// Whether the straight motion from `a` to `b` in joint space is free, as the
-    /// [module](self) says.
+    /// [module](self) says; continuous joints turn the short way round.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
         let dims = self.group.joints.len();
         if a.len() != dims || b.len() != dims || !a.iter().chain(b).all(|v| v.is_finite()) {
             return false;
         }
-        let speeds: Vec<f64> = self.reach.iter().map(|r| speed(r, a, b)).collect();
-        let pair_speeds: Vec<f64> = self.pair_reach.iter().map(|r| speed(r, a, b)).collect();
+        let mut delta = Vec::with_capacity(dims);
+        motion_delta(&self.group, a, b, &mut delta);
+        let speeds: Vec<f64> = self.reach.iter().map(|r| speed(r, &delta)).collect();
+        let pair_speeds: Vec<f64> = self.pair_reach.iter().map(|r| speed(r, &delta)).collect();
         let rate = speeds.iter().fold(0.0, |m: f64, &v| m.max(v));
         let mut q = vec![0.0; a.len()];
         let (mut grows, mut pair_grows) = (vec![0.0; speeds.len()], vec![0.0; pair_speeds.len()]);
         motion::covered(rate, self.step / 2.0, 1, |batch, _| {
             let s = batch[0];
             for (d, v) in q.iter_mut().enumerate() {
-                *v = lerp(a[d], b[d], s.t);
+                *v = along(a[d], delta[d], s.t);
             }
             for (g, v) in grows.iter_mut().zip(&speeds).chain(pair_grows.iter_mut().zip(&pair_speeds)) {
                 *g = if rate > 0.0 { s.grow * v / rate } else { 0.0 };
@@ -290,12 +318,6 @@ pub struct Contact {
     pub with: String,
     /// How far their deepest spheres overlap, in metres (0 when they just touch).
     pub depth: f64,
-}
-
-/// The joint value at `t` of the way from `x` to `y`: the one formula both checkers check
-/// motions at.
-pub(crate) fn lerp(x: f64, y: f64, t: f64) -> f64 {
-    x + (y - x) * t
 }
 
 /// Whether a sphere at `c` of radius `r` touches obstacle `o`.
@@ -392,10 +414,26 @@ pub(crate) fn driver(robot: &Robot, group: &Group, j: usize) -> Option<(usize, f
     group.joints.iter().position(|&g| g == followed).map(|v| (v, multiplier, offset))
 }
 
-/// How fast something moves along the motion from `a` to `b` at most, for its `reach` per
-/// group joint: `Σ reach[k] |b[k] - a[k]|`.
-pub(crate) fn speed(reach: &[f64], a: &[f64], b: &[f64]) -> f64 {
-    reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum()
+/// How fast something moves along a motion of joint differences `delta` at most, for its
+/// `reach` per group joint: `Σ reach[k] |delta[k]|`.
+pub(crate) fn speed(reach: &[f64], delta: &[f64]) -> f64 {
+    reach.iter().zip(delta).map(|(r, d)| r * d.abs()).sum()
+}
+
+/// The motion from `a` to `b` joint by joint into `out`: `b - a`, a continuous joint's the short
+/// way round (within `[-π, π]`; its end may then lie beyond ±π, where it is the same angle).
+pub(crate) fn motion_delta(group: &Group, a: &[f64], b: &[f64], out: &mut Vec<f64>) {
+    out.clear();
+    out.extend(a.iter().zip(b).zip(&group.wraps).map(|((x, y), &wraps)| {
+        let d = y - x;
+        if wraps { d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round() } else { d }
+    }));
+}
+
+/// The joint value a fraction `t` along its motion from `a` by `delta`: the one formula both
+/// checkers check motions at.
+pub(crate) fn along(a: f64, delta: f64, t: f64) -> f64 {
+    a + delta * t
 }
 
 /// The longest `link` can be from `top`'s frame, over every configuration, when `link` is at or
@@ -416,11 +454,13 @@ pub(crate) fn chain_length(robot: &Robot, extension: &[f64], top: usize, link: u
     Some(length)
 }
 
-/// Per joint of the robot, the largest magnitude its value takes: a group joint's limits, a
+/// Per joint of the robot, the largest magnitude its value takes: a group joint's limits (2π
+/// for a continuous one: a motion's end turned the short way round from within ±π), a
 /// mimic's multiple of its leader's plus its offset, any other joint's value in `template`
 /// (the start state's, which it keeps, even beyond its limits).
 pub(crate) fn extension(robot: &Robot, group: &Group, template: &[f64]) -> Vec<f64> {
     let own = |j: usize| match group.joints.iter().position(|&g| g == j) {
+        Some(v) if group.wraps[v] => std::f64::consts::TAU,
         Some(v) => group.bounds[v].0.abs().max(group.bounds[v].1.abs()),
         None => template[j].abs(),
     };
@@ -438,6 +478,16 @@ impl<const N: usize> Validity<Rn<N>> for ArmChecker {
     }
 
     fn motion_is_valid(&self, _: &Rn<N>, a: &SVector<f64, N>, b: &SVector<f64, N>) -> bool {
+        self.motion_is_free(a.as_slice(), b.as_slice())
+    }
+}
+
+impl<const N: usize> Validity<Joints<N>> for ArmChecker {
+    fn state_is_valid(&self, _: &Joints<N>, q: &SVector<f64, N>) -> bool {
+        self.is_free(q.as_slice())
+    }
+
+    fn motion_is_valid(&self, _: &Joints<N>, a: &SVector<f64, N>, b: &SVector<f64, N>) -> bool {
         self.motion_is_free(a.as_slice(), b.as_slice())
     }
 }

@@ -83,8 +83,10 @@ pub enum RobotError {
     /// Groups include each other.
     #[error("group {0:?} includes itself")]
     GroupCycle(String),
-    /// A group has a joint the planner cannot move along a bounded interval (floating, planar,
-    /// or a continuous joint, which a later version wraps).
+    /// A group has a joint the planner cannot move (floating, planar, or a revolute or
+    /// prismatic joint without limits); or a continuous joint where the joint space asked for
+    /// is a box ([`ArmChecker::space`](crate::ArmChecker::space); use
+    /// [`ArmChecker::joint_space`](crate::ArmChecker::joint_space)).
     #[error("joint {joint:?} of the group is {kind}, which the joint space does not take")]
     UnsupportedJoint {
         /// The joint.

@@ -75,8 +75,9 @@ impl Request {
 
     /// The start and the goal of `group`, one value per group joint in its order: from the
     /// start state and the goal constraints, each within the joint's limits or at most
-    /// [`BOUNDS_TOLERANCE`] outside them (then taken on the limit). Errors on a group joint
-    /// either leaves out or a value further outside.
+    /// [`BOUNDS_TOLERANCE`] outside them (then taken on the limit); a continuous joint's any
+    /// finite angle, brought into `[-π, π]` by whole turns. Errors on a group joint either
+    /// leaves out or a value further outside.
     pub fn ends(&self, group: &Group) -> Result<(Vec<f64>, Vec<f64>), RobotError> {
         Ok((group_values(group, &self.start)?, group_values(group, &self.goal)?))
     }
@@ -87,7 +88,8 @@ fn group_values(group: &Group, values: &[(String, f64)]) -> Result<Vec<f64>, Rob
         .names
         .iter()
         .zip(&group.bounds)
-        .map(|(name, &(lower, upper))| {
+        .zip(&group.wraps)
+        .map(|((name, &(lower, upper)), &wraps)| {
             let value = values.iter().find(|(n, _)| n == name).map(|&(_, v)| v).ok_or_else(|| {
                 RobotError::JointValue {
                     joint: name.clone(),
@@ -95,6 +97,10 @@ fn group_values(group: &Group, values: &[(String, f64)]) -> Result<Vec<f64>, Rob
                     value: f64::NAN,
                 }
             })?;
+            if wraps && value.is_finite() {
+                let turns = ((value + std::f64::consts::PI) / std::f64::consts::TAU).floor();
+                return Ok((value - turns * std::f64::consts::TAU).clamp(lower, upper));
+            }
             if value < lower - BOUNDS_TOLERANCE || value > upper + BOUNDS_TOLERANCE {
                 return Err(RobotError::JointValue {
                     joint: name.clone(),

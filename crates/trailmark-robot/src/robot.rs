@@ -40,8 +40,10 @@ pub struct Group {
     pub joints: Vec<usize>,
     /// Their names.
     pub names: Vec<String>,
-    /// Their limits, `(lower, upper)`.
+    /// Their limits, `(lower, upper)`; `(-π, π)` for a continuous joint.
     pub bounds: Vec<(f64, f64)>,
+    /// Which of them are continuous: angles that wrap around, moved the short way round.
+    pub wraps: Vec<bool>,
 }
 
 impl Robot {
@@ -202,9 +204,9 @@ impl Robot {
 
     /// The group `name` of `srdf`, resolved as MoveIt does: its joints, the joint above each of
     /// its links, the joints of each chain from its base link down to its tip, and its
-    /// subgroups'; planned are the revolute and prismatic ones that mimic no other, in the
-    /// tree's order. Errors on unknown names, a chain that does not lead down from base to tip,
-    /// groups that include themselves, and a group joint that is continuous, floating or planar.
+    /// subgroups'; planned are the revolute, continuous and prismatic ones that mimic no other,
+    /// in the tree's order. Errors on unknown names, a chain that does not lead down from base
+    /// to tip, groups that include themselves, and a group joint that is floating or planar.
     pub fn group(&self, srdf: &Srdf, name: &str) -> Result<Group, RobotError> {
         let mut members = vec![false; self.urdf.joints.len()];
         self.collect(srdf, name, &mut members, &mut Vec::new())?;
@@ -214,20 +216,23 @@ impl Robot {
             if !members[j] || joint.kind == JointKind::Fixed || self.mimic[j].is_some() {
                 continue;
             }
-            let Some(limits) =
-                joint.limits.filter(|_| matches!(joint.kind, JointKind::Revolute | JointKind::Prismatic))
-            else {
-                return Err(RobotError::UnsupportedJoint {
-                    joint: joint.name.clone(),
-                    kind: joint.kind.name(),
-                });
+            let bounds = match (joint.kind, joint.limits) {
+                (JointKind::Continuous, _) => (-std::f64::consts::PI, std::f64::consts::PI),
+                (JointKind::Revolute | JointKind::Prismatic, Some(l)) => (l.lower, l.upper),
+                _ => {
+                    return Err(RobotError::UnsupportedJoint {
+                        joint: joint.name.clone(),
+                        kind: joint.kind.name(),
+                    });
+                }
             };
-            joints.push((j, limits));
+            joints.push((j, bounds));
         }
         Ok(Group {
             name: name.to_string(),
             names: joints.iter().map(|&(j, _)| self.urdf.joints[j].name.clone()).collect(),
-            bounds: joints.iter().map(|&(_, l)| (l.lower, l.upper)).collect(),
+            bounds: joints.iter().map(|&(_, b)| b).collect(),
+            wraps: joints.iter().map(|&(j, _)| self.urdf.joints[j].kind == JointKind::Continuous).collect(),
             joints: joints.into_iter().map(|(j, _)| j).collect(),
         })
     }

@@ -95,8 +95,8 @@ pub use simplify::{shortcut, simplify, smooth};
 /// neighbours, connection rules.
 pub use trailmark_space::{
     Bridge, BruteForce, Connection, DEFAULT_ATTEMPTS, DEFAULT_SHARE, Direction, Draw, Dubins,
-    FootprintValidity, Gaussian, Halton, KdNearest, MAX_ATTEMPTS, NearestNeighbors, R2, ReedsShepp, Rn,
-    Sampled, SamplerError, Se2, SpaceError, StateSampler, StateSpace, Uniform, UnitCube, Validity,
+    FootprintValidity, Gaussian, Halton, Joints, KdNearest, MAX_ATTEMPTS, NearestNeighbors, R2, ReedsShepp,
+    Rn, Sampled, SamplerError, Se2, SpaceError, StateSampler, StateSpace, Uniform, UnitCube, Validity,
 };
 pub use tree::options::{MIN_RELATIVE_RANGE, RrtOptions};
 pub use tree::planner::TreePlanner;

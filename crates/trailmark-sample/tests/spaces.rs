@@ -5,8 +5,9 @@ use proptest::prelude::*;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use trailmark_core::world::Bounds;
+use trailmark_sample::SVector;
 use trailmark_sample::nearest::{BruteForce, Direction, KdNearest, NearestNeighbors};
-use trailmark_sample::space::{Dubins, R2, ReedsShepp, Rn, Se2, SpaceError, StateSpace};
+use trailmark_sample::space::{Dubins, Joints, R2, ReedsShepp, Rn, Se2, SpaceError, StateSpace};
 
 fn bounds() -> Bounds {
     Bounds::new(-5.0, 0.0, 15.0, 10.0).unwrap()
@@ -79,6 +80,9 @@ proptest! {
     fn kd_tree_equals_brute_force_in_every_space(seed in any::<u64>(), n in 1usize..400, k in 1usize..20, radius in 0.0f64..6.0) {
         agree::<_, 2>(&R2::new(bounds()), seed, n, k, radius)?;
         agree::<_, 3>(&Rn::new([0.0, -1.0, 2.0], [1.0, 1.0, 5.0]).unwrap(), seed, n, k, radius / 4.0)?;
+        // A wrapping joint: its cosine and sine, and a coordinate of padding.
+        let joints = Joints::new([0.0, -1.0, 2.0], [1.0, 1.0, 5.0], [false, true, false]).unwrap();
+        agree::<_, 5>(&joints, seed, n, k, radius / 4.0)?;
         agree::<_, 2>(&Se2::new(bounds()), seed, n, k, radius)?;
         agree::<_, 2>(&Dubins::new(bounds(), 0.4 + radius / 4.0).unwrap(), seed, n, k, radius + 1.0)?;
         agree::<_, 2>(&ReedsShepp::new(bounds(), 0.4 + radius / 4.0).unwrap(), seed, n, k, radius + 1.0)?;
@@ -92,6 +96,32 @@ proptest! {
         check(&R2::new(bounds()), seed, step)?;
         check(&Rn::new([0.0; 4], [1.0, 2.0, 3.0, 4.0]).unwrap(), seed, step)?;
         check(&Se2::new(bounds()), seed, step)?;
+        check(&Joints::new([0.0; 2], [1.0, 2.0], [true, false]).unwrap(), seed, step)?;
+    }
+
+    /// A wrapping joint's difference is the short way round: never more than π, and the
+    /// motion's states are those of turning by it; the positions' distance is a lower bound.
+    #[test]
+    fn wrapping_joints_turn_the_short_way(a in -3.2f64..3.2, b in -3.2f64..3.2, x in 0.0f64..1.0, y in 0.0f64..1.0, t in 0.0f64..1.0) {
+        use std::f64::consts::{PI, TAU};
+        let space = Joints::new([0.0, -PI], [1.0, PI], [false, true]).unwrap();
+        let (mut p, mut q) = (SVector::from([x, a]), SVector::from([y, b]));
+        space.enforce_bounds(&mut p);
+        space.enforce_bounds(&mut q);
+        prop_assert!(space.satisfies_bounds(&p) && space.satisfies_bounds(&q));
+        let turn = space.difference(&p, &q)[1];
+        prop_assert!(turn.abs() <= PI + 1e-12);
+        // The same angle as q's, up to whole turns.
+        let off = (p[1] + turn - q[1]) / TAU;
+        prop_assert!((off - off.round()).abs() < 1e-12);
+        prop_assert!((space.distance(&p, &q) - ((y - x).powi(2) + turn * turn).sqrt()).abs() < 1e-12);
+        let m = space.interpolate(&p, &q, t);
+        prop_assert!(space.satisfies_bounds(&m));
+        prop_assert!((space.distance(&p, &m) - t * space.distance(&p, &q)).abs() < 1e-9);
+        let (pp, pq) = (space.position::<3>(&p).unwrap(), space.position::<3>(&q).unwrap());
+        let line = (0..3).map(|i| (pp[i] - pq[i]).powi(2)).sum::<f64>().sqrt();
+        prop_assert!(line <= space.distance(&p, &q) + 1e-12);
+        prop_assert!(space.position::<2>(&p).is_none());
     }
 
     /// The same for Dubins motions. A pose a short arc ahead (what steering along a first arc

@@ -63,7 +63,7 @@ pub use sampler::{
     StateSampler, Uniform,
 };
 pub use space::{
-    Car, CarCurves, Dubins, DubinsCurves, R2, ReedsShepp, ReedsSheppCurves, Rn, Se2, SpaceError, StateSpace,
-    UnitCube,
+    Car, CarCurves, Dubins, DubinsCurves, Joints, R2, ReedsShepp, ReedsSheppCurves, Rn, Se2, SpaceError,
+    StateSpace, UnitCube,
 };
 pub use validity::{Sampled, Validity};

@@ -23,9 +23,9 @@ use std::cell::{Cell, RefCell};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use nalgebra::SVector;
-use trailmark_space::{Rn, Validity};
+use trailmark_space::{Joints, Rn, Validity};
 
-use crate::checker::{ArmChecker, lerp, speed};
+use crate::checker::{ArmChecker, along, motion_delta, speed};
 use crate::motion;
 use kernel::Scratch;
 use lanes::{LANES, Portable};
@@ -122,11 +122,12 @@ impl BatchChecker {
             return false;
         }
         // The buffers of the thread's last motion, kept for the next (none when one is in use).
-        let (mut speeds, mut scale, mut lanes) = BUFFERS.take();
+        let (mut delta, mut speeds, mut scale, mut lanes) = BUFFERS.take();
+        motion_delta(&self.checker.group, a, b, &mut delta);
         speeds.clear();
-        speeds.extend(self.program.frames.iter().map(|f| speed(&f.reach, a, b)));
+        speeds.extend(self.program.frames.iter().map(|f| speed(&f.reach, &delta)));
         let rate = speeds.iter().fold(0.0, |m: f64, &v| m.max(v));
-        speeds.extend(self.program.pairs.iter().map(|t| speed(&t.reach, a, b)));
+        speeds.extend(self.program.pairs.iter().map(|t| speed(&t.reach, &delta)));
         scale.clear();
         scale.extend(speeds.iter().map(|&v| if rate > 0.0 { (v / rate) as f32 } else { 0.0 }));
         lanes.clear();
@@ -137,7 +138,7 @@ impl BatchChecker {
                 // Lanes beyond the batch repeat its first state.
                 let sample = batch.get(l).unwrap_or(&batch[0]);
                 for (d, lane) in lanes.iter_mut().enumerate() {
-                    lane[l] = lerp(a[d], b[d], sample.t) as f32;
+                    lane[l] = along(a[d], delta[d], sample.t) as f32;
                 }
                 grow[l] = sample.grow as f32;
             }
@@ -146,14 +147,19 @@ impl BatchChecker {
             let stop = if stop & 1 != 0 { stop as u8 | beyond } else { stop as u8 };
             u32::from(self.run(&lanes, &grow, &scale, stop) & !beyond)
         });
-        BUFFERS.set((speeds, scale, lanes));
+        BUFFERS.set((delta, speeds, scale, lanes));
         free
     }
 
-    /// Whether `q` has a finite value per group joint, each within the joint's limits.
+    /// Whether `q` has a finite value per group joint, each within the joint's limits (any
+    /// angle within ±2π for a continuous joint: the pair floors, taken over a whole turn, hold
+    /// for every angle).
     fn within_limits(&self, q: &[f64]) -> bool {
-        let bounds = &self.checker.group.bounds;
-        q.len() == bounds.len() && q.iter().zip(bounds).all(|(v, (low, high))| low <= v && v <= high)
+        let group = &self.checker.group;
+        q.len() == group.bounds.len()
+            && q.iter().zip(&group.bounds).zip(&group.wraps).all(|((v, (low, high)), &wraps)| {
+                if wraps { v.abs() <= std::f64::consts::TAU } else { low <= v && v <= high }
+            })
     }
 
     fn run(&self, q: &[[f32; LANES]], grow: &[f32; LANES], scale: &[f32], stop: u8) -> u8 {
@@ -174,11 +180,11 @@ thread_local! {
     /// The kernel's working space, one per thread.
     static SCRATCH: RefCell<Scratch> = RefCell::default();
     /// A motion's buffers, between motions.
-    static BUFFERS: Cell<MotionBuffers> = const { Cell::new((Vec::new(), Vec::new(), Vec::new())) };
+    static BUFFERS: Cell<MotionBuffers> = const { Cell::new((Vec::new(), Vec::new(), Vec::new(), Vec::new())) };
 }
 
-/// A motion's speeds, growth scales and lanes of joint values.
-type MotionBuffers = (Vec<f64>, Vec<f32>, Vec<[f32; LANES]>);
+/// A motion's joint differences, speeds, growth scales and lanes of joint values.
+type MotionBuffers = (Vec<f64>, Vec<f64>, Vec<f32>, Vec<[f32; LANES]>);
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
@@ -203,6 +209,16 @@ impl<const N: usize> Validity<Rn<N>> for BatchChecker {
     }
 }
 
+impl<const N: usize> Validity<Joints<N>> for BatchChecker {
+    fn state_is_valid(&self, _: &Joints<N>, q: &SVector<f64, N>) -> bool {
+        self.is_free(q.as_slice())
+    }
+
+    fn motion_is_valid(&self, _: &Joints<N>, a: &SVector<f64, N>, b: &SVector<f64, N>) -> bool {
+        self.motion_is_free(a.as_slice(), b.as_slice())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use proptest::prelude::*;
@@ -215,7 +231,8 @@ mod tests {
 
     /// A three-joint arm on a post (turning about z, then two about y), two spheres a link, and
     /// a scene of one box, one cylinder and one sphere where the strategy puts them.
-    fn world(obstacles: [(f64, f64, f64); 3], size: f64) -> (ArmChecker, BatchChecker) {
+    /// A three-joint arm among a box, a can and a ball; its first joint continuous or not.
+    fn world(obstacles: [(f64, f64, f64); 3], size: f64, continuous: bool) -> (ArmChecker, BatchChecker) {
         let link = |name: &str, length: f64| {
             format!(
                 r#"<link name="{name}"><collision><origin xyz="{} 0 0"/><geometry><sphere radius="0.02"/></geometry></collision>
@@ -225,13 +242,14 @@ mod tests {
         };
         let urdf = format!(
             r#"<robot name="arm"><link name="base"/>{}{}{}
-              <joint name="a" type="revolute"><parent link="base"/><child link="one"/><origin xyz="0 0 0.3"/><axis xyz="0 0 1"/><limit lower="-3" upper="3"/></joint>
+              <joint name="a" type="{}"><parent link="base"/><child link="one"/><origin xyz="0 0 0.3"/><axis xyz="0 0 1"/><limit lower="-3" upper="3"/></joint>
               <joint name="b" type="revolute"><parent link="one"/><child link="two"/><origin xyz="0.4 0 0"/><axis xyz="0 1 0"/><limit lower="-2.5" upper="2.5"/></joint>
               <joint name="c" type="revolute"><parent link="two"/><child link="three"/><origin xyz="0.35 0 0"/><axis xyz="0 1 0"/><limit lower="-2.5" upper="2.5"/></joint>
             </robot>"#,
             link("one", 0.4),
             link("two", 0.35),
-            link("three", 0.3)
+            link("three", 0.3),
+            if continuous { "continuous" } else { "revolute" },
         );
         let srdf = Srdf::parse(r#"<robot name="arm"><group name="arm"><chain base_link="base" tip_link="three"/></group></robot>"#)
             .unwrap();
@@ -312,8 +330,9 @@ world:
             obstacles in [place(), place(), place()],
             size in 0.05..0.6f64,
             qs in prop::collection::vec(joints(), 40),
+            continuous in any::<bool>(),
         ) {
-            let (exact, fast) = world(obstacles, size);
+            let (exact, fast) = world(obstacles, size, continuous);
             let portable = fast.clone().with_simd(Simd::Portable);
             for q in &qs {
                 let free = fast.is_free(q);
@@ -323,15 +342,17 @@ world:
         }
 
         /// Motions: one called free by either checker has every state along it free (sampled a
-        /// thousand times, far finer than either checks), and the two codes agree. Small
-        /// obstacles, which a motion checked too sparsely would pass through.
+        /// thousand times, far finer than either checks; a continuous first joint turned the
+        /// short way round), and the two codes agree. Small obstacles, which a motion checked
+        /// too sparsely would pass through.
         #[test]
         fn free_motions_are_free_all_along(
             obstacles in [place(), place(), place()],
             size in 0.005..0.2f64,
             ends in prop::collection::vec((joints(), joints()), 30),
+            continuous in any::<bool>(),
         ) {
-            let (exact, fast) = world(obstacles, size);
+            let (exact, fast) = world(obstacles, size, continuous);
             let portable = fast.clone().with_simd(Simd::Portable);
             for (a, b) in &ends {
                 let free = fast.motion_is_free(a, b);
@@ -339,7 +360,12 @@ world:
                 for called in [free, exact.motion_is_free(a, b)] {
                     if called {
                         for i in 0..=1000 {
-                            let q: Vec<f64> = a.iter().zip(b).map(|(x, y)| lerp(*x, *y, i as f64 / 1000.0)).collect();
+                            let turn = |d: usize| {
+                                let delta = b[d] - a[d];
+                                let short = delta - std::f64::consts::TAU * (delta / std::f64::consts::TAU).round();
+                                if d == 0 && continuous { short } else { delta }
+                            };
+                            let q: Vec<f64> = (0..3).map(|d| a[d] + turn(d) * (i as f64 / 1000.0)).collect();
                             prop_assert!(exact.is_free(&q), "a free motion collides at {}", i);
                         }
                     }

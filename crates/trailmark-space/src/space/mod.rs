@@ -2,8 +2,9 @@
 //!
 //! A [`StateSpace`] samples states uniformly, measures the distance from one state to another
 //! (possibly asymmetric: a car cannot reverse), interpolates between them, and steers from one
-//! toward another by at most a step. Five are provided: [`R2`] (a point in the plane), [`Rn`]
-//! (a box of any fixed dimension, such as an arm's joint angles), [`Se2`] (a pose: position and
+//! toward another by at most a step. Six are provided: [`R2`] (a point in the plane), [`Rn`]
+//! (a box of any fixed dimension, such as an arm's joint angles), [`Joints`] (a robot's joints,
+//! continuous ones wrapping around), [`Se2`] (a pose: position and
 //! heading, with a weight on the heading), [`Dubins`] (a pose of a car that turns no tighter
 //! than a radius: distances and motions along Dubins curves) and [`ReedsShepp`] (the same car
 //! driving in reverse too, along Reeds-Shepp curves). Users implement the trait for their own
@@ -38,11 +39,13 @@ use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::Bounds;
 
 mod car;
+mod joints;
 mod r2;
 mod rn;
 mod se2;
 
 pub use car::{Car, CarCurves, Dubins, DubinsCurves, ReedsShepp, ReedsSheppCurves};
+pub use joints::Joints;
 pub use r2::R2;
 pub use rn::Rn;
 pub use se2::Se2;

@@ -124,6 +124,23 @@ pub struct Outcome {
     pub failure: Option<String>,
 }
 
+impl Outcome {
+    /// A problem that could not be planned, and why.
+    pub fn failed(why: String) -> Outcome {
+        Outcome {
+            status: "error",
+            time: Duration::ZERO,
+            simplify_time: Duration::ZERO,
+            planned_length: 0.0,
+            path: Vec::new(),
+            checks: 0,
+            batches: 0,
+            joints: Vec::new(),
+            failure: Some(why),
+        }
+    }
+}
+
 /// The robot and its semantic description, read once.
 pub struct Arm {
     pub robot: Robot,
@@ -157,37 +174,50 @@ const SHORTCUT_ATTEMPTS: usize = 20;
 /// 5.42 to 4.93 radians, five to 4.89 at twice the time.
 const SMOOTHING_PASSES: usize = 2;
 
-/// Plans `problem` with the settings' kind of checker and checks the path independently.
-pub fn solve(arm: &Arm, problem: &MbmProblem, settings: Settings) -> Outcome {
-    let error = |e: RobotError| Outcome {
-        status: "error",
-        time: Duration::ZERO,
-        simplify_time: Duration::ZERO,
-        planned_length: 0.0,
-        path: Vec::new(),
-        checks: 0,
-        batches: 0,
-        joints: Vec::new(),
-        failure: Some(e.to_string()),
-    };
-    let setup = || -> Result<_, RobotError> {
+/// A problem read: its scene, the robot's start values, the group's start and goal, the
+/// checker planned with and the one a path is checked again by (a tenth of the step).
+pub struct Prepared {
+    pub scene: Scene,
+    /// A value per joint of the robot (the request's start state).
+    pub template: Vec<f64>,
+    pub start: Vec<f64>,
+    pub goal: Vec<f64>,
+    pub scalar: ArmChecker,
+    pub reference: ArmChecker,
+}
+
+impl Prepared {
+    /// Reads `problem`'s files and builds its checkers.
+    pub fn new(arm: &Arm, problem: &MbmProblem) -> Result<Prepared, RobotError> {
         let scene = Scene::from_file(&problem.scene)?;
         let request = Request::from_file(&problem.request)?;
         let group = arm.robot.group(&arm.srdf, &request.group)?;
-        let values = request.start_values(&arm.robot)?;
+        let template = request.start_values(&arm.robot)?;
         let (start, goal) = request.ends(&group)?;
-        let scalar = ArmChecker::new(arm.robot.clone(), &arm.srdf, group, &scene, values, DEFAULT_STEP)?;
+        let scalar = ArmChecker::new(
+            arm.robot.clone(),
+            &arm.srdf,
+            group.clone(),
+            &scene,
+            template.clone(),
+            DEFAULT_STEP,
+        )?;
         let reference = ArmChecker::new(
             arm.robot.clone(),
             &arm.srdf,
-            scalar.group().clone(),
+            group,
             &scene,
-            request.start_values(&arm.robot)?,
+            template.clone(),
             DEFAULT_STEP / 10.0,
         )?;
-        Ok((scalar, reference, start, goal))
-    };
-    let (scalar, reference, start, goal) = match setup() {
+        Ok(Prepared { scene, template, start, goal, scalar, reference })
+    }
+}
+
+/// Plans `problem` with the settings' kind of checker and checks the path independently.
+pub fn solve(arm: &Arm, problem: &MbmProblem, settings: Settings) -> Outcome {
+    let error = |e: RobotError| Outcome::failed(e.to_string());
+    let Prepared { scalar, reference, start, goal, .. } = match Prepared::new(arm, problem) {
         Ok(s) => s,
         Err(e) => return error(e),
     };
@@ -309,7 +339,7 @@ fn plan<const N: usize, const D: usize, V: trailmark::sample::Validity<Joints<N>
 }
 
 /// Why `path` fails the independent check, if it does.
-fn check_path(reference: &ArmChecker, path: &[Vec<f64>], start: &[f64], goal: &[f64]) -> Option<String> {
+pub fn check_path(reference: &ArmChecker, path: &[Vec<f64>], start: &[f64], goal: &[f64]) -> Option<String> {
     if path.first().map(Vec::as_slice) != Some(start) || path.last().map(Vec::as_slice) != Some(goal) {
         return Some("the path does not run from the start to the goal".into());
     }

@@ -380,7 +380,7 @@ pub(crate) struct Moved {
 fn moved_by(robot: &Robot, group: &Group, model: &SphereModel, extension: &[f64]) -> Vec<Vec<Moved>> {
     let joints = &robot.urdf().joints;
     let driven: Vec<(usize, usize, f64)> = (0..joints.len())
-        .filter_map(|j| driver(robot, group, j).map(|(v, multiplier, _)| (j, v, multiplier.abs())))
+        .filter_map(|j| robot.driver(group, j).map(|(v, multiplier, _)| (j, v, multiplier.abs())))
         .filter(|&(j, _, _)| joints[j].kind != JointKind::Fixed)
         .collect();
     model
@@ -401,17 +401,6 @@ fn moved_by(robot: &Robot, group: &Group, model: &SphereModel, extension: &[f64]
                 .collect()
         })
         .collect()
-}
-
-/// The group joint that drives joint `j` of the robot: `(its index in the group, multiplier,
-/// offset)`, `(index, 1, 0)` for a group joint itself, the mimic's factors for a joint that
-/// mimics one; `None` for a joint the group does not move.
-pub(crate) fn driver(robot: &Robot, group: &Group, j: usize) -> Option<(usize, f64, f64)> {
-    if let Some(v) = group.joints.iter().position(|&g| g == j) {
-        return Some((v, 1.0, 0.0));
-    }
-    let (followed, multiplier, offset) = robot.mimic(j)?;
-    group.joints.iter().position(|&g| g == followed).map(|v| (v, multiplier, offset))
 }
 
 /// How fast something moves along a motion of joint differences `delta` at most, for its

@@ -202,6 +202,17 @@ impl Robot {
         j.origin * motion
     }
 
+    /// The group joint that drives joint `joint`: `(its index in the group, multiplier,
+    /// offset)`: `(index, 1, 0)` for a joint of the group, the mimic's factors for a joint
+    /// that mimics one; `None` for a joint the group does not move.
+    pub fn driver(&self, group: &Group, joint: usize) -> Option<(usize, f64, f64)> {
+        if let Some(v) = group.joints.iter().position(|&g| g == joint) {
+            return Some((v, 1.0, 0.0));
+        }
+        let (followed, multiplier, offset) = self.mimic(joint)?;
+        group.joints.iter().position(|&g| g == followed).map(|v| (v, multiplier, offset))
+    }
+
     /// The group `name` of `srdf`, resolved as MoveIt does: its joints, the joint above each of
     /// its links, the joints of each chain from its base link down to its tip, and its
     /// subgroups'; planned are the revolute, continuous and prismatic ones that mimic no other,

@@ -5,14 +5,16 @@
 //! The quick suite plans four problems a set, the full one all 700.
 
 use std::path::PathBuf;
+use std::time::Duration;
 
 use serde::Serialize;
 
+use crate::bench::ompl_arm::{ArmWorld, OmplArmDriver, OmplArmSettings};
 use crate::bench::progress::SectionProgress;
 use crate::bench::report::{GoalRow, table};
 use crate::bench::stats::{median, quantile, sorted};
 use crate::bench::suite::Suite;
-use crate::mbm::{self, Arm, CheckerKind, MbmProblem, Outcome, Settings};
+use crate::mbm::{self, Arm, CheckerKind, MbmProblem, Outcome, Prepared, Settings};
 
 /// The Panda's files and problems, beside the project.
 fn panda() -> PathBuf {
@@ -27,7 +29,8 @@ pub struct ArmRow {
     problems: usize,
     /// Solved within the time limit, the path passing the independent check.
     solved: usize,
-    /// Paths returned that failed the independent check (must be 0).
+    /// Paths returned that failed the independent check (must be 0 for trailmark's; OMPL's
+    /// discrete motion checks may pass through obstacles between their states).
     pub check_failures: usize,
     /// Planning time, µs: median and 95th percentile over the problems (unsolved ones at their
     /// time limit).
@@ -36,8 +39,8 @@ pub struct ArmRow {
     /// Planning and simplifying, µs.
     simplified_median_us: f64,
     simplified_p95_us: f64,
-    /// Validity calls (states and motions) per second of planning, as the planner counts them.
-    checks_per_s: f64,
+    /// trailmark's validity calls (states and motions) per second of planning.
+    checks_per_s: Option<f64>,
     /// Configurations tested per second of planning (`None` where not counted).
     states_per_s: Option<f64>,
     /// Median joint-space path length, radians: as planned, and simplified.
@@ -62,12 +65,14 @@ pub struct ArmReport {
     sets: Vec<ArmSetRow>,
     /// Why the section did not run, when it did not.
     skipped: Option<String>,
+    /// The versions of OMPL and FCL, when they ran.
+    peer: Option<String>,
 }
 
 impl ArmReport {
-    /// Paths that failed the independent check.
+    /// trailmark's paths that failed the independent check.
     pub fn errors(&self) -> usize {
-        self.rows.iter().map(|r| r.check_failures).sum()
+        self.rows.iter().filter(|r| r.planner.starts_with("trailmark")).map(|r| r.check_failures).sum()
     }
 }
 
@@ -80,9 +85,15 @@ fn chosen(suite: Suite, all: Vec<MbmProblem>) -> Vec<MbmProblem> {
     all.into_iter().enumerate().filter(|(i, _)| i % every == 0).map(|(_, p)| p).collect()
 }
 
-/// Plans the suite's problems with both checkers; a report that says why when the data is
-/// missing.
-pub fn bench(suite: Suite, seed: u64) -> Result<ArmReport, String> {
+/// The name of the OMPL rows: checking motions as MoveIt does, and every 5 mrad.
+const OMPL: &str = "OMPL RRTConnect + FCL";
+const OMPL_FINE: &str = "OMPL RRTConnect + FCL, 5 mrad";
+/// The finer resolution of OMPL's motion checks, radians.
+const FINE: f64 = 0.005;
+
+/// Plans the suite's problems with both checkers, and with OMPL and FCL when `driver` is given;
+/// a report that says why when the data is missing.
+pub fn bench(suite: Suite, seed: u64, driver: Option<&OmplArmDriver>) -> Result<ArmReport, String> {
     let dir = panda();
     let (urdf, srdf) = (dir.join("panda_spherized.urdf"), dir.join("panda.srdf"));
     if !urdf.is_file() {
@@ -92,7 +103,8 @@ pub fn bench(suite: Suite, seed: u64) -> Result<ArmReport, String> {
     }
     let arm = Arm::read(&urdf, &srdf).map_err(|e| e.to_string())?;
     let problems = chosen(suite, mbm::problems(&dir.join("problems"))?);
-    let mut progress = SectionProgress::new("arms", 2 * problems.len());
+    let runs = if driver.is_some() { 4 } else { 2 };
+    let mut progress = SectionProgress::new("arms", runs * problems.len());
     let mut rows = Vec::new();
     let mut batch_outcomes = Vec::new();
     for (checker, name) in
@@ -115,6 +127,18 @@ pub fn bench(suite: Suite, seed: u64) -> Result<ArmReport, String> {
         rows.push(row(name, &outcomes));
         if checker == CheckerKind::Batch {
             batch_outcomes = outcomes;
+        }
+    }
+    if let Some(driver) = driver {
+        for (name, resolution) in [(OMPL, None), (OMPL_FINE, Some(FINE))] {
+            let outcomes: Vec<Outcome> = problems
+                .iter()
+                .map(|p| {
+                    progress.step(format!("{name}: {}", p.name));
+                    ompl(driver, &arm, p, seed, resolution)
+                })
+                .collect();
+            rows.push(row(name, &outcomes));
         }
     }
     let set_of = |p: &MbmProblem| p.name.split('/').next().unwrap_or_default().to_string();
@@ -141,7 +165,57 @@ pub fn bench(suite: Suite, seed: u64) -> Result<ArmReport, String> {
             }
         })
         .collect();
-    Ok(ArmReport { rows, sets, skipped: None })
+    let peer = driver.map(|d| format!("OMPL {}, FCL {}", d.ompl_version, d.fcl_version));
+    Ok(ArmReport { rows, sets, skipped: None, peer })
+}
+
+/// OMPL's RRTConnect with FCL on `problem`, as MoveIt plans (its default motion resolution,
+/// unless `resolution` says another), with a range of 1 and a limit of 1 s like trailmark's
+/// runs; the simplified path checked again by the `f64` checker.
+fn ompl(
+    driver: &OmplArmDriver,
+    arm: &Arm,
+    problem: &MbmProblem,
+    seed: u64,
+    resolution: Option<f64>,
+) -> Outcome {
+    let prepared = match Prepared::new(arm, problem) {
+        Ok(p) => p,
+        Err(e) => return Outcome::failed(e.to_string()),
+    };
+    let group = prepared.scalar.group();
+    let world = ArmWorld {
+        robot: &arm.robot,
+        srdf: &arm.srdf,
+        group: &group.name,
+        scene: &prepared.scene,
+        template: &prepared.template,
+    };
+    let moveit = OmplArmSettings::moveit(group);
+    let resolution = resolution.unwrap_or(moveit.resolution);
+    let settings = OmplArmSettings { seed, time_limit_s: 1.0, simplify: true, resolution, ..moveit };
+    let run = match driver.plan(&world, &prepared.start, &prepared.goal, settings) {
+        Ok(runs) => match runs.into_iter().next() {
+            Some(run) => run,
+            None => return Outcome::failed("the driver returned no run".into()),
+        },
+        Err(e) => return Outcome::failed(e),
+    };
+    let exact = run.exact();
+    let path = if run.simplified.is_empty() { run.path.clone() } else { run.simplified.clone() };
+    Outcome {
+        status: if exact { "solved" } else { "stopped" },
+        time: Duration::from_secs_f64(run.time_s),
+        simplify_time: Duration::from_secs_f64(run.simplify_time_s.unwrap_or(0.0)),
+        planned_length: run.length.unwrap_or(0.0),
+        failure: exact
+            .then(|| mbm::check_path(&prepared.reference, &path, &prepared.start, &prepared.goal))
+            .flatten(),
+        path,
+        checks: run.checks,
+        batches: 0,
+        joints: group.names.clone(),
+    }
 }
 
 /// Whether the problem was solved and its path passed the independent check.
@@ -150,6 +224,9 @@ fn passed(o: &Outcome) -> bool {
 }
 
 fn row(planner: &str, outcomes: &[Outcome]) -> ArmRow {
+    // OMPL counts the states it checks; trailmark its validity calls, and the batch checker
+    // the states of its batches.
+    let ompl = planner.starts_with("OMPL");
     let times = sorted(outcomes.iter().map(|o| o.time.as_secs_f64() * 1e6).collect());
     let simplified =
         sorted(outcomes.iter().map(|o| (o.time + o.simplify_time).as_secs_f64() * 1e6).collect());
@@ -166,8 +243,12 @@ fn row(planner: &str, outcomes: &[Outcome]) -> ArmRow {
         p95_us: quantile(&times, 0.95),
         simplified_median_us: median(&simplified),
         simplified_p95_us: quantile(&simplified, 0.95),
-        checks_per_s: checks as f64 / planning.max(1e-9),
-        states_per_s: (batches > 0).then(|| 8.0 * batches as f64 / planning.max(1e-9)),
+        checks_per_s: (!ompl).then(|| checks as f64 / planning.max(1e-9)),
+        states_per_s: if ompl {
+            Some(checks as f64 / planning.max(1e-9))
+        } else {
+            (batches > 0).then(|| 8.0 * batches as f64 / planning.max(1e-9))
+        },
         length: median(&sorted(solved.iter().map(|o| o.planned_length).collect())),
         simplified_length: median(&sorted(solved.iter().map(|o| mbm::joint_length(&o.path)).collect())),
     }
@@ -195,7 +276,7 @@ pub fn goals(report: Option<&ArmReport>) -> Vec<GoalRow> {
         },
         GoalRow {
             goal: "The batch checker's RRT-Connect at least 100x OMPL RRTConnect with FCL (median time)",
-            figures: speedups.into_iter().filter(|(name, _)| name.starts_with("OMPL")).collect(),
+            figures: speedups.into_iter().filter(|(name, _)| name == OMPL).collect(),
             target: 100.0,
             unit: "x",
             missing: "run with --with-ompl (libompl-dev, libfcl-dev)",
@@ -212,15 +293,21 @@ pub fn markdown(report: &ArmReport) -> String {
         "\n## Robot arms\n\nThe Panda (59 spheres) on MotionBenchMaker's problems, RRT-Connect (range 1 rad, 1 s limit per \
          problem), each path checked again by the `f64` sphere checker at a tenth of the 1 mm step; times on one core, the \
          simplified ones including the planning. Checks are validity calls (states and motions), states the configurations \
-         tested.\n\n",
+         tested. OMPL (with `--with-ompl`): RRTConnect with FCL on the same spheres and primitives, motions checked at \
+         states as MoveIt checks them (every 0.5% of the joint space's extent, 0.067 rad for the Panda) and every 5 mrad; a \
+         motion may cross an obstacle between its states, which the check failures count; simplified by \
+         `simplifySolution`. The goal is measured against the first.\n\n",
     );
+    if let Some(peer) = &report.peer {
+        out.push_str(&format!("Peer: {peer}.\n\n"));
+    }
     out.push_str(&table(
         "| planner | problems | solved | check failures | median µs | p95 µs | simplified median µs | simplified p95 µs | checks/s | states/s | length (rad) | simplified length |",
         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
         &report.rows,
         |r| {
             format!(
-                "| {} | {} | {} | {} | {:.0} | {:.0} | {:.0} | {:.0} | {:.0} | {} | {:.2} | {:.2} |",
+                "| {} | {} | {} | {} | {:.0} | {:.0} | {:.0} | {:.0} | {} | {} | {:.2} | {:.2} |",
                 r.planner,
                 r.problems,
                 r.solved,
@@ -229,7 +316,7 @@ pub fn markdown(report: &ArmReport) -> String {
                 r.p95_us,
                 r.simplified_median_us,
                 r.simplified_p95_us,
-                r.checks_per_s,
+                r.checks_per_s.map_or("-".to_string(), |c| format!("{c:.0}")),
                 r.states_per_s.map_or("-".to_string(), |s| format!("{s:.0}")),
                 r.length,
                 r.simplified_length

@@ -21,6 +21,7 @@ mod contingency;
 mod grid;
 mod navigation;
 mod ompl;
+mod ompl_arm;
 mod peer;
 mod plots;
 mod progress;
@@ -44,6 +45,7 @@ use contingency::ContingencyRow;
 use grid::{GridPlanner, GridRow, PeerRatio};
 use navigation::{NavRatio, NavRow, ReplannerRatio};
 use ompl::OmplDriver;
+use ompl_arm::OmplArmDriver;
 use report::{Figure, GoalRow};
 use roadmaps::RoadmapReport;
 use rosmaps::RosMapRow;
@@ -87,9 +89,10 @@ pub struct Args {
         default_value = "grid,navigation,anytime,roadmaps,sampling,cars,contingency,rosmaps,arms"
     )]
     sections: Vec<Section>,
-    /// Also run OMPL's planners on the sampling and car sections' problems (needs libompl-dev and
-    /// nlohmann-json3-dev; compiles benches/ompl/driver.cpp). Without them: a message, and
-    /// the OMPL runs are skipped.
+    /// Also run OMPL's planners on the sampling, car and arm sections' problems (needs
+    /// libompl-dev and nlohmann-json3-dev, and for the arms libfcl-dev and libeigen3-dev;
+    /// compiles benches/ompl/driver.cpp and arm_driver.cpp). Without them: a message, and the
+    /// OMPL runs are skipped.
     #[arg(long)]
     with_ompl: bool,
 }
@@ -379,7 +382,14 @@ fn run_parts<'scope>(
     }
     let mut arms = None;
     if wants(Section::Arms) && args.only.is_empty() {
-        arms = Some(times.section("arms", || arms::bench(args.suite, args.seed))?);
+        let driver = args.with_ompl.then(|| match OmplArmDriver::build() {
+            Ok(d) => Some(d),
+            Err(e) => {
+                errln!("OMPL arm runs skipped: {e}");
+                None
+            }
+        });
+        arms = Some(times.section("arms", || arms::bench(args.suite, args.seed, driver.flatten().as_ref()))?);
     }
     Ok(Parts {
         maps,

@@ -132,7 +132,8 @@ struct OmplOutput {
     build: Option<OmplRoadmap>,
 }
 
-fn run_tool(command: &mut Command, what: &str) -> Result<String, String> {
+/// The standard output of `command`, trimmed; an error with its standard error when it fails.
+pub(super) fn run_tool(command: &mut Command, what: &str) -> Result<String, String> {
     let out = command.output().map_err(|e| format!("cannot run {what}: {e}"))?;
     if !out.status.success() {
         return Err(format!("{what} failed:\n{}", String::from_utf8_lossy(&out.stderr)));
@@ -140,16 +141,49 @@ fn run_tool(command: &mut Command, what: &str) -> Result<String, String> {
     Ok(String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
-fn pkg_config(args: &[&str]) -> Result<String, String> {
+/// What `pkg-config` answers to `args`.
+pub(super) fn pkg_config(args: &[&str]) -> Result<String, String> {
     run_tool(Command::new("pkg-config").args(args), &format!("pkg-config {}", args.join(" ")))
 }
 
-fn newer(a: &Path, b: &Path) -> bool {
+/// Whether file `a` is newer than `b` (or either's time is unknown).
+pub(super) fn newer(a: &Path, b: &Path) -> bool {
     let time = |p: &Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
     match (time(a), time(b)) {
         (Some(a), Some(b)) => a > b,
         _ => true,
     }
+}
+
+/// Compiles the C++17 driver `source` into `program` (its folder made) against the pkg-config
+/// `packages` and the libraries of `libraries` (only their `-l` part: Debian's ompl.pc names
+/// Boost files its runtime does not need, and fcl.pc a library folder CMake did not fill in),
+/// `objects` linked in too.
+pub(super) fn compile(
+    source: &Path,
+    program: &Path,
+    packages: &[&str],
+    libraries: &[&str],
+    objects: &[&Path],
+) -> Result<(), String> {
+    if let Some(folder) = program.parent() {
+        std::fs::create_dir_all(folder).map_err(|e| e.to_string())?;
+    }
+    let cflags = pkg_config(&[&["--cflags"], packages].concat())?;
+    let libs = pkg_config(&[&["--libs-only-l"], libraries].concat())?;
+    let compiler = std::env::var("CXX").unwrap_or_else(|_| "c++".into());
+    let mut command = Command::new(&compiler);
+    command
+        .args(["-O2", "-DNDEBUG"])
+        .args(cflags.split_whitespace())
+        .arg("-std=c++17")
+        .arg(source)
+        .arg("-o")
+        .arg(program)
+        .args(objects)
+        .args(libs.split_whitespace())
+        .args(["-ldl", "-lm"]);
+    run_tool(&mut command, &format!("the C++ compiler ({compiler})")).map(|_| ())
 }
 
 impl OmplDriver {
@@ -177,24 +211,8 @@ impl OmplDriver {
         let folder = root.join("target/ompl");
         let program = folder.join("ompl-driver");
         if newer(&source, &program) || newer(&library, &program) {
-            std::fs::create_dir_all(&folder).map_err(|e| e.to_string())?;
-            let cflags = pkg_config(&["--cflags", "ompl", "nlohmann_json"])?;
-            // Only the -l part: Debian's ompl.pc names Boost files its runtime does not need.
-            let libs = pkg_config(&["--libs-only-l", "ompl"])?;
-            let compiler = std::env::var("CXX").unwrap_or_else(|_| "c++".into());
-            errln!("compiling the OMPL driver ({compiler}, OMPL {version})...");
-            let mut command = Command::new(&compiler);
-            command
-                .args(["-O2", "-DNDEBUG"])
-                .args(cflags.split_whitespace())
-                .arg("-std=c++17")
-                .arg(&source)
-                .arg("-o")
-                .arg(&program)
-                .arg(&library)
-                .args(libs.split_whitespace())
-                .args(["-ldl", "-lm"]);
-            run_tool(&mut command, "the C++ compiler")?;
+            errln!("compiling the OMPL driver (OMPL {version})...");
+            compile(&source, &program, &["ompl", "nlohmann_json"], &["ompl"], &[&library])?;
         }
         Ok(OmplDriver { program, version })
     }

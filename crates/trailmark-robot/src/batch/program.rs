@@ -9,7 +9,7 @@
 
 use nalgebra::{Isometry3, Point3, Rotation3, Unit, UnitQuaternion, Vector3};
 
-use crate::checker::{ArmChecker, chain_length, clearance, driver};
+use crate::checker::{ArmChecker, chain_length, clearance};
 use crate::motion;
 use crate::scene::Shape;
 use crate::urdf::JointKind;
@@ -186,7 +186,7 @@ impl Program {
             }
             let moving =
                 matches!(joint.kind, JointKind::Revolute | JointKind::Continuous | JointKind::Prismatic);
-            match driver(robot, group, j).filter(|_| moving) {
+            match robot.driver(group, j).filter(|_| moving) {
                 Some((variable, multiplier, offset)) => {
                     let (turn, motion) = if joint.kind == JointKind::Prismatic {
                         let a = joint.axis.into_inner();

@@ -114,10 +114,13 @@ pub struct Outcome {
     pub simplify_time: Duration,
     /// The joint-space length of the planner's path (before simplification; 0 without one).
     pub planned_length: f64,
+    /// The length of the path returned (simplified when asked for).
+    pub length: f64,
     pub path: Vec<Vec<f64>>,
+    /// Validity calls (states and motions) while planning.
     pub checks: u64,
-    /// Batches of eight states the batch checker tested (0 with the scalar checker).
-    pub batches: u64,
+    /// States the batch checker tested while planning (0 with the scalar checker).
+    pub states: u64,
     /// The group's joints, in the path's order.
     pub joints: Vec<String>,
     /// Why the path fails the independent check, or the error.
@@ -132,9 +135,10 @@ impl Outcome {
             time: Duration::ZERO,
             simplify_time: Duration::ZERO,
             planned_length: 0.0,
+            length: 0.0,
             path: Vec::new(),
             checks: 0,
-            batches: 0,
+            states: 0,
             joints: Vec::new(),
             failure: Some(why),
         }
@@ -240,16 +244,17 @@ pub fn solve(arm: &Arm, problem: &MbmProblem, settings: Settings) -> Outcome {
     // A k-d tree over the joints' positions: N coordinates, twice that with continuous joints
     // (their cosines and sines).
     let wraps = scalar.group().wraps.contains(&true);
+    let (tested, none) = (|| batch.states(), || 0);
     macro_rules! by_dimension {
         ($($n:literal)*) => {
             match (scalar.group().joints.len(), wraps) {
                 $(($n, false) => match settings.checker {
-                    CheckerKind::Batch => plan::<$n, $n, _>(&scalar, &batch, &start, &goal, settings),
-                    CheckerKind::Scalar => plan::<$n, $n, _>(&scalar, &scalar, &start, &goal, settings),
+                    CheckerKind::Batch => plan::<$n, $n, _>(&scalar, &batch, &start, &goal, settings, &tested),
+                    CheckerKind::Scalar => plan::<$n, $n, _>(&scalar, &scalar, &start, &goal, settings, &none),
                 },
                 ($n, true) => match settings.checker {
-                    CheckerKind::Batch => plan::<$n, { 2 * $n }, _>(&scalar, &batch, &start, &goal, settings),
-                    CheckerKind::Scalar => plan::<$n, { 2 * $n }, _>(&scalar, &scalar, &start, &goal, settings),
+                    CheckerKind::Batch => plan::<$n, { 2 * $n }, _>(&scalar, &batch, &start, &goal, settings, &tested),
+                    CheckerKind::Scalar => plan::<$n, { 2 * $n }, _>(&scalar, &scalar, &start, &goal, settings, &none),
                 },)*
                 (n, _) => Err(RobotError::Dimension { expected: 7, found: n }),
             }
@@ -261,19 +266,21 @@ pub fn solve(arm: &Arm, problem: &MbmProblem, settings: Settings) -> Outcome {
         Err(e) => return error(e),
     };
     outcome.joints = scalar.group().names.clone();
-    outcome.batches = batch.batches();
     if outcome.status == "solved" {
         outcome.failure = check_path(&reference, &outcome.path, &start, &goal);
     }
     outcome
 }
 
+/// Plans from `start` to `goal` with `validity`; `tested()` counts the states it tested, read
+/// before simplifying.
 fn plan<const N: usize, const D: usize, V: trailmark::sample::Validity<Joints<N>>>(
     scalar: &ArmChecker,
     validity: &V,
     start: &[f64],
     goal: &[f64],
     settings: Settings,
+    tested: &dyn Fn() -> u64,
 ) -> Result<Outcome, RobotError> {
     let space = scalar.joint_space::<N>()?;
     let to = |v: &[f64]| trailmark::robot::nalgebra::SVector::<f64, N>::from_column_slice(v);
@@ -288,53 +295,28 @@ fn plan<const N: usize, const D: usize, V: trailmark::sample::Validity<Joints<N>
     let mut planner = RrtConnect::new(nearest).with_seed(settings.seed).with_options(options);
     let clock = Instant::now();
     let result = planner.solve(&problem, &Termination::time(settings.limit));
-    let time = clock.elapsed();
-    let (mut simplify_time, mut simplified) = (Duration::ZERO, None);
-    if settings.simplify
-        && let Ok(plan) = &result
-        && let Some(path) = plan.path()
-    {
+    let mut outcome = Outcome { time: clock.elapsed(), states: tested(), ..Outcome::failed(String::new()) };
+    let plan = match result {
+        Ok(plan) => plan,
+        Err(e) => return Ok(Outcome { status: "no_path", failure: Some(e.to_string()), ..outcome }),
+    };
+    outcome.checks = plan.stats.collision_checks;
+    let Some(planned) = plan.path() else {
+        return Ok(Outcome { status: "stopped", failure: None, ..outcome });
+    };
+    let mut path = planned.to_vec();
+    if settings.simplify {
         let clock = Instant::now();
-        simplified =
-            Some(simplify(&space, validity, path, SHORTCUT_ATTEMPTS, SMOOTHING_PASSES, settings.seed));
-        simplify_time = clock.elapsed();
+        path = simplify(&space, validity, planned, SHORTCUT_ATTEMPTS, SMOOTHING_PASSES, settings.seed);
+        outcome.simplify_time = clock.elapsed();
     }
-    Ok(match result {
-        Ok(plan) => match simplified.as_deref().or(plan.path()) {
-            Some(path) => Outcome {
-                status: "solved",
-                time,
-                simplify_time,
-                planned_length: plan.path().map_or(0.0, |p| paths::length(&space, p)),
-                path: path.iter().map(|q| q.as_slice().to_vec()).collect(),
-                checks: plan.stats.collision_checks,
-                batches: 0,
-                joints: Vec::new(),
-                failure: None,
-            },
-            None => Outcome {
-                status: "stopped",
-                time,
-                simplify_time,
-                planned_length: 0.0,
-                path: Vec::new(),
-                checks: plan.stats.collision_checks,
-                batches: 0,
-                joints: Vec::new(),
-                failure: None,
-            },
-        },
-        Err(e) => Outcome {
-            status: "no_path",
-            time,
-            simplify_time,
-            planned_length: 0.0,
-            path: Vec::new(),
-            checks: 0,
-            batches: 0,
-            joints: Vec::new(),
-            failure: Some(e.to_string()),
-        },
+    Ok(Outcome {
+        status: "solved",
+        failure: None,
+        planned_length: paths::length(&space, planned),
+        length: paths::length(&space, &path),
+        path: path.iter().map(|q| q.as_slice().to_vec()).collect(),
+        ..outcome
     })
 }
 
@@ -355,12 +337,6 @@ pub fn check_path(reference: &ArmChecker, path: &[Vec<f64>], start: &[f64], goal
         }
     }
     None
-}
-
-/// The length of a path of joint vectors (Euclidean in the joint space, radians and metres).
-pub fn joint_length(path: &[Vec<f64>]) -> f64 {
-    let distance = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum::<f64>().sqrt();
-    path.windows(2).map(|m| distance(&m[0], &m[1])).sum()
 }
 
 /// `verify mbm`: prints a line a failure and `N passed, M failed`, with the times.
@@ -394,7 +370,7 @@ pub fn run(args: &Args) -> ExitCode {
     let (mut times, mut with_simplification) = (Vec::new(), Vec::new());
     let (mut planned_lengths, mut lengths) = (Vec::new(), Vec::new());
     let mut checks = 0u64;
-    let mut batches = 0u64;
+    let mut states = 0u64;
     for problem in problems.iter().step_by(args.every as usize) {
         let outcome = solve(&arm, problem, settings);
         let ok = outcome.status == "solved" && outcome.failure.is_none();
@@ -404,14 +380,20 @@ pub fn run(args: &Args) -> ExitCode {
             failed += 1;
             println!("{}: {} {}", problem.name, outcome.status, outcome.failure.as_deref().unwrap_or(""));
         }
-        times.push(outcome.time.as_secs_f64());
-        with_simplification.push((outcome.time + outcome.simplify_time).as_secs_f64());
+        // Problems not solved count at the time limit (those refused before planning too).
+        let (time, simplified) = if ok {
+            (outcome.time, outcome.time + outcome.simplify_time)
+        } else {
+            (settings.limit.max(outcome.time), settings.limit.max(outcome.time))
+        };
+        times.push(time.as_secs_f64());
+        with_simplification.push(simplified.as_secs_f64());
         if ok {
             planned_lengths.push(outcome.planned_length);
-            lengths.push(joint_length(&outcome.path));
+            lengths.push(outcome.length);
         }
         checks += outcome.checks;
-        batches += outcome.batches;
+        states += outcome.states;
         if let Some(out) = &mut out {
             let line = json!({
                 "problem": problem.name,
@@ -431,7 +413,7 @@ pub fn run(args: &Args) -> ExitCode {
         times.get(((times.len() as f64 - 1.0) * q).round() as usize).copied().unwrap_or(0.0) * 1e6
     };
     println!(
-        "{passed} passed, {failed} failed; planning time median {:.1} µs, 95th percentile {:.1} µs, max {:.1} µs; {checks} checks, {batches} batches in {total:.3} s",
+        "{passed} passed, {failed} failed; planning time median {:.1} µs, 95th percentile {:.1} µs, max {:.1} µs; {checks} checks, {states} states tested in {total:.3} s",
         at(&mut times, 0.5),
         at(&mut times, 0.95),
         at(&mut times, 1.0),

@@ -217,7 +217,10 @@ impl Robot {
     /// its links, the joints of each chain from its base link down to its tip, and its
     /// subgroups'; planned are the revolute, continuous and prismatic ones that mimic no other,
     /// in the tree's order. Errors on unknown names, a chain that does not lead down from base
-    /// to tip, groups that include themselves, and a group joint that is floating or planar.
+    /// to tip, groups that include themselves, a group joint that is floating or planar, and a
+    /// continuous group joint that another joint mimics by other than whole turns (a
+    /// prismatic joint, or a fractional multiplier: the robot would not look the same a turn
+    /// later).
     pub fn group(&self, srdf: &Srdf, name: &str) -> Result<Group, RobotError> {
         let mut members = vec![false; self.urdf.joints.len()];
         self.collect(srdf, name, &mut members, &mut Vec::new())?;
@@ -238,6 +241,21 @@ impl Robot {
                 }
             };
             joints.push((j, bounds));
+        }
+        // A continuous joint wraps only if the robot looks the same a turn later: a joint that
+        // mimics it must turn by whole turns too.
+        for (j, mimic) in self.mimic.iter().enumerate() {
+            let Some((leader, multiplier, _)) = *mimic else { continue };
+            let wrapped = joints.iter().any(|&(g, _)| g == leader)
+                && self.urdf.joints[leader].kind == JointKind::Continuous;
+            let turns = matches!(self.urdf.joints[j].kind, JointKind::Revolute | JointKind::Continuous)
+                && multiplier == multiplier.round();
+            if wrapped && !turns && self.urdf.joints[j].kind != JointKind::Fixed {
+                return Err(RobotError::UnsupportedJoint {
+                    joint: self.urdf.joints[leader].name.clone(),
+                    kind: "continuous, and a joint mimics it by other than whole turns",
+                });
+            }
         }
         Ok(Group {
             name: name.to_string(),

@@ -105,3 +105,21 @@ fn a_request_angle_of_a_continuous_joint_is_taken_modulo_turns() {
     assert!((start[0] - (7.0 - TAU)).abs() < 1e-12 && start[1] == 0.1);
     assert!((goal[0] - (-4.0 + TAU)).abs() < 1e-12 && goal[1] == 0.2);
 }
+
+#[test]
+fn a_joint_mimicking_a_continuous_one_by_part_of_a_turn_is_refused() {
+    let mimic = |multiplier: &str| {
+        let urdf = URDF.replace(
+            "</robot>",
+            &format!(
+                r#"<link name="finger"/><joint name="finger" type="revolute"><parent link="hand"/><child link="finger"/>
+                   <axis xyz="0 0 1"/><limit lower="-9" upper="9"/><mimic joint="turn" multiplier="{multiplier}"/></joint></robot>"#
+            ),
+        );
+        let robot = Robot::new(Urdf::parse(&urdf).unwrap()).unwrap();
+        robot.group(&Srdf::parse(SRDF).unwrap(), "arm")
+    };
+    // Whole turns: the robot looks the same a turn later.
+    assert!(mimic("2").is_ok() && mimic("-1").is_ok());
+    assert!(matches!(mimic("0.5"), Err(RobotError::UnsupportedJoint { .. })));
+}

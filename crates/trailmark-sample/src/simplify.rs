@@ -101,9 +101,13 @@ fn shorter(direct: f64, part: f64) -> bool {
 /// `path` with its corners cut, `passes` times at most: each pass puts a state in the middle
 /// of every motion, then moves each of the path's previous states (not its ends) to the
 /// middle of the corner it makes with the two new states beside it, where both motions to the
-/// moved state are valid and the two together are shorter. A pass that moves no state ends
-/// the smoothing. The result has the input's ends; in a space whose interpolation follows its
-/// distance (Rⁿ, a joint space) it never costs more.
+/// moved state are valid and the two together are shorter. The halves of motions no moved
+/// state touches are checked too (a conservative checker may refuse part of a motion it
+/// passed whole): if one fails, the pass is undone and smoothing ends. A pass that moves no
+/// state ends it as well. Each pass about doubles the states (a few passes suffice; the final
+/// shortcut pass of [`simplify`] removes those on straight motions). The result has the
+/// input's ends; in a space whose interpolation follows its distance (Rⁿ, a joint space) it
+/// never costs more.
 pub fn smooth<S: StateSpace, V: Validity<S>>(
     space: &S,
     validity: &V,
@@ -122,7 +126,8 @@ pub fn smooth<S: StateSpace, V: Validity<S>>(
             split.push(space.interpolate(&m[0], &m[1], 0.5));
         }
         split.extend(path.last().cloned());
-        let mut moved = false;
+        // Per motion of `split`, whether it has been checked.
+        let mut checked = vec![false; split.len() - 1];
         for i in (2..split.len() - 1).step_by(2) {
             let (before, corner, after) = (&split[i - 1], &split[i], &split[i + 1]);
             let middle = space.interpolate(before, after, 0.5);
@@ -134,13 +139,20 @@ pub fn smooth<S: StateSpace, V: Validity<S>>(
                 && validity.motion_is_valid(space, &cut, after)
             {
                 split[i] = cut;
-                moved = true;
+                (checked[i - 1], checked[i]) = (true, true);
             }
         }
-        path = split;
-        if !moved {
+        if !checked.contains(&true) {
             break;
         }
+        let halves_valid = checked
+            .iter()
+            .enumerate()
+            .all(|(k, &done)| done || validity.motion_is_valid(space, &split[k], &split[k + 1]));
+        if !halves_valid {
+            break;
+        }
+        path = split;
     }
     path
 }

@@ -140,6 +140,23 @@ proptest! {
 }
 
 #[test]
+fn wrapped_angles_stay_within_their_bounds_at_the_seam() {
+    use std::f64::consts::PI;
+    let space = Joints::new([-PI], [PI], [true]).unwrap();
+    for x in
+        [f64::from_bits(PI.to_bits() - 1), PI, -PI, f64::from_bits((-PI).to_bits() - 1), 3.0 * PI, -5.0 * PI]
+    {
+        let mut s = SVector::from([x]);
+        space.enforce_bounds(&mut s);
+        assert!(space.satisfies_bounds(&s), "{x} -> {}", s[0]);
+    }
+    // ±π are one angle: distance 0, one position.
+    let (a, b) = (SVector::from([PI]), SVector::from([-PI]));
+    assert_eq!(space.distance(&a, &b), 0.0);
+    assert_eq!(space.position::<2>(&a), space.position::<2>(&b));
+}
+
+#[test]
 fn bad_spaces_are_typed_errors() {
     assert!(matches!(Rn::new([0.0, 1.0], [1.0, 1.0]), Err(SpaceError::InvalidBounds { axis: 1, .. })));
     assert!(matches!(Rn::new([f64::NAN], [1.0]), Err(SpaceError::InvalidBounds { axis: 0, .. })));

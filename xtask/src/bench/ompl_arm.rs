@@ -57,10 +57,11 @@ pub struct OmplArmSettings {
 }
 
 impl OmplArmSettings {
-    /// The settings for `group` the way MoveIt plans it: motions checked every
-    /// [`MOVEIT_SEGMENT_FRACTION`] of the joint space's extent (0.065 for the Panda's arm), a
-    /// range of 1.0 (trailmark's `verify mbm` and VAMP's for the Panda), one run of at most
-    /// 10 s, seed 1, no simplification.
+    /// The settings for `group` with MoveIt's fraction: motions checked every
+    /// [`MOVEIT_SEGMENT_FRACTION`] of the joint space's Euclidean extent (0.067 rad for the
+    /// Panda's arm; MoveIt measures the extent as a sum over the joints, so its own step is
+    /// coarser), a range of 1.0 (trailmark's `verify mbm` and VAMP's for the Panda), one run of
+    /// at most 10 s, seed 1, no simplification.
     pub fn moveit(group: &Group) -> OmplArmSettings {
         let extent = group.bounds.iter().map(|(l, h)| (h - l) * (h - l)).sum::<f64>().sqrt();
         OmplArmSettings {

@@ -59,16 +59,19 @@ pub struct BatchChecker {
     simd: Simd,
     /// Batches tested so far.
     batches: AtomicU64,
+    /// States tested so far (the lanes of the batches that held one).
+    states: AtomicU64,
 }
 
 impl Clone for BatchChecker {
-    /// The same checker, its count of batches from zero.
+    /// The same checker, its counts from zero.
     fn clone(&self) -> Self {
         BatchChecker {
             checker: self.checker.clone(),
             program: self.program.clone(),
             simd: self.simd,
             batches: AtomicU64::new(0),
+            states: AtomicU64::new(0),
         }
     }
 }
@@ -77,7 +80,13 @@ impl BatchChecker {
     /// The fast checker of what `checker` checks, on the fastest code this CPU runs.
     pub fn new(checker: ArmChecker) -> BatchChecker {
         let program = Program::new(&checker);
-        BatchChecker { checker, program, simd: Simd::detect(), batches: AtomicU64::new(0) }
+        BatchChecker {
+            checker,
+            program,
+            simd: Simd::detect(),
+            batches: AtomicU64::new(0),
+            states: AtomicU64::new(0),
+        }
     }
 
     /// The same checker on `simd`'s code; [`Simd::Portable`] where this CPU cannot run it.
@@ -97,6 +106,12 @@ impl BatchChecker {
         self.batches.load(Ordering::Relaxed)
     }
 
+    /// How many states it has tested: the lanes of its batches that held one (a state check
+    /// is one, a batch of a motion up to eight), for states checked per second.
+    pub fn states(&self) -> u64 {
+        self.states.load(Ordering::Relaxed)
+    }
+
     /// The `f64` checker this one was compiled from.
     pub fn checker(&self) -> &ArmChecker {
         &self.checker
@@ -111,13 +126,14 @@ impl BatchChecker {
         }
         let lanes: Vec<[f32; LANES]> = q.iter().map(|&v| [v as f32; LANES]).collect();
         let scale = vec![0.0; self.program.frames.len() + self.program.pairs.len()];
-        self.run(&lanes, &[0.0; LANES], &scale, u8::MAX) == 0
+        self.run(&lanes, &[0.0; LANES], &scale, u8::MAX, 1) == 0
     }
 
     /// Whether the straight motion from `a` to `b` is free, by the rule the [`ArmChecker`]
     /// follows ([`checker`](crate::checker)), eight states a batch.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
-        // Both ends within the limits: so is every state between (the limits are a box).
+        // Both ends within the limits: so is every state between (the limits are a box; a
+        // continuous joint turns at most half a turn from within ±π).
         if self.program.blocked || !self.within_limits(a) || !self.within_limits(b) {
             return false;
         }
@@ -145,25 +161,28 @@ impl BatchChecker {
             // Lanes beyond the batch repeat its first state: they stop when it does.
             let beyond = u8::MAX.checked_shl(batch.len() as u32).unwrap_or(0);
             let stop = if stop & 1 != 0 { stop as u8 | beyond } else { stop as u8 };
-            u32::from(self.run(&lanes, &grow, &scale, stop) & !beyond)
+            u32::from(self.run(&lanes, &grow, &scale, stop, batch.len()) & !beyond)
         });
         BUFFERS.set((delta, speeds, scale, lanes));
         free
     }
 
-    /// Whether `q` has a finite value per group joint, each within the joint's limits (any
-    /// angle within ±2π for a continuous joint: the pair floors, taken over a whole turn, hold
-    /// for every angle).
+    /// Whether `q` has a finite value per group joint, each within the joint's limits (`[-π,
+    /// π]` for a continuous joint, within rounding: a motion then turns it within ±2π, the
+    /// extension its bounds allow for; the pair floors, taken over a whole turn, hold for
+    /// every angle).
     fn within_limits(&self, q: &[f64]) -> bool {
         let group = &self.checker.group;
         q.len() == group.bounds.len()
             && q.iter().zip(&group.bounds).zip(&group.wraps).all(|((v, (low, high)), &wraps)| {
-                if wraps { v.abs() <= std::f64::consts::TAU } else { low <= v && v <= high }
+                if wraps { v.abs() <= std::f64::consts::PI * (1.0 + 1e-12) } else { low <= v && v <= high }
             })
     }
 
-    fn run(&self, q: &[[f32; LANES]], grow: &[f32; LANES], scale: &[f32], stop: u8) -> u8 {
+    /// The kernel on `q` (`states` of its lanes holding states of their own).
+    fn run(&self, q: &[[f32; LANES]], grow: &[f32; LANES], scale: &[f32], stop: u8, states: usize) -> u8 {
         self.batches.fetch_add(1, Ordering::Relaxed);
+        self.states.fetch_add(states as u64, Ordering::Relaxed);
         SCRATCH.with_borrow_mut(|s| {
             s.prepare(&self.program);
             match self.simd {

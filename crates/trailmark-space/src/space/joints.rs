@@ -37,11 +37,17 @@ pub struct Joints<const N: usize> {
     any: bool,
 }
 
-/// `x` brought into `[-π, π)` by whole turns.
+/// `x` brought into `[-π, π]` by whole turns.
 fn wrap(x: f64) -> f64 {
     let w = x - TAU * ((x + PI) / TAU).floor();
-    // Rounding can land exactly on π from below -π.
-    if w >= PI { w - TAU } else { w }
+    // The quotient's rounding can leave `w` a turn off at either end.
+    if w > PI {
+        w - TAU
+    } else if w < -PI {
+        w + TAU
+    } else {
+        w
+    }
 }
 
 impl<const N: usize> Joints<N> {
@@ -181,7 +187,8 @@ impl<const N: usize> StateSpace for Joints<N> {
         let mut sines = N;
         for i in 0..N {
             if self.wraps[i] {
-                let (sin, cos) = s[i].sin_cos();
+                // ±π are one angle: one position, whatever `sin_cos` rounds π to.
+                let (sin, cos) = if s[i].abs() == PI { (0.0, -1.0) } else { s[i].sin_cos() };
                 p[i] = cos;
                 p[sines] = sin;
                 sines += 1;

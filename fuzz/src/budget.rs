@@ -76,6 +76,14 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
             }
             0
         }
+        WorldSpec::Robot(world) => {
+            let files = [Some(&world.robot.urdf), Some(&world.robot.srdf), world.scene.as_ref()];
+            let files = files.into_iter().flatten().chain(problem.request.as_ref());
+            if files.into_iter().any(|f| f.is_absolute() || f.has_root()) {
+                return false; // Path::join would leave the base folder: never read a file.
+            }
+            0
+        }
     };
     let time_ok = |t: Option<f64>| t.is_some_and(|t| t <= MAX_TIME_LIMIT_S);
     match &problem.planner {
@@ -174,7 +182,7 @@ fn roadmap_nodes(problem: &ProblemSpec) -> usize {
             WorldSpec::Polygons(w) => {
                 16 * w.obstacles().iter().map(|o| o.vertices().len()).sum::<usize>() + 6
             }
-            WorldSpec::Grid(_) | WorldSpec::Boxes(_) | WorldSpec::RosMap(_) => 0,
+            WorldSpec::Grid(_) | WorldSpec::Boxes(_) | WorldSpec::RosMap(_) | WorldSpec::Robot(_) => 0,
         },
     }
 }

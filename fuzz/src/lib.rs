@@ -72,6 +72,7 @@ pub fn solve_and_check(problem: &ProblemSpec) {
         WorldSpec::Boxes(world) => boxes::check_result(problem, world, &result),
         // Its map would be a file below NO_DIR, which does not exist.
         WorldSpec::RosMap(_) => panic!("a ROS map was solved without its file"),
+        WorldSpec::Robot(_) => panic!("a robot world was solved without its files"),
     }
 }
 

@@ -120,6 +120,11 @@ pub(super) fn solve_hybrid_astar(
     if let Some(name) = problem.roadmap_fields().first() {
         return Err(DocumentError::NotForPlanner { field: name, planner: "hybrid_astar" }.into());
     }
+    // Before the poses: a robot's joint values are not a pose, and that is not the fault.
+    let robot = || DocumentError::RobotNeedsSampling { planner: "hybrid_astar" };
+    if let WorldSpec::Robot(_) = world {
+        return Err(robot().into());
+    }
     let (start, goal) = (pose("start", &problem.start)?, pose("goal", &problem.goal)?);
     let (map, car, backdrop) = match world {
         WorldSpec::RosMap(w) => on_ros_map(w, spec, base_dir)?,
@@ -129,6 +134,7 @@ pub(super) fn solve_hybrid_astar(
             let why = "is not for hybrid_astar, which plans on ROS-map, grid and polygon worlds";
             return Err(DocumentError::InvalidBoxes(why.into()).into());
         }
+        WorldSpec::Robot(_) => return Err(robot().into()),
     };
     let planner = HybridAStar::new(&map, &car, spec.settings()).map_err(SolveError::Car)?;
     let mut stopped = None;

@@ -69,6 +69,10 @@ pub enum SolveError {
     /// Hybrid A* refused its settings, the footprint or a pose.
     #[error(transparent)]
     Car(trailmark_car::CarError),
+    /// A robot world's files could not be read, or its group, start or goal are not the
+    /// robot's.
+    #[error(transparent)]
+    Robot(#[from] trailmark_robot::RobotError),
     /// A roadmap over a box world that could not draw the samples asked for: the free space is
     /// empty or very small.
     #[error("found only {added} of {requested} free samples for the roadmap")]
@@ -248,7 +252,7 @@ pub enum DocumentError {
     #[error("the box world {0}")]
     InvalidBoxes(String),
     /// A start or goal of a sampling planner that is not a finite state of its space.
-    #[error("the {which} {value:?} is not a state of the \"{space}\" space: expected {}", match *space { "dubins" | "reeds_shepp" => "[x, y, heading]", "rn" => "one finite coordinate per axis of the box world", _ => "[x, y]" })]
+    #[error("the {which} {value:?} is not a state of the \"{space}\" space: expected {}", match *space { "dubins" | "reeds_shepp" => "[x, y, heading]", "rn" => "one finite coordinate per axis of the box world", "joints" => "one finite value per joint of the robot's group, in its order", _ => "[x, y]" })]
     NotAState {
         /// `"start"` or `"goal"`.
         which: &'static str,
@@ -328,4 +332,45 @@ pub enum DocumentError {
         /// The planner.
         planner: &'static str,
     },
+    /// A problem without a start or a goal (only a robot world given a `request` has none).
+    #[error("the problem needs a \"{0}\"")]
+    NoEnd(&'static str),
+    /// A robot world given both a `request` and a start or goal.
+    #[error("give \"start\" and \"goal\" or a \"request\", not both")]
+    RequestAndEnds,
+    /// A `request` in a world that is not a robot's.
+    #[error("\"request\" applies to robot worlds only")]
+    RequestNeedsRobot,
+    /// A robot world without a group: neither the robot nor a request names one.
+    #[error("a robot world needs its planning \"group\" (in \"robot\", or named by the \"request\")")]
+    NoGroup,
+    /// A robot world whose `group` is not the request's.
+    #[error("the robot's \"group\" is {world:?} but the request plans for {request:?}")]
+    GroupMismatch {
+        /// The group the world names.
+        world: String,
+        /// The group the request names.
+        request: String,
+    },
+    /// A group with more joints than the sampling planners take here.
+    #[error("the group has {found} joints; robot worlds plan for groups of 1 to {max}", max = crate::solve::MAX_GROUP_JOINTS)]
+    TooManyJoints {
+        /// The group's joints.
+        found: usize,
+    },
+    /// A field robot worlds do not take.
+    #[error("\"{field}\" does not apply to robot worlds: they are planned in the group's joint space")]
+    NotForRobots {
+        /// The field.
+        field: &'static str,
+    },
+    /// A graph search on a robot world.
+    #[error("the \"{planner}\" planner searches a graph; robot worlds are planned by the sampling planners")]
+    RobotNeedsSampling {
+        /// The planner.
+        planner: &'static str,
+    },
+    /// A picture asked of a world that is not drawn.
+    #[error("{0} worlds cannot be drawn: pictures are of grid, polygon and ROS-map worlds")]
+    Undrawable(&'static str),
 }

@@ -38,17 +38,20 @@ mod world;
 pub use error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
 pub use planner::{AnytimeSpec, HybridSpec, PlannerSpec, SamplerSpec, SamplingSpec};
 pub use problem::{
-    BoxesSpec, GraphKind, GridSpec, ProblemSpec, RosMapSpec, SamplerKind, SpaceKind, WorldSpec,
+    ArmCheckerKind, BoxesSpec, GraphKind, GridSpec, ProblemSpec, RobotSpec, RobotWorldSpec, RosMapSpec,
+    SamplerKind, SpaceKind, WorldSpec,
 };
 pub use registry::{Family, PlannerName};
 pub use result::{
     CarRecord, ErrorReport, GraphStats, ImprovementRecord, IterationRecord, ResultStats, SamplingStats,
     SmoothedRecord, SolveResult, Status, Waypoint, anytime_result_of, result_of,
 };
+pub use sampling::robot::SMOOTHING_PASSES;
 pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
 pub use search::roadmap::DEFAULT_SAMPLES;
 pub use world::boxes::MAX_BOX_DIMENSION;
 pub use world::grid::{grid_graph, load_grid};
+pub use world::robot::MAX_GROUP_JOINTS;
 pub use world::ros_map::{
     DEFAULT_COST_FACTOR, DEFAULT_COST_SCALING_FACTOR, DEFAULT_INFLATION_RADIUS, DEFAULT_ROBOT_RADIUS,
     MAX_COST_FACTOR, ros_costmap, ros_travel_cost,
@@ -96,8 +99,16 @@ fn solve_inner(
     if problem.space.is_some() && planner.sampling().is_none() {
         return Err(DocumentError::NotForPlanner { field: "space", planner: planner.name() }.into());
     }
-    let undrawable =
-        || DocumentError::InvalidBoxes("cannot be drawn: pictures are of grid and polygon worlds".into());
+    if problem.request.is_some() && !matches!(problem.world, WorldSpec::Robot(_)) {
+        return Err(DocumentError::RequestNeedsRobot.into());
+    }
+    if problem.request.is_none() {
+        for (which, end) in [("start", &problem.start), ("goal", &problem.goal)] {
+            if end.is_empty() {
+                return Err(DocumentError::NoEnd(which).into());
+            }
+        }
+    }
     if let PlannerSpec::HybridAStar(spec) = planner {
         return car::solve_hybrid_astar(problem, &problem.world, spec, base_dir, picture);
     }
@@ -106,12 +117,17 @@ fn solve_inner(
         (WorldSpec::Grid(world), None) => search::grid::solve_grid(problem, world, base_dir, picture),
         (WorldSpec::Polygons(world), Some(spec)) => sampling::solve_sampling(problem, world, spec, picture),
         (WorldSpec::Polygons(world), None) => search::polygons::solve_polygons(problem, world, picture),
-        (WorldSpec::Boxes(_), _) if picture.is_some() => Err(undrawable().into()),
+        (WorldSpec::Boxes(_), _) if picture.is_some() => Err(DocumentError::Undrawable("box").into()),
         (WorldSpec::Boxes(world), Some(spec)) => sampling::boxes::solve_boxes(problem, world, spec),
         (WorldSpec::Boxes(world), None) => search::boxes::solve_box_roadmap(problem, world),
         (WorldSpec::RosMap(_), Some(_)) => {
             Err(DocumentError::NeedsPolygons { planner: planner.name() }.into())
         }
         (WorldSpec::RosMap(world), None) => search::ros_map::solve_ros_map(problem, world, base_dir, picture),
+        (WorldSpec::Robot(_), _) if picture.is_some() => Err(DocumentError::Undrawable("robot").into()),
+        (WorldSpec::Robot(world), Some(spec)) => sampling::robot::solve_robot(problem, world, spec, base_dir),
+        (WorldSpec::Robot(_), None) => {
+            Err(DocumentError::RobotNeedsSampling { planner: planner.name() }.into())
+        }
     }
 }

@@ -55,9 +55,13 @@ pub struct ProblemSpec {
     /// The world to plan in.
     pub world: WorldSpec,
     /// The start: a cell `[x, y]` of a grid, a point `[x, y]` of a polygon world or (in metres)
-    /// of a ROS map, or a pose `[x, y, θ]` (θ in radians) for a Dubins roadmap.
+    /// of a ROS map, a pose `[x, y, θ]` (θ in radians) for a Dubins roadmap, or a value per joint
+    /// of a robot's group (in the group's order). Every world needs one, except a robot world
+    /// given a `request`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub start: Vec<f64>,
     /// The goal, as the start.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub goal: Vec<f64>,
     /// The planner and its parameters.
     pub planner: PlannerSpec,
@@ -86,6 +90,11 @@ pub struct ProblemSpec {
     /// Sampling planners: the state space (default `r2`; `dubins` needs `turning_radius`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub space: Option<SpaceKind>,
+    /// Robot worlds: a MoveIt motion plan request (YAML) giving the group, the start state of
+    /// every joint and the goal's joint values, instead of `start` and `goal`; relative to the
+    /// document's folder unless absolute.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub request: Option<PathBuf>,
 }
 
 impl ProblemSpec {
@@ -104,6 +113,7 @@ impl ProblemSpec {
             turning_radius: None,
             sampler: None,
             space: None,
+            request: None,
         }
     }
 
@@ -193,9 +203,9 @@ impl SpaceKind {
     }
 }
 
-/// The world of a problem. In JSON, an object with one key naming the kind of world.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case", deny_unknown_fields)]
+/// The world of a problem. In JSON, an object with one key naming the kind of world; a robot
+/// world has the robot and, beside it, its scene.
+#[derive(Debug, Clone, PartialEq)]
 pub enum WorldSpec {
     /// A grid: `{"grid": {...}}`.
     Grid(GridSpec),
@@ -209,6 +219,143 @@ pub enum WorldSpec {
     /// `{"ros_map": {"yaml": "PATH.yaml", "robot_radius": 0.2, "inflation_radius": 0.55,
     /// "cost_scaling_factor": 10, "unknown": "lethal"}}`; start and goal in metres.
     RosMap(RosMapSpec),
+    /// A robot arm among the obstacles of a MoveIt planning scene, planned in a group's joint
+    /// space: `{"robot": {"urdf": "PATH.urdf", "srdf": "PATH.srdf", "group": "arm"}, "scene":
+    /// "PATH.yaml"}` (without a scene, the robot only has itself to avoid).
+    Robot(RobotWorldSpec),
+}
+
+/// A robot world: the robot's files and the scene around it.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct RobotWorldSpec {
+    /// The robot.
+    pub robot: RobotSpec,
+    /// The MoveIt planning scene (YAML), relative to the document's folder unless absolute.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub scene: Option<PathBuf>,
+}
+
+/// A robot: its URDF and SRDF (relative to the document's folder unless absolute), the group
+/// to plan for and the collision checker to plan with.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RobotSpec {
+    /// The robot's URDF: its links, joints, limits and collision geometry (spheres from a
+    /// spherized URDF, or primitives each covered by one sphere).
+    pub urdf: PathBuf,
+    /// The robot's SRDF: its planning groups and the link pairs never in contact.
+    pub srdf: PathBuf,
+    /// The planning group (one of the SRDF's): required unless the problem's `request` names
+    /// it, and then the same.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub group: Option<String>,
+    /// The collision checker planned with (default `batch`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub checker: Option<ArmCheckerKind>,
+}
+
+/// The collision checker a robot world is planned with; both answer the same questions, and
+/// both are conservative (see `trailmark_robot::checker`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ArmCheckerKind {
+    /// Eight configurations at once in SIMD lanes (`trailmark_robot::BatchChecker`).
+    #[default]
+    Batch,
+    /// One configuration at a time in `f64` (`trailmark_robot::ArmChecker`).
+    Scalar,
+}
+
+/// The keys of a world object.
+#[derive(Deserialize)]
+#[serde(field_identifier, rename_all = "snake_case")]
+enum WorldKey {
+    Grid,
+    Polygons,
+    Boxes,
+    RosMap,
+    Robot,
+    Scene,
+}
+
+impl Serialize for WorldSpec {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let scene = match self {
+            WorldSpec::Robot(world) => world.scene.as_ref(),
+            _ => None,
+        };
+        let mut map = serializer.serialize_map(Some(1 + usize::from(scene.is_some())))?;
+        match self {
+            WorldSpec::Grid(grid) => map.serialize_entry("grid", grid)?,
+            WorldSpec::Polygons(world) => map.serialize_entry("polygons", world)?,
+            WorldSpec::Boxes(world) => map.serialize_entry("boxes", world)?,
+            WorldSpec::RosMap(world) => map.serialize_entry("ros_map", world)?,
+            WorldSpec::Robot(world) => map.serialize_entry("robot", &world.robot)?,
+        }
+        if let Some(scene) = scene {
+            map.serialize_entry("scene", scene)?;
+        }
+        map.end()
+    }
+}
+
+impl<'de> Deserialize<'de> for WorldSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer.deserialize_map(WorldVisitor)
+    }
+}
+
+/// Why a world with two kinds is refused.
+const ONE_KIND: &str =
+    "a world has one kind: give one of \"grid\", \"polygons\", \"boxes\", \"ros_map\" and \"robot\"";
+
+struct WorldVisitor;
+
+impl<'de> serde::de::Visitor<'de> for WorldVisitor {
+    type Value = WorldSpec;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a world: an object with one key, \"grid\", \"polygons\", \"boxes\" or \"ros_map\"; or \"robot\" with an optional \"scene\" beside it")
+    }
+
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<WorldSpec, A::Error> {
+        use serde::de::Error;
+        let (mut world, mut robot, mut scene) = (None, None, None);
+        while let Some(key) = map.next_key::<WorldKey>()? {
+            let kind = match key {
+                WorldKey::Grid => WorldSpec::Grid(map.next_value()?),
+                WorldKey::Polygons => WorldSpec::Polygons(map.next_value()?),
+                WorldKey::Boxes => WorldSpec::Boxes(map.next_value()?),
+                WorldKey::RosMap => WorldSpec::RosMap(map.next_value()?),
+                WorldKey::Robot if robot.is_none() => {
+                    robot = Some(map.next_value::<RobotSpec>()?);
+                    continue;
+                }
+                WorldKey::Scene if scene.is_none() => {
+                    scene = Some(map.next_value::<PathBuf>()?);
+                    continue;
+                }
+                WorldKey::Robot => return Err(A::Error::duplicate_field("robot")),
+                WorldKey::Scene => return Err(A::Error::duplicate_field("scene")),
+            };
+            if world.is_some() {
+                return Err(A::Error::custom(ONE_KIND));
+            }
+            world = Some(kind);
+        }
+        match (world, robot) {
+            (Some(_), Some(_)) => Err(A::Error::custom(ONE_KIND)),
+            (Some(_), None) if scene.is_some() => {
+                Err(A::Error::custom("\"scene\" is the world of a \"robot\", beside it"))
+            }
+            (Some(world), None) => Ok(world),
+            (None, Some(robot)) => Ok(WorldSpec::Robot(RobotWorldSpec { robot, scene })),
+            (None, None) => Err(A::Error::custom(
+                "a world needs one of \"grid\", \"polygons\", \"boxes\", \"ros_map\" and \"robot\"",
+            )),
+        }
+    }
 }
 
 /// A ROS map world: the map's YAML file and the costmap's settings, each with Nav2's default.

@@ -249,12 +249,12 @@ pub fn solve(arm: &Arm, problem: &MbmProblem, settings: Settings) -> Outcome {
         ($($n:literal)*) => {
             match (scalar.group().joints.len(), wraps) {
                 $(($n, false) => match settings.checker {
-                    CheckerKind::Batch => plan::<$n, $n, _>(&scalar, &batch, &start, &goal, settings, &tested),
-                    CheckerKind::Scalar => plan::<$n, $n, _>(&scalar, &scalar, &start, &goal, settings, &none),
+                    CheckerKind::Batch => plan::<$n, $n>(&scalar, &batch, &start, &goal, settings, &tested),
+                    CheckerKind::Scalar => plan::<$n, $n>(&scalar, &scalar, &start, &goal, settings, &none),
                 },
                 ($n, true) => match settings.checker {
-                    CheckerKind::Batch => plan::<$n, { 2 * $n }, _>(&scalar, &batch, &start, &goal, settings, &tested),
-                    CheckerKind::Scalar => plan::<$n, { 2 * $n }, _>(&scalar, &scalar, &start, &goal, settings, &none),
+                    CheckerKind::Batch => plan::<$n, { 2 * $n }>(&scalar, &batch, &start, &goal, settings, &tested),
+                    CheckerKind::Scalar => plan::<$n, { 2 * $n }>(&scalar, &scalar, &start, &goal, settings, &none),
                 },)*
                 (n, _) => Err(RobotError::Dimension { expected: 7, found: n }),
             }
@@ -273,10 +273,10 @@ pub fn solve(arm: &Arm, problem: &MbmProblem, settings: Settings) -> Outcome {
 }
 
 /// Plans from `start` to `goal` with `validity`; `tested()` counts the states it tested, read
-/// before simplifying.
-fn plan<const N: usize, const D: usize, V: trailmark::sample::Validity<Joints<N>>>(
+/// before simplifying. Either checker through `dyn`: one planner compiled for both.
+fn plan<const N: usize, const D: usize>(
     scalar: &ArmChecker,
-    validity: &V,
+    validity: &dyn trailmark::sample::Validity<Joints<N>>,
     start: &[f64],
     goal: &[f64],
     settings: Settings,
@@ -284,7 +284,7 @@ fn plan<const N: usize, const D: usize, V: trailmark::sample::Validity<Joints<N>
 ) -> Result<Outcome, RobotError> {
     let space = scalar.joint_space::<N>()?;
     let to = |v: &[f64]| trailmark::robot::nalgebra::SVector::<f64, N>::from_column_slice(v);
-    let problem = Problem::new(&space, validity, to(start), to(goal));
+    let problem = Problem::new(&space, &validity, to(start), to(goal));
     let nearest = KdNearest::<Joints<N>, D>::new(&space).map_err(|e| RobotError::Invalid {
         element: scalar.group().name.clone(),
         attribute: "limits",
@@ -307,7 +307,7 @@ fn plan<const N: usize, const D: usize, V: trailmark::sample::Validity<Joints<N>
     let mut path = planned.to_vec();
     if settings.simplify {
         let clock = Instant::now();
-        path = simplify(&space, validity, planned, SHORTCUT_ATTEMPTS, SMOOTHING_PASSES, settings.seed);
+        path = simplify(&space, &validity, planned, SHORTCUT_ATTEMPTS, SMOOTHING_PASSES, settings.seed);
         outcome.simplify_time = clock.elapsed();
     }
     Ok(Outcome {

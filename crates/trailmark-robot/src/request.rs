@@ -64,9 +64,18 @@ impl Request {
     }
 
     /// A value for every joint of `robot` (in the URDF's order): the start state's where it
-    /// names the joint, else 0. Errors on a name that is not a joint of the robot.
+    /// names the joint, else the joint's default as MoveIt sets it (0 when within its limits,
+    /// else the middle of them). Errors on a name that is not a joint of the robot.
     pub fn start_values(&self, robot: &Robot) -> Result<Vec<f64>, RobotError> {
-        let mut values = vec![0.0; robot.urdf().joints.len()];
+        let mut values: Vec<f64> = robot
+            .urdf()
+            .joints
+            .iter()
+            .map(|joint| match joint.limits {
+                Some(l) if l.lower > 0.0 || l.upper < 0.0 => l.lower + (l.upper - l.lower) / 2.0,
+                _ => 0.0,
+            })
+            .collect();
         for (name, value) in &self.start {
             values[robot.joint_index(name).ok_or_else(|| RobotError::UnknownJoint(name.clone()))?] = *value;
         }
@@ -126,4 +135,29 @@ fn named(name: &Yaml, position: &Yaml) -> Result<(String, f64), RobotError> {
 
 fn invalid(element: &str, reason: &'static str) -> RobotError {
     RobotError::Invalid { element: element.to_string(), attribute: "value", reason, value: String::new() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::urdf::Urdf;
+
+    #[test]
+    fn joints_the_start_state_leaves_out_take_moveits_default() {
+        let urdf = Urdf::parse(
+            r#"<robot name="r">
+              <link name="a"/><link name="b"/><link name="c"/><link name="d"/>
+              <joint name="free" type="revolute"><parent link="a"/><child link="b"/><limit lower="-1" upper="1"/></joint>
+              <joint name="bent" type="revolute"><parent link="b"/><child link="c"/><limit lower="-3" upper="-1"/></joint>
+              <joint name="named" type="prismatic"><parent link="c"/><child link="d"/><limit lower="0.5" upper="0.7"/></joint>
+            </robot>"#,
+        )
+        .unwrap();
+        let robot = Robot::new(urdf).unwrap();
+        let request = Request { start: vec![("named".into(), 0.6)], ..Request::default() };
+        // 0 within the limits; the middle of limits that exclude 0; the state's own value.
+        assert_eq!(request.start_values(&robot).unwrap(), [0.0, -2.0, 0.6]);
+        let unknown = Request { start: vec![("elbow".into(), 0.0)], ..Request::default() };
+        assert_eq!(unknown.start_values(&robot), Err(RobotError::UnknownJoint("elbow".into())));
+    }
 }

@@ -43,6 +43,18 @@ pub trait Validity<S: StateSpace> {
     fn motion_is_valid(&self, space: &S, from: &S::State, to: &S::State) -> bool;
 }
 
+/// A borrowed validity, or one behind `dyn` (one planner compiled for every checker of a
+/// space).
+impl<S: StateSpace, V: Validity<S> + ?Sized> Validity<S> for &V {
+    fn state_is_valid(&self, space: &S, state: &S::State) -> bool {
+        (**self).state_is_valid(space, state)
+    }
+
+    fn motion_is_valid(&self, space: &S, from: &S::State, to: &S::State) -> bool {
+        (**self).motion_is_valid(space, from, to)
+    }
+}
+
 impl Validity<R2> for CollisionChecker {
     fn state_is_valid(&self, _: &R2, p: &Point) -> bool {
         self.point_is_free(*p)

@@ -43,7 +43,8 @@ fn boxes<const N: usize>(
     let world = box_world::<N>(world)?;
     let (start, goal) = box_ends::<N>(problem)?;
     let space = world.space();
-    let run = SamplingRun { problem, spec, checker: &world, seed: problem.seed.unwrap_or(0) };
+    let run =
+        SamplingRun { problem, spec, checker: &world, seed: problem.seed.unwrap_or(0), smoothing_passes: 0 };
     let (result, _) = run.plan(&space, KdNearest::<Rn<N>, N>::new(&space)?, start, goal)?;
     Ok(result)
 }

@@ -4,6 +4,7 @@
 
 pub(super) mod boxes;
 mod car;
+pub(super) mod robot;
 
 use std::time::{Duration, Instant};
 
@@ -12,11 +13,11 @@ use trailmark_core::smooth::smooth;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::termination::Termination;
 use trailmark_core::world::PolygonWorld;
-use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE};
+use trailmark_sample::sampler::{DEFAULT_ATTEMPTS, DEFAULT_SHARE, Draw};
 use trailmark_sample::space::{DubinsCurves, ReedsSheppCurves};
 use trailmark_sample::{
     Bridge, Gaussian, KdNearest, NearestNeighbors, Plan, Problem as PlanningProblem, R2, RrtOptions,
-    Solution, StateSampler, StateSpace, shortcut,
+    Solution, StateSampler, StateSpace, shortcut, simplify,
 };
 
 use crate::solve::error::{DocumentError, SolveError};
@@ -47,7 +48,7 @@ pub(in crate::solve) fn solve_sampling(
     let space_kind = problem.space.unwrap_or(SpaceKind::R2);
     let checker = world.checker();
     let seed = problem.seed.unwrap_or(0);
-    let run = SamplingRun { problem, spec, checker: &checker, seed };
+    let run = SamplingRun { problem, spec, checker: &checker, seed, smoothing_passes: 0 };
     match space_kind {
         SpaceKind::Rn => Err(DocumentError::RnNeedsBoxes.into()),
         SpaceKind::R2 => {
@@ -103,6 +104,9 @@ struct SamplingRun<'a, V> {
     spec: &'a SamplingSpec,
     checker: &'a V,
     seed: u64,
+    /// Corner-cutting passes after the shortcuts when `simplify` is asked for (0: shortcuts
+    /// only).
+    smoothing_passes: usize,
 }
 
 impl<V> SamplingRun<'_, V> {
@@ -133,27 +137,27 @@ impl<V> SamplingRun<'_, V> {
             RrtOptions { range: spec.range, goal_bias: spec.goal_bias.unwrap_or(defaults.goal_bias) };
         let problem = PlanningProblem::new(space, self.checker, start, goal);
         let limits = (&options, &termination);
-        let plan = match spec.sampler.unwrap_or_default() {
-            SamplerSpec::Uniform {} => {
-                self.run_planner(&problem, nearest, trailmark_sample::Uniform, limits)?
-            }
+        let sampler = match spec.sampler.unwrap_or_default() {
+            SamplerSpec::Uniform {} => Chosen::Uniform(trailmark_sample::Uniform),
             SamplerSpec::Bridge { std_dev, share, attempts } => {
                 let bridge = Bridge::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
-                let bridge = bridge.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
-                self.run_planner(&problem, nearest, bridge, limits)?
+                Chosen::Bridge(bridge.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?)
             }
             SamplerSpec::Gaussian { std_dev, share, attempts } => {
                 let gaussian = Gaussian::new(std_dev)?.with_share(share.unwrap_or(DEFAULT_SHARE))?;
-                let gaussian = gaussian.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?;
-                self.run_planner(&problem, nearest, gaussian, limits)?
+                Chosen::Gaussian(gaussian.with_attempts(attempts.unwrap_or(DEFAULT_ATTEMPTS))?)
             }
         };
+        let plan = self.run_planner(&problem, nearest, sampler, limits)?;
         let planned = plan.solution.any_path().map(<[S::State]>::to_vec).unwrap_or_default();
         let clock = Instant::now();
-        let path = if spec.simplify == Some(true) && planned.len() > 2 {
+        let path = if spec.simplify != Some(true) || planned.len() < 3 {
+            planned
+        } else if self.smoothing_passes == 0 {
             shortcut(space, self.checker, &planned, SHORTCUT_ATTEMPTS, self.seed)
         } else {
-            planned
+            let (attempts, passes) = (SHORTCUT_ATTEMPTS, self.smoothing_passes);
+            simplify(space, self.checker, &planned, attempts, passes, self.seed)
         };
         let simplify_time_s = clock.elapsed().as_secs_f64();
         // A fold from +0: an empty float sum is -0.0.
@@ -222,6 +226,29 @@ impl<V> SamplingRun<'_, V> {
         let mut planner =
             planner.ok_or(DocumentError::NotASamplingPlanner { planner: self.problem.planner.name() })?;
         Ok(planner.solve(problem, termination)?)
+    }
+}
+
+/// The document's sampler: one type, so that each planner is compiled once per space rather
+/// than once per sampler.
+enum Chosen {
+    Uniform(trailmark_sample::Uniform),
+    Bridge(Bridge),
+    Gaussian(Gaussian),
+}
+
+impl<S: StateSpace> StateSampler<S> for Chosen {
+    fn sample<V: trailmark_sample::Validity<S>>(
+        &self,
+        space: &S,
+        validity: &V,
+        draw: &mut Draw<'_>,
+    ) -> Option<S::State> {
+        match self {
+            Chosen::Uniform(uniform) => uniform.sample(space, validity, draw),
+            Chosen::Bridge(bridge) => bridge.sample(space, validity, draw),
+            Chosen::Gaussian(gaussian) => gaussian.sample(space, validity, draw),
+        }
     }
 }
 

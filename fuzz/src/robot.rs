@@ -1,17 +1,28 @@
-//! The robot readers (URDF, SRDF, MoveIt scene and request): whatever the bytes, a typed error
+//! The robot readers (URDF, SRDF, MoveIt scene and request, OBJ and STL meshes): whatever the bytes, a typed error
 //! or a model whose every number is finite and in range; a URDF that reads builds a robot
 //! (or is refused) whose link poses at zero are finite, and the sphere checker of a robot
 //! that reads answers without panicking.
 
+use trailmark::robot::mesh::Mesh;
 use trailmark::robot::request::Request;
 use trailmark::robot::scene::{Scene, Shape};
 use trailmark::robot::srdf::Srdf;
 use trailmark::robot::urdf::{Geometry, Urdf};
 use trailmark::robot::{ArmChecker, BatchChecker, DEFAULT_STEP, Robot};
 
-/// The first byte picks the reader, the rest is its text.
+/// The first byte picks the reader (250 and up: the mesh readers, OBJ then STL), the rest is
+/// its text or bytes.
 pub fn check(data: &[u8]) {
     let Some((&which, rest)) = data.split_first() else { return };
+    if which >= 250 {
+        let mesh = if which < 253 { Mesh::parse_obj(&String::from_utf8_lossy(rest)) } else { Mesh::parse_stl(rest) };
+        if let Ok(mesh) = mesh {
+            assert!(!mesh.triangles.is_empty());
+            assert!(mesh.vertices.iter().all(|v| v.coords.iter().all(|x| x.is_finite())));
+            assert!(mesh.triangles.iter().flatten().all(|&i| (i as usize) < mesh.vertices.len()));
+        }
+        return;
+    }
     let Ok(text) = std::str::from_utf8(rest) else { return };
     match which % 4 {
         0 => check_urdf(text),

@@ -10,10 +10,11 @@ use std::time::{Duration, Instant};
 
 use serde_json::json;
 use trailmark::core::termination::Termination;
+use trailmark::robot::cover::cover;
 use trailmark::robot::request::Request;
 use trailmark::robot::scene::Scene;
 use trailmark::robot::srdf::Srdf;
-use trailmark::robot::{ArmChecker, BatchChecker, DEFAULT_STEP, Robot, RobotError};
+use trailmark::robot::{ArmChecker, BatchChecker, DEFAULT_STEP, ExactChecker, Robot, RobotError};
 use trailmark::sample::{Joints, KdNearest, Planner, Problem, RrtConnect, RrtOptions, paths, simplify};
 
 /// The arguments of `verify mbm`.
@@ -54,6 +55,15 @@ pub struct Args {
     /// A file to write one JSON line a problem to.
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// The robot with its own collision geometry (meshes, primitives): every path that passes
+    /// the sphere check is checked again by the exact tier (`ExactChecker`) with it.
+    #[arg(long)]
+    pub exact: Option<PathBuf>,
+    /// Plan with the spheres of `--urdf` covering the geometry of `--exact` (`cover::cover`:
+    /// spheres added where it sticks out, all grown by 1 mm), so that the sphere checkers are
+    /// conservative for the robot's own shapes.
+    #[arg(long, requires = "exact")]
+    pub cover: bool,
 }
 
 /// A planner `verify mbm` runs.
@@ -171,6 +181,11 @@ pub struct Settings {
     /// Whether to simplify the path.
     pub simplify: bool,
 }
+
+/// The sampling and tolerance of `--cover`: 2 mm (1.2 mm for what lies between samples) and
+/// 1 mm; coarser covers make the Panda's neighbouring links touch at its home pose.
+const COVER_RESOLUTION: f64 = 0.002;
+const COVER_TOLERANCE: f64 = 0.001;
 
 /// Random shortcut attempts when simplifying (after the greedy pass).
 const SHORTCUT_ATTEMPTS: usize = 20;
@@ -339,13 +354,48 @@ pub fn check_path(reference: &ArmChecker, path: &[Vec<f64>], start: &[f64], goal
     None
 }
 
+/// Why `path` fails the exact check with `robot` (read from `urdf`, meshes beside it), if it
+/// does: the first motion a link's own shapes cannot be proven clear along, and what touches
+/// at its ends.
+pub fn exact_failure(
+    robot: &Robot,
+    urdf: &Path,
+    arm: &Arm,
+    problem: &MbmProblem,
+    path: &[Vec<f64>],
+) -> Option<String> {
+    let checker = (|| {
+        let scene = Scene::from_file(&problem.scene)?;
+        let request = Request::from_file(&problem.request)?;
+        let group = robot.group(&arm.srdf, &request.group)?;
+        let template = request.start_values(robot)?;
+        let dir = urdf.parent().unwrap_or(Path::new("."));
+        ExactChecker::new(robot.clone(), &arm.srdf, group, &scene, template, dir, DEFAULT_STEP)
+    })();
+    let checker = match checker {
+        Ok(c) => c,
+        Err(e) => return Some(format!("the exact check: {e}")),
+    };
+    for (i, m) in path.windows(2).enumerate() {
+        if !checker.motion_is_free(&m[0], &m[1]) {
+            let touching = |q: &[f64]| checker.contacts(q).unwrap_or_default();
+            return Some(format!(
+                "motion {i} is not clear under the exact check (at its start {:?}, at its end {:?})",
+                touching(&m[0]),
+                touching(&m[1])
+            ));
+        }
+    }
+    None
+}
+
 /// `verify mbm`: prints a line a failure and `N passed, M failed`, with the times.
 pub fn run(args: &Args) -> ExitCode {
     let problems = match problems(&args.dir) {
         Ok(p) => p,
         Err(e) => return crate::output::error_report(e),
     };
-    let arm = match Arm::read(&args.urdf, &args.srdf) {
+    let mut arm = match Arm::read(&args.urdf, &args.srdf) {
         Ok(a) => a,
         Err(e) => return crate::output::error_report(e),
     };
@@ -359,6 +409,23 @@ pub fn run(args: &Args) -> ExitCode {
         },
         None => None,
     };
+    let exact = match args.exact.as_ref().map(Robot::from_file).transpose() {
+        Ok(robot) => robot,
+        Err(e) => return crate::output::error_report(e),
+    };
+    let mut exact_time = 0.0;
+    if let (true, Some(geometry), Some(urdf)) = (args.cover, &exact, &args.exact) {
+        let dir = urdf.parent().unwrap_or(Path::new("."));
+        let covered = cover(&arm.robot, geometry, dir, COVER_RESOLUTION, COVER_TOLERANCE)
+            .and_then(|(urdf, added)| Ok((Robot::new(urdf)?, added)));
+        match covered {
+            Ok((robot, added)) => {
+                println!("covering spheres: {} added", added.iter().sum::<usize>());
+                arm.robot = robot;
+            }
+            Err(e) => return crate::output::error_report(e),
+        }
+    }
     let settings = Settings {
         checker: args.checker,
         limit: Duration::from_secs_f64(args.time_limit),
@@ -374,7 +441,15 @@ pub fn run(args: &Args) -> ExitCode {
     // The time spent planning, each problem at its own time.
     let mut total = 0.0;
     for problem in problems.iter().step_by(args.every as usize) {
-        let outcome = solve(&arm, problem, settings);
+        let mut outcome = solve(&arm, problem, settings);
+        if let (Some(robot), Some(urdf)) = (&exact, &args.exact)
+            && outcome.status == "solved"
+            && outcome.failure.is_none()
+        {
+            let clock = Instant::now();
+            outcome.failure = exact_failure(robot, urdf, &arm, problem, &outcome.path);
+            exact_time += clock.elapsed().as_secs_f64();
+        }
         let ok = outcome.status == "solved" && outcome.failure.is_none();
         if ok {
             passed += 1;
@@ -421,6 +496,9 @@ pub fn run(args: &Args) -> ExitCode {
         at(&mut times, 1.0),
     );
     println!("path length (joint space, radians) median {:.3}", at(&mut planned_lengths, 0.5) / 1e6);
+    if exact.is_some() {
+        println!("every path passing was checked by the exact tier too, in {exact_time:.1} s");
+    }
     if args.simplify {
         println!(
             "with simplification: median {:.1} µs, 95th percentile {:.1} µs; path length median {:.3}",

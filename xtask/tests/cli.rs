@@ -62,7 +62,7 @@ fn bad_problems_exit_2_with_an_error_document() {
         (format!(r#"{{"world": {grid}, "start": [0, 0], "goal": [3, 2], "planner": {{"name": "teleport"}}}}"#), "unknown variant"),
         (format!(r#"{{"world": {grid}, "start": [1, 1], "goal": [3, 2], "planner": {{"name": "astar"}}}}"#), "blocked"),
         (format!(r#"{{"world": {grid}, "start": [0, 0], "goal": [30, 2], "planner": {{"name": "astar"}}}}"#), "outside"),
-        (format!(r#"{{"world": {grid}, "goal": [3, 2], "planner": {{"name": "astar"}}}}"#), "missing field `start`"),
+        (format!(r#"{{"world": {grid}, "goal": [3, 2], "planner": {{"name": "astar"}}}}"#), "the problem needs a \"start\""),
         (r#"{"world": {"grid": {"map": "broken.map"}}, "start": [0, 0], "goal": [1, 0], "planner": {"name": "astar"}}"#.into(), "line 6"),
         (r#"{"world": {"grid": {"map": "nowhere.map"}}, "start": [0, 0], "goal": [1, 0], "planner": {"name": "astar"}}"#.into(), "nowhere.map"),
         ("{ not json".into(), "invalid problem"),

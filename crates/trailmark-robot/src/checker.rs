@@ -31,6 +31,7 @@
 use nalgebra::{Point3, SVector};
 use trailmark_space::{Joints, Rn, SpaceError, Validity};
 
+use crate::cloud::PointCloud;
 use crate::error::RobotError;
 use crate::motion;
 use crate::robot::{Group, Robot};
@@ -51,6 +52,8 @@ pub struct ArmChecker {
     pub(crate) obstacles: Vec<Obstacle>,
     /// For each obstacle, the links allowed to touch it.
     pub(crate) allowed_links: Vec<Vec<usize>>,
+    /// The scene's point clouds, and for each, the links allowed to touch it.
+    pub(crate) clouds: Vec<(PointCloud, Vec<usize>)>,
     pub(crate) group: Group,
     /// A value per joint of the robot: the start state's, for the joints outside the group.
     pub(crate) template: Vec<f64>,
@@ -80,15 +83,7 @@ impl ArmChecker {
         start: Vec<f64>,
         step: f64,
     ) -> Result<ArmChecker, RobotError> {
-        robot.link_poses(&start)?;
-        if !(step.is_finite() && step > 0.0) {
-            return Err(RobotError::Invalid {
-                element: "checker".into(),
-                attribute: "step",
-                reason: "a positive finite length",
-                value: step.to_string(),
-            });
-        }
+        check_start_and_step(&robot, &start, step, "checker")?;
         let model = SphereModel::new(&robot, srdf, &scene.allowed)?;
         let moving = moving_links(&robot, &group);
         let spheres = &model.spheres;
@@ -101,45 +96,32 @@ impl ArmChecker {
                 }
             }
         }
-        let allowed_links = scene
-            .obstacles
-            .iter()
-            .map(|o| {
-                let other = |(a, b): &(String, String)| {
-                    if *a == o.id {
-                        Some(b.clone())
-                    } else if *b == o.id {
-                        Some(a.clone())
-                    } else {
-                        None
-                    }
-                };
-                scene.allowed.iter().filter_map(other).filter_map(|name| robot.link_index(&name)).collect()
-            })
-            .collect();
-        let extension = extension(&robot, &group, &start);
-        let moved = moved_by(&robot, &group, &model, &extension);
-        let by_joint = |instances: &mut dyn Iterator<Item = &Moved>| {
-            let mut r = vec![0.0; group.joints.len()];
-            for m in instances {
-                r[m.variable] += m.weight;
-            }
-            r
+        // The links the scene's matrix allows to touch the object `id`.
+        let allowed = |id: &str| -> Vec<usize> {
+            let other = |(a, b): &(String, String)| {
+                if a == id {
+                    Some(b.clone())
+                } else if b == id {
+                    Some(a.clone())
+                } else {
+                    None
+                }
+            };
+            scene.allowed.iter().filter_map(other).filter_map(|name| robot.link_index(&name)).collect()
         };
-        let reach = moved.iter().map(|m| by_joint(&mut m.iter())).collect();
-        let pair_reach = pairs
-            .iter()
-            .map(|&(a, b)| {
-                let (ma, mb) = (&moved[a as usize], &moved[b as usize]);
-                let only = |x: &'_ Moved, other: &[Moved]| !other.iter().any(|o| o.joint == x.joint);
-                by_joint(&mut ma.iter().filter(|x| only(x, mb)).chain(mb.iter().filter(|x| only(x, ma))))
-            })
-            .collect();
+        let allowed_links = scene.obstacles.iter().map(|o| allowed(&o.id)).collect();
+        let clouds = scene.clouds.iter().map(|c| (c.clone(), allowed(c.id()))).collect();
+        let extension = extension(&robot, &group, &start);
+        let items: Vec<(usize, f64)> = model.spheres.iter().map(|s| (s.link, s.centre.norm())).collect();
+        let moved = moved_by(&robot, &group, &items, &extension);
+        let reach = reaches(&group, &moved);
+        let pair_reach = pair_reaches(&group, &moved, pairs.iter().map(|&(a, b)| (a as usize, b as usize)));
         Ok(ArmChecker {
             robot,
             model,
             obstacles: scene.obstacles.clone(),
             allowed_links,
+            clouds,
             group,
             template: start,
             pairs,
@@ -148,6 +130,27 @@ impl ArmChecker {
             extension,
             step,
         })
+    }
+
+    /// This checker with every sphere of link `l` grown by `growth[l]` (a value per link of
+    /// the robot, each not negative and finite): for example by what
+    /// [`cover::uncovered`](crate::cover::uncovered) finds, so that the spheres contain the
+    /// robot's own geometry and the checker is conservative for it too. Errors on a `growth`
+    /// of another length or with a value that is negative or not finite.
+    pub fn grown(mut self, growth: &[f64]) -> Result<ArmChecker, RobotError> {
+        if growth.len() != self.robot.urdf().links.len() || !growth.iter().all(|g| g.is_finite() && *g >= 0.0)
+        {
+            return Err(RobotError::Invalid {
+                element: "checker".into(),
+                attribute: "growth",
+                reason: "a length not negative and finite per link of the robot",
+                value: format!("{growth:?}"),
+            });
+        }
+        for s in &mut self.model.spheres {
+            s.radius += growth[s.link];
+        }
+        Ok(self)
     }
 
     /// The group planned for.
@@ -217,11 +220,10 @@ impl ArmChecker {
     /// Whether the straight motion from `a` to `b` in joint space is free, as the
     /// [module](self) says; continuous joints turn the short way round.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
-        let dims = self.group.joints.len();
-        if a.len() != dims || b.len() != dims || !a.iter().chain(b).all(|v| v.is_finite()) {
+        if !is_motion(&self.group, a, b) {
             return false;
         }
-        let mut delta = Vec::with_capacity(dims);
+        let mut delta = Vec::with_capacity(a.len());
         motion_delta(&self.group, a, b, &mut delta);
         let speeds: Vec<f64> = self.reach.iter().map(|r| speed(r, &delta)).collect();
         let pair_speeds: Vec<f64> = self.pair_reach.iter().map(|r| speed(r, &delta)).collect();
@@ -253,22 +255,37 @@ impl ArmChecker {
                 }
             }
         }
-        self.pairs.iter().enumerate().all(|(p, &(a, b))| {
+        let pairs_clear = self.pairs.iter().enumerate().all(|(p, &(a, b))| {
             let (sa, sb) = (&self.model.spheres[a as usize], &self.model.spheres[b as usize]);
             let reach = sa.radius + sb.radius + pair_grows.get(p).copied().unwrap_or(0.0);
             (centres[a as usize] - centres[b as usize]).norm_squared() > reach * reach
+        });
+        pairs_clear && !self.cloud_hit(&centres, grows)
+    }
+
+    /// Whether a sphere at `q`, each grown by its entry of `grows` (none where empty), touches a
+    /// point cloud's ball; `true` for a `q` of another length or not finite.
+    pub(crate) fn meets_cloud(&self, q: &[f64], grows: &[f64]) -> bool {
+        if self.clouds.is_empty() {
+            return false;
+        }
+        self.centres(q).is_none_or(|centres| self.cloud_hit(&centres, grows))
+    }
+
+    /// Whether a sphere with its centre in `centres`, grown by its entry of `grows`, touches a
+    /// point cloud's ball.
+    fn cloud_hit(&self, centres: &[Point3<f64>], grows: &[f64]) -> bool {
+        self.clouds.iter().any(|(cloud, allowed)| {
+            self.model.spheres.iter().zip(centres).enumerate().any(|(k, (s, c))| {
+                !allowed.contains(&s.link)
+                    && cloud.clearance(c) <= s.radius + grows.get(k).copied().unwrap_or(0.0)
+            })
         })
     }
 
     /// Every sphere's centre at `q`; `None` for a `q` of another length or not finite.
     fn centres(&self, q: &[f64]) -> Option<Vec<Point3<f64>>> {
-        if q.len() != self.group.joints.len() || !q.iter().all(|v| v.is_finite()) {
-            return None;
-        }
-        let mut values = self.template.clone();
-        for (&j, &v) in self.group.joints.iter().zip(q) {
-            values[j] = v;
-        }
+        let values = robot_values(&self.group, &self.template, q)?;
         let mut poses = Vec::new();
         self.robot.poses_into(&values, &mut poses);
         Some(self.model.spheres.iter().map(|s| poses[s.link] * Point3::from(s.centre)).collect())
@@ -295,6 +312,14 @@ impl ArmChecker {
                 let depth = s.radius - clearance(o, c);
                 if depth >= 0.0 && !allowed.contains(&s.link) {
                     add(s.link, o.id.clone(), depth);
+                }
+            }
+        }
+        for (cloud, allowed) in &self.clouds {
+            for (s, c) in self.model.spheres.iter().zip(&centres) {
+                let depth = s.radius - cloud.clearance(c);
+                if depth >= 0.0 && !allowed.contains(&s.link) {
+                    add(s.link, cloud.id().to_string(), depth);
                 }
             }
         }
@@ -350,7 +375,7 @@ fn squared_distance(o: &Obstacle, c: &Point3<f64>) -> f64 {
 }
 
 /// Which links move when the group's joints (or joints mimicking them) move.
-fn moving_links(robot: &Robot, group: &Group) -> Vec<bool> {
+pub(crate) fn moving_links(robot: &Robot, group: &Group) -> Vec<bool> {
     let joints = &robot.urdf().joints;
     let mut moving = vec![false; robot.urdf().links.len()];
     let moves = |j: usize| {
@@ -376,31 +401,101 @@ pub(crate) struct Moved {
     pub(crate) weight: f64,
 }
 
-/// Per sphere, the driven joints above it and how far each moves it.
-fn moved_by(robot: &Robot, group: &Group, model: &SphereModel, extension: &[f64]) -> Vec<Vec<Moved>> {
+/// Per item (a link, and the farthest its points are from the link's origin), the driven
+/// joints above it and how far each moves it.
+pub(crate) fn moved_by(
+    robot: &Robot,
+    group: &Group,
+    items: &[(usize, f64)],
+    extension: &[f64],
+) -> Vec<Vec<Moved>> {
     let joints = &robot.urdf().joints;
     let driven: Vec<(usize, usize, f64)> = (0..joints.len())
         .filter_map(|j| robot.driver(group, j).map(|(v, multiplier, _)| (j, v, multiplier.abs())))
         .filter(|&(j, _, _)| joints[j].kind != JointKind::Fixed)
         .collect();
-    model
-        .spheres
+    items
         .iter()
-        .map(|s| {
+        .map(|&(link, offset)| {
             driven
                 .iter()
                 .filter_map(|&(joint, variable, multiplier)| {
-                    let length = chain_length(robot, extension, robot.joint_links(joint).1, s.link)?;
-                    let distance = if joints[joint].kind == JointKind::Prismatic {
-                        1.0
-                    } else {
-                        length + s.centre.norm()
-                    };
+                    let length = chain_length(robot, extension, robot.joint_links(joint).1, link)?;
+                    let distance =
+                        if joints[joint].kind == JointKind::Prismatic { 1.0 } else { length + offset };
                     Some(Moved { joint, variable, weight: multiplier * distance })
                 })
                 .collect()
         })
         .collect()
+}
+
+/// Per item of `moved`, how far it moves per unit of each group joint's value.
+pub(crate) fn reaches(group: &Group, moved: &[Vec<Moved>]) -> Vec<Vec<f64>> {
+    moved.iter().map(|m| by_joint(group, &mut m.iter())).collect()
+}
+
+/// Per pair of items of `moved`, how much their distance changes per unit of each group
+/// joint's value: the joints moving both together change nothing.
+pub(crate) fn pair_reaches(
+    group: &Group,
+    moved: &[Vec<Moved>],
+    pairs: impl Iterator<Item = (usize, usize)>,
+) -> Vec<Vec<f64>> {
+    pairs
+        .map(|(a, b)| {
+            let (ma, mb) = (&moved[a], &moved[b]);
+            let only = |x: &'_ Moved, other: &[Moved]| !other.iter().any(|o| o.joint == x.joint);
+            by_joint(group, &mut ma.iter().filter(|x| only(x, mb)).chain(mb.iter().filter(|x| only(x, ma))))
+        })
+        .collect()
+}
+
+fn by_joint(group: &Group, instances: &mut dyn Iterator<Item = &Moved>) -> Vec<f64> {
+    let mut r = vec![0.0; group.joints.len()];
+    for m in instances {
+        r[m.variable] += m.weight;
+    }
+    r
+}
+
+/// Checks what both checkers are built from: `start` a finite value per joint of `robot`,
+/// and `step` positive and finite.
+pub(crate) fn check_start_and_step(
+    robot: &Robot,
+    start: &[f64],
+    step: f64,
+    element: &str,
+) -> Result<(), RobotError> {
+    robot.link_poses(start)?;
+    if !(step.is_finite() && step > 0.0) {
+        return Err(RobotError::Invalid {
+            element: element.into(),
+            attribute: "step",
+            reason: "a positive finite length",
+            value: step.to_string(),
+        });
+    }
+    Ok(())
+}
+
+/// Whether `a` and `b` are finite states of `group` (a value per group joint).
+pub(crate) fn is_motion(group: &Group, a: &[f64], b: &[f64]) -> bool {
+    let dims = group.joints.len();
+    a.len() == dims && b.len() == dims && a.iter().chain(b).all(|v| v.is_finite())
+}
+
+/// A value per joint of the robot: `template`'s, with the group's joints at `q`; `None` for a
+/// `q` of another length or not finite.
+pub(crate) fn robot_values(group: &Group, template: &[f64], q: &[f64]) -> Option<Vec<f64>> {
+    if q.len() != group.joints.len() || !q.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    let mut values = template.to_vec();
+    for (&j, &v) in group.joints.iter().zip(q) {
+        values[j] = v;
+    }
+    Some(values)
 }
 
 /// How fast something moves along a motion of joint differences `delta` at most, for its

@@ -131,4 +131,12 @@ pub enum RobotError {
         /// The most taken.
         max: usize,
     },
+    /// A mesh file could not be found, read or parsed, or is not a mesh.
+    #[error("mesh {file:?}: {reason}")]
+    Mesh {
+        /// The file as the URDF names it, or as found.
+        file: String,
+        /// What is wrong.
+        reason: String,
+    },
 }

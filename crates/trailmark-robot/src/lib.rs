@@ -12,7 +12,10 @@
 //!   (see [`checker`]). It is the planners' `Validity` over the group's joint space
 //!   ([`ArmChecker::space`]);
 //! - [`BatchChecker`]: the same checks for eight configurations at once in SIMD lanes, the fast
-//!   path (see [`batch`]).
+//!   path (see [`batch`]);
+//! - [`ExactChecker`]: the exact tier, the URDF's own shapes (meshes from OBJ and STL files,
+//!   [`mesh`]) checked by parry3d: the reference a path planned with spheres is checked against
+//!   (see [`exact`]).
 //!
 //! ```
 //! use trailmark_core::termination::Termination;
@@ -60,7 +63,11 @@
 
 pub mod batch;
 pub mod checker;
+pub mod cloud;
+pub mod cover;
 mod error;
+pub mod exact;
+pub mod mesh;
 mod motion;
 pub mod request;
 mod robot;
@@ -72,6 +79,7 @@ pub mod urdf;
 pub use batch::{BatchChecker, Simd};
 pub use checker::{ArmChecker, Contact, DEFAULT_STEP};
 pub use error::RobotError;
+pub use exact::ExactChecker;
 /// nalgebra (0.35), whose poses, vectors and axes the robot's model is written in, so a user names
 /// them without a version-matched dependency of their own.
 pub use nalgebra;

@@ -1,5 +1,6 @@
 //! MoveIt planning scenes (`moveit_msgs/PlanningScene` as YAML): the world's collision objects
-//! (boxes, cylinders and spheres with their poses) and the allowed collision matrix.
+//! (boxes, cylinders and spheres with their poses) and the allowed collision matrix; and the
+//! point clouds a robot's sensors see ([`Scene::add_cloud`]).
 //!
 //! ```
 //! use trailmark_robot::scene::{Scene, Shape};
@@ -21,6 +22,7 @@ use std::path::Path;
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use trailmark_core::yaml::{self, Yaml};
 
+use crate::cloud::PointCloud;
 use crate::error::RobotError;
 use crate::urdf::read;
 
@@ -34,6 +36,8 @@ pub struct Scene {
     pub obstacles: Vec<Obstacle>,
     /// Pairs of names (links, or objects) the matrix allows to collide: never checked.
     pub allowed: Vec<(String, String)>,
+    /// Point clouds, each point a ball ([`Scene::add_cloud`]).
+    pub clouds: Vec<PointCloud>,
 }
 
 /// One primitive of a collision object.
@@ -110,6 +114,12 @@ impl Scene {
             }
         }
         Ok(scene)
+    }
+
+    /// Adds a point cloud's balls to the obstacles (an allowed collision matrix names it by
+    /// its id).
+    pub fn add_cloud(&mut self, cloud: PointCloud) {
+        self.clouds.push(cloud);
     }
 
     /// Reads the scene file at `path`.

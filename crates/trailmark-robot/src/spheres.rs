@@ -18,7 +18,7 @@ use trailmark_core::UnionFind;
 use crate::error::RobotError;
 use crate::robot::Robot;
 use crate::srdf::Srdf;
-use crate::urdf::{Geometry, JointKind};
+use crate::urdf::JointKind;
 
 /// One sphere of a link.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,53 +49,14 @@ impl SphereModel {
         let mut spheres = Vec::new();
         for (link, l) in urdf.links.iter().enumerate() {
             for c in &l.collisions {
-                let radius = match &c.geometry {
-                    Geometry::Sphere { radius } => *radius,
-                    Geometry::Box { size } => size.norm() / 2.0,
-                    Geometry::Cylinder { radius, length } => radius.hypot(length / 2.0),
-                    Geometry::Capsule { radius, length } => radius + length / 2.0,
-                    Geometry::Mesh { .. } => {
-                        return Err(RobotError::NoSphereCover { link: l.name.clone(), shape: "mesh" });
-                    }
-                };
+                let radius = c.geometry.bounding_radius().ok_or_else(|| RobotError::NoSphereCover {
+                    link: l.name.clone(),
+                    shape: c.geometry.kind(),
+                })?;
                 spheres.push(LinkSphere { link, centre: c.origin.translation.vector, radius });
             }
         }
-        // Rigid bodies: links joined by fixed joints.
-        let mut bodies = UnionFind::new(urdf.links.len());
-        for (j, joint) in urdf.joints.iter().enumerate() {
-            if joint.kind == JointKind::Fixed {
-                let (parent, child) = robot.joint_links(j);
-                bodies.union(parent as u32, child as u32);
-            }
-        }
-        let body = |link: usize| bodies.root(link as u32);
-        let mut adjacent = HashSet::new();
-        for (j, joint) in urdf.joints.iter().enumerate() {
-            if joint.kind != JointKind::Fixed {
-                let (parent, child) = robot.joint_links(j);
-                adjacent.insert(ordered(body(parent) as usize, body(child) as usize));
-            }
-        }
-        let mut excluded = HashSet::new();
-        for a in 0..urdf.links.len() {
-            for b in a + 1..urdf.links.len() {
-                let (x, y) = (body(a), body(b));
-                if x == y || adjacent.contains(&ordered(x as usize, y as usize)) {
-                    excluded.insert((a, b));
-                }
-            }
-        }
-        for (a, b) in &srdf.disabled {
-            let find =
-                |name: &String| robot.link_index(name).ok_or_else(|| RobotError::UnknownLink(name.clone()));
-            excluded.insert(ordered(find(a)?, find(b)?));
-        }
-        for (a, b) in allowed {
-            if let (Some(a), Some(b)) = (robot.link_index(a), robot.link_index(b)) {
-                excluded.insert(ordered(a, b));
-            }
-        }
+        let excluded = excluded_pairs(robot, srdf, allowed)?;
         Ok(SphereModel { spheres, excluded })
     }
 
@@ -103,6 +64,54 @@ impl SphereModel {
     pub fn checks(&self, a: usize, b: usize) -> bool {
         a != b && !self.excluded.contains(&ordered(a, b))
     }
+}
+
+/// The link pairs never checked against each other (the smaller index first): links of one
+/// rigid body (joined by fixed joints), bodies one movable joint apart, the pairs `srdf`
+/// disables and those `allowed` names (names of no link passed over). Errors on a disabled
+/// pair naming no link.
+pub(crate) fn excluded_pairs(
+    robot: &Robot,
+    srdf: &Srdf,
+    allowed: &[(String, String)],
+) -> Result<HashSet<(usize, usize)>, RobotError> {
+    let urdf = robot.urdf();
+    // Rigid bodies: links joined by fixed joints.
+    let mut bodies = UnionFind::new(urdf.links.len());
+    for (j, joint) in urdf.joints.iter().enumerate() {
+        if joint.kind == JointKind::Fixed {
+            let (parent, child) = robot.joint_links(j);
+            bodies.union(parent as u32, child as u32);
+        }
+    }
+    let body = |link: usize| bodies.root(link as u32);
+    let mut adjacent = HashSet::new();
+    for (j, joint) in urdf.joints.iter().enumerate() {
+        if joint.kind != JointKind::Fixed {
+            let (parent, child) = robot.joint_links(j);
+            adjacent.insert(ordered(body(parent) as usize, body(child) as usize));
+        }
+    }
+    let mut excluded = HashSet::new();
+    for a in 0..urdf.links.len() {
+        for b in a + 1..urdf.links.len() {
+            let (x, y) = (body(a), body(b));
+            if x == y || adjacent.contains(&ordered(x as usize, y as usize)) {
+                excluded.insert((a, b));
+            }
+        }
+    }
+    for (a, b) in &srdf.disabled {
+        let find =
+            |name: &String| robot.link_index(name).ok_or_else(|| RobotError::UnknownLink(name.clone()));
+        excluded.insert(ordered(find(a)?, find(b)?));
+    }
+    for (a, b) in allowed {
+        if let (Some(a), Some(b)) = (robot.link_index(a), robot.link_index(b)) {
+            excluded.insert(ordered(a, b));
+        }
+    }
+    Ok(excluded)
 }
 
 fn ordered(a: usize, b: usize) -> (usize, usize) {

@@ -97,6 +97,18 @@ pub enum Geometry {
 }
 
 impl Geometry {
+    /// The radius of the smallest ball about the shape's origin that contains it; `None` for a
+    /// mesh, whose vertices are in its file.
+    pub fn bounding_radius(&self) -> Option<f64> {
+        match self {
+            Geometry::Sphere { radius } => Some(*radius),
+            Geometry::Box { size } => Some(size.norm() / 2.0),
+            Geometry::Cylinder { radius, length } => Some(radius.hypot(length / 2.0)),
+            Geometry::Capsule { radius, length } => Some(radius + length / 2.0),
+            Geometry::Mesh { .. } => None,
+        }
+    }
+
     /// The shape's name, for messages.
     pub fn kind(&self) -> &'static str {
         match self {

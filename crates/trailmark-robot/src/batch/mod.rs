@@ -126,7 +126,7 @@ impl BatchChecker {
         }
         let lanes: Vec<[f32; LANES]> = q.iter().map(|&v| [v as f32; LANES]).collect();
         let scale = vec![0.0; self.program.frames.len() + self.program.pairs.len()];
-        self.run(&lanes, &[0.0; LANES], &scale, u8::MAX, 1) == 0
+        self.run(&lanes, &[0.0; LANES], &scale, u8::MAX, 1) == 0 && !self.checker.meets_cloud(q, &[])
     }
 
     /// Whether the straight motion from `a` to `b` is free, by the rule the [`ArmChecker`]
@@ -149,6 +149,11 @@ impl BatchChecker {
         lanes.clear();
         lanes.resize(a.len(), [0.0f32; LANES]);
         let mut grow = [0.0f32; LANES];
+        // Point clouds are tested in `f64` after the lanes, each sphere grown by its own speed.
+        let clouds = !self.checker.clouds.is_empty();
+        let sphere_speeds: Vec<f64> =
+            if clouds { self.checker.reach.iter().map(|r| speed(r, &delta)).collect() } else { Vec::new() };
+        let (mut q, mut grows) = (vec![0.0; a.len()], vec![0.0; sphere_speeds.len()]);
         let free = motion::covered(rate, self.checker.step / 2.0, LANES, |batch, stop| {
             for l in 0..LANES {
                 // Lanes beyond the batch repeat its first state.
@@ -161,7 +166,24 @@ impl BatchChecker {
             // Lanes beyond the batch repeat its first state: they stop when it does.
             let beyond = u8::MAX.checked_shl(batch.len() as u32).unwrap_or(0);
             let stop = if stop & 1 != 0 { stop as u8 | beyond } else { stop as u8 };
-            u32::from(self.run(&lanes, &grow, &scale, stop, batch.len()) & !beyond)
+            let mut hits = self.run(&lanes, &grow, &scale, stop, batch.len()) & !beyond;
+            if clouds {
+                for (l, sample) in batch.iter().enumerate() {
+                    if hits & (1 << l) != 0 {
+                        continue;
+                    }
+                    for (d, v) in q.iter_mut().enumerate() {
+                        *v = along(a[d], delta[d], sample.t);
+                    }
+                    for (g, v) in grows.iter_mut().zip(&sphere_speeds) {
+                        *g = if rate > 0.0 { sample.grow * v / rate } else { 0.0 };
+                    }
+                    if self.checker.meets_cloud(&q, &grows) {
+                        hits |= 1 << l;
+                    }
+                }
+            }
+            u32::from(hits)
         });
         BUFFERS.set((delta, speeds, scale, lanes));
         free

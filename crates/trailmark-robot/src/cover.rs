@@ -1,0 +1,298 @@
+//! Sphere covers that contain a robot's own collision geometry. A spherized URDF is an
+//! approximation (the Panda's leaves centimetres of its meshes outside, between its spheres):
+//! [`uncovered`] says how far, link by link, and [`cover`] adds spheres where the geometry
+//! sticks out and grows them all by a tolerance, so that the spheres contain it and the sphere
+//! checkers are conservative for the robot's own shapes too.
+//!
+//! The geometry is sampled finely enough to bound what lies between samples: each mesh
+//! triangle is split until no edge is longer than `resolution` (every point of it is then
+//! within `resolution / √3` of a corner of its piece, which is added to the growth); a box's
+//! faces, a cylinder's and a capsule's surface likewise. A sphere of the geometry adds its own
+//! radius to the distance of its centre.
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use nalgebra::{Isometry3, Point3, Vector3};
+
+use crate::error::RobotError;
+use crate::mesh::{Mesh, resolve};
+use crate::robot::Robot;
+use crate::urdf::{Collision, Geometry, Urdf};
+
+/// The default resolution of [`uncovered`]: 2 mm (the growth then includes about 1.2 mm for
+/// what lies between the samples).
+pub const DEFAULT_COVER_RESOLUTION: f64 = 0.002;
+
+/// The most sample points of one link's geometry, a bound on the time a hostile file can
+/// take (a resolution far below the geometry's size asks for more).
+pub const MAX_COVER_SAMPLES: usize = 50_000_000;
+
+/// For each link of `spheres` (a robot whose links are covered by spheres), how far the
+/// collision geometry of the same link of `geometry` (the robot with its own meshes and
+/// primitives; mesh files found from `urdf_dir`) lies outside that link's spheres, at most
+/// (0 where it lies inside, or where the link has no geometry). Errors on a link with geometry
+/// but no sphere, a link of `geometry` that `spheres` lacks, a mesh that cannot be read, a
+/// resolution that is not positive and finite, and more than [`MAX_COVER_SAMPLES`] samples.
+pub fn uncovered(
+    spheres: &Robot,
+    geometry: &Robot,
+    urdf_dir: &Path,
+    resolution: f64,
+) -> Result<Vec<f64>, RobotError> {
+    let mut growth = vec![0.0; spheres.urdf().links.len()];
+    for (index, samples) in link_samples(spheres, geometry, urdf_dir, resolution)? {
+        let balls = balls(spheres.urdf(), index);
+        growth[index] = samples.iter().map(|s| outside(&balls, s)).fold(0.0, f64::max);
+    }
+    Ok(growth)
+}
+
+/// The most spheres [`cover`] adds to one link.
+pub const MAX_ADDED_SPHERES: usize = 200;
+
+/// `spheres`' URDF with spheres added where the geometry of `geometry`'s links sticks out of
+/// them by more than `tolerance` (each new sphere containing the samples of one such place),
+/// then every sphere of a link with geometry grown by `tolerance`: every point of the geometry
+/// then lies within a sphere of its link (up to the sampling's bound, included). The number of
+/// spheres added to each link comes back too. Errors as [`uncovered`], on a tolerance that is
+/// not positive and finite, and on a link needing more than [`MAX_ADDED_SPHERES`].
+pub fn cover(
+    spheres: &Robot,
+    geometry: &Robot,
+    urdf_dir: &Path,
+    resolution: f64,
+    tolerance: f64,
+) -> Result<(Urdf, Vec<usize>), RobotError> {
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(invalid("tolerance", tolerance));
+    }
+    let mut urdf = spheres.urdf().clone();
+    let mut added = vec![0; urdf.links.len()];
+    for (index, samples) in link_samples(spheres, geometry, urdf_dir, resolution)? {
+        let mut balls = balls(&urdf, index);
+        // The link's axis: the segments between its spheres' centres. A new sphere is centred
+        // on it, so that it stays within the link's width rather than bulging from its surface.
+        let centres: Vec<Vector3<f64>> = balls.iter().map(|b| b.0).collect();
+        let on_axis = |p: &Point3<f64>| {
+            let mut best = centres[0];
+            for (i, a) in centres.iter().enumerate() {
+                for b in &centres[i..] {
+                    let ab = b - a;
+                    let t = if ab.norm_squared() > 0.0 {
+                        ((p.coords - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0)
+                    } else {
+                        0.0
+                    };
+                    let q = a + ab * t;
+                    if (p.coords - q).norm() < (p.coords - best).norm() {
+                        best = q;
+                    }
+                }
+            }
+            best
+        };
+        let mut out: Vec<f64> = samples.iter().map(|s| outside(&balls, s)).collect();
+        loop {
+            let (worst, at) = out
+                .iter()
+                .enumerate()
+                .fold((f64::NEG_INFINITY, 0), |m, (i, &o)| if o > m.0 { (o, i) } else { m });
+            if worst <= tolerance {
+                break;
+            }
+            if added[index] == MAX_ADDED_SPHERES {
+                return Err(RobotError::TooLarge {
+                    what: "the spheres a link's cover needs",
+                    count: added[index] + 1,
+                    max: MAX_ADDED_SPHERES,
+                });
+            }
+            let (p, slack) = samples[at];
+            let centre = on_axis(&p);
+            let radius = (p.coords - centre).norm() + slack;
+            balls.push((centre, radius));
+            added[index] += 1;
+            for (o, s) in out.iter_mut().zip(&samples) {
+                *o = o.min((s.0.coords - centre).norm() + s.1 - radius);
+            }
+        }
+        let link = &mut urdf.links[index];
+        link.collisions.retain(|c| !matches!(c.geometry, Geometry::Sphere { .. }));
+        for (centre, radius) in balls {
+            link.collisions.push(Collision {
+                origin: Isometry3::translation(centre.x, centre.y, centre.z),
+                geometry: Geometry::Sphere { radius: radius + tolerance },
+            });
+        }
+    }
+    Ok((urdf, added))
+}
+
+/// A point of a link's geometry (in the link's frame) and how far the geometry may reach
+/// beyond it (the sampling's bound, or a sphere's radius).
+type Sample = (Point3<f64>, f64);
+
+/// The spheres of link `index` of `urdf`: centre and radius.
+fn balls(urdf: &Urdf, index: usize) -> Vec<(Vector3<f64>, f64)> {
+    urdf.links[index]
+        .collisions
+        .iter()
+        .filter_map(|c| match c.geometry {
+            Geometry::Sphere { radius } => Some((c.origin.translation.vector, radius)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// How far the geometry about `sample` reaches outside the nearest of `balls`.
+fn outside(balls: &[(Vector3<f64>, f64)], sample: &Sample) -> f64 {
+    balls.iter().map(|(c, r)| (sample.0.coords - c).norm() - r).fold(f64::INFINITY, f64::min) + sample.1
+}
+
+fn invalid(attribute: &'static str, value: f64) -> RobotError {
+    RobotError::Invalid {
+        element: "cover".into(),
+        attribute,
+        reason: "a positive finite length",
+        value: value.to_string(),
+    }
+}
+
+/// Samples of the geometry of every link of `geometry` that has some, by the index of the same
+/// link in `spheres` (which must have a sphere there).
+fn link_samples(
+    spheres: &Robot,
+    geometry: &Robot,
+    urdf_dir: &Path,
+    resolution: f64,
+) -> Result<Vec<(usize, Vec<Sample>)>, RobotError> {
+    if !(resolution.is_finite() && resolution > 0.0) {
+        return Err(invalid("resolution", resolution));
+    }
+    let mut meshes: HashMap<String, Mesh> = HashMap::new();
+    let mut found = Vec::new();
+    for link in &geometry.urdf().links {
+        if link.collisions.is_empty() {
+            continue;
+        }
+        let index =
+            spheres.link_index(&link.name).ok_or_else(|| RobotError::UnknownLink(link.name.clone()))?;
+        if balls(spheres.urdf(), index).is_empty() {
+            return Err(RobotError::NoSphereCover {
+                link: link.name.clone(),
+                shape: "geometry without spheres",
+            });
+        }
+        let mut samples: Vec<Sample> = Vec::new();
+        for c in &link.collisions {
+            let mut visit = |p: Point3<f64>, extra: f64| -> Result<(), RobotError> {
+                if samples.len() == MAX_COVER_SAMPLES {
+                    return Err(RobotError::TooLarge {
+                        what: "a link's cover samples",
+                        count: samples.len() + 1,
+                        max: MAX_COVER_SAMPLES,
+                    });
+                }
+                samples.push((c.origin * p, extra));
+                Ok(())
+            };
+            match &c.geometry {
+                Geometry::Mesh { filename, scale } => {
+                    if !meshes.contains_key(filename) {
+                        meshes.insert(filename.clone(), Mesh::from_file(resolve(filename, urdf_dir)?)?);
+                    }
+                    let mesh = &meshes[filename];
+                    let at = |i: u32| Point3::from(mesh.vertices[i as usize].coords.component_mul(scale));
+                    for t in &mesh.triangles {
+                        triangle([at(t[0]), at(t[1]), at(t[2])], resolution, &mut visit)?;
+                    }
+                }
+                Geometry::Sphere { radius } => visit(Point3::origin(), *radius)?,
+                Geometry::Box { size } => {
+                    let h = size / 2.0;
+                    let corner = |x: f64, y: f64, z: f64| Point3::new(x * h.x, y * h.y, z * h.z);
+                    // Each face as two triangles.
+                    for axis in 0..3 {
+                        for side in [-1.0, 1.0] {
+                            let mut c = [Point3::origin(); 4];
+                            for (k, (u, v)) in
+                                [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].iter().enumerate()
+                            {
+                                let mut w = [0.0; 3];
+                                w[axis] = side;
+                                w[(axis + 1) % 3] = *u;
+                                w[(axis + 2) % 3] = *v;
+                                c[k] = corner(w[0], w[1], w[2]);
+                            }
+                            triangle([c[0], c[1], c[2]], resolution, &mut visit)?;
+                            triangle([c[0], c[2], c[3]], resolution, &mut visit)?;
+                        }
+                    }
+                }
+                Geometry::Cylinder { radius, length } => {
+                    around_z(*radius, -length / 2.0, length / 2.0, 0.0, resolution, &mut visit)?;
+                }
+                Geometry::Capsule { radius, length } => {
+                    // The axis sampled, each sample a ball of the capsule's radius.
+                    let steps = (length / resolution).ceil().max(1.0) as usize;
+                    for i in 0..=steps {
+                        let z = -length / 2.0 + length * i as f64 / steps as f64;
+                        visit(Point3::new(0.0, 0.0, z), radius + resolution / 2.0)?;
+                    }
+                }
+            }
+        }
+        found.push((index, samples));
+    }
+    Ok(found)
+}
+
+/// Visits points of the triangle `t` (every point of it within `resolution / √3` of one, which
+/// each visit adds): its corners, after splitting it until no edge is longer than `resolution`.
+fn triangle(
+    t: [Point3<f64>; 3],
+    resolution: f64,
+    visit: &mut dyn FnMut(Point3<f64>, f64) -> Result<(), RobotError>,
+) -> Result<(), RobotError> {
+    let slack = resolution / 3f64.sqrt();
+    let longest = (t[0] - t[1]).norm().max((t[1] - t[2]).norm()).max((t[2] - t[0]).norm());
+    let n = (longest / resolution).ceil().max(1.0) as usize;
+    // A regular split into n² pieces: each edge of a piece is an edge of the triangle over n.
+    for i in 0..=n {
+        for j in 0..=n - i {
+            let (a, b) = (i as f64 / n as f64, j as f64 / n as f64);
+            let p = t[0] + (t[1] - t[0]) * a + (t[2] - t[0]) * b;
+            visit(p, slack)?;
+        }
+    }
+    Ok(())
+}
+
+/// Visits points of a cylinder's surface (side and caps) about z from `low` to `high`.
+fn around_z(
+    radius: f64,
+    low: f64,
+    high: f64,
+    extra: f64,
+    resolution: f64,
+    visit: &mut dyn FnMut(Point3<f64>, f64) -> Result<(), RobotError>,
+) -> Result<(), RobotError> {
+    // A polygon of `sides` inscribed in the circle: the circle lies within the sagitta of it.
+    let sides = ((std::f64::consts::TAU * radius / resolution).ceil() as usize).max(8);
+    let sagitta = radius * (1.0 - (std::f64::consts::PI / sides as f64).cos());
+    let rim = |k: usize, z: f64| {
+        let a = std::f64::consts::TAU * k as f64 / sides as f64;
+        Point3::new(radius * a.cos(), radius * a.sin(), z)
+    };
+    let mut with_sagitta = |p: Point3<f64>, slack: f64| visit(p, slack + sagitta + extra);
+    for k in 0..sides {
+        let (a0, a1) = (rim(k, low), rim(k + 1, low));
+        let (b0, b1) = (rim(k, high), rim(k + 1, high));
+        triangle([a0, a1, b1], resolution, &mut with_sagitta)?;
+        triangle([a0, b1, b0], resolution, &mut with_sagitta)?;
+        triangle([Point3::new(0.0, 0.0, low), a0, a1], resolution, &mut with_sagitta)?;
+        triangle([Point3::new(0.0, 0.0, high), b0, b1], resolution, &mut with_sagitta)?;
+    }
+    Ok(())
+}

@@ -10,7 +10,7 @@ use std::time::{Duration, Instant};
 
 use serde_json::json;
 use trailmark::core::termination::Termination;
-use trailmark::robot::cover::cover;
+use trailmark::robot::cover::{cover, spherize};
 use trailmark::robot::request::Request;
 use trailmark::robot::scene::Scene;
 use trailmark::robot::srdf::Srdf;
@@ -64,6 +64,10 @@ pub struct Args {
     /// conservative for the robot's own shapes.
     #[arg(long, requires = "exact")]
     pub cover: bool,
+    /// Plan with spheres made from `--urdf`'s own geometry (`cover::spherize`, 2 mm sampling,
+    /// 1 mm tolerance): for a URDF of meshes without a spherized twin.
+    #[arg(long, conflicts_with = "cover")]
+    pub spherize: bool,
 }
 
 /// A planner `verify mbm` runs.
@@ -182,7 +186,7 @@ pub struct Settings {
     pub simplify: bool,
 }
 
-/// The sampling and tolerance of `--cover`: 2 mm (1.2 mm for what lies between samples) and
+/// The sampling and tolerance of `--cover` and `--spherize`: 2 mm (1.2 mm for what lies between samples) and
 /// 1 mm; coarser covers make the Panda's neighbouring links touch at its home pose.
 const COVER_RESOLUTION: f64 = 0.002;
 const COVER_TOLERANCE: f64 = 0.001;
@@ -414,6 +418,17 @@ pub fn run(args: &Args) -> ExitCode {
         Err(e) => return crate::output::error_report(e),
     };
     let mut exact_time = 0.0;
+    if args.spherize {
+        let dir = args.urdf.parent().unwrap_or(Path::new("."));
+        match spherize(&arm.robot, dir, COVER_RESOLUTION, COVER_TOLERANCE).and_then(Robot::new) {
+            Ok(robot) => {
+                let count: usize = robot.urdf().links.iter().map(|l| l.collisions.len()).sum();
+                println!("spheres made from the URDF's own geometry: {count}");
+                arm.robot = robot;
+            }
+            Err(e) => return crate::output::error_report(e),
+        }
+    }
     if let (true, Some(geometry), Some(urdf)) = (args.cover, &exact, &args.exact) {
         let dir = urdf.parent().unwrap_or(Path::new("."));
         let covered = cover(&arm.robot, geometry, dir, COVER_RESOLUTION, COVER_TOLERANCE)

@@ -13,12 +13,12 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use nalgebra::{Isometry3, Point3, Vector3};
+use nalgebra::{Isometry3, Matrix3, Point3, SymmetricEigen, Vector3};
 
 use crate::error::RobotError;
 use crate::mesh::{Mesh, resolve};
 use crate::robot::Robot;
-use crate::urdf::{Collision, Geometry, Urdf};
+use crate::urdf::{Collision, Geometry, Link, Urdf};
 
 /// The default resolution of [`uncovered`]: 2 mm (the growth then includes about 1.2 mm for
 /// what lies between the samples).
@@ -70,71 +70,164 @@ pub fn cover(
     let mut urdf = spheres.urdf().clone();
     let mut added = vec![0; urdf.links.len()];
     for (index, samples) in link_samples(spheres, geometry, urdf_dir, resolution)? {
-        let mut balls = balls(&urdf, index);
-        // The link's axis: the segments between its spheres' centres. A new sphere is centred
-        // on it, so that it stays within the link's width rather than bulging from its surface.
-        let centres: Vec<Vector3<f64>> = balls.iter().map(|b| b.0).collect();
-        let on_axis = |p: &Point3<f64>| {
-            let mut best = centres[0];
-            for (i, a) in centres.iter().enumerate() {
-                for b in &centres[i..] {
-                    let ab = b - a;
-                    let t = if ab.norm_squared() > 0.0 {
-                        ((p.coords - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0)
-                    } else {
-                        0.0
-                    };
-                    let q = a + ab * t;
-                    if (p.coords - q).norm() < (p.coords - best).norm() {
-                        best = q;
-                    }
-                }
-            }
-            best
-        };
-        let mut out: Vec<f64> = samples.iter().map(|s| outside(&balls, s)).collect();
-        loop {
-            let (worst, at) = out
-                .iter()
-                .enumerate()
-                .fold((f64::NEG_INFINITY, 0), |m, (i, &o)| if o > m.0 { (o, i) } else { m });
-            if worst <= tolerance {
-                break;
-            }
-            if added[index] == MAX_ADDED_SPHERES {
-                return Err(RobotError::TooLarge {
-                    what: "the spheres a link's cover needs",
-                    count: added[index] + 1,
-                    max: MAX_ADDED_SPHERES,
-                });
-            }
-            let (p, slack) = samples[at];
-            let centre = on_axis(&p);
-            let radius = (p.coords - centre).norm() + slack;
-            balls.push((centre, radius));
-            added[index] += 1;
-            for (o, s) in out.iter_mut().zip(&samples) {
-                *o = o.min((s.0.coords - centre).norm() + s.1 - radius);
-            }
-        }
-        let link = &mut urdf.links[index];
-        link.collisions.retain(|c| !matches!(c.geometry, Geometry::Sphere { .. }));
-        for (centre, radius) in balls {
-            link.collisions.push(Collision {
-                origin: Isometry3::translation(centre.x, centre.y, centre.z),
-                geometry: Geometry::Sphere { radius: radius + tolerance },
-            });
-        }
+        let (covering, count) = cover_link(balls(&urdf, index), &samples, tolerance)?;
+        added[index] = count;
+        set_spheres(&mut urdf.links[index], covering, tolerance);
     }
     Ok((urdf, added))
 }
+
+/// `balls` (a link's spheres: centre, radius) with spheres added until no sample lies more
+/// than `tolerance` outside them; how many were added.
+fn cover_link(
+    mut balls: Vec<Ball>,
+    samples: &[Sample],
+    tolerance: f64,
+) -> Result<(Vec<Ball>, usize), RobotError> {
+    let mut added = 0;
+    // The link's axis: the segments between its spheres' centres. A new sphere is centred
+    // on it, so that it stays within the link's width rather than bulging from its surface.
+    let centres: Vec<Vector3<f64>> = balls.iter().map(|b| b.0).collect();
+    let on_axis = |p: &Point3<f64>| {
+        let Some(&(mut best)) = centres.first() else { return p.coords };
+        for (i, a) in centres.iter().enumerate() {
+            for b in &centres[i..] {
+                let ab = b - a;
+                let t = if ab.norm_squared() > 0.0 {
+                    ((p.coords - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let q = a + ab * t;
+                if (p.coords - q).norm() < (p.coords - best).norm() {
+                    best = q;
+                }
+            }
+        }
+        best
+    };
+    let mut out: Vec<f64> = samples.iter().map(|s| outside(&balls, s)).collect();
+    loop {
+        let (worst, at) = out
+            .iter()
+            .enumerate()
+            .fold((f64::NEG_INFINITY, 0), |m, (i, &o)| if o > m.0 { (o, i) } else { m });
+        if worst <= tolerance {
+            break;
+        }
+        if added == MAX_ADDED_SPHERES {
+            return Err(RobotError::TooLarge {
+                what: "the spheres a link's cover needs",
+                count: added + 1,
+                max: MAX_ADDED_SPHERES,
+            });
+        }
+        let (p, slack) = samples[at];
+        let centre = on_axis(&p);
+        let radius = (p.coords - centre).norm() + slack;
+        balls.push((centre, radius));
+        added += 1;
+        for (o, s) in out.iter_mut().zip(samples) {
+            *o = o.min((s.0.coords - centre).norm() + s.1 - radius);
+        }
+    }
+    Ok((balls, added))
+}
+
+/// Replaces `link`'s spheres by `balls`, each grown by `tolerance` (those of radius 0, seeds
+/// that contain nothing, dropped); its other shapes stay.
+fn set_spheres(link: &mut Link, balls: Vec<Ball>, tolerance: f64) {
+    link.collisions.retain(|c| !matches!(c.geometry, Geometry::Sphere { .. }));
+    for (centre, radius) in balls.into_iter().filter(|b| b.1 > 0.0) {
+        link.collisions.push(Collision {
+            origin: Isometry3::translation(centre.x, centre.y, centre.z),
+            geometry: Geometry::Sphere { radius: radius + tolerance },
+        });
+    }
+}
+
+/// A robot's spheres made from its own geometry (meshes and primitives, mesh files found from
+/// `urdf_dir`), for a robot without a spherized URDF: each link's geometry sampled (as
+/// [`uncovered`] samples it), seeds placed along its longest principal axis, and spheres
+/// centred on that axis added by [`cover`]'s rule until they contain every sample, then grown
+/// by `tolerance`. The URDF comes back with every link's collision geometry replaced by its
+/// spheres. Errors as [`cover`].
+pub fn spherize(
+    geometry: &Robot,
+    urdf_dir: &Path,
+    resolution: f64,
+    tolerance: f64,
+) -> Result<Urdf, RobotError> {
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(invalid("tolerance", tolerance));
+    }
+    let mut urdf = geometry.urdf().clone();
+    for (index, samples) in geometry_samples(geometry, urdf_dir, resolution)? {
+        let (balls, _) = cover_link(axis_seeds(&samples, resolution), &samples, tolerance)?;
+        let link = &mut urdf.links[index];
+        link.collisions.clear();
+        set_spheres(link, balls, tolerance);
+    }
+    Ok(urdf)
+}
+
+/// Points of radius 0 inside the geometry of `samples`: as many as the longest principal axis
+/// is long for the samples' distance from it (2 to 32), spread along it, then moved to the
+/// middles of the samples nearest each.
+fn axis_seeds(samples: &[Sample], resolution: f64) -> Vec<Ball> {
+    let n = samples.len().max(1) as f64;
+    let mean = samples.iter().fold(Vector3::zeros(), |m, s| m + s.0.coords) / n;
+    let covariance = samples.iter().fold(Matrix3::zeros(), |c, s| {
+        let d = s.0.coords - mean;
+        c + d * d.transpose()
+    }) / n;
+    let eigen = SymmetricEigen::new(covariance);
+    let longest = eigen.eigenvalues.iamax();
+    let axis = eigen.eigenvectors.column(longest).into_owned();
+    let along: Vec<f64> = samples.iter().map(|s| (s.0.coords - mean).dot(&axis)).collect();
+    let (low, high) =
+        along.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &t| (l.min(t), h.max(t)));
+    let mut radial: Vec<f64> =
+        samples.iter().zip(&along).map(|(s, t)| (s.0.coords - mean - axis * *t).norm()).collect();
+    radial.sort_by(f64::total_cmp);
+    let width = radial.get(radial.len() / 2).copied().unwrap_or(0.0).max(resolution);
+    let length = if high > low { high - low } else { 0.0 };
+    let count = ((length / width).ceil() as usize + 1).clamp(2, 32);
+    let mut seeds: Vec<Vector3<f64>> = (0..count)
+        .map(|k| {
+            let t = if length > 0.0 { low + length * k as f64 / (count - 1) as f64 } else { 0.0 };
+            mean + axis * t
+        })
+        .collect();
+    // A few rounds of Lloyd's k-means: seeds move to the middles of the samples nearest them,
+    // which follow a link that bends (an elbow) where its principal axis does not.
+    for _ in 0..10 {
+        let mut sums = vec![(Vector3::zeros(), 0usize); seeds.len()];
+        for s in samples {
+            let nearest = (0..seeds.len())
+                .min_by(|&a, &b| (s.0.coords - seeds[a]).norm().total_cmp(&(s.0.coords - seeds[b]).norm()))
+                .unwrap_or(0);
+            sums[nearest].0 += s.0.coords;
+            sums[nearest].1 += 1;
+        }
+        for (seed, (sum, n)) in seeds.iter_mut().zip(sums) {
+            if n > 0 {
+                *seed = sum / n as f64;
+            }
+        }
+    }
+    seeds.into_iter().map(|c| (c, 0.0)).collect()
+}
+
+/// A sphere of a link: its centre in the link's frame, and its radius.
+type Ball = (Vector3<f64>, f64);
 
 /// A point of a link's geometry (in the link's frame) and how far the geometry may reach
 /// beyond it (the sampling's bound, or a sphere's radius).
 type Sample = (Point3<f64>, f64);
 
 /// The spheres of link `index` of `urdf`: centre and radius.
-fn balls(urdf: &Urdf, index: usize) -> Vec<(Vector3<f64>, f64)> {
+fn balls(urdf: &Urdf, index: usize) -> Vec<Ball> {
     urdf.links[index]
         .collisions
         .iter()
@@ -146,7 +239,7 @@ fn balls(urdf: &Urdf, index: usize) -> Vec<(Vector3<f64>, f64)> {
 }
 
 /// How far the geometry about `sample` reaches outside the nearest of `balls`.
-fn outside(balls: &[(Vector3<f64>, f64)], sample: &Sample) -> f64 {
+fn outside(balls: &[Ball], sample: &Sample) -> f64 {
     balls.iter().map(|(c, r)| (sample.0.coords - c).norm() - r).fold(f64::INFINITY, f64::min) + sample.1
 }
 
@@ -167,22 +260,37 @@ fn link_samples(
     urdf_dir: &Path,
     resolution: f64,
 ) -> Result<Vec<(usize, Vec<Sample>)>, RobotError> {
+    let links = &geometry.urdf().links;
+    geometry_samples(geometry, urdf_dir, resolution)?
+        .into_iter()
+        .map(|(at, samples)| {
+            let name = &links[at].name;
+            let index = spheres.link_index(name).ok_or_else(|| RobotError::UnknownLink(name.clone()))?;
+            if balls(spheres.urdf(), index).is_empty() {
+                return Err(RobotError::NoSphereCover {
+                    link: name.clone(),
+                    shape: "geometry without spheres",
+                });
+            }
+            Ok((index, samples))
+        })
+        .collect()
+}
+
+/// Samples of the geometry of every link of `geometry` that has some, by its index.
+fn geometry_samples(
+    geometry: &Robot,
+    urdf_dir: &Path,
+    resolution: f64,
+) -> Result<Vec<(usize, Vec<Sample>)>, RobotError> {
     if !(resolution.is_finite() && resolution > 0.0) {
         return Err(invalid("resolution", resolution));
     }
     let mut meshes: HashMap<String, Mesh> = HashMap::new();
     let mut found = Vec::new();
-    for link in &geometry.urdf().links {
+    for (index, link) in geometry.urdf().links.iter().enumerate() {
         if link.collisions.is_empty() {
             continue;
-        }
-        let index =
-            spheres.link_index(&link.name).ok_or_else(|| RobotError::UnknownLink(link.name.clone()))?;
-        if balls(spheres.urdf(), index).is_empty() {
-            return Err(RobotError::NoSphereCover {
-                link: link.name.clone(),
-                shape: "geometry without spheres",
-            });
         }
         let mut samples: Vec<Sample> = Vec::new();
         for c in &link.collisions {

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use proptest::prelude::*;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use trailmark_robot::cover::{cover, uncovered};
+use trailmark_robot::cover::{cover, spherize, uncovered};
 use trailmark_robot::request::Request;
 use trailmark_robot::scene::Scene;
 use trailmark_robot::srdf::Srdf;
@@ -167,4 +167,46 @@ fn the_pandas_covered_spheres_contain_its_meshes() {
     }
     // Both kinds of state occur: the test compares something.
     assert!(free > 10 && mesh_only > 3, "{free} free, {mesh_only} free for the meshes only");
+}
+
+/// A robot of primitives and a mesh, spherized from its own geometry: the spheres contain it
+/// (nothing left uncovered), and where they are free, the exact shapes are.
+#[test]
+fn spheres_made_from_a_robots_own_shapes_contain_them() {
+    let dir = std::env::temp_dir().join(format!("trailmark-spherize-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // A thin tetrahedron 0.3 m long, as the forearm's mesh.
+    let tetra =
+        "v 0 -0.03 -0.03\nv 0 0.03 -0.03\nv 0 0 0.04\nv 0.3 0 0\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    std::fs::write(dir.join("fore.obj"), tetra).unwrap();
+    let urdf = URDF
+        .replace(
+            r#"<collision><origin xyz="0.2 0 0"/><geometry><sphere radius="0.06"/></geometry></collision>"#,
+            r#"<collision><origin xyz="0.2 0 0" rpy="0 1.5708 0"/><geometry><cylinder radius="0.05" length="0.3"/></geometry></collision>"#,
+        )
+        .replace(
+            r#"<collision><origin xyz="0.15 0 0"/><geometry><sphere radius="0.05"/></geometry></collision>"#,
+            r#"<collision><geometry><mesh filename="fore.obj"/></geometry></collision>"#,
+        )
+        .replace(r#"<geometry><sphere radius="0.04"/></geometry>"#, r#"<geometry><box size="0.05 0.05 0.05"/></geometry>"#);
+    let shapes = Robot::new(Urdf::parse(&urdf).unwrap()).unwrap();
+    let spheres = Robot::new(spherize(&shapes, &dir, 0.002, 0.001).unwrap()).unwrap();
+    assert!(uncovered(&spheres, &shapes, &dir, 0.002).unwrap().iter().all(|&g| g <= 1e-12));
+    let srdf = Srdf::parse(SRDF).unwrap();
+    let scene = Scene::parse(SCENE).unwrap();
+    let group = spheres.group(&srdf, "arm").unwrap();
+    let fast = ArmChecker::new(spheres, &srdf, group.clone(), &scene, vec![0.0; 2], DEFAULT_STEP).unwrap();
+    let exact =
+        ExactChecker::new(shapes, &srdf, group.clone(), &scene, vec![0.0; 2], &dir, DEFAULT_STEP).unwrap();
+    let mut rng = ChaCha8Rng::seed_from_u64(2);
+    let mut free = 0;
+    for _ in 0..300 {
+        let q: Vec<f64> = group.bounds.iter().map(|&(lo, hi)| rng.random_range(lo..hi)).collect();
+        if fast.is_free(&q) {
+            assert!(exact.is_free(&q), "{q:?}: {:?}", exact.contacts(&q));
+            free += 1;
+        }
+    }
+    assert!(free > 30, "{free}");
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -24,9 +24,10 @@ use crate::urdf::{Collision, Geometry, Link, Urdf};
 /// what lies between the samples).
 pub const DEFAULT_COVER_RESOLUTION: f64 = 0.002;
 
-/// The most sample points of one link's geometry, a bound on the time a hostile file can
-/// take (a resolution far below the geometry's size asks for more).
-pub const MAX_COVER_SAMPLES: usize = 50_000_000;
+/// The most sample points of one link's geometry (links are sampled one at a time), a bound
+/// on the time and memory a hostile file can take (a resolution far below the geometry's size
+/// asks for more): about 320 MB.
+pub const MAX_COVER_SAMPLES: usize = 10_000_000;
 
 /// For each link of `spheres` (a robot whose links are covered by spheres), how far the
 /// collision geometry of the same link of `geometry` (the robot with its own meshes and
@@ -41,10 +42,12 @@ pub fn uncovered(
     resolution: f64,
 ) -> Result<Vec<f64>, RobotError> {
     let mut growth = vec![0.0; spheres.urdf().links.len()];
-    for (index, samples) in link_samples(spheres, geometry, urdf_dir, resolution)? {
+    each_link(geometry, urdf_dir, resolution, |name, samples| {
+        let index = sphere_link(spheres, name)?;
         let balls = balls(spheres.urdf(), index);
         growth[index] = samples.iter().map(|s| outside(&balls, s)).fold(0.0, f64::max);
-    }
+        Ok(())
+    })?;
     Ok(growth)
 }
 
@@ -69,25 +72,31 @@ pub fn cover(
     }
     let mut urdf = spheres.urdf().clone();
     let mut added = vec![0; urdf.links.len()];
-    for (index, samples) in link_samples(spheres, geometry, urdf_dir, resolution)? {
-        let (covering, count) = cover_link(balls(&urdf, index), &samples, tolerance)?;
+    each_link(geometry, urdf_dir, resolution, |name, samples| {
+        let index = sphere_link(spheres, name)?;
+        let balls = balls(&urdf, index);
+        let axis: Vec<Vector3<f64>> = balls.iter().map(|b| b.0).collect();
+        let (covering, count) = cover_link(&axis, balls, &samples, tolerance)?;
         added[index] = count;
         set_spheres(&mut urdf.links[index], covering, tolerance);
-    }
+        Ok(())
+    })?;
     Ok((urdf, added))
 }
 
 /// `balls` (a link's spheres: centre, radius) with spheres added until no sample lies more
-/// than `tolerance` outside them; how many were added.
+/// than `tolerance` outside them, each new one centred on the link's axis, the segments between
+/// the points of `axis`; how many were added.
 fn cover_link(
+    axis: &[Vector3<f64>],
     mut balls: Vec<Ball>,
     samples: &[Sample],
     tolerance: f64,
 ) -> Result<(Vec<Ball>, usize), RobotError> {
     let mut added = 0;
-    // The link's axis: the segments between its spheres' centres. A new sphere is centred
-    // on it, so that it stays within the link's width rather than bulging from its surface.
-    let centres: Vec<Vector3<f64>> = balls.iter().map(|b| b.0).collect();
+    // A new sphere centred on the axis stays within the link's width rather than bulging from
+    // its surface.
+    let centres = axis;
     let on_axis = |p: &Point3<f64>| {
         let Some(&(mut best)) = centres.first() else { return p.coords };
         for (i, a) in centres.iter().enumerate() {
@@ -134,11 +143,10 @@ fn cover_link(
     Ok((balls, added))
 }
 
-/// Replaces `link`'s spheres by `balls`, each grown by `tolerance` (those of radius 0, seeds
-/// that contain nothing, dropped); its other shapes stay.
+/// Replaces `link`'s spheres by `balls`, each grown by `tolerance`; its other shapes stay.
 fn set_spheres(link: &mut Link, balls: Vec<Ball>, tolerance: f64) {
     link.collisions.retain(|c| !matches!(c.geometry, Geometry::Sphere { .. }));
-    for (centre, radius) in balls.into_iter().filter(|b| b.1 > 0.0) {
+    for (centre, radius) in balls {
         link.collisions.push(Collision {
             origin: Isometry3::translation(centre.x, centre.y, centre.z),
             geometry: Geometry::Sphere { radius: radius + tolerance },
@@ -162,19 +170,26 @@ pub fn spherize(
         return Err(invalid("tolerance", tolerance));
     }
     let mut urdf = geometry.urdf().clone();
-    for (index, samples) in geometry_samples(geometry, urdf_dir, resolution)? {
-        let (balls, _) = cover_link(axis_seeds(&samples, resolution), &samples, tolerance)?;
-        let link = &mut urdf.links[index];
+    each_link(geometry, urdf_dir, resolution, |name, samples| {
+        // The seeds only shape the axis: they cover nothing.
+        let seeds = axis_seeds(&samples, resolution);
+        let (balls, _) = cover_link(&seeds, Vec::new(), &samples, tolerance)?;
+        let link = urdf
+            .links
+            .iter_mut()
+            .find(|l| l.name == name)
+            .ok_or_else(|| RobotError::UnknownLink(name.into()))?;
         link.collisions.clear();
         set_spheres(link, balls, tolerance);
-    }
+        Ok(())
+    })?;
     Ok(urdf)
 }
 
-/// Points of radius 0 inside the geometry of `samples`: as many as the longest principal axis
-/// is long for the samples' distance from it (2 to 32), spread along it, then moved to the
-/// middles of the samples nearest each.
-fn axis_seeds(samples: &[Sample], resolution: f64) -> Vec<Ball> {
+/// Points inside the geometry of `samples`: one for each diameter (twice the samples' median
+/// distance from the longest principal axis) along that axis (2 to 32), spread along it, then
+/// moved to the middles of the samples nearest each.
+fn axis_seeds(samples: &[Sample], resolution: f64) -> Vec<Vector3<f64>> {
     let n = samples.len().max(1) as f64;
     let mean = samples.iter().fold(Vector3::zeros(), |m, s| m + s.0.coords) / n;
     let covariance = samples.iter().fold(Matrix3::zeros(), |c, s| {
@@ -192,7 +207,10 @@ fn axis_seeds(samples: &[Sample], resolution: f64) -> Vec<Ball> {
     radial.sort_by(f64::total_cmp);
     let width = radial.get(radial.len() / 2).copied().unwrap_or(0.0).max(resolution);
     let length = if high > low { high - low } else { 0.0 };
-    let count = ((length / width).ceil() as usize + 1).clamp(2, 32);
+    // Seeds a diameter apart: slices of a tube then keep their middles on its axis.
+    let count = ((length / (2.0 * width)).ceil() as usize + 1).clamp(2, 32);
+    // At most about 20,000 samples move the seeds.
+    let stride = samples.len().div_ceil(20_000).max(1);
     let mut seeds: Vec<Vector3<f64>> = (0..count)
         .map(|k| {
             let t = if length > 0.0 { low + length * k as f64 / (count - 1) as f64 } else { 0.0 };
@@ -203,7 +221,7 @@ fn axis_seeds(samples: &[Sample], resolution: f64) -> Vec<Ball> {
     // which follow a link that bends (an elbow) where its principal axis does not.
     for _ in 0..10 {
         let mut sums = vec![(Vector3::zeros(), 0usize); seeds.len()];
-        for s in samples {
+        for s in samples.iter().step_by(stride) {
             let nearest = (0..seeds.len())
                 .min_by(|&a, &b| (s.0.coords - seeds[a]).norm().total_cmp(&(s.0.coords - seeds[b]).norm()))
                 .unwrap_or(0);
@@ -216,7 +234,7 @@ fn axis_seeds(samples: &[Sample], resolution: f64) -> Vec<Ball> {
             }
         }
     }
-    seeds.into_iter().map(|c| (c, 0.0)).collect()
+    seeds
 }
 
 /// A sphere of a link: its centre in the link's frame, and its radius.
@@ -252,43 +270,28 @@ fn invalid(attribute: &'static str, value: f64) -> RobotError {
     }
 }
 
-/// Samples of the geometry of every link of `geometry` that has some, by the index of the same
-/// link in `spheres` (which must have a sphere there).
-fn link_samples(
-    spheres: &Robot,
-    geometry: &Robot,
-    urdf_dir: &Path,
-    resolution: f64,
-) -> Result<Vec<(usize, Vec<Sample>)>, RobotError> {
-    let links = &geometry.urdf().links;
-    geometry_samples(geometry, urdf_dir, resolution)?
-        .into_iter()
-        .map(|(at, samples)| {
-            let name = &links[at].name;
-            let index = spheres.link_index(name).ok_or_else(|| RobotError::UnknownLink(name.clone()))?;
-            if balls(spheres.urdf(), index).is_empty() {
-                return Err(RobotError::NoSphereCover {
-                    link: name.clone(),
-                    shape: "geometry without spheres",
-                });
-            }
-            Ok((index, samples))
-        })
-        .collect()
+/// The index in `spheres` of the link `name`, which must have a sphere.
+fn sphere_link(spheres: &Robot, name: &str) -> Result<usize, RobotError> {
+    let index = spheres.link_index(name).ok_or_else(|| RobotError::UnknownLink(name.into()))?;
+    if balls(spheres.urdf(), index).is_empty() {
+        return Err(RobotError::NoSphereCover { link: name.into(), shape: "geometry without spheres" });
+    }
+    Ok(index)
 }
 
-/// Samples of the geometry of every link of `geometry` that has some, by its index.
-fn geometry_samples(
+/// Samples the geometry of each link of `geometry` that has some, one link at a time, and
+/// gives them to `f` with the link's name.
+fn each_link(
     geometry: &Robot,
     urdf_dir: &Path,
     resolution: f64,
-) -> Result<Vec<(usize, Vec<Sample>)>, RobotError> {
+    mut f: impl FnMut(&str, Vec<Sample>) -> Result<(), RobotError>,
+) -> Result<(), RobotError> {
     if !(resolution.is_finite() && resolution > 0.0) {
         return Err(invalid("resolution", resolution));
     }
     let mut meshes: HashMap<String, Mesh> = HashMap::new();
-    let mut found = Vec::new();
-    for (index, link) in geometry.urdf().links.iter().enumerate() {
+    for link in &geometry.urdf().links {
         if link.collisions.is_empty() {
             continue;
         }
@@ -351,9 +354,9 @@ fn geometry_samples(
                 }
             }
         }
-        found.push((index, samples));
+        f(&link.name, samples)?;
     }
-    Ok(found)
+    Ok(())
 }
 
 /// Visits points of the triangle `t` (every point of it within `resolution / √3` of one, which
@@ -393,14 +396,23 @@ fn around_z(
         let a = std::f64::consts::TAU * k as f64 / sides as f64;
         Point3::new(radius * a.cos(), radius * a.sin(), z)
     };
+    // The side: a grid of rim points, each cell a rectangle with sides of at most the
+    // resolution, so every point of it within resolution / √2 of a corner.
+    let steps = ((high - low) / resolution).ceil().max(1.0) as usize;
+    for k in 0..sides {
+        for j in 0..=steps {
+            let z = low + (high - low) * j as f64 / steps as f64;
+            visit(rim(k, z), resolution / 2f64.sqrt() + sagitta + extra)?;
+        }
+    }
     let mut with_sagitta = |p: Point3<f64>, slack: f64| visit(p, slack + sagitta + extra);
     for k in 0..sides {
-        let (a0, a1) = (rim(k, low), rim(k + 1, low));
-        let (b0, b1) = (rim(k, high), rim(k + 1, high));
-        triangle([a0, a1, b1], resolution, &mut with_sagitta)?;
-        triangle([a0, b1, b0], resolution, &mut with_sagitta)?;
-        triangle([Point3::new(0.0, 0.0, low), a0, a1], resolution, &mut with_sagitta)?;
-        triangle([Point3::new(0.0, 0.0, high), b0, b1], resolution, &mut with_sagitta)?;
+        triangle([Point3::new(0.0, 0.0, low), rim(k, low), rim(k + 1, low)], resolution, &mut with_sagitta)?;
+        triangle(
+            [Point3::new(0.0, 0.0, high), rim(k, high), rim(k + 1, high)],
+            resolution,
+            &mut with_sagitta,
+        )?;
     }
     Ok(())
 }

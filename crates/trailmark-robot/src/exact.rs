@@ -14,7 +14,7 @@
 //! window's middle exceeds half that are apart over the whole window. Windows that fail are
 //! halved; a pair still unproven when the window's half-motion is below `step / 2` makes the
 //! motion colliding (a motion passing that close may be refused), and a distance of zero at a
-//! checked state makes it colliding.
+//! checked state makes it colliding; so does a motion needing more than [`MAX_WINDOWS`].
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -66,6 +66,10 @@ enum Pair {
     /// Link entry, link entry.
     Links(usize, usize),
 }
+
+/// The most windows one motion's check measures: past it the motion is refused (a motion that
+/// needs more passes within micrometres of something over metres of travel).
+pub const MAX_WINDOWS: usize = 1_000_000;
 
 /// How far around a link its point cloud neighbours are measured: beyond it, the distance is
 /// only bounded from below (by this), which proves a motion's window free as well.
@@ -196,16 +200,16 @@ impl ExactChecker {
         };
         let mut pairs = Vec::new();
         for (e, l) in links.iter().enumerate() {
-            if moving[l.link] {
-                for (o, obstacle) in obstacles.iter().enumerate() {
-                    if !allowed(l.link, &obstacle.id) {
-                        pairs.push(Pair::Obstacle(e, o));
-                    }
+            // Every link against the world, as the spheres are (a link the group does not move
+            // costs one measure a motion: its speed is zero).
+            for (o, obstacle) in obstacles.iter().enumerate() {
+                if !allowed(l.link, &obstacle.id) {
+                    pairs.push(Pair::Obstacle(e, o));
                 }
-                for (c, cloud) in scene.clouds.iter().enumerate() {
-                    if !allowed(l.link, cloud.id()) {
-                        pairs.push(Pair::Cloud(e, c));
-                    }
+            }
+            for (c, cloud) in scene.clouds.iter().enumerate() {
+                if !allowed(l.link, cloud.id()) {
+                    pairs.push(Pair::Cloud(e, c));
                 }
             }
             for (f, m) in links.iter().enumerate().skip(e + 1) {
@@ -285,11 +289,20 @@ impl ExactChecker {
             cache.insert(t.to_bits(), p.clone());
             Some(p)
         };
+        let mut tested = 0usize;
         for (p, &pair) in self.pairs.iter().enumerate() {
             let rate = speed(&self.reach[p], &delta);
+            // A bound too large to be a number (a hostile robot's frames) proves nothing.
+            if !rate.is_finite() {
+                return false;
+            }
             // Windows (middle, half width) of the parameter still to prove.
             let mut windows = vec![(0.5, 0.5)];
             while let Some((t, half)) = windows.pop() {
+                tested += 1;
+                if tested > MAX_WINDOWS {
+                    return false;
+                }
                 let Some(poses) = poses_at(t) else { return false };
                 let distance = self.distance(pair, &poses);
                 if distance <= 0.0 {

@@ -53,10 +53,13 @@ impl Mesh {
         })
     }
 
-    /// Reads an OBJ text: every object's faces, as triangles (polygons fanned out).
+    /// Reads an OBJ text: every object's faces, as triangles (polygons fanned out). Only
+    /// positions count: texture coordinates, normals, materials and groups are passed over.
+    /// Errors on a face naming a vertex not yet given (or, counting back, before the first),
+    /// a face of fewer than three vertices, and more than [`MAX_MESH_TRIANGLES`].
     pub fn parse_obj(text: &str) -> Result<Mesh, RobotError> {
+        let text = positions_only(text)?;
         let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
-        // Materials are not geometry: a `mtllib` line is passed over.
         let (models, _) = tobj::load_obj_buf(&mut Cursor::new(text.as_bytes()), &options, |_| {
             Err(tobj::LoadError::OpenFileFailed)
         })
@@ -139,6 +142,57 @@ impl Mesh {
     }
 }
 
+/// The `v` lines of an OBJ text and its `f` lines with every vertex as its position's absolute
+/// index, each checked: what tobj then reads cannot send it out of range (an index counted back
+/// before the first vertex would overflow its arithmetic), and faces cannot outgrow the limit
+/// before anything is allocated for them.
+fn positions_only(text: &str) -> Result<String, RobotError> {
+    let mut out = String::with_capacity(text.len().min(1 << 20));
+    let (mut vertices, mut corners) = (0i64, 0usize);
+    for line in text.lines() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => {
+                vertices += 1;
+                out.push_str(line.trim());
+                out.push('\n');
+            }
+            Some("f") => {
+                let mut face = String::from("f");
+                let mut count = 0;
+                for word in words {
+                    let position = word.split('/').next().unwrap_or("");
+                    let index: i64 =
+                        position.parse().map_err(|_| parse_fault(format!("OBJ: a face vertex {word:?}")))?;
+                    let absolute = if index < 0 { vertices + index + 1 } else { index };
+                    if !(1..=vertices).contains(&absolute) {
+                        return Err(parse_fault(format!("OBJ: a face names vertex {index} of {vertices}")));
+                    }
+                    face.push(' ');
+                    face.push_str(&absolute.to_string());
+                    count += 1;
+                }
+                if count < 3 {
+                    return Err(parse_fault("OBJ: a face of fewer than three vertices".into()));
+                }
+                corners += count;
+                if corners > 3 * MAX_MESH_TRIANGLES {
+                    let max = 3 * MAX_MESH_TRIANGLES;
+                    return Err(RobotError::TooLarge {
+                        what: "an OBJ mesh's face corners",
+                        count: corners,
+                        max,
+                    });
+                }
+                out.push_str(&face);
+                out.push('\n');
+            }
+            _ => {}
+        }
+    }
+    Ok(out)
+}
+
 fn parse_fault(reason: String) -> RobotError {
     RobotError::Mesh { file: String::new(), reason }
 }
@@ -183,9 +237,14 @@ mod tests {
             "v 0 0 0\n",
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
             "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 1 2\n",
+            "v 0 0 0\nv 1 0 0\nf 1 2\n",
         ] {
             assert!(matches!(Mesh::parse_obj(text), Err(RobotError::Mesh { .. })), "{text:?}");
         }
+        // Texture indices counted back before the first are passed over: only positions count.
+        let degenerate = Mesh::parse_obj("v 0 0 0\nvt 0 0\nf 1/-3 1/1 1/1\n").unwrap();
+        assert_eq!(degenerate.triangles, [[0, 0, 0]]);
         // A binary STL claiming four billion triangles, in 84 bytes.
         let mut stl = vec![0u8; 80];
         stl.extend(u32::MAX.to_le_bytes());

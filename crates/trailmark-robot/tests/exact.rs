@@ -210,3 +210,17 @@ fn spheres_made_from_a_robots_own_shapes_contain_them() {
     assert!(free > 30, "{free}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A robot whose frames are too far out for a speed bound (the norm of `(1e308, 1e308, 0)`
+/// is not finite): its motions are refused at once, never checked without end.
+#[test]
+fn motions_without_a_finite_speed_bound_are_refused() {
+    let urdf = URDF.replace(r#"<origin xyz="0.45 0 0"/>"#, r#"<origin xyz="1e308 1e308 0"/>"#);
+    let robot = Robot::new(Urdf::parse(&urdf).unwrap()).unwrap();
+    let srdf = Srdf::parse(SRDF).unwrap();
+    let group = robot.group(&srdf, "arm").unwrap();
+    let scene = Scene::parse(SCENE).unwrap();
+    let exact =
+        ExactChecker::new(robot, &srdf, group, &scene, vec![0.0; 2], Path::new("."), DEFAULT_STEP).unwrap();
+    assert!(!exact.motion_is_free(&[0.0, 0.0], &[0.1, 0.1]));
+}

@@ -52,7 +52,7 @@ pub fn uncovered(
 }
 
 /// The most spheres [`cover`] adds to one link.
-pub const MAX_ADDED_SPHERES: usize = 200;
+pub const MAX_ADDED_SPHERES: usize = 1000;
 
 /// `spheres`' URDF with spheres added where the geometry of `geometry`'s links sticks out of
 /// them by more than `tolerance` (each new sphere containing the samples of one such place),
@@ -186,9 +186,9 @@ pub fn spherize(
     Ok(urdf)
 }
 
-/// Points inside the geometry of `samples`: one for each diameter (twice the samples' median
-/// distance from the longest principal axis) along that axis (2 to 32), spread along it, then
-/// moved to the middles of the samples nearest each.
+/// Points inside the geometry of `samples`: one for each radius (the samples' median distance
+/// from the longest principal axis) along that axis (2 to 32), spread along it, then moved to
+/// the middles of the samples nearest each.
 fn axis_seeds(samples: &[Sample], resolution: f64) -> Vec<Vector3<f64>> {
     let n = samples.len().max(1) as f64;
     let mean = samples.iter().fold(Vector3::zeros(), |m, s| m + s.0.coords) / n;
@@ -207,8 +207,9 @@ fn axis_seeds(samples: &[Sample], resolution: f64) -> Vec<Vector3<f64>> {
     radial.sort_by(f64::total_cmp);
     let width = radial.get(radial.len() / 2).copied().unwrap_or(0.0).max(resolution);
     let length = if high > low { high - low } else { 0.0 };
-    // Seeds a diameter apart: slices of a tube then keep their middles on its axis.
-    let count = ((length / (2.0 * width)).ceil() as usize + 1).clamp(2, 32);
+    // Seeds about a radius apart: enough to follow a link that bends (the Panda's elbows; a
+    // diameter apart, its fifth and seventh links' covers meet at its home pose).
+    let count = ((length / width).ceil() as usize + 1).clamp(2, 32);
     // At most about 20,000 samples move the seeds.
     let stride = samples.len().div_ceil(20_000).max(1);
     let mut seeds: Vec<Vector3<f64>> = (0..count)

@@ -46,8 +46,10 @@ pub use result::{
     CarRecord, ErrorReport, GraphStats, ImprovementRecord, IterationRecord, ResultStats, SamplingStats,
     SmoothedRecord, SolveResult, Status, Waypoint, anytime_result_of, result_of,
 };
+pub use sampling::boxes::solve_boxes_with;
 pub use sampling::robot::SMOOTHING_PASSES;
 pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
+pub use search::grid::search_grid;
 pub use search::roadmap::DEFAULT_SAMPLES;
 pub use world::boxes::MAX_BOX_DIMENSION;
 pub use world::grid::{grid_graph, load_grid};

@@ -6,7 +6,7 @@
 //!   [`Rn`], [`Se2`], the car spaces [`Dubins`] and [`ReedsShepp`], and the [`StateSpace`]
 //!   trait for your own;
 //! - [`validity`]: which states and motions are valid: exact checks against polygon worlds and
-//!   motions checked at a resolution for your own spaces ([`Sampled`]);
+//!   motions checked at a resolution for your own spaces ([`Sampled`], or [`Batched`] for tests that take many states in one call);
 //! - [`footprint`]: a car's footprint in any world that says where a footprint fits
 //!   ([`FootprintWorld`]: a polygon world here, a map's cells in `trailmark-car`), one
 //!   [`FootprintValidity`];
@@ -66,4 +66,4 @@ pub use space::{
     Car, CarCurves, Dubins, DubinsCurves, Joints, R2, ReedsShepp, ReedsSheppCurves, Rn, Se2, SpaceError,
     StateSpace, UnitCube,
 };
-pub use validity::{Sampled, Validity};
+pub use validity::{Batched, Sampled, Validity};

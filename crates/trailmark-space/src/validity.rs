@@ -115,15 +115,122 @@ impl<S: StateSpace, F: Fn(&S::State) -> bool> Validity<S> for Sampled<F> {
     }
 
     fn motion_is_valid(&self, space: &S, from: &S::State, to: &S::State) -> bool {
-        let step = self.resolution * space.extent();
-        let steps = (space.distance(from, to) / step).ceil();
-        if !steps.is_finite() {
-            return false;
-        }
-        let n = (steps as u64).max(1);
+        let Some(n) = motion_steps(space, from, to, self.resolution) else { return false };
         (0..=n).all(|i| {
             let state = space.interpolate(from, to, i as f64 / n as f64);
             space.satisfies_bounds(&state) && (self.is_valid)(&state)
         })
+    }
+}
+
+/// The steps of a motion checked every `resolution x extent`: at least one; `None` when the
+/// distance is not finite.
+fn motion_steps<S: StateSpace>(space: &S, from: &S::State, to: &S::State, resolution: f64) -> Option<u64> {
+    let steps = (space.distance(from, to) / (resolution * space.extent())).ceil();
+    // Saturating: a count past u64 is checked (and refused) state by state, never wrapped.
+    steps.is_finite().then(|| (steps as u64).max(1))
+}
+
+/// The most states a [`Batched`] test is given at once.
+pub const MAX_BATCH: usize = 1024;
+
+/// A test of many states at once (a closure given a slice of states, `true` when every one
+/// of them is valid), with motions checked at a resolution as [`Sampled`] checks them, but up
+/// to [`MAX_BATCH`] states per call, in order, stopping at the first batch that fails: for
+/// tests where each call is dear (a function of another language, a simulator, a GPU) and one
+/// call for many states pays.
+///
+/// ```
+/// use trailmark_core::geometry::Point;
+/// use trailmark_core::world::Bounds;
+/// use trailmark_space::space::R2;
+/// use trailmark_space::validity::{Batched, Validity};
+///
+/// let space = R2::new(Bounds::new(0.0, 0.0, 10.0, 10.0)?);
+/// let free = |states: &[Point]| states.iter().all(|p| !(p.x > 4.0 && p.x < 6.0 && p.y < 8.0));
+/// let batched = Batched::new(free, 0.01)?;
+/// assert!(!batched.motion_is_valid(&space, &Point::new(1.0, 1.0), &Point::new(9.0, 1.0)));
+/// assert!(batched.motion_is_valid(&space, &Point::new(1.0, 9.0), &Point::new(9.0, 9.0)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Batched<F> {
+    all_valid: F,
+    resolution: f64,
+}
+
+impl<F> Batched<F> {
+    /// `all_valid` asked of the states every `resolution` (a fraction of the space's extent, in
+    /// `(0, 1]`) along each motion.
+    pub fn new(all_valid: F, resolution: f64) -> Result<Self, SpaceError> {
+        if !(resolution > 0.0 && resolution <= 1.0) {
+            return Err(SpaceError::NotPositive { what: "resolution (at most 1)", value: resolution });
+        }
+        Ok(Batched { all_valid, resolution })
+    }
+}
+
+impl<S: StateSpace, F: Fn(&[S::State]) -> bool> Validity<S> for Batched<F> {
+    fn state_is_valid(&self, _: &S, state: &S::State) -> bool {
+        (self.all_valid)(std::slice::from_ref(state))
+    }
+
+    fn motion_is_valid(&self, space: &S, from: &S::State, to: &S::State) -> bool {
+        let Some(n) = motion_steps(space, from, to, self.resolution) else { return false };
+        let mut batch = Vec::with_capacity(usize::try_from(n + 1).unwrap_or(MAX_BATCH).min(MAX_BATCH));
+        for i in 0..=n {
+            let state = space.interpolate(from, to, i as f64 / n as f64);
+            if !space.satisfies_bounds(&state) {
+                return false;
+            }
+            batch.push(state);
+            if (batch.len() == MAX_BATCH || i == n) && !(self.all_valid)(&batch) {
+                return false;
+            }
+            if batch.len() == MAX_BATCH {
+                batch.clear();
+            }
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::cell::Cell;
+
+    use proptest::prelude::*;
+    use trailmark_core::geometry::Point;
+    use trailmark_core::world::Bounds;
+
+    use super::{Batched, MAX_BATCH, Sampled, Validity};
+    use crate::space::R2;
+
+    fn free(p: &Point) -> bool {
+        (p.x - 5.0).hypot(p.y - 5.0) > 2.0
+    }
+
+    proptest! {
+        /// One call per batch answers every motion as one call per state does.
+        #[test]
+        fn batched_answers_as_sampled(
+            a in (0.0..10.0, 0.0..10.0), b in (0.0..10.0, 0.0..10.0), resolution in 1e-5..1.0,
+        ) {
+            let space = R2::new(Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap());
+            let calls = Cell::new(0usize);
+            let batched = Batched::new(
+                |states: &[Point]| {
+                    calls.set(calls.get() + 1);
+                    assert!(states.len() <= MAX_BATCH);
+                    states.iter().all(free)
+                },
+                resolution,
+            )
+            .unwrap();
+            let sampled = Sampled::new(free, resolution).unwrap();
+            let (a, b) = (Point::new(a.0, a.1), Point::new(b.0, b.1));
+            prop_assert_eq!(batched.motion_is_valid(&space, &a, &b), sampled.motion_is_valid(&space, &a, &b));
+            prop_assert_eq!(batched.state_is_valid(&space, &a), free(&a));
+        }
     }
 }

@@ -6,6 +6,8 @@ pub(super) mod boxes;
 mod car;
 pub(super) mod robot;
 
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use trailmark_core::geometry::Point;
@@ -48,7 +50,7 @@ pub(in crate::solve) fn solve_sampling(
     let space_kind = problem.space.unwrap_or(SpaceKind::R2);
     let checker = world.checker();
     let seed = problem.seed.unwrap_or(0);
-    let run = SamplingRun { problem, spec, checker: &checker, seed, smoothing_passes: 0 };
+    let run = SamplingRun { problem, spec, checker: &checker, seed, smoothing_passes: 0, stop: None };
     match space_kind {
         SpaceKind::Rn => Err(DocumentError::RnNeedsBoxes.into()),
         SpaceKind::R2 => {
@@ -107,6 +109,8 @@ struct SamplingRun<'a, V> {
     /// Corner-cutting passes after the shortcuts when `simplify` is asked for (0: shortcuts
     /// only).
     smoothing_passes: usize,
+    /// Set by the caller to stop the planner at its next iteration, as at its limit.
+    stop: Option<Arc<AtomicBool>>,
 }
 
 impl<V> SamplingRun<'_, V> {
@@ -127,11 +131,15 @@ impl<V> SamplingRun<'_, V> {
         let spec = self.spec;
         // A limit too large for a Duration has been refused by solve_inner.
         let time_limit = spec.time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
-        let termination = Termination {
+        let mut termination = Termination {
             max_iterations: spec.max_iterations.or(time_limit.is_none().then_some(DEFAULT_ITERATIONS)),
             time_limit,
             ..Termination::default()
         };
+        if let Some(stop) = &self.stop {
+            let stop = Arc::clone(stop);
+            termination = termination.or_when(move |_| stop.load(Ordering::Relaxed));
+        }
         let defaults = RrtOptions::default();
         let options =
             RrtOptions { range: spec.range, goal_bias: spec.goal_bias.unwrap_or(defaults.goal_bias) };

@@ -73,7 +73,14 @@ fn plan<const N: usize, const D: usize>(
         }
         ArmCheckerKind::Scalar => &world.checker,
     };
-    let run = SamplingRun { problem, spec, checker: &checker, seed, smoothing_passes: SMOOTHING_PASSES };
+    let run = SamplingRun {
+        problem,
+        spec,
+        checker: &checker,
+        seed,
+        smoothing_passes: SMOOTHING_PASSES,
+        stop: None,
+    };
     let (result, _) = run.plan(&space, nearest, start, goal)?;
     Ok(result)
 }

@@ -2,13 +2,15 @@
 
 use std::path::Path;
 
-use trailmark_core::grid::Cell;
+use trailmark_core::grid::{Cell, Connectivity, CornerCutting, Grid};
 use trailmark_core::svg::GridSvg;
+use trailmark_graph::GridGraph;
 
 use crate::solve::error::{DocumentError, SolveError};
+use crate::solve::planner::PlannerSpec;
 use crate::solve::problem::{GridSpec, ProblemSpec};
 use crate::solve::result::{SolveResult, Waypoint};
-use crate::solve::world::grid::{cell_of, corner_cutting, grid_graph, load_grid};
+use crate::solve::world::grid::{cell_of, check_end, corner_cutting, load_grid};
 
 /// Solves a grid-world problem.
 pub(in crate::solve) fn solve_grid(
@@ -23,15 +25,8 @@ pub(in crate::solve) fn solve_grid(
     let grid = load_grid(world, base_dir)?;
     let start = cell_of("start", &problem.start, &grid)?;
     let goal = cell_of("goal", &problem.goal, &grid)?;
-    let ends = (start, goal);
-    let result = match problem.planner.grid_search(&grid, world.connectivity, corner_cutting(world), ends) {
-        Some(found) => found?,
-        None => {
-            let graph = grid_graph(world, &grid);
-            let h = graph.heuristic_between(problem.planner.grid_heuristic(world.connectivity)?);
-            problem.planner.search(&graph, ends, h, Waypoint::Cell, Some(&graph))?
-        }
-    };
+    let result =
+        search_grid(&problem.planner, &grid, (world.connectivity, corner_cutting(world)), (start, goal))?;
     if let Some(picture) = picture {
         let cells: Vec<Cell> = result
             .path
@@ -46,4 +41,43 @@ pub(in crate::solve) fn solve_grid(
         *picture = svg.title(format!("{} from {start} to {goal}", problem.planner.name())).to_svg();
     }
     Ok(result)
+}
+
+/// Runs the graph search `planner` (any of the registry's graph searches, jump point search and
+/// the replanners and anytime searches for one plan) on a grid the caller already holds, moving
+/// by `connectivity` and diagonal moves by `rule`, from `start` to `goal`: what a grid world
+/// document runs once its grid is loaded, for programs that keep one grid for many queries.
+///
+/// ```
+/// use trailmark::core::grid::{Cell, Connectivity, CornerCutting, Grid};
+/// use trailmark::solve::{PlannerSpec, Status, search_grid};
+///
+/// let grid = Grid::from_rows(&["....", ".@@.", "...."])?;
+/// let rule = (Connectivity::Eight, CornerCutting::Forbidden);
+/// let ends = (Cell::new(0, 0), Cell::new(3, 2));
+/// let found = search_grid(&PlannerSpec::AStar { heuristic: None }, &grid, rule, ends)?;
+/// assert_eq!(found.status, Status::Solved);
+/// assert_eq!(found.cost, Some(5.0));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn search_grid(
+    planner: &PlannerSpec,
+    grid: &Grid,
+    (connectivity, rule): (Connectivity, CornerCutting),
+    (start, goal): (Cell, Cell),
+) -> Result<SolveResult, SolveError> {
+    planner.check_limits()?;
+    if planner.sampling().is_some() {
+        return Err(DocumentError::NeedsPolygons { planner: planner.name() }.into());
+    }
+    check_end("start", start, grid)?;
+    check_end("goal", goal, grid)?;
+    match planner.grid_search(grid, connectivity, rule, (start, goal)) {
+        Some(found) => found,
+        None => {
+            let graph = GridGraph::new(grid, connectivity).with_corner_cutting(rule);
+            let h = graph.heuristic_between(planner.grid_heuristic(connectivity)?);
+            planner.search(&graph, (start, goal), h, Waypoint::Cell, Some(&graph))
+        }
+    }
 }

@@ -1,0 +1,49 @@
+//! Work that Ctrl-C can stop: the work runs on threads of its own while the interpreter's thread
+//! waits without the GIL and looks for signals every few milliseconds, so a long plan never
+//! holds the interpreter deaf to Ctrl-C.
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{Receiver, RecvTimeoutError};
+use std::time::Duration;
+
+use pyo3::prelude::*;
+
+/// How often the waiting thread looks for a signal.
+const POLL: Duration = Duration::from_millis(20);
+
+/// Receives from `rx` until `wanted` messages came, checking for signals (Ctrl-C raises
+/// `KeyboardInterrupt`) in between; on a signal, sets `stop` for the workers and returns the
+/// signal's exception at once (the workers end on their own, their results dropped).
+pub fn receive<T: Send>(
+    py: Python<'_>,
+    mut rx: Receiver<T>,
+    wanted: usize,
+    stop: &Arc<AtomicBool>,
+    mut each: impl FnMut(T),
+) -> PyResult<()> {
+    let mut got = 0;
+    while got < wanted {
+        // The receiver is not `Sync`: it moves to the waiting closure and back.
+        let (message, back) = py.detach(move || (rx.recv_timeout(POLL), rx));
+        rx = back;
+        match message {
+            Ok(message) => {
+                each(message);
+                got += 1;
+            }
+            Err(RecvTimeoutError::Timeout) => {
+                if let Err(signal) = py.check_signals() {
+                    stop.store(true, Ordering::Relaxed);
+                    return Err(signal);
+                }
+            }
+            Err(RecvTimeoutError::Disconnected) => {
+                return Err(pyo3::exceptions::PyRuntimeError::new_err(
+                    "a planning thread ended without a result",
+                ));
+            }
+        }
+    }
+    Ok(())
+}

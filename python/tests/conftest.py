@@ -1,0 +1,19 @@
+"""Shared paths of the test suite: the repository, and the reference data beside it."""
+
+import os
+from pathlib import Path
+
+import pytest
+
+REPOSITORY = Path(__file__).resolve().parents[2]
+SHARED = Path(os.environ.get("TRAILMARK_SHARED", REPOSITORY.parent / "shared"))
+MOVINGAI = SHARED / "movingai"
+ROSMAPS = SHARED / "rosmaps"
+EXAMPLES = REPOSITORY / "examples" / "problems"
+
+
+def need(path: Path, what: str) -> Path:
+    """`path`, or the test is skipped saying what is missing."""
+    if not path.exists():
+        pytest.skip(f"{what} not found at {path} (the reference data beside the repository)")
+    return path

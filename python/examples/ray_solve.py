@@ -1,6 +1,7 @@
-"""Planning on a Ray cluster: problem documents in chunks, each chunk one Ray task that plans it
-with trailmark.solve_many on every core of the node it lands on. Results come back in the
-documents' order, identical to trailmark.solve_many on one machine.
+"""Planning on a Ray cluster: problem documents in chunks, each chunk one Ray task of
+`cpus_per_task` cores that plans it with trailmark.solve_many on as many threads (Ray places
+the tasks so that each node's cores are used once). Results come back in the documents' order,
+identical to trailmark.solve_many on one machine.
 
     pip install "ray[default]" ./python
     ray start --head                          # or connect to your cluster: RAY_ADDRESS=...
@@ -12,26 +13,35 @@ need those files at the same paths on every node, or inline rows and values inst
 
 from typing import Any, Dict, List, Optional, Sequence
 
+import os
+
 import ray
 
 import trailmark
 
 
 @ray.remote
-def _solve_chunk(documents: Sequence[Dict[str, Any]], base_dir: Optional[str]) -> List[Dict[str, Any]]:
-    # One task per chunk: trailmark plans the chunk on every core of its node, without the GIL.
-    return trailmark.solve_many(documents, base_dir=base_dir)
+def _solve_chunk(documents: Sequence[Dict[str, Any]], base_dir: str, workers: int) -> List[Dict[str, Any]]:
+    # One task per chunk: trailmark plans it on the task's cores, without the GIL.
+    return trailmark.solve_many(documents, workers=workers, base_dir=base_dir)
 
 
 def solve_on_ray(
-    documents: Sequence[Dict[str, Any]], chunk_size: int = 256, base_dir: Optional[str] = None
+    documents: Sequence[Dict[str, Any]],
+    chunk_size: int = 256,
+    base_dir: Optional[str] = None,
+    cpus_per_task: int = 1,
 ) -> List[Dict[str, Any]]:
-    """Solves `documents` as Ray tasks of `chunk_size` documents each; the results in order
-    (an error report in place of a document that cannot be solved, as solve_many gives)."""
-    if chunk_size < 1:
-        raise ValueError("chunk_size must be at least 1")
+    """Solves `documents` as Ray tasks of `chunk_size` documents each, on `cpus_per_task` cores
+    each; the results in order (an error report in place of a document that cannot be solved,
+    as solve_many gives). Relative paths in the documents are relative to `base_dir` (default:
+    this process's working directory, the same folder on every node)."""
+    if chunk_size < 1 or cpus_per_task < 1:
+        raise ValueError("chunk_size and cpus_per_task must be at least 1")
+    base = os.path.abspath(base_dir if base_dir is not None else os.getcwd())
+    task = _solve_chunk.options(num_cpus=cpus_per_task)
     chunks = [documents[i : i + chunk_size] for i in range(0, len(documents), chunk_size)]
-    futures = [_solve_chunk.remote(chunk, base_dir) for chunk in chunks]
+    futures = [task.remote(chunk, base, cpus_per_task) for chunk in chunks]
     results: List[Dict[str, Any]] = []
     for chunk_results in ray.get(futures):
         results.extend(chunk_results)

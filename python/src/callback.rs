@@ -24,7 +24,11 @@ struct Callback<'py> {
     asarray: Bound<'py, PyAny>,
     failed: RefCell<Option<PyErr>>,
     stop: Arc<AtomicBool>,
+    calls: std::cell::Cell<u32>,
 }
+
+/// Calls between two moments the GIL is let go, for the interpreter's other threads.
+const CALLS_PER_RELEASE: u32 = 64;
 
 impl Callback<'_> {
     /// Whether every state of `states` is valid, in one call in the batch form.
@@ -33,7 +37,17 @@ impl Callback<'_> {
             return false;
         }
         let py = self.function.py();
-        let answer = if batch { self.ask_batch(py, states) } else { self.ask_each(py, states) };
+        // The plan holds the GIL between calls; now and then it lets the interpreter's other
+        // threads run (a compiled function never does).
+        self.calls.set(self.calls.get().wrapping_add(1));
+        if self.calls.get().is_multiple_of(CALLS_PER_RELEASE) {
+            py.detach(|| ());
+        }
+        // Ctrl-C reaches a planner whose function runs no Python code (a ufunc, a compiled
+        // function): the signal is looked for at every call.
+        let answer = py
+            .check_signals()
+            .and_then(|()| if batch { self.ask_batch(py, states) } else { self.ask_each(py, states) });
         answer.unwrap_or_else(|e| {
             self.stop.store(true, Ordering::Relaxed);
             *self.failed.borrow_mut() = Some(e);
@@ -44,7 +58,7 @@ impl Callback<'_> {
     fn ask_each<const N: usize>(&self, py: Python<'_>, states: &[SVector<f64, N>]) -> PyResult<bool> {
         for state in states {
             let array = Array1::from_iter(state.iter().copied()).into_pyarray(py);
-            if !self.function.call1((array,))?.is_truthy()? {
+            if !truth(py, &self.function.call1((array,))?)? {
                 return Ok(false);
             }
         }
@@ -59,11 +73,22 @@ impl Callback<'_> {
         let answer = self.function.call1((array,))?;
         let answer = match answer.cast::<PyArray1<bool>>() {
             Ok(answer) => answer.clone(),
-            Err(_) => self
-                .asarray
-                .call1((answer, "bool"))?
-                .cast_into::<PyArray1<bool>>()
-                .map_err(|_| wrong_answer(py, states.len(), "not a 1-D array of booleans"))?,
+            // Integers of 0 and 1 are booleans too; a float (a distance?), a string or NaN is
+            // not: what it means is not for trailmark to guess.
+            Err(_) => {
+                let array = self.asarray.call1((answer,))?;
+                let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
+                let whole = (kind == "i" || kind == "u")
+                    && array.call_method0("min")?.extract::<i64>().is_ok_and(|v| v >= 0)
+                    && array.call_method0("max")?.extract::<i64>().is_ok_and(|v| v <= 1);
+                if !whole {
+                    return Err(wrong_answer(py, states.len(), &format!("values of dtype kind {kind:?}")));
+                }
+                array
+                    .call_method1("astype", ("bool",))?
+                    .cast_into::<PyArray1<bool>>()
+                    .map_err(|_| wrong_answer(py, states.len(), "not a 1-D array"))?
+            }
         };
         if answer.len() != states.len() {
             return Err(wrong_answer(py, states.len(), &format!("{} answers", answer.len())));
@@ -72,6 +97,25 @@ impl Callback<'_> {
         let answers =
             answer.as_slice().map_or_else(|_| answer.as_array().iter().all(|&v| v), |s| s.iter().all(|&v| v));
         Ok(answers)
+    }
+}
+
+/// A single state's answer: `True`/`False` (Python's or NumPy's), or the integers 1 and 0.
+fn truth(py: Python<'_>, answer: &Bound<'_, PyAny>) -> PyResult<bool> {
+    if let Ok(value) = answer.extract::<bool>() {
+        return Ok(value);
+    }
+    match answer.extract::<i64>() {
+        Ok(1) => Ok(true),
+        Ok(0) => Ok(false),
+        _ => Err(error(
+            py,
+            "CallbackError",
+            format!(
+                "the validity function returned {}; it must return a boolean (True or False)",
+                answer.repr().map_or_else(|_| "a value".to_owned(), |r| r.to_string())
+            ),
+        )),
     }
 }
 
@@ -109,6 +153,7 @@ pub fn plan_boxes_json(
         asarray: py.import("numpy")?.getattr("asarray")?,
         failed: RefCell::new(None),
         stop: Arc::new(AtomicBool::new(false)),
+        calls: std::cell::Cell::new(0),
     };
     macro_rules! in_dimensions {
         ($($n:literal)*) => {

@@ -16,13 +16,17 @@ use trailmark::solve::ProblemSpec;
 use crate::errors::{class_of, error};
 use crate::interrupt::receive;
 
+/// The most threads `solve_many` starts, whatever it is asked.
+const MAX_WORKERS: usize = 256;
+
 /// A document's result as JSON, or the class of `trailmark.errors` to raise and its message.
 pub type Outcome = Result<String, (&'static str, String)>;
 
-/// Solves the document `text` with relative paths resolved against `base_dir`; a panic (a bug,
-/// never expected) becomes a `SolveError` instead of ending the interpreter.
-pub fn solve_text(text: &str, base_dir: &Path) -> Outcome {
-    catch_unwind(AssertUnwindSafe(|| solve_unguarded(text, base_dir))).unwrap_or_else(|panic| {
+/// Solves the document `text` with relative paths resolved against `base_dir`, its planner
+/// stopped once `stop` is set; a panic (a bug, never expected) becomes a `SolveError` instead
+/// of ending the interpreter.
+pub fn solve_text(text: &str, base_dir: &Path, stop: &Arc<AtomicBool>) -> Outcome {
+    catch_unwind(AssertUnwindSafe(|| solve_unguarded(text, base_dir, stop))).unwrap_or_else(|panic| {
         let what = panic
             .downcast_ref::<&str>()
             .map(|s| (*s).to_owned())
@@ -32,13 +36,20 @@ pub fn solve_text(text: &str, base_dir: &Path) -> Outcome {
     })
 }
 
-fn solve_unguarded(text: &str, base_dir: &Path) -> Outcome {
+fn solve_unguarded(text: &str, base_dir: &Path, stop: &Arc<AtomicBool>) -> Outcome {
     if text.len() as u64 > MAX_DOCUMENT_BYTES {
         return Err(("DocumentError", format!("the document is longer than {MAX_DOCUMENT_BYTES} bytes")));
     }
     let problem = parse(text)?;
-    let result = trailmark::solve::solve(&problem, base_dir).map_err(|e| (class_of(&e), e.to_string()))?;
+    let result = trailmark::solve::solve_until(&problem, base_dir, Arc::clone(stop))
+        .map_err(|e| (class_of(&e), e.to_string()))?;
     serde_json::to_string(&result).map_err(|e| ("SolveError", e.to_string()))
+}
+
+/// The planner of `planner`, a document's `"planner"` as JSON; a `DocumentError` when it is
+/// not one.
+pub fn planner_spec(py: Python<'_>, planner: &str) -> PyResult<trailmark::solve::PlannerSpec> {
+    serde_json::from_str(planner).map_err(|e| error(py, "DocumentError", format!("invalid planner: {e}")))
 }
 
 /// The problem of the document `text`.
@@ -46,20 +57,22 @@ pub fn parse(text: &str) -> Result<ProblemSpec, (&'static str, String)> {
     serde_json::from_str(text).map_err(|e| ("DocumentError", format!("invalid problem: {e}")))
 }
 
-/// Solves one document on a thread of its own; Ctrl-C stops the wait.
+/// Solves one document on a thread of its own; Ctrl-C stops the planner and the wait.
 #[pyfunction]
 pub fn solve_json(py: Python<'_>, document: String, base_dir: PathBuf) -> PyResult<String> {
     let (tx, rx) = mpsc::channel();
+    let stop = Arc::new(AtomicBool::new(false));
+    let stopped = Arc::clone(&stop);
     std::thread::Builder::new()
         .name("trailmark-solve".into())
         .spawn(move || {
-            let _ = tx.send(solve_text(&document, &base_dir));
+            let _ = tx.send(solve_text(&document, &base_dir, &stopped));
         })
         .map_err(|e| {
             pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a planning thread: {e}"))
         })?;
     let mut outcome = None;
-    receive(py, rx, 1, &Arc::new(AtomicBool::new(false)), |o| outcome = Some(o))?;
+    receive(py, rx, 1, &stop, |o| outcome = Some(o))?;
     match outcome {
         Some(Ok(json)) => Ok(json),
         Some(Err((class, message))) => Err(error(py, class, message)),
@@ -68,7 +81,8 @@ pub fn solve_json(py: Python<'_>, document: String, base_dir: PathBuf) -> PyResu
 }
 
 /// Solves every document (its text and the folder its paths are relative to) on `workers`
-/// threads (default: one per core), without the GIL; each result is `(None, json)`, or
+/// threads (default: one per core, at most `MAX_WORKERS`), without the GIL; Ctrl-C stops every
+/// planner and the wait; each result is `(None, json)`, or
 /// `(class, message)` for a document that could not be solved.
 #[pyfunction]
 #[pyo3(signature = (documents, workers=None))]
@@ -81,7 +95,7 @@ pub fn solve_many_json(
     let cores = std::thread::available_parallelism().map_or(1, usize::from);
     let workers = match workers {
         Some(0) => return Err(PyValueError::new_err("workers must be at least 1")),
-        Some(w) => w,
+        Some(w) => w.min(MAX_WORKERS),
         None => cores,
     }
     .min(n.max(1));
@@ -97,7 +111,7 @@ pub fn solve_many_json(
                 while !stopped.load(Ordering::Relaxed) {
                     let i = next.fetch_add(1, Ordering::Relaxed);
                     let Some((text, base_dir)) = documents.get(i) else { break };
-                    if tx.send((i, solve_text(text, base_dir))).is_err() {
+                    if tx.send((i, solve_text(text, base_dir, &stopped))).is_err() {
                         break;
                     }
                 }

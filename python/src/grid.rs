@@ -7,8 +7,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use trailmark::core::grid::{Cell, Connectivity, CornerCutting, Grid as CoreGrid};
 use trailmark::core::movingai;
-use trailmark::solve::{DocumentError, PlannerSpec, SolveError, search_grid};
+use trailmark::solve::{DocumentError, SolveError, search_grid};
 
+use crate::documents::planner_spec;
 use crate::errors::{error, solve_error};
 use crate::outcome::{Kind, Parts, parts};
 
@@ -32,14 +33,38 @@ fn grid_error(py: Python<'_>, e: impl Into<SolveError>) -> PyErr {
 }
 
 impl Grid {
+    /// The grid itself.
+    pub(crate) fn core(&self) -> &CoreGrid {
+        &self.grid
+    }
+
+    /// How it is moved on.
+    pub(crate) fn connectivity_of(&self) -> Connectivity {
+        self.connectivity
+    }
+
+    /// Its rule for diagonal moves.
+    pub(crate) fn rule(&self) -> CornerCutting {
+        self.rule
+    }
+
     fn with(py: Python<'_>, grid: CoreGrid, connectivity: u8, corner_cutting: bool) -> PyResult<Self> {
         let (connectivity, rule) = moves(py, connectivity, corner_cutting)?;
         Ok(Grid { grid, connectivity, rule })
     }
 }
 
+/// Room for the costs of a `w x h` grid, once its size is checked: a grid too large is a
+/// `GridError` and memory that cannot be had a `MemoryError`, before anything is allocated.
+fn reserve(py: Python<'_>, w: usize, h: usize) -> PyResult<Vec<f64>> {
+    let n = CoreGrid::cell_count(w, h).map_err(|e| grid_error(py, e))?;
+    let mut costs = Vec::new();
+    costs.try_reserve_exact(n).map_err(|e| pyo3::exceptions::PyMemoryError::new_err(e.to_string()))?;
+    Ok(costs)
+}
+
 /// `(x, y)` as a cell, or the document error a solve document gets for it.
-fn cell(py: Python<'_>, which: &'static str, value: (i64, i64)) -> PyResult<Cell> {
+pub(crate) fn cell(py: Python<'_>, which: &'static str, value: (i64, i64)) -> PyResult<Cell> {
     match (u32::try_from(value.0), u32::try_from(value.1)) {
         (Ok(x), Ok(y)) => Ok(Cell::new(x, y)),
         #[allow(clippy::cast_precision_loss)] // for the message only
@@ -63,7 +88,8 @@ impl Grid {
     ) -> PyResult<Self> {
         let free = free.as_array();
         let (h, w) = free.dim();
-        let costs = free.iter().map(|&f| if f { 1.0 } else { f64::INFINITY }).collect();
+        let mut costs = reserve(py, w, h)?;
+        costs.extend(free.iter().map(|&f| if f { 1.0 } else { f64::INFINITY }));
         let grid = CoreGrid::from_costs(w, h, costs).map_err(|e| grid_error(py, e))?;
         Grid::with(py, grid, connectivity, corner_cutting)
     }
@@ -152,8 +178,7 @@ impl Grid {
         goal: (i64, i64),
         planner: &str,
     ) -> PyResult<Parts> {
-        let spec: PlannerSpec = serde_json::from_str(planner)
-            .map_err(|e| error(py, "DocumentError", format!("invalid planner: {e}")))?;
+        let spec = planner_spec(py, planner)?;
         let ends = (cell(py, "start", start)?, cell(py, "goal", goal)?);
         let moves = (self.connectivity, self.rule);
         let found =

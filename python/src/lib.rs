@@ -9,6 +9,8 @@ mod errors;
 mod grid;
 mod interrupt;
 mod outcome;
+mod replanner;
+mod ros_map;
 
 use pyo3::prelude::*;
 
@@ -19,7 +21,10 @@ fn _trailmark(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_function(wrap_pyfunction!(documents::solve_many_json, module)?)?;
     module.add_function(wrap_pyfunction!(callback::plan_boxes_json, module)?)?;
     module.add_class::<grid::Grid>()?;
+    module.add_class::<ros_map::RosMap>()?;
+    module.add_class::<replanner::Replanner>()?;
     module.add("__version__", env!("CARGO_PKG_VERSION"))?;
     module.add("MAX_DOCUMENT_BYTES", trailmark::core::read::MAX_DOCUMENT_BYTES)?;
+    module.add("MAX_GRID_CELLS", trailmark::core::grid::Grid::MAX_CELLS)?;
     Ok(())
 }

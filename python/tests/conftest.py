@@ -17,3 +17,12 @@ def need(path: Path, what: str) -> Path:
     if not path.exists():
         pytest.skip(f"{what} not found at {path} (the reference data beside the repository)")
     return path
+
+
+def sigint_after(seconds: float) -> None:
+    """Ctrl-C, `seconds` from now: a real SIGINT sent by another process (a thread of this
+    one would need the GIL, which a plan holds while it calls compiled functions)."""
+    import signal
+    import subprocess
+
+    subprocess.Popen(["sh", "-c", f"sleep {seconds}; kill -{int(signal.SIGINT)} {os.getpid()}"])

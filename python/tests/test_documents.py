@@ -5,14 +5,12 @@ import json
 import os
 import shutil
 import subprocess
-import threading
-import _thread
 import time
 
 import pytest
 
 import trailmark
-from conftest import EXAMPLES, REPOSITORY
+from conftest import EXAMPLES, REPOSITORY, sigint_after
 
 
 def without_times(value):
@@ -80,6 +78,12 @@ def test_solve_many_equals_solve_in_a_loop():
     assert trailmark.solve_many([]) == []
     with pytest.raises(ValueError):
         trailmark.solve_many(documents, workers=0)
+    with pytest.raises(TypeError):
+        trailmark.solve_many(documents, workers=1.5)
+    # More workers than documents, or than any machine has: capped, the same results.
+    assert [without_times(r) for r in trailmark.solve_many(documents[:3], workers=10_000, base_dir=EXAMPLES)] == [
+        without_times(r) for r in one_by_one[:3]
+    ]
 
 
 @pytest.mark.parametrize(
@@ -105,6 +109,15 @@ def test_bad_documents_raise_typed_errors(document, error, tmp_path):
         trailmark.solve(document, base_dir=tmp_path)
 
 
+def test_non_finite_numbers_are_refused():
+    document = {"world": {"grid": {"rows": [".."]}}, "start": [0, float("nan")], "goal": [1, 0],
+                "planner": {"name": "astar"}}
+    with pytest.raises(trailmark.DocumentError, match="finite"):
+        trailmark.solve(document)
+    with pytest.raises(trailmark.DocumentError):
+        trailmark.solve({"world": object()})
+
+
 def test_bad_files_raise(tmp_path):
     path = tmp_path / "bad.json"
     path.write_bytes(b"\xff\xfe not json")
@@ -126,17 +139,30 @@ LONG = {
 }
 
 
-def interrupt_after(seconds):
-    timer = threading.Timer(seconds, _thread.interrupt_main)
-    timer.start()
-    return timer
+def threads():
+    """This process's threads (Linux)."""
+    return len(os.listdir("/proc/self/task"))
 
 
-@pytest.mark.parametrize("call", [lambda: trailmark.solve(LONG), lambda: trailmark.solve_many([LONG] * 4)])
+def settles(before, within=5.0):
+    """Whether the threads come back to `before` within `within` seconds."""
+    deadline = time.perf_counter() + within
+    while time.perf_counter() < deadline:
+        if threads() <= before:
+            return True
+        time.sleep(0.02)
+    return False
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self/task"), reason="counts threads in /proc (Linux)")
+@pytest.mark.parametrize("call", [lambda: trailmark.solve(LONG), lambda: trailmark.solve_many([LONG] * 4, workers=2)])
 def test_ctrl_c_stops_a_long_plan(call):
-    """Ctrl-C (here simulated) raises KeyboardInterrupt within a moment, not after 60 s."""
+    """Ctrl-C (here simulated) raises KeyboardInterrupt within a moment, not after 60 s, and
+    the planning threads end too: the planners stop, not only the wait."""
+    before = threads()
     clock = time.perf_counter()
-    interrupt_after(0.3)
+    sigint_after(0.3)
     with pytest.raises(KeyboardInterrupt):
         call()
     assert time.perf_counter() - clock < 5.0
+    assert settles(before), f"{threads() - before} planning threads still running"

@@ -50,7 +50,7 @@ def test_movingai_published_optima(family, name, every):
             assert tuple(plan.path[0]) == start and tuple(plan.path[-1]) == goal
 
 
-def csgraph_distances(costs, connectivity, sources):
+def csgraph_distances(costs, connectivity, sources, unweighted=False):
     """Shortest path costs from `sources` by scipy's Dijkstra, on the graph built here from the
     grid's rule: a move costs its length times the mean of its two cells' costs; diagonals only
     when both orthogonal neighbours are free."""
@@ -79,7 +79,7 @@ def csgraph_distances(costs, connectivity, sources):
     graph = scipy_sparse.csr_matrix(
         (np.concatenate(weights), (np.concatenate(rows), np.concatenate(cols))), shape=(h * w, h * w)
     )
-    return dijkstra(graph, indices=[y * w + x for x, y in sources])
+    return dijkstra(graph, indices=[y * w + x for x, y in sources], unweighted=unweighted)
 
 
 @pytest.mark.parametrize("connectivity", [4, 8])
@@ -126,22 +126,21 @@ def check_path(grid, costs, plan, start, goal, connectivity):
 
 
 def test_bfs_counts_moves_as_unweighted_dijkstra():
-    """BFS's moves equal the unweighted shortest path of scipy on an occupancy grid."""
+    """BFS's moves equal the fewest hops of scipy's unweighted shortest paths."""
     pytest.importorskip("scipy", reason="scipy is not installed")
     rng = np.random.default_rng(7)
-    free = rng.random((30, 30)) > 0.3
-    free[0, 0] = free[29, 29] = True
-    costs = np.where(free, 1.0, np.inf)
-    grid = trailmark.Grid(free)
-    distances = csgraph_distances(costs, 8, [(0, 0)])[0]
-    plan = grid.bfs((0, 0), (29, 29))
-    if np.isinf(distances[-1]):
-        assert plan.status == "no_path"
-    else:
-        assert plan.solved
-        # Unit moves: BFS's path has the fewest moves, no more than the least-cost path's.
-        least = grid.dijkstra((0, 0), (29, 29))
-        assert len(plan.path) <= len(least.path)
+    for _ in range(5):
+        free = rng.random((30, 30)) > 0.3
+        free[0, 0] = free[29, 29] = True
+        costs = np.where(free, 1.0, np.inf)
+        grid = trailmark.Grid(free)
+        hops = csgraph_distances(costs, 8, [(0, 0)], unweighted=True)[0][-1]
+        plan = grid.bfs((0, 0), (29, 29))
+        if np.isinf(hops):
+            assert plan.status == "no_path"
+        else:
+            assert plan.solved and len(plan.path) - 1 == hops
+            check_path(grid, costs, plan, (0, 0), (29, 29), 8)
 
 
 def test_theta_star_is_never_longer_than_the_grid_path():
@@ -197,6 +196,48 @@ def test_bad_grids_raise_typed_errors(make, error):
         make()
 
 
+def test_cells_are_whole_numbers_never_truncated():
+    grid = trailmark.Grid.from_rows(["...", "...", "..."])
+    assert grid.astar((0.0, 0), (np.int64(2), np.uint8(2))).cost == grid.astar((0, 0), (2, 2)).cost
+    for bad in [(0.2, 0), (2.9, 2.7), "00", (0,), (0, 0, 0), (float("nan"), 0), (float("inf"), 0), (2**70, 0), (-1, 0), None]:
+        with pytest.raises(trailmark.DocumentError):
+            grid.astar(bad, (2, 2))
+
+
+def test_arrays_are_read_in_place_and_sizes_checked_first():
+    # A 1-byte broadcast view of 2**28 + 1 cells: refused before anything is allocated.
+    huge = np.broadcast_to(np.True_, (1, 2**28 + 1))
+    with pytest.raises(trailmark.GridError, match="too large"):
+        trailmark.Grid(huge)
+    with pytest.raises(trailmark.GridError):
+        trailmark.Grid(np.broadcast_to(1.0, (2**15, 2**14)))
+    # A strided view plans as its copy does.
+    free = np.ones((20, 20), dtype=bool)
+    free[5, :18] = False
+    view = free[::2, ::2]
+    assert trailmark.Grid(view).astar((0, 0), (9, 9)).cost == trailmark.Grid(view.copy()).astar((0, 0), (9, 9)).cost
+    for bad in [np.array([[1 + 1j]]), np.array([[np.timedelta64(1, "s")]]), np.array([[None]])]:
+        with pytest.raises(trailmark.GridError):
+            trailmark.Grid(bad)
+    for connectivity in (300, 6, True, 8.5):
+        with pytest.raises(trailmark.GridError):
+            trailmark.Grid(free, connectivity=connectivity)
+    with pytest.raises(trailmark.GridError):
+        trailmark.Grid.from_rows("...")
+
+
+def test_grids_and_plans_are_picklable_and_comparable():
+    import pickle
+
+    costs = np.array([[1.0, 2.0, np.inf], [1.0, 3.0, 1.0]])
+    grid = trailmark.Grid(costs, connectivity=4)
+    copy = pickle.loads(pickle.dumps(grid))
+    assert np.array_equal(copy.costs(), grid.costs()) and copy.connectivity == 4
+    plan = grid.dijkstra((0, 0), (2, 1))
+    assert plan == plan and plan != grid.dijkstra((0, 0), (2, 1))  # identity, no array truth
+    assert copy.dijkstra((0, 0), (2, 1)).cost == plan.cost
+
+
 def test_bad_queries_raise_typed_errors():
     grid = trailmark.Grid.from_rows(["...", ".@.", "..."])
     with pytest.raises(trailmark.DocumentError, match="blocked"):
@@ -211,6 +252,10 @@ def test_bad_queries_raise_typed_errors():
         grid.plan((0, 0), (2, 2), "astar", heuristic="manhattan")  # overestimates on 8-connected
     with pytest.raises(trailmark.DocumentError):
         grid.plan((0, 0), (2, 2), "rrt_connect")
+    with pytest.raises(TypeError):
+        grid.plan((0, 0), (2, 2), "astar", name="dijkstra")
+    with pytest.raises(trailmark.DocumentError, match="finite"):
+        grid.plan((0, 0), (2, 2), "weighted_astar", weight=float("inf"))
     with pytest.raises(trailmark.SearchError, match="uniform costs"):
         trailmark.Grid(np.array([[1.0, 2.0, 1.0]] * 3), connectivity=8).jps((0, 0), (2, 2))
     # Every one of them is also a ValueError and a TrailmarkError.

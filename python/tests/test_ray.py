@@ -30,17 +30,17 @@ def without_times(value):
 
 def test_ray_recipe_gives_the_single_machine_results():
     module = recipe()
-    documents = module.demonstration_documents(300)
-    # The example problems too (their files at the same paths: one machine), and a bad one.
-    documents += [json.loads(p.read_text()) for p in sorted(EXAMPLES.glob("wall-*.json"))]
+    documents = module.demonstration_documents(120)
+    # Example problems too (their files at the same paths: one machine), and a bad one.
+    documents += [json.loads(p.read_text()) for p in sorted(EXAMPLES.glob("wall-*.json"))[:3]]
     documents.append({"world": {"grid": {"rows": ["."]}}, "start": [0, 0], "goal": [5, 5], "planner": {"name": "astar"}})
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
     try:
-        on_ray = module.solve_on_ray(documents, chunk_size=64, base_dir=str(EXAMPLES))
+        on_ray = module.solve_on_ray(documents, chunk_size=32, base_dir=str(EXAMPLES))
     finally:
         ray.shutdown()
     here = trailmark.solve_many(documents, base_dir=EXAMPLES)
     assert len(on_ray) == len(documents)
     assert [without_times(r) for r in on_ray] == [without_times(r) for r in here]
     assert on_ray[-1]["status"] == "error"
-    assert sum(r["status"] == "solved" for r in on_ray) > 250
+    assert sum(r["status"] == "solved" for r in on_ray) > 100

@@ -1,13 +1,12 @@
 """Sampling planners with a Python validity function, one state or a batch per call."""
 
-import threading
-import _thread
 import time
 
 import numpy as np
 import pytest
 
 import trailmark
+from conftest import sigint_after
 
 BOUNDS = [(0.0, 10.0), (0.0, 10.0)]
 
@@ -42,8 +41,10 @@ def path_is_free(path, resolution=1e-3):
 @pytest.mark.parametrize("batch", [False, True])
 def test_plans_around_a_wall_the_world_does_not_know(planner, batch):
     check = grown_wall if batch else grown_wall_one
+    # RRT* rewires through many motions: fewer iterations when each state is a call.
+    iterations = 400 if planner == "rrt_star" and not batch else 2000
     plan = trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), check, planner=planner, batch=batch,
-                                 resolution=2e-3, max_iterations=2000)
+                                 resolution=2e-3, max_iterations=iterations)
     assert plan.solved, plan.stats
     assert plan.path.dtype == np.float64 and plan.path.shape[1] == 2
     assert np.allclose(plan.path[0], (1, 1)) and np.allclose(plan.path[-1], (9, 1))
@@ -75,17 +76,21 @@ def test_batches_are_the_motions_states():
 
 
 def test_with_boxes_and_in_more_axes():
-    """Eight axes, a box obstacle and a validity function together."""
+    """Eight axes, a box obstacle and a validity function together, both across the straight
+    line from start to goal: every leg of the path avoids both (checked finely here)."""
     bounds = [(0.0, 1.0)] * 8
-    box = ([0.4] * 8, [0.6] * 8)
-    def sphere(states):
-        return np.linalg.norm(states - 0.5, axis=1) > 0.1
-    plan = trailmark.plan_in_box(bounds, [0.1] * 8, [0.9] * 8, sphere, obstacles=[box], batch=True)
+    box = ([0.2] * 8, [0.3] * 8)
+    def ball(states):
+        return np.linalg.norm(states - 0.6, axis=1) > 0.15
+    plan = trailmark.plan_in_box(bounds, [0.05] * 8, [0.95] * 8, ball, obstacles=[box], batch=True,
+                                 resolution=0.001, seed=3)
     assert plan.solved and plan.path.shape[1] == 8
-    for state in plan.path:
-        assert not np.all((state >= 0.4) & (state <= 0.6))
+    for a, b in zip(plan.path[:-1], plan.path[1:]):
+        states = a + np.linspace(0.0, 1.0, 400)[:, None] * (b - a)
+        assert ball(states).all()
+        assert not np.any(np.all((states >= 0.2) & (states <= 0.3), axis=1))
     # Without a function: the box world alone, as a document would plan it.
-    alone = trailmark.plan_in_box(bounds, [0.1] * 8, [0.9] * 8, obstacles=[box])
+    alone = trailmark.plan_in_box(bounds, [0.05] * 8, [0.95] * 8, obstacles=[box])
     assert alone.solved and alone.path.shape[1] == 8
 
 
@@ -96,6 +101,16 @@ def test_errors_of_the_function_are_raised():
         trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), lambda s: np.ones(1, dtype=bool), batch=True)
     with pytest.raises(trailmark.CallbackError):
         trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), lambda s: "yes", batch=True)
+    # A distance is not an answer (it would let every state with a non-zero distance through).
+    with pytest.raises(trailmark.CallbackError, match="dtype"):
+        trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), lambda s: np.abs(s[:, 0] - 5) - 0.5, batch=True)
+    with pytest.raises(trailmark.CallbackError):
+        trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), lambda s: ["False"] * len(s), batch=True)
+    with pytest.raises(trailmark.CallbackError):
+        trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), lambda s: 0.7)
+    # Integers 0 and 1 are answers.
+    plan = trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), lambda s: grown_wall(s).astype(np.int8), batch=True)
+    assert plan.solved and path_is_free(plan.path)
     with pytest.raises(TypeError):
         trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), "not callable")
 
@@ -113,12 +128,22 @@ def test_bad_problems_raise_typed_errors():
         trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), wall, resolution=0.0)
     with pytest.raises(trailmark.DocumentError):
         trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), wall, time_limit_s=-1)
+    with pytest.raises(trailmark.SpaceError):
+        trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), wall, resolution=1e-300)
+    with pytest.raises(trailmark.DocumentError, match="finite"):
+        trailmark.plan_in_box(BOUNDS, (1, float("nan")), (9, 1), wall)
+    with pytest.raises(trailmark.DocumentError):
+        trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), wall, seed=1.5)
 
 
-def test_ctrl_c_in_the_function_stops_the_planner():
-    """A KeyboardInterrupt while Python runs the function ends a 60-second plan at once."""
+@pytest.mark.parametrize(
+    "function,batch", [(wall, True), (np.logical_and.reduce, False)], ids=["python", "compiled"]
+)
+def test_ctrl_c_in_the_function_stops_the_planner(function, batch):
+    """Ctrl-C ends a 60-second plan at once, whether the function runs Python code or is
+    compiled (a ufunc's method runs no bytecode, where Python would look for signals)."""
     clock = time.perf_counter()
-    threading.Timer(0.3, _thread.interrupt_main).start()
+    sigint_after(0.3)
     with pytest.raises(KeyboardInterrupt):
-        trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), wall, batch=True, planner="rrt_star", time_limit_s=60)
+        trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), function, batch=batch, planner="rrt_star", time_limit_s=60)
     assert time.perf_counter() - clock < 5.0

@@ -1,7 +1,9 @@
 """trailmark: motion planning at Rust speed, with NumPy arrays in and out.
 
 Grids from arrays and MovingAI maps searched by A*, Dijkstra, BFS, JPS, JPS+ and Theta*
-(:class:`Grid`); sampling planners in a box with your own validity function, one state or a
+(:class:`Grid`); replanners kept between plans as costs change (:class:`Replanner`: D* Lite,
+LPA*, MPGAA*, Adaptive A*); ROS maps made into costmaps and planned on in metres, Hybrid A* for a car
+(:class:`RosMap`); sampling planners in a box with your own validity function, one state or a
 whole batch per call (:func:`plan_in_box`); and every problem of ``cargo xtask solve`` (grids,
 ROS maps, polygon worlds, cars, robot arms) as a document, one at a time or in parallel on every
 core (:func:`solve`, :func:`solve_many`).
@@ -37,12 +39,16 @@ from .errors import (
 )
 from .grid import Grid
 from .plan import Plan
+from .replanner import Replanner
+from .ros_map import RosMap
 from .sampling import plan_in_box
 
 __all__ = [
     "__version__",
     "Grid",
     "Plan",
+    "Replanner",
+    "RosMap",
     "plan_in_box",
     "solve",
     "solve_many",

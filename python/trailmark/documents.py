@@ -6,7 +6,7 @@ import os
 from pathlib import Path
 from typing import Any, Dict, Iterable, List, Optional, Union
 
-from . import _trailmark
+from . import _args, _trailmark
 from . import errors as _errors
 
 __all__ = ["solve", "solve_many", "MAX_DOCUMENT_BYTES"]
@@ -19,7 +19,7 @@ Document = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
 def _text(document: Document, base_dir: Optional[Union[str, "os.PathLike[str]"]]) -> "tuple[str, str]":
     if isinstance(document, dict):
-        return json.dumps(document), os.fspath(base_dir) if base_dir is not None else os.getcwd()
+        return _args.to_json(document), os.fspath(base_dir) if base_dir is not None else os.getcwd()
     if isinstance(document, (str, os.PathLike)):
         path = Path(document)
         with open(path, "rb") as f:

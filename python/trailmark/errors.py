@@ -1,5 +1,7 @@
 """The exceptions of trailmark: one class per error enum of the Rust library, all subclasses of
-:class:`TrailmarkError`. A wrong input (a document, a grid, a setting) is also a ``ValueError``.
+:class:`TrailmarkError`. The errors of inputs that are wrong in themselves (a document, a grid,
+a setting, a space, a sampler, a search's or a planner's start, goal or settings) are also
+``ValueError``; the errors of files (``ReadError``, ``MapError``, ``RobotError``) are not.
 
 >>> import trailmark
 >>> try:
@@ -50,7 +52,7 @@ class MapError(TrailmarkError):
     """A ROS map (YAML and image) that cannot be read, or a costmap setting that is wrong."""
 
 
-class SearchError(TrailmarkError):
+class SearchError(TrailmarkError, ValueError):
     """A graph search that could not run (an unreachable goal is not an error)."""
 
 
@@ -70,7 +72,7 @@ class SamplerError(TrailmarkError, ValueError):
     """A state sampler with settings it cannot use."""
 
 
-class PlanError(TrailmarkError):
+class PlanError(TrailmarkError, ValueError):
     """A sampling planner that could not start: its start or goal is invalid, or a setting."""
 
 

@@ -1,13 +1,12 @@
 """Grids from NumPy arrays, MovingAI maps or rows of text, and the graph searches over them:
 :class:`Grid`."""
 
-import json
 import os
 from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _trailmark
+from . import _args, _trailmark
 from .errors import GridError
 from .plan import Plan, _plan
 
@@ -16,9 +15,10 @@ __all__ = ["Grid"]
 CellLike = Union[Tuple[int, int], Sequence[int], np.ndarray]
 
 
-def _cell(value: CellLike) -> Tuple[int, int]:
-    x, y = (int(v) for v in value)
-    return (x, y)
+def _connectivity(value: Any) -> int:
+    if value not in (4, 8) or isinstance(value, bool):
+        raise GridError(f"connectivity must be 4 or 8, not {value!r}")
+    return int(value)
 
 
 class Grid:
@@ -44,15 +44,19 @@ class Grid:
 
     def __init__(self, cells: Any, *, connectivity: int = 8, corner_cutting: bool = False) -> None:
         array = np.asarray(cells)
+        connectivity = _connectivity(connectivity)
         if array.ndim != 2:
             raise GridError(f"a grid is a 2-D array, not one of shape {array.shape}")
-        if array.dtype == np.bool_:
-            self._grid = _trailmark.Grid.from_free(np.ascontiguousarray(array), connectivity, corner_cutting)
-        elif np.issubdtype(array.dtype, np.number):
-            costs = np.ascontiguousarray(array, dtype=np.float64)
-            self._grid = _trailmark.Grid.from_costs(costs, connectivity, corner_cutting)
+        if array.size > _trailmark.MAX_GRID_CELLS:
+            raise GridError(f"a {array.shape[1]} x {array.shape[0]} grid is too large (at most {_trailmark.MAX_GRID_CELLS} cells)")
+        if array.dtype.kind == "b":
+            # Read in place, strides and all: no copy of the caller's array.
+            self._grid = _trailmark.Grid.from_free(array, connectivity, bool(corner_cutting))
+        elif array.dtype.kind in "iuf":
+            costs = np.asarray(array, dtype=np.float64)
+            self._grid = _trailmark.Grid.from_costs(costs, connectivity, bool(corner_cutting))
         else:
-            raise GridError(f"a grid's cells are booleans or costs, not {array.dtype}")
+            raise GridError(f"a grid's cells are booleans or real costs, not {array.dtype}")
 
     @classmethod
     def _wrap(cls, grid: Any) -> "Grid":
@@ -66,7 +70,7 @@ class Grid:
     ) -> "Grid":
         """The grid of a MovingAI ``.map`` file (``.``, ``G``, ``S`` free; ``@``, ``O``, ``T``,
         ``W`` blocked)."""
-        return cls._wrap(_trailmark.Grid.from_movingai(os.fspath(path), connectivity, corner_cutting))
+        return cls._wrap(_trailmark.Grid.from_movingai(os.fspath(path), _connectivity(connectivity), corner_cutting))
 
     @classmethod
     def from_rows(cls, rows: Sequence[str], *, connectivity: int = 8, corner_cutting: bool = False) -> "Grid":
@@ -76,7 +80,9 @@ class Grid:
         >>> trailmark.Grid.from_rows(["..@", "..."]).bfs((0, 0), (2, 1)).path.tolist()
         [[0, 0], [1, 1], [2, 1]]
         """
-        return cls._wrap(_trailmark.Grid.from_rows(list(rows), connectivity, corner_cutting))
+        if isinstance(rows, (str, bytes)):
+            raise GridError("rows are a list of strings, one per row, not one string")
+        return cls._wrap(_trailmark.Grid.from_rows([str(r) for r in rows], _connectivity(connectivity), corner_cutting))
 
     @property
     def width(self) -> int:
@@ -131,8 +137,8 @@ class Grid:
         >>> grid.plan((0, 0), (3, 2), "weighted_astar", weight=1.5).cost
         5.0
         """
-        spec = json.dumps({"name": planner, **settings})
-        return _plan(self._grid.plan_json(_cell(start), _cell(goal), spec))
+        spec = _args.planner(planner, settings)
+        return _plan(self._grid.plan_json(_args.cell(start, "start"), _args.cell(goal, "goal"), spec))
 
     def astar(self, start: CellLike, goal: CellLike, *, heuristic: Optional[str] = None) -> Plan:
         """A*: least cost, guided by ``heuristic`` (octile on 8-connected grids, Manhattan on
@@ -162,5 +168,13 @@ class Grid:
         they cross; waypoints as ``(x, y)`` cells."""
         return self.plan(start, goal, "theta_star")
 
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # Pickled as its costs and moves (for multiprocessing and Ray).
+        return (_from_state, (self.costs(), self.connectivity, self.corner_cutting))
+
     def __repr__(self) -> str:
         return str(self._grid.__repr__())
+
+
+def _from_state(costs: np.ndarray, connectivity: int, corner_cutting: bool) -> Grid:
+    return Grid(costs, connectivity=connectivity, corner_cutting=corner_cutting)

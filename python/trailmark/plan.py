@@ -8,7 +8,7 @@ import numpy as np
 __all__ = ["Plan"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Plan:
     """One planner's answer.
 

@@ -6,7 +6,7 @@ from typing import Any, Callable, Dict, Optional, Sequence
 
 import numpy as np
 
-from . import _trailmark
+from . import _args, _trailmark
 from .plan import Plan, _plan
 
 __all__ = ["plan_in_box"]
@@ -46,20 +46,25 @@ def plan_in_box(
     >>> plan.status, plan.path.shape[1], bool(plan.path[:, 1].max() > 8)
     ('solved', 2, True)
     """
-    starts = [float(v) for v in start]
+    starts = _args.point(start, "start")
+    if "name" in settings:
+        raise TypeError("the planner is named by `planner`, not by a `name` setting")
     document: Dict[str, Any] = {
         "world": {
             "boxes": {
-                "bounds": [[float(lo), float(hi)] for lo, hi in bounds],
-                "obstacles": [[[float(v) for v in lo], [float(v) for v in hi]] for lo, hi in obstacles],
+                "bounds": [_args.point(axis, "bounds' axis") for axis in _args.sequence(bounds, "bounds")],
+                "obstacles": [
+                    [_args.point(corner, "obstacle's corner") for corner in _args.sequence(box, "an obstacle")]
+                    for box in _args.sequence(obstacles, "obstacles")
+                ],
             }
         },
         "start": starts,
-        "goal": [float(v) for v in goal],
+        "goal": _args.point(goal, "goal"),
         "planner": {"name": planner, **settings},
-        "seed": int(seed),
+        "seed": _args.whole(seed, "seed"),
     }
-    text = json.dumps(document)
+    text = _args.to_json(document)
     if is_valid is None:
         result = json.loads(_trailmark.solve_json(text, "."))
         path = np.asarray(result["path"], dtype=np.float64).reshape(-1, len(starts))

@@ -33,6 +33,7 @@ mod replan;
 mod result;
 mod sampling;
 mod search;
+mod stop;
 mod world;
 
 pub use error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
@@ -52,18 +53,45 @@ pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
 pub use search::grid::search_grid;
 pub use search::roadmap::DEFAULT_SAMPLES;
 pub use world::boxes::MAX_BOX_DIMENSION;
-pub use world::grid::{grid_graph, load_grid};
+pub use world::grid::{check_grid_end, grid_graph, load_grid};
 pub use world::robot::MAX_GROUP_JOINTS;
 pub use world::ros_map::{
     DEFAULT_COST_FACTOR, DEFAULT_COST_SCALING_FACTOR, DEFAULT_INFLATION_RADIUS, DEFAULT_ROBOT_RADIUS,
-    MAX_COST_FACTOR, ros_costmap, ros_travel_cost,
+    MAX_COST_FACTOR, RosMapWorld, ros_costmap, ros_travel_cost,
 };
 
 use std::path::Path;
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 
 /// Solves `problem`; relative file paths in it are resolved against `base_dir`.
 pub fn solve(problem: &ProblemSpec, base_dir: impl AsRef<Path>) -> Result<SolveResult, SolveError> {
     solve_inner(problem, base_dir.as_ref(), None)
+}
+
+/// Solves `problem` as [`solve`] does, its planner stopped (its result then
+/// `"stopped"`, or the best it has) once `stop` is set, from any thread.
+///
+/// ```
+/// use std::sync::Arc;
+/// use std::sync::atomic::AtomicBool;
+/// use trailmark::solve::{ProblemSpec, Status, solve_until};
+///
+/// let problem: ProblemSpec = serde_json::from_str(r#"{
+///     "world": {"polygons": {"bounds": [0, 0, 10, 10], "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]]}},
+///     "start": [1, 1], "goal": [9, 1], "planner": {"name": "rrt_star", "time_limit_s": 60}
+/// }"#)?;
+/// let stop = Arc::new(AtomicBool::new(true)); // set before it starts: the planner stops at once
+/// let result = solve_until(&problem, ".", stop)?;
+/// assert!(result.stats.time_s < 1.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn solve_until(
+    problem: &ProblemSpec,
+    base_dir: impl AsRef<Path>,
+    stop: Arc<AtomicBool>,
+) -> Result<SolveResult, SolveError> {
+    stop::with_flag(stop, || solve(problem, base_dir))
 }
 
 /// Solves `problem` as [`solve`] does and draws it: an SVG of the world (the obstacles and, for

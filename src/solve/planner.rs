@@ -22,6 +22,7 @@ use trailmark_search::{
 use super::error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
 use super::registry::PlannerName;
 use super::result::{SolveResult, Waypoint, anytime_result_of, result_of};
+use super::stop::stoppable;
 
 /// A planner and its parameters. In JSON, an object whose `"name"` selects the planner.
 ///
@@ -176,7 +177,7 @@ impl PlannerSpec {
     /// The heuristic this planner searches a grid of `connectivity` with: the one it asks for,
     /// else the grid's own (octile or Manhattan); an error when the planner promises least cost
     /// and that heuristic may overestimate.
-    pub(crate) fn grid_heuristic(&self, connectivity: Connectivity) -> Result<GridHeuristic, DocumentError> {
+    pub fn grid_heuristic(&self, connectivity: Connectivity) -> Result<GridHeuristic, DocumentError> {
         let (asked, optimal) = self.heuristic();
         let kind = asked.unwrap_or(GridHeuristic::for_connectivity(connectivity));
         if optimal && !kind.is_admissible(connectivity) {
@@ -425,7 +426,9 @@ impl AnytimeSpec {
     pub(super) fn budget(&self) -> Termination {
         // Checked by solve: a limit too large for a Duration has been refused already.
         let time = self.time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
-        Termination { time_limit: time, max_expansions: self.max_expansions, ..Termination::default() }
+        let budget =
+            Termination { time_limit: time, max_expansions: self.max_expansions, ..Termination::default() };
+        stoppable(budget, None)
     }
 }
 
@@ -492,7 +495,9 @@ impl HybridSpec {
     pub(super) fn termination(&self) -> Termination {
         // Checked by solve: a limit too large for a Duration has been refused already.
         let time = Duration::try_from_secs_f64(self.time_limit_s.unwrap_or(5.0)).ok();
-        Termination { time_limit: time, max_expansions: self.max_expansions, ..Termination::default() }
+        let limits =
+            Termination { time_limit: time, max_expansions: self.max_expansions, ..Termination::default() };
+        stoppable(limits, None)
     }
 }
 

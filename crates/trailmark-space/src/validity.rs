@@ -100,10 +100,11 @@ pub struct Sampled<F> {
 }
 
 impl<F> Sampled<F> {
-    /// `is_valid` checked every `resolution` (a fraction of the space's extent, in `(0, 1]`).
+    /// `is_valid` checked every `resolution` (a fraction of the space's extent, from
+    /// [`MIN_RESOLUTION`] to 1).
     pub fn new(is_valid: F, resolution: f64) -> Result<Self, SpaceError> {
-        if !(resolution > 0.0 && resolution <= 1.0) {
-            return Err(SpaceError::NotPositive { what: "resolution (at most 1)", value: resolution });
+        if !(MIN_RESOLUTION..=1.0).contains(&resolution) {
+            return Err(SpaceError::NotPositive { what: "resolution (from 1e-9 to 1)", value: resolution });
         }
         Ok(Sampled { is_valid, resolution })
     }
@@ -130,6 +131,10 @@ fn motion_steps<S: StateSpace>(space: &S, from: &S::State, to: &S::State, resolu
     // Saturating: a count past u64 is checked (and refused) state by state, never wrapped.
     steps.is_finite().then(|| (steps as u64).max(1))
 }
+
+/// The finest resolution of [`Sampled`] and [`Batched`]: a billionth of the space's extent (a
+/// finer one would check a motion at more states than any run can afford).
+pub const MIN_RESOLUTION: f64 = 1e-9;
 
 /// The most states a [`Batched`] test is given at once.
 pub const MAX_BATCH: usize = 1024;
@@ -160,11 +165,11 @@ pub struct Batched<F> {
 }
 
 impl<F> Batched<F> {
-    /// `all_valid` asked of the states every `resolution` (a fraction of the space's extent, in
-    /// `(0, 1]`) along each motion.
+    /// `all_valid` asked of the states every `resolution` (a fraction of the space's extent,
+    /// from [`MIN_RESOLUTION`] to 1) along each motion.
     pub fn new(all_valid: F, resolution: f64) -> Result<Self, SpaceError> {
-        if !(resolution > 0.0 && resolution <= 1.0) {
-            return Err(SpaceError::NotPositive { what: "resolution (at most 1)", value: resolution });
+        if !(MIN_RESOLUTION..=1.0).contains(&resolution) {
+            return Err(SpaceError::NotPositive { what: "resolution (from 1e-9 to 1)", value: resolution });
         }
         Ok(Batched { all_valid, resolution })
     }
@@ -177,7 +182,8 @@ impl<S: StateSpace, F: Fn(&[S::State]) -> bool> Validity<S> for Batched<F> {
 
     fn motion_is_valid(&self, space: &S, from: &S::State, to: &S::State) -> bool {
         let Some(n) = motion_steps(space, from, to, self.resolution) else { return false };
-        let mut batch = Vec::with_capacity(usize::try_from(n + 1).unwrap_or(MAX_BATCH).min(MAX_BATCH));
+        let mut batch =
+            Vec::with_capacity(usize::try_from(n.saturating_add(1)).unwrap_or(MAX_BATCH).min(MAX_BATCH));
         for i in 0..=n {
             let state = space.interpolate(from, to, i as f64 / n as f64);
             if !space.satisfies_bounds(&state) {

@@ -7,7 +7,7 @@ mod car;
 pub(super) mod robot;
 
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
 use trailmark_core::geometry::Point;
@@ -28,6 +28,7 @@ use crate::solve::problem::{ProblemSpec, SpaceKind};
 use crate::solve::result::{
     Coordinates, ImprovementRecord, ResultStats, SamplingStats, SmoothedRecord, SolveResult, Status, Waypoint,
 };
+use crate::solve::stop::stoppable;
 
 /// The iterations of a sampling planner given neither `max_iterations` nor `time_limit_s`.
 pub const DEFAULT_ITERATIONS: u64 = 10_000;
@@ -131,15 +132,12 @@ impl<V> SamplingRun<'_, V> {
         let spec = self.spec;
         // A limit too large for a Duration has been refused by solve_inner.
         let time_limit = spec.time_limit_s.and_then(|t| Duration::try_from_secs_f64(t).ok());
-        let mut termination = Termination {
+        let termination = Termination {
             max_iterations: spec.max_iterations.or(time_limit.is_none().then_some(DEFAULT_ITERATIONS)),
             time_limit,
             ..Termination::default()
         };
-        if let Some(stop) = &self.stop {
-            let stop = Arc::clone(stop);
-            termination = termination.or_when(move |_| stop.load(Ordering::Relaxed));
-        }
+        let termination = stoppable(termination, self.stop.as_ref());
         let defaults = RrtOptions::default();
         let options =
             RrtOptions { range: spec.range, goal_bias: spec.goal_bias.unwrap_or(defaults.goal_bias) };

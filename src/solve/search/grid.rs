@@ -10,7 +10,7 @@ use crate::solve::error::{DocumentError, SolveError};
 use crate::solve::planner::PlannerSpec;
 use crate::solve::problem::{GridSpec, ProblemSpec};
 use crate::solve::result::{SolveResult, Waypoint};
-use crate::solve::world::grid::{cell_of, check_end, corner_cutting, load_grid};
+use crate::solve::world::grid::{cell_of, check_grid_end, corner_cutting, load_grid};
 
 /// Solves a grid-world problem.
 pub(in crate::solve) fn solve_grid(
@@ -70,8 +70,8 @@ pub fn search_grid(
     if planner.sampling().is_some() {
         return Err(DocumentError::NeedsPolygons { planner: planner.name() }.into());
     }
-    check_end("start", start, grid)?;
-    check_end("goal", goal, grid)?;
+    check_grid_end("start", start, grid)?;
+    check_grid_end("goal", goal, grid)?;
     match planner.grid_search(grid, connectivity, rule, (start, goal)) {
         Some(found) => found,
         None => {

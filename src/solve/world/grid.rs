@@ -59,12 +59,13 @@ pub(crate) fn cell_of(which: &'static str, value: &[f64], grid: &Grid) -> Result
     }
     #[allow(clippy::cast_possible_truncation)] // whole numbers within u32, checked above
     let cell = Cell::new(*x as u32, *y as u32);
-    check_end(which, cell, grid)?;
+    check_grid_end(which, cell, grid)?;
     Ok(cell)
 }
 
-/// `cell` as the `which` end of a search on `grid`: inside it and passable.
-pub(crate) fn check_end(which: &'static str, cell: Cell, grid: &Grid) -> Result<(), DocumentError> {
+/// Whether `cell` may be the `which` end (`"start"`, `"goal"`) of a search on `grid`: inside
+/// it and passable, or the document error that says why not.
+pub fn check_grid_end(which: &'static str, cell: Cell, grid: &Grid) -> Result<(), DocumentError> {
     if !grid.contains(cell) {
         return Err(DocumentError::Outside { which, cell, width: grid.width(), height: grid.height() });
     }

@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use trailmark_core::geometry::Point;
-use trailmark_core::grid::Cell;
+use trailmark_core::grid::{Cell, Grid};
 use trailmark_map::{
     Costmap, CostmapOptions, Footprint, INSCRIBED, Inflation, MapError, TravelCost, Unknown, load_map,
 };
@@ -55,6 +55,30 @@ pub fn ros_costmap(world: &RosMapSpec, base_dir: impl AsRef<Path>) -> Result<Cos
         ..CostmapOptions::default()
     };
     Ok(Costmap::from_occupancy(&map, &settings)?)
+}
+
+/// A ROS-map world made ready for searches: its costmap around the robot and the grid of
+/// travel costs the searches walk. A document builds it before its one search; a program that
+/// plans many times on one map builds it once ([`RosMapWorld::search`]).
+#[derive(Debug, Clone)]
+pub struct RosMapWorld {
+    pub(crate) costmap: Costmap,
+    pub(crate) grid: Grid,
+}
+
+impl RosMapWorld {
+    /// The world of `spec`, its files read relative to `base_dir`.
+    pub fn load(spec: &RosMapSpec, base_dir: impl AsRef<Path>) -> Result<Self, SolveError> {
+        let costmap = ros_costmap(spec, base_dir)?;
+        let grid = costmap.to_grid(&ros_travel_cost(spec, costmap.frame().resolution()))?;
+        Ok(RosMapWorld { costmap, grid })
+    }
+
+    /// Its costmap: Nav2's cell costs (0 free to 252, 253 inscribed, 254 lethal, 255 unknown)
+    /// in the map's frame.
+    pub fn costmap(&self) -> &Costmap {
+        &self.costmap
+    }
 }
 
 /// The price of travel over a ROS-map world's costmap, per metre: a move over free cells costs

@@ -4,27 +4,36 @@ them). Run from the repository with the package and the peers installed:
     pip install ./python pathfinding oxmpl-py ompl
     python python/bench/bench.py [--quick]
 
-1. A* on a 512 x 512 NumPy grid: trailmark from Python (wall clock of the call), the same
-   search timed inside Rust (the plan's own time_s: the query from Rust without Python), and
-   the pure-Python `pathfinding` package on the same grid and query (costs compared too).
-2. RRT-Connect in a box world (a built-in world): the call from Python against the planner's
-   own time inside Rust.
+1. A* on a 512 x 512 NumPy grid: Grid.astar from Python (wall clock of the call), the same
+   query from Rust on the grid prepared the same way (`cargo xtask time --prepared`:
+   GridSearches::search), and the pure-Python `pathfinding` package (costs compared too).
+2. RRT-Connect in an 8-axis box world (a built-in world): trailmark.solve from Python against
+   solve from Rust (`cargo xtask time`) on the same document.
 3. RRT-Connect with a Python validity function on one problem: trailmark with the batch form,
    trailmark one state per call, oxmpl-py and OMPL 2.0's Python bindings one state per call
-   (neither has a batch form), the same wall, range and motion step.
+   (neither has a batch form), the same wall, range and motion step, at OMPL's default step
+   (1% of the extent) and at a finer one (0.1%).
 4. solve_many on every core against solve in a loop.
 
 A peer that is not installed is reported as such and skipped.
 """
 
 import argparse
+import json
 import math
 import statistics
+import subprocess
+import sys
+import tempfile
 import time
+from pathlib import Path
 
 import numpy as np
 
 import trailmark
+
+REPOSITORY = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # peers.py beside this file
 
 
 def median_time(function, repeats):
@@ -37,6 +46,16 @@ def median_time(function, repeats):
     return statistics.median(times), result
 
 
+def rust_time(document, repeat, prepared=False):
+    """The Rust side: `cargo xtask time` on the same document, in one process."""
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "problem.json"
+        path.write_text(json.dumps(document))
+        command = ["cargo", "xtask", "time", str(path), "--repeat", str(repeat)] + (["--prepared"] if prepared else [])
+        done = subprocess.run(command, cwd=REPOSITORY, capture_output=True, text=True, check=True)
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
 def grid_section(repeats, queries):
     rng = np.random.default_rng(0)
     free = rng.random((512, 512)) > 0.25
@@ -44,8 +63,8 @@ def grid_section(repeats, queries):
     picks = cells[rng.choice(len(cells), size=2 * queries, replace=False)]
     pairs = [((int(a[1]), int(a[0])), (int(b[1]), int(b[0]))) for a, b in zip(picks[0::2], picks[1::2])]
     grid = trailmark.Grid(free)
-    rows = []
-    ours, inside, theirs, agree = [], [], [], 0
+    world = grid.world()
+    ours, rust, theirs, agree = [], [], [], 0
     try:
         from pathfinding.core.diagonal_movement import DiagonalMovement
         from pathfinding.core.grid import Grid as PfGrid
@@ -55,7 +74,10 @@ def grid_section(repeats, queries):
     for start, goal in pairs:
         wall, plan = median_time(lambda: grid.astar(start, goal), repeats)
         ours.append(wall)
-        inside.append(plan.stats["time_s"])
+        document = {"world": {"grid": world}, "start": list(start), "goal": list(goal), "planner": {"name": "astar"}}
+        timed = rust_time(document, repeats, prepared=True)
+        assert timed["cost"] == plan.cost, (timed, plan.cost)
+        rust.append(timed["median_s"])
         if PfGrid is not None:
             matrix = free.astype(int)
             def peer():
@@ -71,12 +93,16 @@ def grid_section(repeats, queries):
                 length is not None and plan.cost is not None and abs(length - plan.cost) < 1e-6
             ):
                 agree += 1
-    rows.append(("A* 512x512, trailmark from Python (call)", statistics.median(ours)))
-    rows.append(("A* 512x512, the same search inside Rust (time_s)", statistics.median(inside)))
-    note = f"{statistics.median(ours) / statistics.median(inside):.2f}x the Rust search"
+    rows = [
+        ("A* 512x512 (Grid.astar), trailmark from Python", statistics.median(ours)),
+        ("A* 512x512, the same search from Rust (GridSearches::search)", statistics.median(rust)),
+    ]
+    ratios = [o / r for o, r in zip(ours, rust)]
+    note = f"A*: Python {statistics.median(ratios):.2f}x Rust (median of per-query ratios)"
     if theirs:
         rows.append(("A* 512x512, pathfinding (pure Python)", statistics.median(theirs)))
-        note += f"; pathfinding {statistics.median(theirs) / statistics.median(ours):.0f}x slower"
+        speedups = [t / o for t, o in zip(theirs, ours)]
+        note += f"; pathfinding {statistics.median(speedups):.0f}x slower (median per query)"
         note += f"; costs equal on {agree} of {len(pairs)} queries"
     else:
         note += "; pathfinding (pure Python) not installed"
@@ -96,41 +122,45 @@ def wall_one(p):
 
 
 def box_section(repeats):
-    bounds = [(0.0, 10.0), (0.0, 10.0)]
-    obstacles = [(WALL_LO, WALL_HI)]
-    seeds = range(repeats)
-    calls, inside = [], []
-    for seed in seeds:
-        wall, plan = median_time(
-            lambda: trailmark.plan_in_box(bounds, (1, 1), (9, 1), obstacles=obstacles, range=1.0, seed=seed), 1
-        )
-        calls.append(wall)
-        inside.append(plan.stats["time_s"])
-    rows = [
-        ("RRT-Connect, box world, trailmark from Python (call)", statistics.median(calls)),
-        ("RRT-Connect, box world, the planner inside Rust (time_s)", statistics.median(inside)),
+    """RRT-Connect over built-in worlds, as documents: trailmark.solve from Python against
+    `cargo xtask time` (solve from Rust, in one process) on the same document."""
+    examples = REPOSITORY / "examples" / "problems"
+    cases = [
+        ("polygon world (examples/problems/wall-rrt-connect.json)", examples / "wall-rrt-connect.json"),
+        ("4-joint arm (examples/problems/shelf-arm-rrt-connect.json)", examples / "shelf-arm-rrt-connect.json"),
     ]
-    return rows, f"{statistics.median(calls) / statistics.median(inside):.2f}x the Rust planner"
+    rows, notes = [], []
+    for label, path in cases:
+        wall, result = median_time(lambda: trailmark.solve(path), repeats)
+        command = ["cargo", "xtask", "time", str(path), "--repeat", str(repeats)]
+        done = subprocess.run(command, cwd=REPOSITORY, capture_output=True, text=True, check=True)
+        timed = json.loads(done.stdout.strip().splitlines()[-1])
+        assert timed["cost"] == result["cost"] and result["status"] == "solved"
+        rows.append((f"RRT-Connect, {label}, trailmark.solve from Python", wall))
+        rows.append((f"RRT-Connect, {label}, solve from Rust", timed["median_s"]))
+        notes.append(f"{label.split(' (')[0]} {wall / timed['median_s']:.2f}x")
+    return rows, "RRT-Connect from Python / from Rust: " + ", ".join(notes)
 
 
-def callback_section(repeats):
-    bounds = [(0.0, 10.0), (0.0, 10.0)]
+def callback_section(repeats, fraction):
+    """RRT-Connect with the wall as a Python function, motions checked every `fraction` of the
+    extent in all three (OMPL's default is 0.01), range 1, no goal bias (OMPL's RRT-Connect has
+    none)."""
     extent = math.hypot(10.0, 10.0)
-    fraction = 0.01  # OMPL's default longest valid segment: 1% of the extent
     step = fraction * extent
-    rows = []
-    times = {}
-    for name, kwargs in (("batch", dict(batch=True)), ("one state per call", dict(batch=False))):
-        function = wall_batch if kwargs["batch"] else (lambda s: wall_one(s))
+    bounds = [(0.0, 10.0), (0.0, 10.0)]
+    rows, times = [], {}
+    for name, batch in (("batch", True), ("one state per call", False)):
+        function = wall_batch if batch else wall_one
         samples = []
         for seed in range(repeats):
             clock = time.perf_counter()
             plan = trailmark.plan_in_box(bounds, (1, 1), (9, 1), function, range=1.0, resolution=fraction, seed=seed,
-                                         goal_bias=0.0, **kwargs)
+                                         goal_bias=0.0, batch=batch)
             samples.append(time.perf_counter() - clock)
             assert plan.solved
         times[name] = statistics.median(samples)
-        rows.append((f"RRT-Connect + Python validity, trailmark ({name})", times[name]))
+        rows.append((f"RRT-Connect + Python validity (step {fraction:g} of extent), trailmark ({name})", times[name]))
     try:
         import peers
     except ImportError as e:
@@ -144,18 +174,23 @@ def callback_section(repeats):
                 samples.append(time.perf_counter() - clock)
                 assert solved
             times[name] = statistics.median(samples)
-            rows.append((f"RRT-Connect + Python validity, {name} (one state per call)", times[name]))
+            rows.append((f"RRT-Connect + Python validity (step {fraction:g} of extent), {name} (one state per call)", times[name]))
         except ImportError as e:
             rows.append((f"RRT-Connect + Python validity, {name}: not installed ({e})", float("nan")))
     best = times["batch"]
-    note = "; ".join(f"{name} {t / best:.2f}x trailmark batch" for name, t in times.items() if name != "batch")
+    note = f"step {fraction:g}: " + "; ".join(
+        f"{name} {t / best:.2f}x trailmark batch's time" for name, t in times.items() if name != "batch"
+    )
     return rows, note
 
 
 def many_section(count):
+    """solve_many on every core against solve in a loop: grid documents that carry their
+    128 x 128 map inline (JSON-heavy: Python's json works on one core in both), and
+    RRT-Connect documents over a polygon world, one seed each (planning-heavy)."""
     rows_text = ["." * 128] * 128
     rows_text = [r[:64] + ("@" if 8 <= y < 120 else ".") + r[65:] for y, r in enumerate(rows_text)]
-    documents = [
+    grids = [
         {
             "world": {"grid": {"rows": rows_text}},
             "start": [i % 60, (7 * i) % 128],
@@ -164,10 +199,15 @@ def many_section(count):
         }
         for i in range(count)
     ]
-    loop, _ = median_time(lambda: [trailmark.solve(d) for d in documents], 1)
-    many, _ = median_time(lambda: trailmark.solve_many(documents), 1)
-    rows = [(f"solve in a loop, {count} grid documents", loop), (f"solve_many, {count} grid documents", many)]
-    return rows, f"solve_many {loop / many:.2f}x solve in a loop"
+    wall = json.loads((REPOSITORY / "examples" / "problems" / "wall-rrt-connect.json").read_text())
+    sampling = [dict(wall, seed=i) for i in range(count // 20)]
+    rows, notes = [], []
+    for label, documents in ((f"{count} grid documents", grids), (f"{len(sampling)} RRT-Connect documents", sampling)):
+        loop, _ = median_time(lambda: [trailmark.solve(d) for d in documents], 1)
+        many, _ = median_time(lambda: trailmark.solve_many(documents), 1)
+        rows += [(f"solve in a loop, {label}", loop), (f"solve_many, {label}", many)]
+        notes.append(f"{label}: {loop / many:.2f}x")
+    return rows, "solve_many against solve in a loop: " + "; ".join(notes)
 
 
 def main():
@@ -180,8 +220,9 @@ def main():
     notes = []
     for rows, note in (
         grid_section(repeats, queries),
-        box_section(repeats * 5),
-        callback_section(repeats * 5),
+        box_section(repeats),
+        callback_section(repeats * 2, 0.01),
+        callback_section(repeats * 2, 0.001),
         many_section(count),
     ):
         for label, seconds in rows:

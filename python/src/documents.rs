@@ -57,20 +57,16 @@ pub fn parse(text: &str) -> Result<ProblemSpec, (&'static str, String)> {
     serde_json::from_str(text).map_err(|e| ("DocumentError", format!("invalid problem: {e}")))
 }
 
-/// Solves one document on a thread of its own; Ctrl-C stops the planner and the wait.
+/// Solves one document on a planning thread (`pool`); Ctrl-C stops the planner and the wait.
 #[pyfunction]
 pub fn solve_json(py: Python<'_>, document: String, base_dir: PathBuf) -> PyResult<String> {
     let (tx, rx) = mpsc::channel();
     let stop = Arc::new(AtomicBool::new(false));
     let stopped = Arc::clone(&stop);
-    std::thread::Builder::new()
-        .name("trailmark-solve".into())
-        .spawn(move || {
-            let _ = tx.send(solve_text(&document, &base_dir, &stopped));
-        })
-        .map_err(|e| {
-            pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a planning thread: {e}"))
-        })?;
+    crate::pool::run(move || {
+        let _ = tx.send(solve_text(&document, &base_dir, &stopped));
+    })
+    .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a planning thread: {e}")))?;
     let mut outcome = None;
     receive(py, rx, 1, &stop, |o| outcome = Some(o))?;
     match outcome {
@@ -103,23 +99,21 @@ pub fn solve_many_json(
     let next = Arc::new(AtomicUsize::new(0));
     let stop = Arc::new(AtomicBool::new(false));
     let (tx, rx) = mpsc::channel();
-    for w in 0..workers {
+    for _ in 0..workers {
         let (documents, next, stopped, tx) = (documents.clone(), next.clone(), stop.clone(), tx.clone());
-        std::thread::Builder::new()
-            .name(format!("trailmark-solve-{w}"))
-            .spawn(move || {
-                while !stopped.load(Ordering::Relaxed) {
-                    let i = next.fetch_add(1, Ordering::Relaxed);
-                    let Some((text, base_dir)) = documents.get(i) else { break };
-                    if tx.send((i, solve_text(text, base_dir, &stopped))).is_err() {
-                        break;
-                    }
+        crate::pool::run(move || {
+            while !stopped.load(Ordering::Relaxed) {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some((text, base_dir)) = documents.get(i) else { break };
+                if tx.send((i, solve_text(text, base_dir, &stopped))).is_err() {
+                    break;
                 }
-            })
-            .map_err(|e| {
-                stop.store(true, Ordering::Relaxed);
-                pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a planning thread: {e}"))
-            })?;
+            }
+        })
+        .map_err(|e| {
+            stop.store(true, Ordering::Relaxed);
+            pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a planning thread: {e}"))
+        })?;
     }
     drop(tx);
     let mut results: Vec<(Option<&'static str>, String)> = vec![(None, String::new()); n];

@@ -2,12 +2,14 @@
 //! rows of text, searched by any graph search of the registry.
 
 use numpy::ndarray::Array2;
+use std::sync::{Mutex, MutexGuard, PoisonError};
+
 use numpy::{IntoPyArray, PyReadonlyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use trailmark::core::grid::{Cell, Connectivity, CornerCutting, Grid as CoreGrid};
 use trailmark::core::movingai;
-use trailmark::solve::{DocumentError, SolveError, search_grid};
+use trailmark::solve::{DocumentError, GridSearches, SolveError};
 
 use crate::documents::planner_spec;
 use crate::errors::{error, solve_error};
@@ -17,9 +19,8 @@ use crate::outcome::{Kind, Parts, parts};
 /// cells' costs), its connectivity and its rule for diagonal moves. Cells are `(x, y)`: `x` the column, `y` the row of the array.
 #[pyclass(module = "trailmark._trailmark", name = "Grid", frozen)]
 pub struct Grid {
-    grid: CoreGrid,
-    connectivity: Connectivity,
-    rule: CornerCutting,
+    // The graph and search workspace kept from query to query; one query at a time.
+    searches: Mutex<GridSearches>,
 }
 
 fn moves(py: Python<'_>, connectivity: u8, corner_cutting: bool) -> PyResult<(Connectivity, CornerCutting)> {
@@ -33,24 +34,15 @@ fn grid_error(py: Python<'_>, e: impl Into<SolveError>) -> PyErr {
 }
 
 impl Grid {
-    /// The grid itself.
-    pub(crate) fn core(&self) -> &CoreGrid {
-        &self.grid
-    }
-
-    /// How it is moved on.
-    pub(crate) fn connectivity_of(&self) -> Connectivity {
-        self.connectivity
-    }
-
-    /// Its rule for diagonal moves.
-    pub(crate) fn rule(&self) -> CornerCutting {
-        self.rule
+    /// Its searches, for one query at a time (a query that panicked left nothing half-done
+    /// that the next one reads: the workspace starts each query afresh).
+    pub(crate) fn searches(&self) -> MutexGuard<'_, GridSearches> {
+        self.searches.lock().unwrap_or_else(PoisonError::into_inner)
     }
 
     fn with(py: Python<'_>, grid: CoreGrid, connectivity: u8, corner_cutting: bool) -> PyResult<Self> {
         let (connectivity, rule) = moves(py, connectivity, corner_cutting)?;
-        Ok(Grid { grid, connectivity, rule })
+        Ok(Grid { searches: Mutex::new(GridSearches::new(grid, connectivity, rule)) })
     }
 }
 
@@ -140,31 +132,33 @@ impl Grid {
     /// Columns.
     #[getter]
     fn width(&self) -> u32 {
-        self.grid.width()
+        self.searches().grid().width()
     }
 
     /// Rows.
     #[getter]
     fn height(&self) -> u32 {
-        self.grid.height()
+        self.searches().grid().height()
     }
 
     /// 4 or 8.
     #[getter]
     fn connectivity(&self) -> u8 {
-        u8::from(self.connectivity)
+        u8::from(self.searches().graph().connectivity())
     }
 
     /// Whether diagonal moves may cut a blocked cell's corner.
     #[getter]
     fn corner_cutting(&self) -> bool {
-        self.rule == CornerCutting::Allowed
+        self.searches().graph().corner_cutting() == CornerCutting::Allowed
     }
 
     /// Each cell's cost as a `float64 (height, width)` array, `inf` where blocked.
     fn costs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let shape = (self.grid.height() as usize, self.grid.width() as usize);
-        let costs = Array2::from_shape_vec(shape, self.grid.costs().to_vec())
+        let searches = self.searches();
+        let grid = searches.grid();
+        let shape = (grid.height() as usize, grid.width() as usize);
+        let costs = Array2::from_shape_vec(shape, grid.costs().to_vec())
             .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
         Ok(costs.into_pyarray(py).into_any())
     }
@@ -180,39 +174,40 @@ impl Grid {
     ) -> PyResult<Parts> {
         let spec = planner_spec(py, planner)?;
         let ends = (cell(py, "start", start)?, cell(py, "goal", goal)?);
-        let moves = (self.connectivity, self.rule);
-        let found =
-            py.detach(|| search_grid(&spec, &self.grid, moves, ends)).map_err(|e| solve_error(py, &e))?;
+        let found = py.detach(|| self.searches().search(&spec, ends)).map_err(|e| solve_error(py, &e))?;
         parts(py, &found, Kind::Cells)
     }
 
     fn __repr__(&self) -> String {
+        let searches = self.searches();
+        let grid = searches.grid();
         format!(
             "Grid({} x {}, {}-connected, {} passable cells)",
-            self.grid.width(),
-            self.grid.height(),
-            u8::from(self.connectivity),
-            self.grid.passable_count()
+            grid.width(),
+            grid.height(),
+            u8::from(searches.graph().connectivity()),
+            grid.passable_count()
         )
     }
 
     /// `{"rows": [...], "costs": [...], "connectivity": 4 | 8, "corner_cutting": bool}`: the
     /// grid world of a problem document (costs only where a passable cell's is not 1).
     fn world<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let searches = self.searches();
+        let (grid, graph) = (searches.grid(), searches.graph());
         let world = PyDict::new(py);
-        world.set_item("rows", self.grid.to_rows())?;
-        if !self.grid.is_uniform() || self.grid.min_cost().is_some_and(|c| c != 1.0) {
-            let w = self.grid.width() as usize;
-            let rows: Vec<Vec<f64>> = self
-                .grid
+        world.set_item("rows", grid.to_rows())?;
+        if !grid.is_uniform() || grid.min_cost().is_some_and(|c| c != 1.0) {
+            let w = grid.width() as usize;
+            let rows: Vec<Vec<f64>> = grid
                 .costs()
                 .chunks(w)
                 .map(|row| row.iter().map(|&c| if c.is_finite() { c } else { 1.0 }).collect())
                 .collect();
             world.set_item("costs", rows)?;
         }
-        world.set_item("connectivity", u8::from(self.connectivity))?;
-        world.set_item("corner_cutting", self.rule == CornerCutting::Allowed)?;
+        world.set_item("connectivity", u8::from(graph.connectivity()))?;
+        world.set_item("corner_cutting", graph.corner_cutting() == CornerCutting::Allowed)?;
         Ok(world)
     }
 }

@@ -9,6 +9,7 @@ mod errors;
 mod grid;
 mod interrupt;
 mod outcome;
+mod pool;
 mod replanner;
 mod ros_map;
 

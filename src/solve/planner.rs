@@ -247,6 +247,24 @@ impl PlannerSpec {
     pub(super) fn search<G, H>(
         &self,
         graph: &G,
+        ends: (G::Node, G::Node),
+        h: H,
+        waypoint: impl Fn(G::Node) -> Waypoint,
+        line_cost: Option<&LineCost<'_, G::Node>>,
+    ) -> Result<SolveResult, SolveError>
+    where
+        G: Successors + Predecessors + IndexedGraph,
+        H: Fn(G::Node, G::Node) -> Cost + Copy,
+    {
+        self.search_in(&mut Search::new(), graph, ends, h, waypoint, line_cost)
+    }
+
+    /// [`search`](Self::search) in the workspace `search`, kept from query to query by callers
+    /// that search one graph many times (its arrays are then not allocated again).
+    pub(super) fn search_in<G, H>(
+        &self,
+        search: &mut Search,
+        graph: &G,
         (start, goal): (G::Node, G::Node),
         h: H,
         waypoint: impl Fn(G::Node) -> Waypoint,
@@ -257,7 +275,6 @@ impl PlannerSpec {
         H: Fn(G::Node, G::Node) -> Cost + Copy,
     {
         let to_goal = |n| h(n, goal);
-        let mut search = Search::new();
         let searched = |error: SearchError<G::Node>| SolveError::Search(error.map_node(&waypoint));
         let found = match self {
             PlannerSpec::Bfs {} => search.bfs(graph, start, goal),

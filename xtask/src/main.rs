@@ -68,6 +68,20 @@ enum Command {
         /// The SVG file to write.
         out: PathBuf,
     },
+    /// Reads and solves a problem document `--repeat` times in this process and prints the
+    /// median and least wall time of one (JSON): the Rust side of a comparison with another
+    /// language's call (python/bench/bench.py). `--prepared`: a grid world's grid loaded and its
+    /// graph built once, each time only the search, as a program that keeps the grid does.
+    Time {
+        /// The problem JSON file.
+        problem: PathBuf,
+        /// How many solves to time.
+        #[arg(long, default_value_t = 21)]
+        repeat: usize,
+        /// Time only the search on a grid world prepared once.
+        #[arg(long)]
+        prepared: bool,
+    },
     /// Runs a robot through partly known terrain with each planner; prints a JSON summary.
     Navigate(navigate::Args),
     /// Plans with contingencies over choke points that may be blocked; prints
@@ -134,6 +148,7 @@ fn main() -> ExitCode {
         Command::Verify { set: VerifySet::Mbm(args) } => mbm::run(&args),
         Command::Solve { problem } => solve::run(&problem),
         Command::Render { problem, out } => solve::render(&problem, &out),
+        Command::Time { problem, repeat, prepared } => solve::time(&problem, repeat, prepared),
         Command::Navigate(args) => navigate::run(&args),
         Command::Contingency(args) => contingency::run(&args),
     }

@@ -5,8 +5,11 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use std::time::Instant;
 use trailmark::core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
-use trailmark::solve::ProblemSpec;
+
+use trailmark::core::grid::{Cell, CornerCutting};
+use trailmark::solve::{GridSearches, ProblemSpec, WorldSpec, load_grid};
 
 /// Prints the result of the problem in `path` (or standard input for `-`); on a bad problem,
 /// prints `{"status": "error", "error": ...}` and exits with 2.
@@ -35,6 +38,70 @@ pub fn render(path: &Path, out: &Path) -> ExitCode {
             ExitCode::SUCCESS
         }
         Err(message) => crate::output::error_report(message),
+    }
+}
+
+/// Times `repeat` solves of the problem in `path`, each reading and parsing it (only the search
+/// on its grid, prepared once, with `prepared`) and prints `{"repeat", "median_s", "min_s", "status", "cost"}`.
+pub fn time(path: &Path, repeat: usize, prepared: bool) -> ExitCode {
+    match time_solves(path, repeat.max(1), prepared) {
+        Ok(json) => {
+            outln!("{json}");
+            ExitCode::SUCCESS
+        }
+        Err(message) => crate::output::error_report(message),
+    }
+}
+
+fn time_solves(path: &Path, repeat: usize, prepared: bool) -> Result<String, String> {
+    let (problem, base) = read(path)?;
+    let mut times = Vec::with_capacity(repeat);
+    let mut last = None;
+    if prepared {
+        let WorldSpec::Grid(world) = &problem.world else {
+            return Err("--prepared times grid worlds only".into());
+        };
+        let grid = load_grid(world, &base).map_err(|e| e.to_string())?;
+        let rule = if world.corner_cutting { CornerCutting::Allowed } else { CornerCutting::Forbidden };
+        let ends = (cell(&problem.start)?, cell(&problem.goal)?);
+        let mut searches = GridSearches::new(grid, world.connectivity, rule);
+        for _ in 0..repeat {
+            let clock = Instant::now();
+            let result = searches.search(&problem.planner, ends).map_err(|e| e.to_string())?;
+            times.push(clock.elapsed().as_secs_f64());
+            last = Some(result);
+        }
+    } else {
+        for _ in 0..repeat {
+            // Read and parsed each time, as a caller with a document in hand does.
+            let clock = Instant::now();
+            let (problem, base) = read(path)?;
+            let result = trailmark::solve::solve(&problem, &base).map_err(|e| e.to_string())?;
+            times.push(clock.elapsed().as_secs_f64());
+            last = Some(result);
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    let result = last.ok_or("nothing was solved")?;
+    let report = serde_json::json!({
+        "repeat": repeat,
+        "median_s": times[times.len() / 2],
+        "min_s": times[0],
+        "status": result.status,
+        "cost": result.cost,
+    });
+    Ok(report.to_string())
+}
+
+/// A grid cell `[x, y]` of a document.
+fn cell(value: &[f64]) -> Result<Cell, String> {
+    let whole = |v: f64| (v.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&v)).then_some(v as u32);
+    match value {
+        [x, y] => match (whole(*x), whole(*y)) {
+            (Some(x), Some(y)) => Ok(Cell::new(x, y)),
+            _ => Err(format!("{value:?} is not a grid cell")),
+        },
+        _ => Err(format!("{value:?} is not a grid cell")),
     }
 }
 

@@ -5,6 +5,7 @@ use std::path::Path;
 use trailmark_core::grid::{Cell, Connectivity, CornerCutting, Grid};
 use trailmark_core::svg::GridSvg;
 use trailmark_graph::GridGraph;
+use trailmark_search::Search;
 
 use crate::solve::error::{DocumentError, SolveError};
 use crate::solve::planner::PlannerSpec;
@@ -72,12 +73,81 @@ pub fn search_grid(
     }
     check_grid_end("start", start, grid)?;
     check_grid_end("goal", goal, grid)?;
-    match planner.grid_search(grid, connectivity, rule, (start, goal)) {
+    let graph = GridGraph::new(grid, connectivity).with_corner_cutting(rule);
+    run(planner, grid, &graph, &mut Search::new(), (start, goal))
+}
+
+/// Runs `planner` on `grid` (for jump point search) or its `graph`, in the workspace `search`.
+fn run(
+    planner: &PlannerSpec,
+    grid: &Grid,
+    graph: &GridGraph,
+    search: &mut Search,
+    (start, goal): (Cell, Cell),
+) -> Result<SolveResult, SolveError> {
+    let rule = graph.corner_cutting();
+    match planner.grid_search(grid, graph.connectivity(), rule, (start, goal)) {
         Some(found) => found,
         None => {
-            let graph = GridGraph::new(grid, connectivity).with_corner_cutting(rule);
-            let h = graph.heuristic_between(planner.grid_heuristic(connectivity)?);
-            planner.search(&graph, (start, goal), h, Waypoint::Cell, Some(&graph))
+            let h = graph.heuristic_between(planner.grid_heuristic(graph.connectivity())?);
+            planner.search_in(search, graph, (start, goal), h, Waypoint::Cell, Some(graph))
         }
+    }
+}
+
+/// A grid made ready for many searches: its graph built once and one search workspace reused
+/// from query to query, as [`search_grid`] would otherwise make them for each. What a program
+/// (or another language) that asks many queries of one map keeps.
+///
+/// ```
+/// use trailmark::core::grid::{Cell, Connectivity, CornerCutting, Grid};
+/// use trailmark::solve::{GridSearches, PlannerSpec};
+///
+/// let grid = Grid::from_rows(&["....", ".@@.", "...."])?;
+/// let mut searches = GridSearches::new(grid, Connectivity::Eight, CornerCutting::Forbidden);
+/// let astar = PlannerSpec::AStar { heuristic: None };
+/// for x in 0..4 {
+///     let found = searches.search(&astar, (Cell::new(0, 0), Cell::new(x, 2)))?;
+///     assert_eq!(found.cost, Some([2.0, 3.0, 4.0, 5.0][x as usize]));
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct GridSearches {
+    grid: Grid,
+    graph: GridGraph,
+    search: Search,
+}
+
+impl GridSearches {
+    /// `grid`, moved on by `connectivity` with diagonal moves by `rule`.
+    pub fn new(grid: Grid, connectivity: Connectivity, rule: CornerCutting) -> Self {
+        let graph = GridGraph::new(&grid, connectivity).with_corner_cutting(rule);
+        GridSearches { grid, graph, search: Search::new() }
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// Its graph.
+    pub fn graph(&self) -> &GridGraph {
+        &self.graph
+    }
+
+    /// Runs `planner` from `start` to `goal`, as [`search_grid`] does.
+    pub fn search(
+        &mut self,
+        planner: &PlannerSpec,
+        (start, goal): (Cell, Cell),
+    ) -> Result<SolveResult, SolveError> {
+        planner.check_limits()?;
+        if planner.sampling().is_some() {
+            return Err(DocumentError::NeedsPolygons { planner: planner.name() }.into());
+        }
+        check_grid_end("start", start, &self.grid)?;
+        check_grid_end("goal", goal, &self.grid)?;
+        run(planner, &self.grid, &self.graph, &mut self.search, (start, goal))
     }
 }

@@ -6,14 +6,18 @@ them). Run from the repository with the package and the peers installed:
 
 1. A* on a 512 x 512 NumPy grid: Grid.astar from Python (wall clock of the call), the same
    query from Rust on the grid prepared the same way (`cargo xtask time --prepared`:
-   GridSearches::search), and the pure-Python `pathfinding` package (costs compared too).
-2. RRT-Connect in an 8-axis box world (a built-in world): trailmark.solve from Python against
-   solve from Rust (`cargo xtask time`) on the same document.
+   PreparedGrid::search), and the pure-Python `pathfinding` package (costs compared too).
+2. RRT-Connect over built-in worlds (the polygon world of examples/problems/wall-rrt-connect.json
+   and the 4-joint arm of shelf-arm-rrt-connect.json): trailmark.solve from Python against solve
+   from Rust (`cargo xtask time`) on the same document.
 3. RRT-Connect with a Python validity function on one problem: trailmark with the batch form,
    trailmark one state per call, oxmpl-py and OMPL 2.0's Python bindings one state per call
    (neither has a batch form), the same wall, range and motion step, at OMPL's default step
    (1% of the extent) and at a finer one (0.1%).
 4. solve_many on every core against solve in a loop.
+
+Ratios are medians of the per-query ratios where there are several queries (A*), ratios of the
+medians otherwise.
 
 A peer that is not installed is reported as such and skipped.
 """
@@ -95,7 +99,7 @@ def grid_section(repeats, queries):
                 agree += 1
     rows = [
         ("A* 512x512 (Grid.astar), trailmark from Python", statistics.median(ours)),
-        ("A* 512x512, the same search from Rust (GridSearches::search)", statistics.median(rust)),
+        ("A* 512x512, the same search from Rust (PreparedGrid::search)", statistics.median(rust)),
     ]
     ratios = [o / r for o, r in zip(ours, rust)]
     note = f"A*: Python {statistics.median(ratios):.2f}x Rust (median of per-query ratios)"

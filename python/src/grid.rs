@@ -2,14 +2,15 @@
 //! rows of text, searched by any graph search of the registry.
 
 use numpy::ndarray::Array2;
-use std::sync::{Mutex, MutexGuard, PoisonError};
+use std::sync::{Mutex, TryLockError};
 
 use numpy::{IntoPyArray, PyReadonlyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use trailmark::core::grid::{Cell, Connectivity, CornerCutting, Grid as CoreGrid};
 use trailmark::core::movingai;
-use trailmark::solve::{DocumentError, GridSearches, SolveError};
+use trailmark::search::Search;
+use trailmark::solve::{DocumentError, PlannerSpec, PreparedGrid, SolveError, SolveResult};
 
 use crate::documents::planner_spec;
 use crate::errors::{error, solve_error};
@@ -19,8 +20,10 @@ use crate::outcome::{Kind, Parts, parts};
 /// cells' costs), its connectivity and its rule for diagonal moves. Cells are `(x, y)`: `x` the column, `y` the row of the array.
 #[pyclass(module = "trailmark._trailmark", name = "Grid", frozen)]
 pub struct Grid {
-    // The graph and search workspace kept from query to query; one query at a time.
-    searches: Mutex<GridSearches>,
+    prepared: PreparedGrid,
+    // The workspace kept from query to query; a query that finds it busy (another thread's)
+    // searches in one of its own.
+    workspace: Mutex<Search>,
 }
 
 fn moves(py: Python<'_>, connectivity: u8, corner_cutting: bool) -> PyResult<(Connectivity, CornerCutting)> {
@@ -34,15 +37,29 @@ fn grid_error(py: Python<'_>, e: impl Into<SolveError>) -> PyErr {
 }
 
 impl Grid {
-    /// Its searches, for one query at a time (a query that panicked left nothing half-done
-    /// that the next one reads: the workspace starts each query afresh).
-    pub(crate) fn searches(&self) -> MutexGuard<'_, GridSearches> {
-        self.searches.lock().unwrap_or_else(PoisonError::into_inner)
+    /// The grid and its graph.
+    pub(crate) fn prepared(&self) -> &PreparedGrid {
+        &self.prepared
     }
 
     fn with(py: Python<'_>, grid: CoreGrid, connectivity: u8, corner_cutting: bool) -> PyResult<Self> {
         let (connectivity, rule) = moves(py, connectivity, corner_cutting)?;
-        Ok(Grid { searches: Mutex::new(GridSearches::new(grid, connectivity, rule)) })
+        Ok(Grid {
+            prepared: PreparedGrid::new(grid, connectivity, rule),
+            workspace: Mutex::new(Search::new()),
+        })
+    }
+
+    /// Runs `planner` in the kept workspace, or in a new one while another thread uses it (a
+    /// query that panicked leaves nothing the next one reads: each starts afresh).
+    fn search(&self, planner: &PlannerSpec, ends: (Cell, Cell)) -> Result<SolveResult, SolveError> {
+        match self.workspace.try_lock() {
+            Ok(mut workspace) => self.prepared.search(&mut workspace, planner, ends),
+            Err(TryLockError::Poisoned(poisoned)) => {
+                self.prepared.search(&mut poisoned.into_inner(), planner, ends)
+            }
+            Err(TryLockError::WouldBlock) => self.prepared.search(&mut Search::new(), planner, ends),
+        }
     }
 }
 
@@ -132,31 +149,30 @@ impl Grid {
     /// Columns.
     #[getter]
     fn width(&self) -> u32 {
-        self.searches().grid().width()
+        self.prepared.grid().width()
     }
 
     /// Rows.
     #[getter]
     fn height(&self) -> u32 {
-        self.searches().grid().height()
+        self.prepared.grid().height()
     }
 
     /// 4 or 8.
     #[getter]
     fn connectivity(&self) -> u8 {
-        u8::from(self.searches().graph().connectivity())
+        u8::from(self.prepared.graph().connectivity())
     }
 
     /// Whether diagonal moves may cut a blocked cell's corner.
     #[getter]
     fn corner_cutting(&self) -> bool {
-        self.searches().graph().corner_cutting() == CornerCutting::Allowed
+        self.prepared.graph().corner_cutting() == CornerCutting::Allowed
     }
 
     /// Each cell's cost as a `float64 (height, width)` array, `inf` where blocked.
     fn costs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let searches = self.searches();
-        let grid = searches.grid();
+        let grid = self.prepared.grid();
         let shape = (grid.height() as usize, grid.width() as usize);
         let costs = Array2::from_shape_vec(shape, grid.costs().to_vec())
             .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
@@ -174,18 +190,17 @@ impl Grid {
     ) -> PyResult<Parts> {
         let spec = planner_spec(py, planner)?;
         let ends = (cell(py, "start", start)?, cell(py, "goal", goal)?);
-        let found = py.detach(|| self.searches().search(&spec, ends)).map_err(|e| solve_error(py, &e))?;
+        let found = py.detach(|| self.search(&spec, ends)).map_err(|e| solve_error(py, &e))?;
         parts(py, &found, Kind::Cells)
     }
 
     fn __repr__(&self) -> String {
-        let searches = self.searches();
-        let grid = searches.grid();
+        let grid = self.prepared.grid();
         format!(
             "Grid({} x {}, {}-connected, {} passable cells)",
             grid.width(),
             grid.height(),
-            u8::from(searches.graph().connectivity()),
+            u8::from(self.prepared.graph().connectivity()),
             grid.passable_count()
         )
     }
@@ -193,8 +208,7 @@ impl Grid {
     /// `{"rows": [...], "costs": [...], "connectivity": 4 | 8, "corner_cutting": bool}`: the
     /// grid world of a problem document (costs only where a passable cell's is not 1).
     fn world<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let searches = self.searches();
-        let (grid, graph) = (searches.grid(), searches.graph());
+        let (grid, graph) = (self.prepared.grid(), self.prepared.graph());
         let world = PyDict::new(py);
         world.set_item("rows", grid.to_rows())?;
         if !grid.is_uniform() || grid.min_cost().is_some_and(|c| c != 1.0) {

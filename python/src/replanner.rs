@@ -44,15 +44,13 @@ impl Replanner {
         let spec = planner_spec(py, planner)?;
         spec.check_limits().map_err(|e| solve_error(py, &e.into()))?;
         let (start, goal) = (cell(py, "start", start)?, cell(py, "goal", goal)?);
-        let graph = {
-            let searches = grid.searches();
-            for (which, end) in [("start", start), ("goal", goal)] {
-                trailmark::solve::check_grid_end(which, end, searches.grid())
-                    .map_err(|e| solve_error(py, &e.into()))?;
-            }
-            // A copy of its own: the replanner changes its costs.
-            searches.graph().clone()
-        };
+        let prepared = grid.prepared();
+        for (which, end) in [("start", start), ("goal", goal)] {
+            trailmark::solve::check_grid_end(which, end, prepared.grid())
+                .map_err(|e| solve_error(py, &e.into()))?;
+        }
+        // A copy of its own: the replanner changes its costs.
+        let graph = prepared.graph().clone();
         let connectivity = graph.connectivity();
         let kind = spec.grid_heuristic(connectivity).map_err(|e| solve_error(py, &e.into()))?;
         let h = graph.heuristic_between(kind);

@@ -157,3 +157,42 @@ def test_ctrl_c_stops_a_long_plan(call):
     assert time.perf_counter() - clock < 5.0
     time.sleep(0.5)
     assert busy_cpu_seconds() < 0.3, "planning threads are still working"
+
+
+def test_a_solve_after_ctrl_c_runs_to_its_own_limit():
+    """The stop flag of an interrupted solve does not reach the next solve on the same
+    planning thread: it runs to its own time limit."""
+    sigint_after(0.3)
+    with pytest.raises(KeyboardInterrupt):
+        trailmark.solve(LONG)
+    time.sleep(0.3)
+    short = dict(LONG, planner={"name": "rrt_star", "time_limit_s": 0.5})
+    result = trailmark.solve(short)
+    assert result["status"] == "solved"
+    assert result["stats"]["time_s"] >= 0.45
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs os.fork")
+def test_solve_in_a_forked_child():
+    """A child forked after the parent planned (multiprocessing's default on Linux) plans too:
+    the parent's planning threads are not the child's."""
+    import select
+
+    document = {"world": {"grid": {"rows": ["...."]}}, "start": [0, 0], "goal": [3, 0], "planner": {"name": "astar"}}
+    assert trailmark.solve(document)["cost"] == 3.0
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        try:
+            ok = trailmark.solve(document)["cost"] == 3.0 and trailmark.solve_many([document] * 3)[2]["cost"] == 3.0
+            os.write(write, b"1" if ok else b"0")
+        finally:
+            os._exit(0)
+    os.close(write)
+    ready, _, _ = select.select([read], [], [], 20.0)
+    answer = os.read(read, 1) if ready else b""
+    if not ready:
+        os.kill(pid, 9)
+    os.waitpid(pid, 0)
+    os.close(read)
+    assert answer == b"1", "the forked child did not plan within 20 s"

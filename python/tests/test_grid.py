@@ -263,3 +263,21 @@ def test_bad_queries_raise_typed_errors():
         grid.astar((0, 0), (1, 1))
     with pytest.raises(trailmark.TrailmarkError):
         grid.astar((0, 0), (1, 1))
+
+
+def test_one_grid_answers_every_planner_in_any_order_as_a_new_grid_does():
+    """The grid keeps one search workspace for every query: any order of planners gives the
+    answers of a grid made for each query."""
+    rng = np.random.default_rng(11)
+    free = rng.random((40, 40)) > 0.25
+    free[0, 0] = free[39, 39] = free[0, 39] = True
+    kept = trailmark.Grid(free)
+    order = ["theta_star", "astar", "bfs", "jps", "theta_star", "dijkstra", "dfs", "jps_plus", "astar", "theta_star"]
+    for i, planner in enumerate(order):
+        goal = [(39, 39), (39, 0), (20, 20)][i % 3]
+        if not free[goal[1], goal[0]]:
+            continue
+        ours = kept.plan((0, 0), goal, planner)
+        fresh = trailmark.Grid(free).plan((0, 0), goal, planner)
+        assert ours.status == fresh.status and ours.cost == fresh.cost, planner
+        assert np.array_equal(ours.path, fresh.path), planner

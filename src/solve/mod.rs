@@ -50,7 +50,7 @@ pub use result::{
 pub use sampling::boxes::solve_boxes_with;
 pub use sampling::robot::SMOOTHING_PASSES;
 pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
-pub use search::grid::{GridSearches, search_grid};
+pub use search::grid::{PreparedGrid, search_grid};
 pub use search::roadmap::DEFAULT_SAMPLES;
 pub use world::boxes::MAX_BOX_DIMENSION;
 pub use world::grid::{check_grid_end, grid_graph, load_grid};

@@ -9,7 +9,8 @@ use std::time::Instant;
 use trailmark::core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
 
 use trailmark::core::grid::{Cell, CornerCutting};
-use trailmark::solve::{GridSearches, ProblemSpec, WorldSpec, load_grid};
+use trailmark::search::Search;
+use trailmark::solve::{PreparedGrid, ProblemSpec, WorldSpec, load_grid};
 
 /// Prints the result of the problem in `path` (or standard input for `-`); on a bad problem,
 /// prints `{"status": "error", "error": ...}` and exits with 2.
@@ -64,10 +65,11 @@ fn time_solves(path: &Path, repeat: usize, prepared: bool) -> Result<String, Str
         let grid = load_grid(world, &base).map_err(|e| e.to_string())?;
         let rule = if world.corner_cutting { CornerCutting::Allowed } else { CornerCutting::Forbidden };
         let ends = (cell(&problem.start)?, cell(&problem.goal)?);
-        let mut searches = GridSearches::new(grid, world.connectivity, rule);
+        let (prepared, mut workspace) = (PreparedGrid::new(grid, world.connectivity, rule), Search::new());
         for _ in 0..repeat {
             let clock = Instant::now();
-            let result = searches.search(&problem.planner, ends).map_err(|e| e.to_string())?;
+            let result =
+                prepared.search(&mut workspace, &problem.planner, ends).map_err(|e| e.to_string())?;
             times.push(clock.elapsed().as_secs_f64());
             last = Some(result);
         }

@@ -95,35 +95,36 @@ fn run(
     }
 }
 
-/// A grid made ready for many searches: its graph built once and one search workspace reused
-/// from query to query, as [`search_grid`] would otherwise make them for each. What a program
-/// (or another language) that asks many queries of one map keeps.
+/// A grid made ready for many searches: its graph built once, as [`search_grid`] would build it
+/// for each query; the caller keeps a search workspace ([`Search`]) from query to query too,
+/// one per thread (its arrays are then not allocated again). What a program (or another
+/// language) that asks many queries of one map keeps.
 ///
 /// ```
 /// use trailmark::core::grid::{Cell, Connectivity, CornerCutting, Grid};
-/// use trailmark::solve::{GridSearches, PlannerSpec};
+/// use trailmark::search::Search;
+/// use trailmark::solve::{PlannerSpec, PreparedGrid};
 ///
 /// let grid = Grid::from_rows(&["....", ".@@.", "...."])?;
-/// let mut searches = GridSearches::new(grid, Connectivity::Eight, CornerCutting::Forbidden);
-/// let astar = PlannerSpec::AStar { heuristic: None };
+/// let prepared = PreparedGrid::new(grid, Connectivity::Eight, CornerCutting::Forbidden);
+/// let (astar, mut workspace) = (PlannerSpec::AStar { heuristic: None }, Search::new());
 /// for x in 0..4 {
-///     let found = searches.search(&astar, (Cell::new(0, 0), Cell::new(x, 2)))?;
+///     let found = prepared.search(&mut workspace, &astar, (Cell::new(0, 0), Cell::new(x, 2)))?;
 ///     assert_eq!(found.cost, Some([2.0, 3.0, 4.0, 5.0][x as usize]));
 /// }
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone)]
-pub struct GridSearches {
+pub struct PreparedGrid {
     grid: Grid,
     graph: GridGraph,
-    search: Search,
 }
 
-impl GridSearches {
+impl PreparedGrid {
     /// `grid`, moved on by `connectivity` with diagonal moves by `rule`.
     pub fn new(grid: Grid, connectivity: Connectivity, rule: CornerCutting) -> Self {
         let graph = GridGraph::new(&grid, connectivity).with_corner_cutting(rule);
-        GridSearches { grid, graph, search: Search::new() }
+        PreparedGrid { grid, graph }
     }
 
     /// The grid.
@@ -136,9 +137,10 @@ impl GridSearches {
         &self.graph
     }
 
-    /// Runs `planner` from `start` to `goal`, as [`search_grid`] does.
+    /// Runs `planner` from `start` to `goal` in the workspace `search`, as [`search_grid`] does.
     pub fn search(
-        &mut self,
+        &self,
+        search: &mut Search,
         planner: &PlannerSpec,
         (start, goal): (Cell, Cell),
     ) -> Result<SolveResult, SolveError> {
@@ -148,6 +150,6 @@ impl GridSearches {
         }
         check_grid_end("start", start, &self.grid)?;
         check_grid_end("goal", goal, &self.grid)?;
-        run(planner, &self.grid, &self.graph, &mut self.search, (start, goal))
+        run(planner, &self.grid, &self.graph, search, (start, goal))
     }
 }

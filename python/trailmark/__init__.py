@@ -18,25 +18,8 @@ core (:func:`solve`, :func:`solve_many`).
 
 from ._trailmark import __version__
 from .documents import MAX_DOCUMENT_BYTES, solve, solve_many
-from .errors import (
-    CallbackError,
-    CarError,
-    CurveError,
-    DocumentError,
-    GridError,
-    MapError,
-    PlanError,
-    PrmError,
-    ReadError,
-    RobotError,
-    SamplerError,
-    SearchError,
-    SolveError,
-    SpaceError,
-    TrailmarkError,
-    TrapezoidError,
-    VisibilityError,
-)
+from .errors import *  # noqa: F403 (every exception class, listed in errors.__all__)
+from .errors import __all__ as _errors
 from .grid import Grid
 from .plan import Plan
 from .replanner import Replanner
@@ -53,21 +36,5 @@ __all__ = [
     "solve",
     "solve_many",
     "MAX_DOCUMENT_BYTES",
-    "TrailmarkError",
-    "DocumentError",
-    "GridError",
-    "ReadError",
-    "MapError",
-    "SearchError",
-    "VisibilityError",
-    "TrapezoidError",
-    "PrmError",
-    "SamplerError",
-    "PlanError",
-    "SpaceError",
-    "CurveError",
-    "CarError",
-    "RobotError",
-    "SolveError",
-    "CallbackError",
+    *_errors,
 ]

@@ -55,11 +55,16 @@ def point(value: Any, what: str) -> List[float]:
     return numbers
 
 
-def planner(name: str, settings: Dict[str, Any]) -> str:
-    """The planner `name` with its `settings`, as a document's `"planner"` in JSON."""
+def planner_spec(name: str, settings: Dict[str, Any]) -> Dict[str, Any]:
+    """The planner `name` with its `settings`, as a document's `"planner"`."""
     if "name" in settings:
         raise TypeError("the planner is named by `planner`, not by a `name` setting")
-    return to_json({"name": name, **settings})
+    return {"name": name, **settings}
+
+
+def planner(name: str, settings: Dict[str, Any]) -> str:
+    """The planner `name` with its `settings`, as a document's `"planner"` in JSON."""
+    return to_json(planner_spec(name, settings))
 
 
 def to_json(value: Any) -> str:

@@ -124,7 +124,7 @@ class RosMap:
             "world": self.world(),
             "start": _args.point(start, "start"),
             "goal": _args.point(goal, "goal"),
-            "planner": {"name": "hybrid_astar", "turning_radius": float(turning_radius), **settings},
+            "planner": _args.planner_spec("hybrid_astar", {"turning_radius": float(turning_radius), **settings}),
         }
         result = solve(document)
         path = np.asarray(result["path"], dtype=np.float64).reshape(-1, 3)

@@ -47,8 +47,6 @@ def plan_in_box(
     ('solved', 2, True)
     """
     starts = _args.point(start, "start")
-    if "name" in settings:
-        raise TypeError("the planner is named by `planner`, not by a `name` setting")
     document: Dict[str, Any] = {
         "world": {
             "boxes": {
@@ -61,7 +59,7 @@ def plan_in_box(
         },
         "start": starts,
         "goal": _args.point(goal, "goal"),
-        "planner": {"name": planner, **settings},
+        "planner": _args.planner_spec(planner, settings),
         "seed": _args.whole(seed, "seed"),
     }
     text = _args.to_json(document)

@@ -103,9 +103,7 @@ impl<F> Sampled<F> {
     /// `is_valid` checked every `resolution` (a fraction of the space's extent, from
     /// [`MIN_RESOLUTION`] to 1).
     pub fn new(is_valid: F, resolution: f64) -> Result<Self, SpaceError> {
-        if !(MIN_RESOLUTION..=1.0).contains(&resolution) {
-            return Err(SpaceError::NotPositive { what: "resolution (from 1e-9 to 1)", value: resolution });
-        }
+        check_resolution(resolution)?;
         Ok(Sampled { is_valid, resolution })
     }
 }
@@ -122,6 +120,14 @@ impl<S: StateSpace, F: Fn(&S::State) -> bool> Validity<S> for Sampled<F> {
             space.satisfies_bounds(&state) && (self.is_valid)(&state)
         })
     }
+}
+
+/// A motion resolution of [`Sampled`] or [`Batched`]: from [`MIN_RESOLUTION`] to 1.
+fn check_resolution(resolution: f64) -> Result<(), SpaceError> {
+    if !(MIN_RESOLUTION..=1.0).contains(&resolution) {
+        return Err(SpaceError::NotPositive { what: "resolution (from 1e-9 to 1)", value: resolution });
+    }
+    Ok(())
 }
 
 /// The steps of a motion checked every `resolution x extent`: at least one; `None` when the
@@ -168,9 +174,7 @@ impl<F> Batched<F> {
     /// `all_valid` asked of the states every `resolution` (a fraction of the space's extent,
     /// from [`MIN_RESOLUTION`] to 1) along each motion.
     pub fn new(all_valid: F, resolution: f64) -> Result<Self, SpaceError> {
-        if !(MIN_RESOLUTION..=1.0).contains(&resolution) {
-            return Err(SpaceError::NotPositive { what: "resolution (from 1e-9 to 1)", value: resolution });
-        }
+        check_resolution(resolution)?;
         Ok(Batched { all_valid, resolution })
     }
 }

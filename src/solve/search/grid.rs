@@ -67,14 +67,21 @@ pub fn search_grid(
     (connectivity, rule): (Connectivity, CornerCutting),
     (start, goal): (Cell, Cell),
 ) -> Result<SolveResult, SolveError> {
+    check_query(planner, grid, (start, goal))?;
+    let graph = GridGraph::new(grid, connectivity).with_corner_cutting(rule);
+    run(planner, grid, &graph, &mut Search::new(), (start, goal))
+}
+
+/// Whether `planner` may search `grid` from `start` to `goal`: a graph search within its
+/// limits, between passable cells of the grid.
+fn check_query(planner: &PlannerSpec, grid: &Grid, (start, goal): (Cell, Cell)) -> Result<(), SolveError> {
     planner.check_limits()?;
     if planner.sampling().is_some() {
         return Err(DocumentError::NeedsPolygons { planner: planner.name() }.into());
     }
     check_grid_end("start", start, grid)?;
     check_grid_end("goal", goal, grid)?;
-    let graph = GridGraph::new(grid, connectivity).with_corner_cutting(rule);
-    run(planner, grid, &graph, &mut Search::new(), (start, goal))
+    Ok(())
 }
 
 /// Runs `planner` on `grid` (for jump point search) or its `graph`, in the workspace `search`.
@@ -144,12 +151,7 @@ impl PreparedGrid {
         planner: &PlannerSpec,
         (start, goal): (Cell, Cell),
     ) -> Result<SolveResult, SolveError> {
-        planner.check_limits()?;
-        if planner.sampling().is_some() {
-            return Err(DocumentError::NeedsPolygons { planner: planner.name() }.into());
-        }
-        check_grid_end("start", start, &self.grid)?;
-        check_grid_end("goal", goal, &self.grid)?;
+        check_query(planner, &self.grid, (start, goal))?;
         run(planner, &self.grid, &self.graph, search, (start, goal))
     }
 }

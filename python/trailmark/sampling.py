@@ -26,16 +26,17 @@ def plan_in_box(
     **settings: Any,
 ) -> Plan:
     """Plans from ``start`` to ``goal`` with a sampling planner (``rrt``, ``rrt_connect``,
-    ``rrt_star``) in the box ``bounds`` (one ``(low, high)`` per axis, 1 to 8 axes), around the
-    axis-aligned boxes ``obstacles`` (each ``(low_corner, high_corner)``) and, when given, only
-    through states that ``is_valid`` accepts.
+    ``rrt_star``, ``prm``, ``prm_star``) in the box ``bounds`` (one ``(low, high)`` per axis, 1
+    to 8 axes), around the axis-aligned boxes ``obstacles`` (each ``(low_corner,
+    high_corner)``) and, when given, only through states that ``is_valid`` accepts.
 
     ``is_valid`` is asked of one state at a time (a ``float64 (d,)`` array; it returns a truth
     value) or, with ``batch=True``, of all the states a motion checks at once (a
     ``float64 (n, d)`` array; it returns ``n`` booleans), which pays when the function is
     vectorized. Motions are checked every ``resolution`` of the box's diagonal (OMPL's longest
     valid segment fraction). ``settings`` are the planner's settings of a problem document:
-    ``range``, ``goal_bias``, ``max_iterations``, ``time_limit_s``, ``simplify``, ``sampler``.
+    ``range``, ``goal_bias``, ``max_iterations``, ``time_limit_s``, ``simplify``, ``sampler``
+    (the roadmaps, PRM and PRM*, take neither ``range`` nor ``goal_bias``).
     An exception raised by ``is_valid`` (Ctrl-C too) stops the planner and is raised again here.
 
     >>> import numpy as np, trailmark

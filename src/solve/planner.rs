@@ -12,7 +12,7 @@ use trailmark_core::grid::{Cell, Connectivity, CornerCutting, Grid, GridHeuristi
 use trailmark_core::smooth::Smoothing;
 use trailmark_core::termination::Termination;
 use trailmark_sample::{
-    NearestNeighbors, Planner, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
+    NearestNeighbors, Planner, Prm, Rrt, RrtConnect, RrtOptions, RrtStar, StateSampler, StateSpace, Validity,
 };
 use trailmark_search::{
     AdStar, AdaptiveAStar, DStarLite, EpsilonSchedule, Jps, JpsPlus, LpaStar, MpgaaStar, Replanner, Search,
@@ -116,6 +116,14 @@ pub enum PlannerSpec {
     /// RRT* over a polygon world: rewiring toward the least cost until its limit.
     #[serde(rename = "rrt_star")]
     RrtStar(SamplingSpec),
+    /// PRM: a roadmap of valid states, each joined to its 10 nearest, grown until the start
+    /// and the goal connect; the shortest path through it. It takes no `range` or
+    /// `goal_bias`; `max_iterations` counts samples.
+    #[serde(rename = "prm")]
+    Prm(SamplingSpec),
+    /// PRM*: PRM with PRM*'s number of neighbours, growing and searching again until its limit.
+    #[serde(rename = "prm_star")]
+    PrmStar(SamplingSpec),
     /// Hybrid A* for a car-like robot on a ROS map: poses `[x, y, heading]`, forward and
     /// reverse arcs, the footprint checked at every pose.
     #[serde(rename = "hybrid_astar")]
@@ -126,7 +134,11 @@ impl PlannerSpec {
     /// The settings of a sampling planner, `None` for a graph search.
     pub fn sampling(&self) -> Option<&SamplingSpec> {
         match self {
-            PlannerSpec::Rrt(spec) | PlannerSpec::RrtConnect(spec) | PlannerSpec::RrtStar(spec) => Some(spec),
+            PlannerSpec::Rrt(spec)
+            | PlannerSpec::RrtConnect(spec)
+            | PlannerSpec::RrtStar(spec)
+            | PlannerSpec::Prm(spec)
+            | PlannerSpec::PrmStar(spec) => Some(spec),
             PlannerSpec::Bfs {}
             | PlannerSpec::Dfs {}
             | PlannerSpec::Dijkstra {}
@@ -165,6 +177,8 @@ impl PlannerSpec {
             PlannerSpec::Rrt(_) => PlannerName::Rrt,
             PlannerSpec::RrtConnect(_) => PlannerName::RrtConnect,
             PlannerSpec::RrtStar(_) => PlannerName::RrtStar,
+            PlannerSpec::Prm(_) => PlannerName::Prm,
+            PlannerSpec::PrmStar(_) => PlannerName::PrmStar,
             PlannerSpec::HybridAStar(_) => PlannerName::HybridAStar,
         }
     }
@@ -198,6 +212,8 @@ impl PlannerSpec {
             PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)
             | PlannerSpec::RrtStar(_)
+            | PlannerSpec::Prm(_)
+            | PlannerSpec::PrmStar(_)
             | PlannerSpec::HybridAStar(_) => (None, false),
             PlannerSpec::WeightedAStar { heuristic, .. } => (*heuristic, false),
             // Lines may be shorter than any path of the grid: only the straight line is a
@@ -215,7 +231,7 @@ impl PlannerSpec {
 
     /// Errors when a limit of the planner's settings is out of range: a time limit that is
     /// negative, not a number or above [`MAX_TIME_LIMIT_S`], an iteration limit above
-    /// [`MAX_ITERATIONS`].
+    /// [`MAX_ITERATIONS`]; or a setting this planner does not take (PRM's `range`).
     pub fn check_limits(&self) -> Result<(), DocumentError> {
         if let Some(t) = self.time_limit_s()
             && !(0.0..=MAX_TIME_LIMIT_S).contains(&t)
@@ -226,6 +242,13 @@ impl PlannerSpec {
             && n > MAX_ITERATIONS
         {
             return Err(DocumentError::TooManyIterations(n));
+        }
+        // A roadmap neither steers by a range nor aims at the goal.
+        if let PlannerSpec::Prm(spec) | PlannerSpec::PrmStar(spec) = self {
+            let given = [("range", spec.range.is_some()), ("goal_bias", spec.goal_bias.is_some())];
+            if let Some(&(field, _)) = given.iter().find(|(_, given)| *given) {
+                return Err(DocumentError::NotForPlanner { field, planner: self.name() });
+            }
         }
         Ok(())
     }
@@ -307,6 +330,8 @@ impl PlannerSpec {
             PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)
             | PlannerSpec::RrtStar(_)
+            | PlannerSpec::Prm(_)
+            | PlannerSpec::PrmStar(_)
             | PlannerSpec::HybridAStar(_) => {
                 return Err(DocumentError::NotAGraphSearch { planner: self.name() }.into());
             }
@@ -351,6 +376,8 @@ impl PlannerSpec {
             | PlannerSpec::Rrt(_)
             | PlannerSpec::RrtConnect(_)
             | PlannerSpec::RrtStar(_)
+            | PlannerSpec::Prm(_)
+            | PlannerSpec::PrmStar(_)
             | PlannerSpec::HybridAStar(_) => return None,
         };
         Some(match found {
@@ -384,6 +411,8 @@ impl PlannerSpec {
             PlannerSpec::RrtStar(_) => {
                 Box::new(RrtStar::new(nearest).with_sampler(sampler).with_options(options).with_seed(seed))
             }
+            PlannerSpec::Prm(_) => Box::new(Prm::new(nearest).with_sampler(sampler).with_seed(seed)),
+            PlannerSpec::PrmStar(_) => Box::new(Prm::star(nearest).with_sampler(sampler).with_seed(seed)),
             // The graph searches, for which `sampling()` is `None`.
             _ => return None,
         })

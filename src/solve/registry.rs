@@ -103,6 +103,10 @@ registry! {
     RrtConnect => "rrt_connect", Sampling, replans: false;
     /// RRT*.
     RrtStar => "rrt_star", Sampling, replans: false;
+    /// PRM.
+    Prm => "prm", Sampling, replans: false;
+    /// PRM*.
+    PrmStar => "prm_star", Sampling, replans: false;
     /// Hybrid A*.
     HybridAStar => "hybrid_astar", Car, replans: false;
 }

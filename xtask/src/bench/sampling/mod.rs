@@ -39,9 +39,12 @@ pub fn planner_names() -> Vec<&'static str> {
     SingleQuery::ALL.iter().map(|p| p.name()).chain([star::NAME, prm::NAME, boxes::NAME]).collect()
 }
 
-/// The registry's planners this section measures: its single-query planners and RRT*.
+/// The registry's planners this section measures: its single-query planners, RRT*, PRM* (its
+/// own rows and the box worlds') and PRM (the time limits' rows).
 pub fn measured() -> impl Iterator<Item = trailmark::solve::PlannerName> {
-    SingleQuery::ALL.iter().map(|p| p.planner()).chain(trailmark::solve::PlannerName::from_name(star::NAME))
+    use trailmark::solve::PlannerName;
+    let named = [star::NAME, prm::NAME].into_iter().filter_map(PlannerName::from_name);
+    SingleQuery::ALL.iter().map(|p| p.planner()).chain(named).chain([PlannerName::Prm])
 }
 
 /// The sampling section's results.

@@ -20,7 +20,7 @@ use crate::bench::sampling::world::{PlaneQuery, SamplingWorld, ompl_queries, poi
 use crate::bench::stats::median;
 
 /// The name in `--only`, the JSON results and the OMPL driver's input.
-pub const NAME: &str = "prm_star";
+pub const NAME: &str = trailmark::solve::PlannerName::PrmStar.name();
 
 /// PRM* of trailmark and (with `--with-ompl`) OMPL on one world.
 #[derive(Debug, Clone, Serialize)]

@@ -127,7 +127,11 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
                 return false;
             }
         }
-        PlannerSpec::Rrt(spec) | PlannerSpec::RrtConnect(spec) | PlannerSpec::RrtStar(spec) => {
+        PlannerSpec::Rrt(spec)
+        | PlannerSpec::RrtConnect(spec)
+        | PlannerSpec::RrtStar(spec)
+        | PlannerSpec::Prm(spec)
+        | PlannerSpec::PrmStar(spec) => {
             let iterations_ok = match spec.max_iterations {
                 Some(n) => n <= MAX_SAMPLING_ITERATIONS,
                 None => {
@@ -147,9 +151,9 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
             if attempts.is_some_and(|a| a > MAX_SAMPLER_ATTEMPTS) {
                 return false;
             }
-            // RRT* over Dubins curves is the slowest: fewer iterations.
-            if problem.space == Some(SpaceKind::Dubins)
-                && matches!(problem.planner, PlannerSpec::RrtStar(_))
+            // RRT* and PRM* over car curves are the slowest: fewer iterations.
+            if matches!(problem.space, Some(SpaceKind::Dubins | SpaceKind::ReedsShepp))
+                && matches!(problem.planner, PlannerSpec::RrtStar(_) | PlannerSpec::PrmStar(_))
                 && !(spec.max_iterations.is_some_and(|n| n <= MAX_SAMPLING_ITERATIONS / 3)
                     || time_ok(spec.time_limit_s))
             {

@@ -331,7 +331,11 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
                 optimal();
             }
         }
-        PlannerSpec::Rrt(_) | PlannerSpec::RrtConnect(_) | PlannerSpec::RrtStar(_) => {
+        PlannerSpec::Rrt(_)
+        | PlannerSpec::RrtConnect(_)
+        | PlannerSpec::RrtStar(_)
+        | PlannerSpec::Prm(_)
+        | PlannerSpec::PrmStar(_) => {
             panic!("a sampling planner solved a grid problem")
         }
         PlannerSpec::HybridAStar(_) => unreachable!("checked by car::check_result"),

@@ -11,6 +11,7 @@ mod interrupt;
 mod outcome;
 mod pool;
 mod replanner;
+mod robot;
 mod ros_map;
 
 use pyo3::prelude::*;
@@ -24,6 +25,7 @@ fn _trailmark(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_class::<grid::Grid>()?;
     module.add_class::<ros_map::RosMap>()?;
     module.add_class::<replanner::Replanner>()?;
+    module.add_class::<robot::RobotWorld>()?;
     module.add("__version__", env!("CARGO_PKG_VERSION"))?;
     module.add("MAX_DOCUMENT_BYTES", trailmark::core::read::MAX_DOCUMENT_BYTES)?;
     module.add("MAX_GRID_CELLS", trailmark::core::grid::Grid::MAX_CELLS)?;

@@ -3,7 +3,8 @@
 Grids from arrays and MovingAI maps searched by A*, Dijkstra, BFS, JPS, JPS+ and Theta*
 (:class:`Grid`); replanners kept between plans as costs change (:class:`Replanner`: D* Lite,
 LPA*, MPGAA*, Adaptive A*); ROS maps made into costmaps and planned on in metres, Hybrid A* for a car
-(:class:`RosMap`); sampling planners in a box with your own validity function, one state or a
+(:class:`RosMap`); robot arms from their URDF, SRDF and MoveIt scene, their states checked in
+batches and planned in (:class:`RobotWorld`); sampling planners in a box with your own validity function, one state or a
 whole batch per call (:func:`plan_in_box`); and every problem of ``cargo xtask solve`` (grids,
 ROS maps, polygon worlds, cars, robot arms) as a document, one at a time or in parallel on every
 core (:func:`solve`, :func:`solve_many`).
@@ -23,6 +24,7 @@ from .errors import __all__ as _errors
 from .grid import Grid
 from .plan import Plan
 from .replanner import Replanner
+from .robot import RobotWorld
 from .ros_map import RosMap
 from .sampling import plan_in_box
 
@@ -31,6 +33,7 @@ __all__ = [
     "Grid",
     "Plan",
     "Replanner",
+    "RobotWorld",
     "RosMap",
     "plan_in_box",
     "solve",

@@ -54,7 +54,7 @@ pub use search::grid::{PreparedGrid, search_grid};
 pub use search::roadmap::DEFAULT_SAMPLES;
 pub use world::boxes::MAX_BOX_DIMENSION;
 pub use world::grid::{check_grid_end, grid_graph, load_grid};
-pub use world::robot::MAX_GROUP_JOINTS;
+pub use world::robot::{MAX_GROUP_JOINTS, RobotWorld};
 pub use world::ros_map::{
     DEFAULT_COST_FACTOR, DEFAULT_COST_SCALING_FACTOR, DEFAULT_INFLATION_RADIUS, DEFAULT_ROBOT_RADIUS,
     MAX_COST_FACTOR, RosMapWorld, ros_costmap, ros_travel_cost,

@@ -57,10 +57,20 @@ pub(super) fn planner_spec(u: &mut Unstructured, planner: PlannerName, grid: boo
             spec.insert("turning_radius".into(), json!(1.0));
             spec.insert("max_expansions".into(), json!(100));
         }
-        PlannerName::Rrt | PlannerName::RrtConnect | PlannerName::RrtStar => {
-            insert(&mut spec, "range", maybe(u, 128, |u| float(u, 0.0, 4.0).map(num))?);
-            insert(&mut spec, "goal_bias", maybe(u, 128, |u| float(u, 0.0, 1.0).map(num))?);
-            let iterations = if planner == PlannerName::RrtStar { 600 } else { 2000 };
+        PlannerName::Rrt
+        | PlannerName::RrtConnect
+        | PlannerName::RrtStar
+        | PlannerName::Prm
+        | PlannerName::PrmStar => {
+            // The roadmaps refuse a range and a goal bias: given now and then, to reach the error.
+            let roadmap = matches!(planner, PlannerName::Prm | PlannerName::PrmStar);
+            let p = if roadmap { 8 } else { 128 };
+            insert(&mut spec, "range", maybe(u, p, |u| float(u, 0.0, 4.0).map(num))?);
+            insert(&mut spec, "goal_bias", maybe(u, p, |u| float(u, 0.0, 1.0).map(num))?);
+            let iterations = match planner {
+                PlannerName::RrtStar | PlannerName::PrmStar => 600,
+                _ => 2000,
+            };
             spec.insert("max_iterations".into(), json!(u.int_in_range(0..=iterations)?));
             insert(&mut spec, "time_limit_s", maybe(u, 48, |u| hostile_f64(u).map(num))?);
             insert(&mut spec, "simplify", maybe(u, 128, |u| u.arbitrary::<bool>().map(|b| json!(b)))?);

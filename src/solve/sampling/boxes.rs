@@ -87,7 +87,7 @@ pub fn solve_boxes_with<const N: usize, V: Validity<Rn<N>>>(
     let space = world.space();
     let checker = Both(&world, validity);
     let seed = problem.seed.unwrap_or(0);
-    let run = SamplingRun { problem, spec, checker: &checker, seed, smoothing_passes: 0, stop };
+    let run = SamplingRun { planner, spec, checker: &checker, seed, smoothing_passes: 0, stop };
     let (result, _) = run.plan(&space, KdNearest::<Rn<N>, N>::new(&space)?, start, goal)?;
     Ok(result)
 }
@@ -120,7 +120,8 @@ fn boxes<const N: usize>(
     let (start, goal) = box_ends::<N>(problem)?;
     let space = world.space();
     let seed = problem.seed.unwrap_or(0);
-    let run = SamplingRun { problem, spec, checker: &world, seed, smoothing_passes: 0, stop: None };
+    let planner = &problem.planner;
+    let run = SamplingRun { planner, spec, checker: &world, seed, smoothing_passes: 0, stop: None };
     let (result, _) = run.plan(&space, KdNearest::<Rn<N>, N>::new(&space)?, start, goal)?;
     Ok(result)
 }

@@ -9,18 +9,18 @@ use trailmark_sample::{KdNearest, StateSpace};
 use super::{SamplingRun, sketch};
 use crate::solve::curves::car_curve;
 use crate::solve::error::{DocumentError, SolveError};
+use crate::solve::problem::ProblemSpec;
 use crate::solve::result::SolveResult;
 
 /// The sampling planners in a space of car poses (`space` its name in documents), joined by
 /// the shortest curves of the family `C` of the problem's turning radius.
 pub(super) fn solve_in_car_space<C: CarCurves>(
     run: &SamplingRun<'_, CollisionChecker>,
+    problem: &ProblemSpec,
     world: &PolygonWorld,
-    planner: &'static str,
     space_name: &'static str,
     picture: Option<&mut String>,
 ) -> Result<SolveResult, SolveError> {
-    let problem = run.problem;
     if run.spec.smooth.is_some() {
         return Err(DocumentError::NotForSpace { field: "smooth", space: space_name }.into());
     }
@@ -38,7 +38,7 @@ pub(super) fn solve_in_car_space<C: CarCurves>(
     if let Some(picture) = picture {
         let curve = car_curve(&space, &path);
         let ends = (Point::from(start.translation.vector), Point::from(goal.translation.vector));
-        *picture = sketch(world, planner, &curve, ends.0, ends.1).poses(path).to_svg();
+        *picture = sketch(world, run.planner.name(), &curve, ends.0, ends.1).poses(path).to_svg();
     }
     Ok(result)
 }

@@ -23,7 +23,7 @@ use trailmark_sample::{
 };
 
 use crate::solve::error::{DocumentError, SolveError};
-use crate::solve::planner::{SamplerSpec, SamplingSpec};
+use crate::solve::planner::{PlannerSpec, SamplerSpec, SamplingSpec};
 use crate::solve::problem::{ProblemSpec, SpaceKind};
 use crate::solve::result::{
     Coordinates, ImprovementRecord, ResultStats, SamplingStats, SmoothedRecord, SolveResult, Status, Waypoint,
@@ -51,7 +51,14 @@ pub(in crate::solve) fn solve_sampling(
     let space_kind = problem.space.unwrap_or(SpaceKind::R2);
     let checker = world.checker();
     let seed = problem.seed.unwrap_or(0);
-    let run = SamplingRun { problem, spec, checker: &checker, seed, smoothing_passes: 0, stop: None };
+    let run = SamplingRun {
+        planner: &problem.planner,
+        spec,
+        checker: &checker,
+        seed,
+        smoothing_passes: 0,
+        stop: None,
+    };
     match space_kind {
         SpaceKind::Rn => Err(DocumentError::RnNeedsBoxes.into()),
         SpaceKind::R2 => {
@@ -93,17 +100,17 @@ pub(in crate::solve) fn solve_sampling(
             Ok(result)
         }
         SpaceKind::Dubins => {
-            car::solve_in_car_space::<DubinsCurves>(&run, world, planner, space_kind.name(), picture)
+            car::solve_in_car_space::<DubinsCurves>(&run, problem, world, space_kind.name(), picture)
         }
         SpaceKind::ReedsShepp => {
-            car::solve_in_car_space::<ReedsSheppCurves>(&run, world, planner, space_kind.name(), picture)
+            car::solve_in_car_space::<ReedsSheppCurves>(&run, problem, world, space_kind.name(), picture)
         }
     }
 }
 
-/// A sampling planner's run: the problem, its settings, the world's validity and the seed.
+/// A sampling planner's run: the planner, its settings, the world's validity and the seed.
 struct SamplingRun<'a, V> {
-    problem: &'a ProblemSpec,
+    planner: &'a PlannerSpec,
     spec: &'a SamplingSpec,
     checker: &'a V,
     seed: u64,
@@ -228,9 +235,9 @@ impl<V> SamplingRun<'_, V> {
         Q: StateSampler<S>,
         V: trailmark_sample::Validity<S>,
     {
-        let planner = self.problem.planner.sampling_planner(nearest, sampler, *options, self.seed);
+        let planner = self.planner.sampling_planner(nearest, sampler, *options, self.seed);
         let mut planner =
-            planner.ok_or(DocumentError::NotASamplingPlanner { planner: self.problem.planner.name() })?;
+            planner.ok_or(DocumentError::NotASamplingPlanner { planner: self.planner.name() })?;
         Ok(planner.solve(problem, termination)?)
     }
 }

@@ -9,7 +9,8 @@ them). Run from the repository with the package and the peers installed:
    PreparedGrid::search), and the pure-Python `pathfinding` package (costs compared too).
 2. RRT-Connect over built-in worlds (the polygon world of examples/problems/wall-rrt-connect.json
    and the 4-joint arm of shelf-arm-rrt-connect.json): trailmark.solve from Python against solve
-   from Rust (`cargo xtask time`) on the same document.
+   from Rust (`cargo xtask time`) on the same document; and the arm held as a RobotWorld in both
+   (`cargo xtask time --prepared`), only the plan timed.
 3. RRT-Connect with a Python validity function on one problem: trailmark with the batch form,
    trailmark one state per call, oxmpl-py and OMPL 2.0's Python bindings one state per call
    (neither has a batch form), the same wall, range and motion step, at OMPL's default step
@@ -143,6 +144,26 @@ def box_section(repeats):
         rows.append((f"RRT-Connect, {label}, trailmark.solve from Python", wall))
         rows.append((f"RRT-Connect, {label}, solve from Rust", timed["median_s"]))
         notes.append(f"{label.split(' (')[0]} {wall / timed['median_s']:.2f}x")
+    # The arm held by the program in both languages: RobotWorld.plan from Python against
+    # RobotWorld::plan from Rust (`cargo xtask time --prepared`), the files read once.
+    path = examples / "shelf-arm-rrt-connect.json"
+    document = json.loads(path.read_text())
+    robot, planner = document["world"]["robot"], dict(document["planner"])
+    arm = trailmark.RobotWorld(examples / robot["urdf"], examples / robot["srdf"], robot["group"],
+                               scene=examples / document["world"]["scene"])
+    name = planner.pop("name")
+    # A tenth of a millisecond a plan: ten times the repetitions, on both sides.
+    held = 10 * repeats
+    wall, plan = median_time(
+        lambda: arm.plan(document["start"], document["goal"], name, seed=document["seed"], **planner), held
+    )
+    command = ["cargo", "xtask", "time", str(path), "--repeat", str(held), "--prepared"]
+    done = subprocess.run(command, cwd=REPOSITORY, capture_output=True, text=True, check=True)
+    timed = json.loads(done.stdout.strip().splitlines()[-1])
+    assert timed["cost"] == plan.cost and plan.solved
+    rows.append(("RRT-Connect, 4-joint arm held as a RobotWorld, RobotWorld.plan from Python", wall))
+    rows.append(("RRT-Connect, 4-joint arm held as a RobotWorld, RobotWorld::plan from Rust", timed["median_s"]))
+    notes.append(f"arm held as a RobotWorld {wall / timed['median_s']:.2f}x")
     return rows, "RRT-Connect from Python / from Rust: " + ", ".join(notes)
 
 

@@ -4,13 +4,16 @@
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::{Receiver, RecvTimeoutError};
-use std::time::Duration;
+use std::sync::mpsc::{Receiver, RecvTimeoutError, TryRecvError};
+use std::time::{Duration, Instant};
 
 use pyo3::prelude::*;
 
 /// How often the waiting thread looks for a signal.
 const POLL: Duration = Duration::from_millis(20);
+
+/// How long the wait for one plan spins before it sleeps.
+const SPIN: Duration = Duration::from_micros(500);
 
 /// Receives from `rx` until `wanted` messages came, checking for signals (Ctrl-C raises
 /// `KeyboardInterrupt`) in between; on a signal, sets `stop` for the workers and returns the
@@ -23,9 +26,24 @@ pub fn receive<T: Send>(
     mut each: impl FnMut(T),
 ) -> PyResult<()> {
     let mut got = 0;
+    // One plan's result is first waited for by spinning: a sleeping thread takes tens of
+    // microseconds to wake, as long as a short plan.
+    let mut spin = wanted == 1;
     while got < wanted {
         // The receiver is not `Sync`: it moves to the waiting closure and back.
-        let (message, back) = py.detach(move || (rx.recv_timeout(POLL), rx));
+        let (message, back) = py.detach(move || {
+            if std::mem::take(&mut spin) {
+                let until = Instant::now() + SPIN;
+                while Instant::now() < until {
+                    match rx.try_recv() {
+                        Ok(message) => return (Ok(message), rx),
+                        Err(TryRecvError::Disconnected) => return (Err(RecvTimeoutError::Disconnected), rx),
+                        Err(TryRecvError::Empty) => std::hint::spin_loop(),
+                    }
+                }
+            }
+            (rx.recv_timeout(POLL), rx)
+        });
         rx = back;
         match message {
             Ok(message) => {

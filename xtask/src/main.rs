@@ -71,14 +71,15 @@ enum Command {
     /// Reads and solves a problem document `--repeat` times in this process and prints the
     /// median and least wall time of one (JSON): the Rust side of a comparison with another
     /// language's call (python/bench/bench.py). `--prepared`: a grid world's grid loaded and its
-    /// graph built once, each time only the search, as a program that keeps the grid does.
+    /// graph built once, each time only the search, as a program that keeps the grid does; a
+    /// robot world read once (`RobotWorld`), each time only the plan.
     Time {
         /// The problem JSON file.
         problem: PathBuf,
         /// How many solves to time.
         #[arg(long, default_value_t = 21)]
         repeat: usize,
-        /// Time only the search on a grid world prepared once.
+        /// Time only the search on a grid world, or the plan in a robot world, prepared once.
         #[arg(long)]
         prepared: bool,
     },

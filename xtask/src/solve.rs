@@ -10,7 +10,7 @@ use trailmark::core::read::{MAX_DOCUMENT_BYTES, read_to_string_capped};
 
 use trailmark::core::grid::{Cell, CornerCutting};
 use trailmark::search::Search;
-use trailmark::solve::{PreparedGrid, ProblemSpec, WorldSpec, load_grid};
+use trailmark::solve::{PreparedGrid, ProblemSpec, RobotWorld, WorldSpec, load_grid};
 
 /// Prints the result of the problem in `path` (or standard input for `-`); on a bad problem,
 /// prints `{"status": "error", "error": ...}` and exits with 2.
@@ -42,8 +42,8 @@ pub fn render(path: &Path, out: &Path) -> ExitCode {
     }
 }
 
-/// Times `repeat` solves of the problem in `path`, each reading and parsing it (only the search
-/// on its grid, prepared once, with `prepared`) and prints `{"repeat", "median_s", "min_s", "status", "cost"}`.
+/// Times `repeat` solves of the problem in `path`, each reading and parsing it (with `prepared`:
+/// only the search on its grid, or the plan in its robot world, prepared once) and prints `{"repeat", "median_s", "min_s", "status", "cost"}`.
 pub fn time(path: &Path, repeat: usize, prepared: bool) -> ExitCode {
     match time_solves(path, repeat.max(1), prepared) {
         Ok(json) => {
@@ -58,9 +58,20 @@ fn time_solves(path: &Path, repeat: usize, prepared: bool) -> Result<String, Str
     let (problem, base) = read(path)?;
     let mut times = Vec::with_capacity(repeat);
     let mut last = None;
-    if prepared {
+    if let (true, WorldSpec::Robot(world)) = (prepared, &problem.world) {
+        let robot = RobotWorld::load(world, &base).map_err(|e| e.to_string())?;
+        let seed = problem.seed.unwrap_or(0);
+        for _ in 0..repeat {
+            let clock = Instant::now();
+            let result = robot
+                .plan(&problem.planner, &problem.start, &problem.goal, seed, None)
+                .map_err(|e| e.to_string())?;
+            times.push(clock.elapsed().as_secs_f64());
+            last = Some(result);
+        }
+    } else if prepared {
         let WorldSpec::Grid(world) = &problem.world else {
-            return Err("--prepared times grid worlds only".into());
+            return Err("--prepared times grid and robot worlds only".into());
         };
         let grid = load_grid(world, &base).map_err(|e| e.to_string())?;
         let rule = if world.corner_cutting { CornerCutting::Allowed } else { CornerCutting::Forbidden };

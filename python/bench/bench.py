@@ -228,8 +228,12 @@ def many_section(count):
     sampling = [dict(wall, seed=i) for i in range(count // 20)]
     rows, notes = [], []
     for label, documents in ((f"{count} grid documents", grids), (f"{len(sampling)} RRT-Connect documents", sampling)):
-        loop, _ = median_time(lambda: [trailmark.solve(d) for d in documents], 1)
-        many, _ = median_time(lambda: trailmark.solve_many(documents), 1)
+        # Alternated, three of each: the machine's speed drifts over seconds.
+        loops, manys = [], []
+        for _ in range(3):
+            loops.append(median_time(lambda: [trailmark.solve(d) for d in documents], 1)[0])
+            manys.append(median_time(lambda: trailmark.solve_many(documents), 1)[0])
+        loop, many = statistics.median(loops), statistics.median(manys)
         rows += [(f"solve in a loop, {label}", loop), (f"solve_many, {label}", many)]
         notes.append(f"{label}: {loop / many:.2f}x")
     return rows, "solve_many against solve in a loop: " + "; ".join(notes)

@@ -5,10 +5,10 @@
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::sync::mpsc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Mutex, PoisonError, mpsc};
 
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use trailmark::core::read::MAX_DOCUMENT_BYTES;
 use trailmark::solve::ProblemSpec;
@@ -76,52 +76,80 @@ pub fn solve_json(py: Python<'_>, document: String, base_dir: PathBuf) -> PyResu
     }
 }
 
-/// Solves every document (its text and the folder its paths are relative to) on `workers`
-/// threads (default: one per core, at most `MAX_WORKERS`), without the GIL; Ctrl-C stops every
-/// planner and the wait; each result is `(None, json)`, or
-/// `(class, message)` for a document that could not be solved.
+/// A document to solve: its place in the list, its text and the folder its paths are
+/// relative to.
+type Job = (usize, String, PathBuf);
+
+/// Solves every document of `documents` (an iterator of `count` pairs: its text and the folder
+/// its paths are relative to) on `workers` threads (default: one per core, at most
+/// `MAX_WORKERS`), without the GIL; Ctrl-C stops every planner and the wait; each result is
+/// `(None, json)`, or `(class, message)` for a document that could not be solved. The
+/// documents are handed out as the iterator makes them, so that the interpreter writes the
+/// next while the first are planned.
 #[pyfunction]
-#[pyo3(signature = (documents, workers=None))]
+#[pyo3(signature = (documents, count, workers=None))]
 pub fn solve_many_json(
     py: Python<'_>,
-    documents: Vec<(String, PathBuf)>,
+    documents: &Bound<'_, PyAny>,
+    count: usize,
     workers: Option<usize>,
 ) -> PyResult<Vec<(Option<&'static str>, String)>> {
-    let n = documents.len();
     let cores = std::thread::available_parallelism().map_or(1, usize::from);
     let workers = match workers {
         Some(0) => return Err(PyValueError::new_err("workers must be at least 1")),
         Some(w) => w.min(MAX_WORKERS),
         None => cores,
     }
-    .min(n.max(1));
-    let documents = Arc::new(documents);
-    let next = Arc::new(AtomicUsize::new(0));
+    .min(count.max(1));
     let stop = Arc::new(AtomicBool::new(false));
+    let stopped = |error: PyErr| {
+        stop.store(true, Ordering::Relaxed);
+        error
+    };
+    let (job_tx, job_rx) = mpsc::channel::<Job>();
+    let job_rx = Arc::new(Mutex::new(job_rx));
     let (tx, rx) = mpsc::channel();
     for _ in 0..workers {
-        let (documents, next, stopped, tx) = (documents.clone(), next.clone(), stop.clone(), tx.clone());
+        let (job_rx, stop, tx) = (Arc::clone(&job_rx), Arc::clone(&stop), tx.clone());
         crate::pool::run(move || {
-            while !stopped.load(Ordering::Relaxed) {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some((text, base_dir)) = documents.get(i) else { break };
-                if tx.send((i, solve_text(text, base_dir, &stopped))).is_err() {
+            loop {
+                // The lock is held while waiting: the other workers would wait for a job anyway.
+                let job = job_rx.lock().unwrap_or_else(PoisonError::into_inner).recv();
+                let Ok((i, text, base_dir)) = job else { break };
+                if stop.load(Ordering::Relaxed) || tx.send((i, solve_text(&text, &base_dir, &stop))).is_err()
+                {
                     break;
                 }
             }
         })
-        .map_err(|e| {
-            stop.store(true, Ordering::Relaxed);
-            pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a planning thread: {e}"))
-        })?;
+        .map_err(|e| stopped(PyRuntimeError::new_err(format!("cannot start a planning thread: {e}"))))?;
     }
     drop(tx);
-    let mut results: Vec<(Option<&'static str>, String)> = vec![(None, String::new()); n];
-    receive(py, rx, n, &stop, |(i, outcome)| {
+    let mut results: Vec<(Option<&'static str>, String)> = vec![(None, String::new()); count];
+    let mut store = |(i, outcome): (usize, Outcome)| {
         results[i] = match outcome {
             Ok(json) => (None, json),
             Err((class, message)) => (Some(class), message),
         };
-    })?;
+    };
+    let (mut fed, mut got) = (0, 0);
+    for document in documents.try_iter()? {
+        let (text, base_dir) = document.and_then(|d| d.extract::<(String, PathBuf)>()).map_err(stopped)?;
+        if fed == count {
+            return Err(stopped(PyValueError::new_err(format!("more documents than the {count} counted"))));
+        }
+        job_tx
+            .send((fed, text, base_dir))
+            .map_err(|_| stopped(PyRuntimeError::new_err("the planning threads ended")))?;
+        fed += 1;
+        while let Ok(message) = rx.try_recv() {
+            store(message);
+            got += 1;
+        }
+        py.check_signals().map_err(stopped)?;
+    }
+    drop(job_tx);
+    receive(py, rx, fed - got, &stop, store)?;
+    results.truncate(fed);
     Ok(results)
 }

@@ -80,6 +80,15 @@ def test_solve_many_equals_solve_in_a_loop():
         trailmark.solve_many(documents, workers=0)
     with pytest.raises(TypeError):
         trailmark.solve_many(documents, workers=1.5)
+    # A document that is neither a dict nor a path, after others have started: raised, and the
+    # threads stop (the next call plans as before).
+    with pytest.raises(TypeError, match="not int"):
+        trailmark.solve_many(documents[:5] + [42] + documents[5:], base_dir=EXAMPLES)
+    assert [without_times(r) for r in trailmark.solve_many(documents[:2], base_dir=EXAMPLES)] == [
+        without_times(r) for r in one_by_one[:2]
+    ]
+    # Any iterable, a generator too.
+    assert len(trailmark.solve_many(d for d in documents[:3])) == 3
     # More workers than documents, or than any machine has: capped, the same results.
     assert [without_times(r) for r in trailmark.solve_many(documents[:3], workers=10_000, base_dir=EXAMPLES)] == [
         without_times(r) for r in one_by_one[:3]

@@ -1,7 +1,7 @@
 """Stubs of the extension module (python/src): the Rust side of trailmark's Python API."""
 
 import os
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union, final
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -15,7 +15,7 @@ _Parts = Tuple[str, Optional[float], np.ndarray, str]
 
 def solve_json(document: str, base_dir: Union[str, "os.PathLike[str]"]) -> str: ...
 def solve_many_json(
-    documents: Sequence[Tuple[str, Union[str, "os.PathLike[str]"]]], workers: Optional[int] = None
+    documents: Iterable[Tuple[str, Union[str, "os.PathLike[str]"]]], count: int, workers: Optional[int] = None
 ) -> List[Tuple[Optional[str], str]]: ...
 def plan_boxes_json(document: str, is_valid: Callable[[np.ndarray], Any], batch: bool, resolution: float) -> _Parts: ...
 

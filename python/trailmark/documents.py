@@ -77,9 +77,12 @@ def solve_many(
     """
     if errors not in ("report", "raise"):
         raise ValueError(f'errors is "report" or "raise", not {errors!r}')
-    jobs = [_text(document, base_dir) for document in documents]
+    documents = list(documents)
+    # Written one by one as the planning threads take them: the interpreter writes the next
+    # documents while the first are planned.
+    jobs = (_text(document, base_dir) for document in documents)
     results: List[Dict[str, Any]] = []
-    for failed, payload in _trailmark.solve_many_json(jobs, workers):
+    for failed, payload in _trailmark.solve_many_json(jobs, len(documents), workers):
         if failed is None:
             results.append(json.loads(payload))
         elif errors == "raise":

@@ -239,16 +239,32 @@ def fuzz_ros_map(fdp):
 def fuzz_robot(fdp):
     if not _ARM:
         robot = EXAMPLES / "problems" / "robot"
-        _ARM.append(trailmark.RobotWorld(robot / "arm.urdf", robot / "arm.srdf", "arm", scene=robot / "shelf.yaml"))
-    arm = _ARM[0]
+        for checker in ("batch", "scalar"):
+            _ARM.append(trailmark.RobotWorld(robot / "arm.urdf", robot / "arm.srdf", "arm",
+                                             scene=robot / "shelf.yaml", checker=checker))
+    arm = _ARM[fdp.ConsumeIntInRange(0, 1)]
     rows = fdp.ConsumeIntInRange(0, 20)
     columns = 4 if fdp.ConsumeIntInRange(0, 5) else fdp.ConsumeIntInRange(0, 6)
-    states = np.array([hostile_float(fdp) for _ in range(rows * columns)], dtype=np.float64).reshape(rows, columns)
+    low, high = arm.limits[:, 0], arm.limits[:, 1]
+    values = [hostile_float(fdp) if fdp.ConsumeIntInRange(0, 3) == 0 else -4.0 + 8.0 * fdp.ConsumeProbability()
+              for _ in range(rows * columns)]
+    states = np.array(values, dtype=np.float64).reshape(rows, columns)
+    layout = fdp.ConsumeIntInRange(0, 3)
+    if layout == 1:
+        states = np.asfortranarray(states)
+    elif layout == 2 and rows:
+        states = np.repeat(states, 2, axis=0)[::2]  # a strided view
+    elif layout == 3:
+        states = states.astype(np.float32)
     try:
         free = arm.is_valid(states)
         assert free.shape == (rows,)
-        finite = np.isfinite(states).all(axis=1)
-        assert not (free & ~finite).any(), "a state that is not finite was called free"
+        inside = (np.isfinite(states) & (states >= low) & (states <= high)).all(axis=1)
+        assert not (free & ~inside).any(), "a state beyond the limits or not finite was called free"
+        # One by one as in a batch.
+        assert [arm.is_valid(q) for q in states[:9]] == free[:9].tolist()
+        if rows >= 2:
+            arm.motion_is_valid(states[0], states[1])
     except EXPECTED as error:
         allowed(error)
     planner = SAMPLING_PLANNERS[fdp.ConsumeIntInRange(0, len(SAMPLING_PLANNERS) - 1)]
@@ -266,6 +282,11 @@ def fuzz_robot(fdp):
         return
     if plan.status == "solved":
         assert arm.is_valid(plan.path).all(), "a planned state is in collision"
+        assert all(arm.motion_is_valid(a, b) for a, b in zip(plan.path[:-1], plan.path[1:])), "a blocked motion"
+        # The ends, within the limits' tolerance and continuous joints taken by whole turns.
+        for asked, got in ((start, plan.path[0]), (goal, plan.path[-1])):
+            turns = np.round((np.asarray(asked) - got) / (2 * np.pi)) * 2 * np.pi
+            assert np.allclose(np.asarray(asked) - turns, got, atol=1e-3), (asked, got)
 
 
 def fuzz_document(fdp):

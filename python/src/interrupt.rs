@@ -31,8 +31,9 @@ pub fn receive<T: Send>(
     let mut spin = wanted == 1;
     while got < wanted {
         // The receiver is not `Sync`: it moves to the waiting closure and back.
+        let first = std::mem::take(&mut spin);
         let (message, back) = py.detach(move || {
-            if std::mem::take(&mut spin) {
+            if first {
                 let until = Instant::now() + SPIN;
                 while Instant::now() < until {
                     match rx.try_recv() {

@@ -80,8 +80,8 @@ def test_solve_many_equals_solve_in_a_loop():
         trailmark.solve_many(documents, workers=0)
     with pytest.raises(TypeError):
         trailmark.solve_many(documents, workers=1.5)
-    # A document that is neither a dict nor a path, after others have started: raised, and the
-    # threads stop (the next call plans as before).
+    # A document that is neither a dict nor a path, after others have started: raised (the
+    # next call plans as before).
     with pytest.raises(TypeError, match="not int"):
         trailmark.solve_many(documents[:5] + [42] + documents[5:], base_dir=EXAMPLES)
     assert [without_times(r) for r in trailmark.solve_many(documents[:2], base_dir=EXAMPLES)] == [

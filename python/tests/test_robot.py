@@ -47,6 +47,14 @@ def test_the_batch_and_scalar_checkers_agree_state_by_state():
     free = agree(batch, scalar, states)
     assert free.dtype == np.bool_ and free.shape == (2000,)
     assert [batch.is_valid(q) for q in states[:50]] == free[:50].tolist()
+    # Any layout and float dtype: the same answers.
+    assert np.array_equal(batch.is_valid(np.asfortranarray(states)), free)
+    assert np.array_equal(batch.is_valid(np.repeat(states, 2, axis=0)[::2]), free)
+    assert np.array_equal(batch.is_valid(states.astype(np.float32)), batch.is_valid(states.astype(np.float32).astype(np.float64)))
+    # Beyond the limits: not free for either checker, as the planners refuse such ends.
+    for world in (batch, scalar):
+        assert world.is_valid((0.0, 1.9, 0.0, 0.0)) is False
+        assert world.motion_is_valid(START, (0.0, 1.9, 0.0, 0.0)) is False
     assert batch.is_valid(START) is True and batch.is_valid((0.0, 1.6, 0.0, 0.0)) is False
     assert batch.is_valid((np.nan, 0.6, 1.2, 0.8)) is False
     assert batch.is_valid(np.empty((0, 4))).shape == (0,)
@@ -113,6 +121,11 @@ def test_bad_worlds_states_and_plans_raise_typed_errors():
     assert world.motion_is_valid(START, START) is True
     with pytest.raises(trailmark.DocumentError):
         world.motion_is_valid(START, (1.0, "a", 0.0, 0.0))
+    with pytest.raises(trailmark.DocumentError, match="4 joints"):
+        world.motion_is_valid(START, (1.0, 0.0, 0.0))
+    for seed in (-1, 2**64, 1.5):
+        with pytest.raises(trailmark.DocumentError, match="seed"):
+            world.plan(START, GOAL, seed=seed)
 
 
 def test_ctrl_c_stops_a_plan():

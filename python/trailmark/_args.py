@@ -26,6 +26,14 @@ def whole(value: Any, what: str) -> int:
     raise DocumentError(f"{what} must be a whole number, not {value!r}")
 
 
+def seed(value: Any) -> int:
+    """A seed: a whole number from 0 to 2**64 - 1, as the planners take it."""
+    number = whole(value, "the seed")
+    if not 0 <= number < 2**64:
+        raise DocumentError(f"the seed must be from 0 to 2**64 - 1, not {number}")
+    return number
+
+
 def cell(value: Any, what: str) -> Tuple[int, int]:
     """`(x, y)` of a grid cell: two whole numbers from 0."""
     if isinstance(value, (str, bytes)):

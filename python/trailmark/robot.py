@@ -20,8 +20,8 @@ class RobotWorld:
     """The planning group ``group`` of the robot of ``urdf`` and ``srdf`` among the obstacles of
     a MoveIt planning ``scene`` (YAML; none: an empty world), read once. States are one value
     per group joint in :attr:`joint_names` order; the joints outside the group stay at zero (or
-    their limits' middle). ``checker`` is ``"batch"`` (eight states at once in SIMD lanes) or
-    ``"scalar"``; both are conservative (spheres that cover the links, motions proven free
+    their limits' middle). ``checker`` is ``"batch"`` (eight different states at once in SIMD
+    lanes) or ``"scalar"``; both are conservative (spheres that cover the links, motions proven free
     between their states), the batch one a little more (its ``f32`` rounding grows the
     spheres: a state within that of touching may be blocked for it and free for the other).
 
@@ -59,14 +59,16 @@ class RobotWorld:
 
     @property
     def limits(self) -> np.ndarray:
-        """The joints' limits, ``float64 (d, 2)``: ``(lower, upper)`` per joint (a continuous
-        joint's are ``(-pi, pi)``: any angle is taken, by whole turns)."""
+        """The joints' limits, ``float64 (d, 2)``: ``(lower, upper)`` per joint; a continuous
+        joint's are ``(-pi, pi)`` (:meth:`plan` takes any angle of it, by whole turns;
+        :meth:`is_valid` only those within)."""
         limits: np.ndarray = self._world.limits()
         return limits
 
     def is_valid(self, states: Any) -> Any:
         """Whether each state is free: a ``bool (n,)`` array for ``(n, d)`` states, a ``bool``
-        for one ``(d,)`` state. A state that is not finite is not free."""
+        for one ``(d,)`` state. A state that is not finite, or beyond the joints' limits
+        (:attr:`limits`), is not free."""
         array = np.asarray(states, dtype=np.float64)
         if array.ndim == 1:
             return bool(self._world.are_free(array[None, :])[0])
@@ -77,8 +79,13 @@ class RobotWorld:
 
     def motion_is_valid(self, a: Sequence[float], b: Sequence[float]) -> bool:
         """Whether the straight motion in joint space from ``a`` to ``b`` is free (continuous
-        joints turning the short way), proven as the planners prove theirs."""
-        return bool(self._world.motion_is_free(_args.point(a, "motion's start"), _args.point(b, "motion's end")))
+        joints turning the short way), proven as the planners prove theirs; ``False`` when an end is
+        beyond the joints' limits."""
+        ends = [_args.point(a, "motion's start"), _args.point(b, "motion's end")]
+        for end in ends:
+            if len(end) != len(self.joint_names):
+                raise DocumentError(f"a motion's end has {len(end)} values; the group has {len(self.joint_names)} joints")
+        return bool(self._world.motion_is_free(*ends))
 
     def world(self) -> Dict[str, Any]:
         """The robot world of a problem document (for :func:`trailmark.solve`)."""
@@ -98,7 +105,7 @@ class RobotWorld:
         problem document gives them (``max_iterations``, ``time_limit_s``, ``range``,
         ``simplify``, ...); the path as ``(n, d)`` joint values. Ctrl-C stops the planner."""
         spec = _args.planner(planner, settings)
-        found = self._world.plan_json(_args.point(start, "start"), _args.point(goal, "goal"), spec, _args.whole(seed, "seed"))
+        found = self._world.plan_json(_args.point(start, "start"), _args.point(goal, "goal"), spec, _args.seed(seed))
         return _plan(found)
 
     def __repr__(self) -> str:

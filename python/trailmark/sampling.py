@@ -61,7 +61,7 @@ def plan_in_box(
         "start": starts,
         "goal": _args.point(goal, "goal"),
         "planner": _args.planner_spec(planner, settings),
-        "seed": _args.whole(seed, "seed"),
+        "seed": _args.seed(seed),
     }
     text = _args.to_json(document)
     if is_valid is None:

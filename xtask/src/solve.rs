@@ -59,6 +59,11 @@ fn time_solves(path: &Path, repeat: usize, prepared: bool) -> Result<String, Str
     let mut times = Vec::with_capacity(repeat);
     let mut last = None;
     if let (true, WorldSpec::Robot(world)) = (prepared, &problem.world) {
+        if problem.request.is_some() {
+            return Err(
+                "--prepared takes a robot world's start and goal as joint vectors, not a request".into()
+            );
+        }
         let robot = RobotWorld::load(world, &base).map_err(|e| e.to_string())?;
         let seed = problem.seed.unwrap_or(0);
         for _ in 0..repeat {

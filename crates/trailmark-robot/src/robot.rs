@@ -46,6 +46,19 @@ pub struct Group {
     pub wraps: Vec<bool>,
 }
 
+impl Group {
+    /// Whether `q` has a finite value per group joint, each within the joint's limits (`[-π,
+    /// π]` for a continuous joint, within rounding: a motion then turns it within ±2π, the
+    /// extension its bounds allow for; the pair floors, taken over a whole turn, hold for
+    /// every angle).
+    pub fn within_limits(&self, q: &[f64]) -> bool {
+        q.len() == self.bounds.len()
+            && q.iter().zip(&self.bounds).zip(&self.wraps).all(|((v, (low, high)), &wraps)| {
+                if wraps { v.abs() <= std::f64::consts::PI * (1.0 + 1e-12) } else { low <= v && v <= high }
+            })
+    }
+}
+
 impl Robot {
     /// Checks `urdf` as one tree: link and joint names unique, every joint between two known
     /// links, every link but one (the root) the child of exactly one joint, no cycle, and every

@@ -93,6 +93,23 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// Eight different states a batch answer as each does alone: within the limits or beyond,
+    /// free or in the cloud, in batches of any length.
+    #[test]
+    fn states_in_batches_answer_as_alone(states in proptest::collection::vec((-4.0..4.0f64, -3.5..3.5f64), 0..30)) {
+        let (cloud, _, _) = checkers();
+        let batch = BatchChecker::new(cloud);
+        let states: Vec<[f64; 2]> = states.into_iter().map(|(a, b)| [a, b]).collect();
+        let mut free = Vec::new();
+        batch.are_free(states.iter().map(|q| q.as_slice()), &mut free);
+        let alone: Vec<bool> = states.iter().map(|q| batch.is_free(q)).collect();
+        prop_assert_eq!(free, alone);
+    }
+}
+
 #[test]
 fn rrt_connect_plans_around_a_cloud() {
     let (cloud, _, exact) = checkers();

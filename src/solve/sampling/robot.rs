@@ -11,9 +11,9 @@ use trailmark_sample::{Joints, KdNearest, Validity};
 use super::SamplingRun;
 use crate::solve::error::{DocumentError, SolveError};
 use crate::solve::planner::{PlannerSpec, SamplingSpec};
-use crate::solve::problem::{ArmCheckerKind, ProblemSpec, RobotWorldSpec};
+use crate::solve::problem::{ProblemSpec, RobotWorldSpec};
 use crate::solve::result::SolveResult;
-use crate::solve::world::robot::{RobotWorld, robot_world};
+use crate::solve::world::robot::{Checker, RobotWorld, robot_world};
 
 /// Corner-cutting passes after shortcutting when `simplify` is asked for: on the Panda's
 /// problems two take most of what more would (docs/arms.md).
@@ -126,9 +126,9 @@ impl RobotWorld {
         let (start, goal) = (SVector::from_column_slice(start), SVector::from_column_slice(goal));
         // One planner for both checkers: a motion check takes microseconds, its call through
         // `dyn` nanoseconds.
-        let checker: &dyn Validity<Joints<N>> = match self.kind {
-            ArmCheckerKind::Batch => &self.checker,
-            ArmCheckerKind::Scalar => self.checker(),
+        let checker: &dyn Validity<Joints<N>> = match &self.checker {
+            Checker::Batch(batch) => batch,
+            Checker::Scalar(checker) => checker,
         };
         let run =
             SamplingRun { planner, spec, checker: &checker, seed, smoothing_passes: SMOOTHING_PASSES, stop };

@@ -132,6 +132,49 @@ impl BatchChecker {
         self.run(&lanes, &[0.0; LANES], &scale, u8::MAX, 1) == 0 && !self.checker.meets_cloud(q, &[])
     }
 
+    /// Whether each of `states` is free, as [`is_free`](Self::is_free) answers for it, eight
+    /// different states a batch: `free[i]` for `states[i]`.
+    pub fn are_free<'a>(&self, states: impl IntoIterator<Item = &'a [f64]>, free: &mut Vec<bool>) {
+        free.clear();
+        let scale = vec![0.0; self.program.frames.len() + self.program.pairs.len()];
+        let dims = self.checker.group.bounds.len();
+        let mut lanes = vec![[0.0f32; LANES]; dims];
+        let mut batch: Vec<&[f64]> = Vec::with_capacity(LANES);
+        let mut states = states.into_iter().peekable();
+        while states.peek().is_some() {
+            let first = free.len();
+            batch.clear();
+            // The states of the batch: those the lanes can test (the others are not free).
+            for q in states.by_ref().take(LANES) {
+                let testable = !self.program.blocked && self.within_limits(q);
+                free.push(testable);
+                if testable {
+                    batch.push(q);
+                }
+            }
+            if batch.is_empty() {
+                continue;
+            }
+            for l in 0..LANES {
+                // Lanes beyond the batch repeat its first state; no lane stops the others.
+                let q = batch.get(l).unwrap_or(&batch[0]);
+                for (lane, &v) in lanes.iter_mut().zip(q.iter()) {
+                    lane[l] = v as f32;
+                }
+            }
+            let hits = self.run(&lanes, &[0.0; LANES], &scale, 0, batch.len());
+            let mut tested = (0..batch.len()).map(|l| hits & (1 << l) == 0);
+            // The testable states in order take the lanes' answers, then the clouds'.
+            let mut k = 0;
+            for answer in free[first..].iter_mut() {
+                if *answer {
+                    *answer = tested.next().unwrap_or(false) && !self.checker.meets_cloud(batch[k], &[]);
+                    k += 1;
+                }
+            }
+        }
+    }
+
     /// Whether the straight motion from `a` to `b` is free, by the rule the [`ArmChecker`]
     /// follows ([`checker`](crate::checker)), eight states a batch.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
@@ -192,16 +235,9 @@ impl BatchChecker {
         free
     }
 
-    /// Whether `q` has a finite value per group joint, each within the joint's limits (`[-π,
-    /// π]` for a continuous joint, within rounding: a motion then turns it within ±2π, the
-    /// extension its bounds allow for; the pair floors, taken over a whole turn, hold for
-    /// every angle).
+    /// Whether `q` is within the group's limits ([`Group::within_limits`](crate::Group::within_limits)).
     fn within_limits(&self, q: &[f64]) -> bool {
-        let group = &self.checker.group;
-        q.len() == group.bounds.len()
-            && q.iter().zip(&group.bounds).zip(&group.wraps).all(|((v, (low, high)), &wraps)| {
-                if wraps { v.abs() <= std::f64::consts::PI * (1.0 + 1e-12) } else { low <= v && v <= high }
-            })
+        self.checker.group.within_limits(q)
     }
 
     /// The kernel on `q` (`states` of its lanes holding states of their own).

@@ -97,7 +97,9 @@ fn iterations_reuse_effort_on_an_open_map() {
         })
         .sum();
     assert!(found.stats.expansions < separate, "{} vs {}", found.stats.expansions, separate);
-    assert_eq!(found.cost(), optimal.cost());
+    // The same least cost, to rounding (A* does not reopen a node for a rounding's saving).
+    let (cost, least) = (found.cost().unwrap(), optimal.cost().unwrap());
+    assert!((cost - least).abs() <= 1e-9 * least, "{cost} vs {least}");
 }
 
 /// A seeded 80 x 80 map, 30% blocked, and two far passable cells: more than one iteration of

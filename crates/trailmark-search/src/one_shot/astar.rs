@@ -21,12 +21,18 @@ use crate::one_shot::key::FKey;
 use crate::one_shot::workspace::{Search, ensure};
 use crate::stats::SearchStats;
 
+/// The relative saving below which a closed node is not reopened: rounding, not a cheaper path
+/// (a path of a million edges sums to within about 1e-10 of its cost in any order).
+const REOPEN_TOLERANCE: f64 = 1e-9;
+
 /// A* from `start` to `goal`: a least-cost path when `heuristic` is admissible (never more than
 /// the least cost to the goal). A node whose heuristic is `+inf` is treated as a dead end.
 ///
 /// Closed nodes are reopened when a cheaper path to them appears, so an admissible but
 /// inconsistent heuristic still gives a least-cost path; with a consistent heuristic (such as
-/// [`GridGraph::heuristic`](https://docs.rs/trailmark-graph)) nothing is ever reopened.
+/// [`GridGraph::heuristic`](https://docs.rs/trailmark-graph)) nothing is ever reopened. A
+/// saving below a relative 1e-9 is rounding (one length summed in two orders) and reopens
+/// nothing: the path's cost is then within that of the least.
 ///
 /// Costs beyond the largest `f64`: a path found is exact (it costs less than any path whose cost
 /// overflowed); when none is found but the search met a path whose cost overflowed, the answer
@@ -294,7 +300,10 @@ impl<I> Search<I> {
                 let gv = gu + cost;
                 let st = nodes.stamp[v];
                 let seen = st >= open;
-                if seen && (gv >= nodes.g[v] || (st == closed && !reopen)) {
+                // A closed node is reopened only for a real saving: the same length summed in
+                // another order can come out smaller by rounding, which saves nothing.
+                let rounding = st == closed && gv >= nodes.g[v] * (1.0 - REOPEN_TOLERANCE);
+                if seen && (gv >= nodes.g[v] || (st == closed && !reopen) || rounding) {
                     return;
                 }
                 if gv == f64::INFINITY {

@@ -14,7 +14,7 @@ use trailmark::core::read::MAX_DOCUMENT_BYTES;
 use trailmark::solve::ProblemSpec;
 
 use crate::errors::{class_of, error};
-use crate::interrupt::receive;
+use crate::interrupt::{receive, run_stoppable};
 
 /// The most threads `solve_many` starts, whatever it is asked.
 const MAX_WORKERS: usize = 256;
@@ -60,20 +60,7 @@ pub fn parse(text: &str) -> Result<ProblemSpec, (&'static str, String)> {
 /// Solves one document on a planning thread (`pool`); Ctrl-C stops the planner and the wait.
 #[pyfunction]
 pub fn solve_json(py: Python<'_>, document: String, base_dir: PathBuf) -> PyResult<String> {
-    let (tx, rx) = mpsc::channel();
-    let stop = Arc::new(AtomicBool::new(false));
-    let stopped = Arc::clone(&stop);
-    crate::pool::run(move || {
-        let _ = tx.send(solve_text(&document, &base_dir, &stopped));
-    })
-    .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a planning thread: {e}")))?;
-    let mut outcome = None;
-    receive(py, rx, 1, &stop, |o| outcome = Some(o))?;
-    match outcome {
-        Some(Ok(json)) => Ok(json),
-        Some(Err((class, message))) => Err(error(py, class, message)),
-        None => Err(pyo3::exceptions::PyRuntimeError::new_err("no result")),
-    }
+    run_stoppable(py, move |stop| solve_text(&document, &base_dir, stop))
 }
 
 /// A document to solve: its place in the list, its text and the folder its paths are

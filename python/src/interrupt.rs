@@ -4,10 +4,13 @@
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::{Receiver, RecvTimeoutError, TryRecvError};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, TryRecvError};
 use std::time::{Duration, Instant};
 
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
+
+use crate::errors::error;
 
 /// How often the waiting thread looks for a signal.
 const POLL: Duration = Duration::from_millis(20);
@@ -65,4 +68,27 @@ pub fn receive<T: Send>(
         }
     }
     Ok(())
+}
+
+/// Runs `job` on a planning thread (`pool`) with a stop flag that Ctrl-C sets, and waits for its
+/// answer with signals honoured; an error `(class, message)` is raised as that class of
+/// `trailmark.errors`.
+pub fn run_stoppable<T: Send + 'static>(
+    py: Python<'_>,
+    job: impl FnOnce(&Arc<AtomicBool>) -> Result<T, (&'static str, String)> + Send + 'static,
+) -> PyResult<T> {
+    let (tx, rx) = mpsc::channel();
+    let stop = Arc::new(AtomicBool::new(false));
+    let stopped = Arc::clone(&stop);
+    crate::pool::run(move || {
+        let _ = tx.send(job(&stopped));
+    })
+    .map_err(|e| PyRuntimeError::new_err(format!("cannot start a planning thread: {e}")))?;
+    let mut outcome = None;
+    receive(py, rx, 1, &stop, |o| outcome = Some(o))?;
+    match outcome {
+        Some(Ok(answer)) => Ok(answer),
+        Some(Err((class, message))) => Err(error(py, class, message)),
+        None => Err(PyRuntimeError::new_err("no result")),
+    }
 }

@@ -3,17 +3,15 @@
 
 use std::path::PathBuf;
 use std::sync::Arc;
-use std::sync::atomic::AtomicBool;
-use std::sync::mpsc;
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
-use trailmark::solve::{RobotWorldSpec, SolveResult};
+use trailmark::solve::RobotWorldSpec;
 
 use crate::documents::planner_spec;
 use crate::errors::{class_of, error, solve_error};
-use crate::interrupt::receive;
+use crate::interrupt::run_stoppable;
 use crate::outcome::{Kind, Parts, parts};
 
 /// A robot world made ready: the checker of its group among the scene.
@@ -94,23 +92,13 @@ impl RobotWorld {
         seed: u64,
     ) -> PyResult<Parts> {
         let spec = planner_spec(py, planner)?;
-        let (tx, rx) = mpsc::channel();
-        let stop = Arc::new(AtomicBool::new(false));
-        let (world, stopped) = (Arc::clone(&self.world), Arc::clone(&stop));
-        crate::pool::run(move || {
-            let planned = world.plan(&spec, &start, &goal, seed, Some(stopped));
-            let _ = tx.send(planned.map_err(|e| (class_of(&e), e.to_string())));
-        })
-        .map_err(|e| {
-            pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a planning thread: {e}"))
+        let world = Arc::clone(&self.world);
+        let found = run_stoppable(py, move |stop| {
+            world
+                .plan(&spec, &start, &goal, seed, Some(Arc::clone(stop)))
+                .map_err(|e| (class_of(&e), e.to_string()))
         })?;
-        let mut outcome: Option<Result<SolveResult, (&'static str, String)>> = None;
-        receive(py, rx, 1, &stop, |o| outcome = Some(o))?;
-        match outcome {
-            Some(Ok(found)) => parts(py, &found, Kind::Points(self.world.checker().group().names.len())),
-            Some(Err((class, message))) => Err(error(py, class, message)),
-            None => Err(pyo3::exceptions::PyRuntimeError::new_err("no result")),
-        }
+        parts(py, &found, Kind::Points(self.world.checker().group().names.len()))
     }
 
     fn __repr__(&self) -> String {

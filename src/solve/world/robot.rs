@@ -93,11 +93,11 @@ impl RobotWorld {
     /// plans with; `false` for a `q` of another length, not finite, or beyond the joints'
     /// limits (a continuous joint's are `[-π, π]`).
     pub fn is_free(&self, q: &[f64]) -> bool {
-        self.checker().group().within_limits(q)
-            && match &self.checker {
-                Checker::Batch(batch) => batch.is_free(q),
-                Checker::Scalar(checker) => checker.is_free(q),
-            }
+        match &self.checker {
+            // The batch checker refuses states beyond the limits itself.
+            Checker::Batch(batch) => batch.is_free(q),
+            Checker::Scalar(checker) => checker.group().within_limits(q) && checker.is_free(q),
+        }
     }
 
     /// [`RobotWorld::is_free`] for each of `states`, into `free` (the batch checker tests
@@ -116,13 +116,13 @@ impl RobotWorld {
     /// turning the short way), proven as the planners prove theirs, by the checker this world
     /// plans with; `false` when an end is not a state within the limits.
     pub fn motion_is_free(&self, a: &[f64], b: &[f64]) -> bool {
-        let group = self.checker().group();
-        group.within_limits(a)
-            && group.within_limits(b)
-            && match &self.checker {
-                Checker::Batch(batch) => batch.motion_is_free(a, b),
-                Checker::Scalar(checker) => checker.motion_is_free(a, b),
+        match &self.checker {
+            Checker::Batch(batch) => batch.motion_is_free(a, b),
+            Checker::Scalar(checker) => {
+                let group = checker.group();
+                group.within_limits(a) && group.within_limits(b) && checker.motion_is_free(a, b)
             }
+        }
     }
 
     /// `start` and `goal` (a value per group joint, in the group's order) checked as a request's

@@ -1,5 +1,5 @@
-//! Sampling planners through problem documents: `rrt`, `rrt_connect`, `rrt_star`, `prm` and
-//! `prm_star` in R² and
+//! Sampling planners through problem documents: `rrt`, `rrt_connect`, `rrt_star`,
+//! `informed_rrt_star`, `bit_star`, `prm` and `prm_star` in R² and
 //! Dubins over a polygon world, and in Rⁿ over a box world (robot arms: `solve_robot.rs`).
 //! Paths start and end where asked, every leg is re-checked (exactly and every 1e-3 against
 //! plain distances), no path beats the visibility graph's optimum, the same seed gives the same document (timings aside), smoothed
@@ -54,7 +54,7 @@ fn sampled_clear(world: &PolygonWorld, a: Point, b: Point) -> bool {
 #[test]
 fn r2_planners_give_valid_paths_no_shorter_than_the_optimum() {
     let best = optimum("[1, 1]", "[9, 1]");
-    for planner in ["rrt", "rrt_connect", "rrt_star", "prm", "prm_star"] {
+    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
         for simplify in [false, true] {
             for seed in 0..4 {
                 let problem = document(&format!(
@@ -91,7 +91,7 @@ fn r2_planners_give_valid_paths_no_shorter_than_the_optimum() {
 
 #[test]
 fn the_same_seed_gives_the_same_document() {
-    for planner in ["rrt", "rrt_connect", "rrt_star", "prm", "prm_star"] {
+    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
         let run = |seed: u64| {
             let problem = document(&format!(
                 r#""seed": {seed}, "start": [1, 1], "goal": [9, 1],
@@ -112,7 +112,7 @@ fn samplers_give_valid_reproducible_paths() {
         r#"{"name": "bridge", "std_dev": 0.5, "share": 1.0, "attempts": 10}"#,
         r#"{"name": "gaussian", "std_dev": 0.5, "share": 0.25}"#,
     ];
-    for planner in ["rrt", "rrt_connect", "rrt_star", "prm", "prm_star"] {
+    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
         let mut checks = Vec::new();
         for sampler in samplers {
             let problem = document(&format!(
@@ -144,6 +144,8 @@ fn car_paths_chain_shortest_curves_of_the_turning_radius() {
             ("rrt", trees),
             ("rrt_connect", trees),
             ("rrt_star", r#""range": 2.0, "max_iterations": 2000"#),
+            ("informed_rrt_star", r#""range": 2.0, "max_iterations": 2000"#),
+            ("bit_star", r#""max_iterations": 1000"#),
             // A roadmap joins each state to its nearest without a range.
             ("prm", r#""max_iterations": 2000"#),
             ("prm_star", r#""max_iterations": 1000"#),
@@ -331,6 +333,9 @@ fn bad_sampling_documents_give_typed_errors() {
         (format!(r#"{ends}, "planner": {{"name": "prm", "range": 1}}"#), |e| {
             matches!(e, SolveError::Document(DocumentError::NotForPlanner { field: "range", planner: "prm" }))
         }),
+        (format!(r#"{ends}, "planner": {{"name": "bit_star", "range": 1}}"#), |e| {
+            matches!(e, SolveError::Document(DocumentError::NotForPlanner { field: "range", planner: "bit_star" }))
+        }),
         (format!(r#"{ends}, "planner": {{"name": "prm_star", "goal_bias": 0.1}}"#), |e| {
             matches!(e, SolveError::Document(DocumentError::NotForPlanner { field: "goal_bias", planner: "prm_star" }))
         }),
@@ -451,7 +456,7 @@ fn box_document(rest: &str) -> ProblemSpec {
 
 #[test]
 fn box_worlds_in_rn_for_every_sampling_planner() {
-    for planner in ["rrt", "rrt_connect", "rrt_star", "prm", "prm_star"] {
+    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
         let problem = box_document(&format!(
             r#""space": "rn", "seed": 2, "start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1],
                "planner": {{"name": "{planner}", "max_iterations": 3000, "simplify": true}}"#

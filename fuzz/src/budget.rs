@@ -130,6 +130,8 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
         PlannerSpec::Rrt(spec)
         | PlannerSpec::RrtConnect(spec)
         | PlannerSpec::RrtStar(spec)
+        | PlannerSpec::InformedRrtStar(spec)
+        | PlannerSpec::BitStar(spec)
         | PlannerSpec::Prm(spec)
         | PlannerSpec::PrmStar(spec) => {
             let iterations_ok = match spec.max_iterations {
@@ -153,7 +155,11 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
             }
             // RRT* and PRM* over car curves are the slowest: fewer iterations.
             if matches!(problem.space, Some(SpaceKind::Dubins | SpaceKind::ReedsShepp))
-                && matches!(problem.planner, PlannerSpec::RrtStar(_) | PlannerSpec::PrmStar(_))
+                && matches!(problem.planner, PlannerSpec::RrtStar(_)
+                        | PlannerSpec::InformedRrtStar(_)
+                        | PlannerSpec::BitStar(_)
+                        | PlannerSpec::PrmStar(_)
+                )
                 && !(spec.max_iterations.is_some_and(|n| n <= MAX_SAMPLING_ITERATIONS / 3)
                     || time_ok(spec.time_limit_s))
             {

@@ -334,6 +334,8 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         PlannerSpec::Rrt(_)
         | PlannerSpec::RrtConnect(_)
         | PlannerSpec::RrtStar(_)
+        | PlannerSpec::InformedRrtStar(_)
+        | PlannerSpec::BitStar(_)
         | PlannerSpec::Prm(_)
         | PlannerSpec::PrmStar(_) => {
             panic!("a sampling planner solved a grid problem")

@@ -29,7 +29,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 EXPECTED = (trailmark.TrailmarkError, TypeError, ValueError, OverflowError)
 GRID_PLANNERS = ["astar", "dijkstra", "bfs", "dfs", "jps", "jps_plus", "theta_star", "weighted_astar",
                  "lpa_star", "dstar_lite", "ara_star", "ad_star", "rrt", "hybrid_astar", "nonsense"]
-SAMPLING_PLANNERS = ["rrt", "rrt_connect", "rrt_star", "prm", "prm_star", "astar", "nonsense"]
+SAMPLING_PLANNERS = ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star", "astar", "nonsense"]
 REPLANNERS = ["dstar_lite", "lpa_star", "mpgaa_star", "adaptive_astar", "ad_star", "astar", "bfs"]
 _ARM = []
 
@@ -90,10 +90,10 @@ def settings(fdp, planner):
                 value = {"name": ["uniform", "bridge", "gaussian", "x"][fdp.ConsumeIntInRange(0, 3)],
                          "std_dev": number(fdp)}
             out[name] = value
-    elif planner in ("rrt", "rrt_connect", "rrt_star", "prm", "prm_star"):
+    elif planner in ("rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"):
         if fdp.ConsumeBool():
             out["simplify"] = fdp.ConsumeBool()
-        if planner.startswith("rrt") and fdp.ConsumeBool():
+        if (planner.startswith("rrt") or planner == "informed_rrt_star") and fdp.ConsumeBool():
             out["range"] = 0.05 + 5.0 * fdp.ConsumeProbability()
             out["goal_bias"] = fdp.ConsumeProbability()
         if fdp.ConsumeIntInRange(0, 3) == 0:

@@ -37,13 +37,13 @@ def path_is_free(path, resolution=1e-3):
     return True
 
 
-@pytest.mark.parametrize("planner", ["rrt", "rrt_connect", "rrt_star", "prm", "prm_star"])
+@pytest.mark.parametrize("planner", ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"])
 @pytest.mark.parametrize("batch", [False, True])
 def test_plans_around_a_wall_the_world_does_not_know(planner, batch):
     check = grown_wall if batch else grown_wall_one
     # RRT* rewires through many motions, PRM* joins each sample to tens: fewer iterations when
     # each state is a call.
-    iterations = {"rrt_star": 400, "prm_star": 300}.get(planner, 2000) if not batch else 2000
+    iterations = {"rrt_star": 400, "informed_rrt_star": 400, "bit_star": 400, "prm_star": 300}.get(planner, 2000) if not batch else 2000
     plan = trailmark.plan_in_box(BOUNDS, (1, 1), (9, 1), check, planner=planner, batch=batch,
                                  resolution=2e-3, max_iterations=iterations)
     assert plan.solved, plan.stats

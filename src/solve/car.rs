@@ -15,9 +15,9 @@ use trailmark_core::world::PolygonWorld;
 use trailmark_map::{Costmap, CostmapSvg, LETHAL, TravelCost};
 
 use super::error::{DocumentError, SolveError};
-use super::planner::HybridSpec;
 use super::problem::{GridSpec, ProblemSpec, RosMapSpec, WorldSpec};
 use super::result::{CarRecord, ResultStats, SolveResult, Status, Waypoint};
+use super::settings::HybridSpec;
 use super::world::grid::load_grid;
 use super::world::ros_map::{DEFAULT_COST_FACTOR, DEFAULT_ROBOT_RADIUS, ros_costmap};
 

@@ -33,11 +33,12 @@ mod replan;
 mod result;
 mod sampling;
 mod search;
+mod settings;
 mod stop;
 mod world;
 
 pub use error::{DocumentError, MAX_ITERATIONS, MAX_TIME_LIMIT_S, SolveError};
-pub use planner::{AnytimeSpec, HybridSpec, PlannerSpec, SamplerSpec, SamplingSpec};
+pub use planner::PlannerSpec;
 pub use problem::{
     ArmCheckerKind, BoxesSpec, GraphKind, GridSpec, ProblemSpec, RobotSpec, RobotWorldSpec, RosMapSpec,
     SamplerKind, SpaceKind, WorldSpec,
@@ -52,6 +53,7 @@ pub use sampling::robot::SMOOTHING_PASSES;
 pub use sampling::{DEFAULT_ITERATIONS, SHORTCUT_ATTEMPTS};
 pub use search::grid::{PreparedGrid, search_grid};
 pub use search::roadmap::DEFAULT_SAMPLES;
+pub use settings::{AnytimeSpec, HybridSpec, SamplerSpec, SamplingSpec};
 pub use world::boxes::MAX_BOX_DIMENSION;
 pub use world::grid::{check_grid_end, grid_graph, load_grid};
 pub use world::robot::{MAX_GROUP_JOINTS, RobotWorld};

@@ -103,6 +103,10 @@ registry! {
     RrtConnect => "rrt_connect", Sampling, replans: false;
     /// RRT*.
     RrtStar => "rrt_star", Sampling, replans: false;
+    /// Informed RRT*.
+    InformedRrtStar => "informed_rrt_star", Sampling, replans: false;
+    /// BIT*.
+    BitStar => "bit_star", Sampling, replans: false;
     /// PRM.
     Prm => "prm", Sampling, replans: false;
     /// PRM*.

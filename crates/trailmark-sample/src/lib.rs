@@ -1,4 +1,5 @@
-//! Sampling-based planners for continuous spaces: RRT, RRT-Connect, RRT* and PRM over any
+//! Sampling-based planners for continuous spaces: RRT, RRT-Connect, RRT*, Informed RRT*, BIT*
+//! and PRM over any
 //! configuration space of `trailmark-space` (R², Rⁿ, SE(2), Dubins, Reeds-Shepp, your own), with
 //! exact collision checks and seeded, reproducible runs.
 //!
@@ -10,8 +11,10 @@
 //!   shared with the anytime searches), [`plan`] (exact, approximate or no solution, why the
 //!   run stopped, statistics);
 //! - [`planner`]: the one interface of every planner, so they swap at run time; [`rrt`](mod@rrt),
-//!   [`rrt_connect`](mod@rrt_connect), [`rrt_star`](mod@rrt_star) and [`prm`] (PRM and PRM*,
-//!   multi-query) implement it;
+//!   [`rrt_connect`](mod@rrt_connect), [`rrt_star`](mod@rrt_star),
+//!   [`informed_rrt_star`](mod@informed_rrt_star) and [`bit_star`](mod@bit_star) (the informed
+//!   planners: once solved, they draw only states a cheaper path can pass through) and [`prm`]
+//!   (PRM and PRM*, multi-query) implement it;
 //! - [`PolygonPrm`]: the same PRM built alone over a polygon world kept beside it: obstacles
 //!   added and removed with the changed edges reported for D* Lite, saved and loaded, Dubins and
 //!   Reeds-Shepp roadmaps for cars; its queries go through `trailmark-graph`'s `Roadmap`;
@@ -43,12 +46,14 @@
 
 #![deny(missing_docs)]
 
-// The families: tree planners, roadmap planners, the worlds, benchmarking; and what every
+// The families: tree planners, batch planners, roadmap planners, the worlds, benchmarking; and what every
 // planner shares at the top (problem, plan, the Planner trait, a run, paths). One documented
 // path per item: the root, or for the three families that read better under their names,
 // `arm::`, `benchmark::` and `paths::`. The other module paths stay public, hidden, for one
 // release.
+mod batch;
 pub mod benchmark;
+mod informed;
 pub mod paths;
 #[doc(hidden)]
 pub mod plan;
@@ -60,18 +65,25 @@ mod roadmap;
 mod run;
 #[doc(hidden)]
 pub mod simplify;
+#[cfg(test)]
+mod test_worlds;
 mod tree;
 mod worlds;
 
 pub use worlds::arm;
 #[doc(hidden)]
-pub use {roadmap::polygon, roadmap::prm, tree::rrt, tree::rrt_connect, tree::rrt_star, worlds::boxes};
+pub use {
+    batch::bit_star, roadmap::polygon, roadmap::prm, tree::informed_rrt_star, tree::rrt, tree::rrt_connect,
+    tree::rrt_star, worlds::boxes,
+};
 
 // The configuration-space vocabulary, at the paths it had when it lived here.
 #[doc(hidden)]
 pub use trailmark_space::{nearest, sampler, space, validity};
 
+pub use bit_star::{BitOptions, BitStar, MAX_BATCH_SIZE};
 pub use boxes::BoxWorld;
+pub use informed_rrt_star::{InformedGrowth, InformedRrtStar};
 /// The states of [`Rn`]: nalgebra's fixed-size column vectors (nalgebra 0.35).
 pub use nalgebra::SVector;
 pub use plan::{Improvement, Plan, PlanError, PlanStats, Rejection, Solution};

@@ -61,6 +61,23 @@ pub trait Goal<S: StateSpace> {
         None
     }
 
+    /// A lower bound on the cost of any path from `state` to a state that satisfies the goal (0,
+    /// the default, is always one). Informed planners (Informed RRT*, BIT*) draw only states
+    /// whose distance from a start plus this is below the best cost found: the tighter the
+    /// bound, the fewer states they spend on. A [`GoalState`] answers its distance less its
+    /// tolerance.
+    fn cost_to_go(&self, space: &S, state: &S::State) -> f64 {
+        let _ = (space, state);
+        0.0
+    }
+
+    /// The goal as one state and a tolerance, when it is one ([`GoalState`]): informed planners
+    /// then draw directly from the states a cheaper path could pass through
+    /// ([`StateSpace::sample_informed`]); `None` (the default) makes them draw and refuse.
+    fn focus(&self) -> Option<(&S::State, f64)> {
+        None
+    }
+
     /// Refuses a goal that cannot be planned for (a goal state out of bounds or in collision);
     /// asked once at the start of every run.
     fn check(&self, space: &S, validity: &dyn Validity<S>) -> Result<(), PlanError> {
@@ -101,6 +118,14 @@ impl<S: StateSpace<State = T>, T: Clone> Goal<S> for GoalState<T> {
 
     fn sample(&self, _: &S, _: &mut ChaCha8Rng) -> Option<T> {
         Some(self.state.clone())
+    }
+
+    fn cost_to_go(&self, space: &S, state: &T) -> f64 {
+        (space.distance(state, &self.state) - self.tolerance).max(0.0)
+    }
+
+    fn focus(&self) -> Option<(&T, f64)> {
+        Some((&self.state, self.tolerance))
     }
 
     fn check(&self, space: &S, validity: &dyn Validity<S>) -> Result<(), PlanError> {

@@ -7,9 +7,9 @@ use trailmark_sample::{KdNearest, Rn, Validity};
 
 use super::SamplingRun;
 use crate::solve::error::{DocumentError, SolveError};
-use crate::solve::planner::SamplingSpec;
 use crate::solve::problem::{BoxesSpec, ProblemSpec, SpaceKind, WorldSpec};
 use crate::solve::result::SolveResult;
+use crate::solve::settings::SamplingSpec;
 use crate::solve::world::boxes::{box_ends, box_world, by_dimension};
 
 /// Solves a sampling-planner problem over a box world, in `"space": "rn"`.

@@ -23,11 +23,12 @@ use trailmark_sample::{
 };
 
 use crate::solve::error::{DocumentError, SolveError};
-use crate::solve::planner::{PlannerSpec, SamplerSpec, SamplingSpec};
+use crate::solve::planner::PlannerSpec;
 use crate::solve::problem::{ProblemSpec, SpaceKind};
 use crate::solve::result::{
     Coordinates, ImprovementRecord, ResultStats, SamplingStats, SmoothedRecord, SolveResult, Status, Waypoint,
 };
+use crate::solve::settings::{SamplerSpec, SamplingSpec};
 use crate::solve::stop::stoppable;
 
 /// The iterations of a sampling planner given neither `max_iterations` nor `time_limit_s`.

@@ -10,9 +10,10 @@ use trailmark_sample::{Joints, KdNearest, Validity};
 
 use super::SamplingRun;
 use crate::solve::error::{DocumentError, SolveError};
-use crate::solve::planner::{PlannerSpec, SamplingSpec};
+use crate::solve::planner::PlannerSpec;
 use crate::solve::problem::{ProblemSpec, RobotWorldSpec};
 use crate::solve::result::SolveResult;
+use crate::solve::settings::SamplingSpec;
 use crate::solve::world::robot::{Checker, RobotWorld, robot_world};
 
 /// Corner-cutting passes after shortcutting when `simplify` is asked for: on the Panda's

@@ -1,8 +1,9 @@
-//! The tree planners: RRT, RRT-Connect and RRT*, each in its file (how it grows its trees), and
+//! The tree planners: RRT, RRT-Connect, RRT* and Informed RRT*, each in its file (how it grows its trees), and
 //! what they share: the tree of valid motions they grow toward targets at most a range at a
 //! time (here), their settings (`options.rs`), and the planner every one of them is
 //! (`planner.rs`: `TreePlanner`, its builders and its `Planner` impl).
 
+pub mod informed_rrt_star;
 pub mod options;
 pub mod planner;
 pub mod rrt;
@@ -134,6 +135,26 @@ impl<S: StateSpace, N: NearestNeighbors<S>> Tree<S, N> {
     pub(crate) fn insert(&mut self, space: &S, state: S::State, parent: u32) -> u32 {
         self.parents.push(parent);
         self.nearest.insert(space, state)
+    }
+
+    /// Keeps the states `id` with `keep[id]`, whose parents must be kept too, renumbered in
+    /// their order into `empty` (a structure with no states); the new id of every state kept,
+    /// indexed by its old one (the others' entries are meaningless).
+    pub(crate) fn retain(&mut self, space: &S, keep: &[bool], empty: N) -> Vec<u32> {
+        let mut renumbered = vec![ROOT; keep.len()];
+        let mut nearest = empty;
+        for (old, _) in keep.iter().enumerate().filter(|k| *k.1) {
+            renumbered[old] = nearest.insert(space, self.state(old as u32).clone());
+        }
+        self.parents = (0..keep.len())
+            .filter(|&old| keep[old])
+            .map(|old| match self.parents[old] {
+                ROOT => ROOT,
+                p => renumbered[p as usize],
+            })
+            .collect();
+        self.nearest = nearest;
+        renumbered
     }
 
     /// The parent of state `id` ([`ROOT`] for a root).

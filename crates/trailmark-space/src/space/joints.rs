@@ -8,7 +8,7 @@ use nalgebra::SVector;
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 
-use super::{SpaceError, StateSpace, UnitCube, finite, gaussian, separation};
+use super::{SpaceError, StateSpace, UnitCube, ellipsoid, finite, gaussian, separation};
 
 /// `N` joints: each either bounded (`low[i] <= x[i] <= high[i]`, a revolute or prismatic joint)
 /// or an angle that wraps (a continuous joint, kept in `[-π, π]`: OMPL's `SO2StateSpace`). The
@@ -157,6 +157,26 @@ impl<const N: usize> StateSpace for Joints<N> {
             s[i] = if t == 1.0 { b[i] } else { wrap(s[i]) };
         }
         s
+    }
+
+    fn sample_informed(
+        &self,
+        a: &SVector<f64, N>,
+        b: &SVector<f64, N>,
+        cost: f64,
+        rng: &mut ChaCha8Rng,
+    ) -> Option<SVector<f64, N>> {
+        if self.any {
+            return None;
+        }
+        Some(ellipsoid::sample(a, b, cost, rng))
+    }
+
+    fn informed_measure(&self, a: &SVector<f64, N>, b: &SVector<f64, N>, cost: f64) -> Option<f64> {
+        if self.any {
+            return None;
+        }
+        Some(ellipsoid::measure(N, (b - a).norm(), cost))
     }
 
     fn extent(&self) -> f64 {

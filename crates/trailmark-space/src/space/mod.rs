@@ -39,6 +39,7 @@ use trailmark_core::geometry::{Point, Pose};
 use trailmark_core::world::Bounds;
 
 mod car;
+mod ellipsoid;
 mod joints;
 mod r2;
 mod rn;
@@ -162,6 +163,33 @@ pub trait StateSpace {
         let step = (std_dev * gaussian(rng)).abs();
         let toward = self.sample(rng);
         self.steer(near, &toward, step)
+    }
+
+    /// A state drawn uniformly from the *informed set* of a path from `a` to `b` no longer than
+    /// `cost`: the states `x` with `distance(a, x) + distance(x, b) <= cost`, the only ones
+    /// through which such a path can pass (Gammell et al.'s direct informed sampling, what
+    /// Informed RRT* and BIT* draw from once they have a solution). The space's bounds are not
+    /// applied: the caller refuses draws outside them. `None` where the space has no direct
+    /// sampler (the default); the informed planners then draw uniform states and refuse those
+    /// outside the set. [`R2`], [`Rn`] and [`Joints`] without wrapping joints draw from the
+    /// ellipsoid with foci `a` and `b`.
+    fn sample_informed(
+        &self,
+        a: &Self::State,
+        b: &Self::State,
+        cost: f64,
+        rng: &mut ChaCha8Rng,
+    ) -> Option<Self::State> {
+        let _ = (a, b, cost, rng);
+        None
+    }
+
+    /// The volume of that informed set, where [`sample_informed`](Self::sample_informed) draws
+    /// from it (`None` otherwise): a planner draws directly only while it is smaller than the
+    /// space's [`measure`](Self::measure), and uniformly with rejection before.
+    fn informed_measure(&self, a: &Self::State, b: &Self::State, cost: f64) -> Option<f64> {
+        let _ = (a, b, cost);
+        None
     }
 
     /// The largest distance between two states (or a bound on it): a planner's default step is

@@ -8,8 +8,8 @@ use trailmark_core::geometry::Point;
 use trailmark_core::world::Bounds;
 
 use super::{
-    StateSpace, UnitCube, area, clamp_into, diagonal, finite, gaussian, in_bounds, planar, sample_in,
-    separation, unit_point,
+    StateSpace, UnitCube, area, clamp_into, diagonal, ellipsoid, finite, gaussian, in_bounds, planar,
+    sample_in, separation, unit_point,
 };
 
 /// The plane region of a [`Bounds`]: states are points, distances Euclidean. Saved as
@@ -66,6 +66,14 @@ impl StateSpace for R2 {
     #[inline]
     fn interpolate(&self, a: &Point, b: &Point, t: f64) -> Point {
         a + (b - a) * t
+    }
+
+    fn sample_informed(&self, a: &Point, b: &Point, cost: f64, rng: &mut ChaCha8Rng) -> Option<Point> {
+        Some(Point::from(ellipsoid::sample(&a.coords, &b.coords, cost, rng)))
+    }
+
+    fn informed_measure(&self, a: &Point, b: &Point, cost: f64) -> Option<f64> {
+        Some(ellipsoid::measure(2, (b - a).norm(), cost))
     }
 
     fn extent(&self) -> f64 {

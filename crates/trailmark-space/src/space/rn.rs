@@ -6,7 +6,7 @@ use nalgebra::SVector;
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 
-use super::{SpaceError, StateSpace, UnitCube, finite, gaussian, separation};
+use super::{SpaceError, StateSpace, UnitCube, ellipsoid, finite, gaussian, separation};
 
 /// A box in `N` dimensions (a planar arm's joint angles, say): distances Euclidean.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -85,6 +85,20 @@ impl<const N: usize> StateSpace for Rn<N> {
 
     fn interpolate(&self, a: &SVector<f64, N>, b: &SVector<f64, N>, t: f64) -> SVector<f64, N> {
         a + (b - a) * t
+    }
+
+    fn sample_informed(
+        &self,
+        a: &SVector<f64, N>,
+        b: &SVector<f64, N>,
+        cost: f64,
+        rng: &mut ChaCha8Rng,
+    ) -> Option<SVector<f64, N>> {
+        Some(ellipsoid::sample(a, b, cost, rng))
+    }
+
+    fn informed_measure(&self, a: &SVector<f64, N>, b: &SVector<f64, N>, cost: f64) -> Option<f64> {
+        Some(ellipsoid::measure(N, (b - a).norm(), cost))
     }
 
     fn extent(&self) -> f64 {

@@ -10,7 +10,8 @@ use trailmark::core::termination::Termination;
 use trailmark::sample::benchmark::benchmark;
 use trailmark::sample::rand::{RngExt, SeedableRng};
 use trailmark::sample::{
-    BoxWorld, ChaCha8Rng, KdNearest, Planner, Prm, Problem, Rn, RrtConnect, RrtStar, StateSpace,
+    BitStar, BoxWorld, ChaCha8Rng, InformedRrtStar, KdNearest, Planner, Prm, Problem, Rn, RrtConnect,
+    RrtStar, StateSpace,
 };
 
 use crate::bench::ompl::{OmplBoxes, OmplDriver, OmplInput, OmplRun};
@@ -300,8 +301,12 @@ fn world_rows<const N: usize>(
     // The optimizing planners: seeded runs on one query, each for `limit`.
     let one = [ends[0]];
     let problem = Problem::new(&space, world, one[0].0, one[0].1);
-    let planners: Vec<Box<dyn Planner<Rn<N>, BoxWorld<N>>>> =
-        vec![Box::new(RrtStar::new(kd.clone())), Box::new(Prm::star(kd.clone()))];
+    let planners: Vec<Box<dyn Planner<Rn<N>, BoxWorld<N>>>> = vec![
+        Box::new(RrtStar::new(kd.clone())),
+        Box::new(InformedRrtStar::new(kd.clone())),
+        Box::new(BitStar::new(kd.clone())),
+        Box::new(Prm::star(kd.clone())),
+    ];
     for mut planner in planners {
         let measured = benchmark(planner.as_mut(), &problem, &Termination::time(limit), runs, seed, None)
             .map_err(|e| err(&e))?;

@@ -9,6 +9,7 @@
 mod boxes;
 mod connect;
 mod limits;
+mod optimal;
 mod prm;
 mod spaces;
 mod star;
@@ -28,6 +29,7 @@ use crate::bench::suite::Suite;
 use boxes::BoxRow;
 use connect::{CONNECT_ITERATIONS, ConnectRow, SingleQuery};
 use limits::LimitRow;
+use optimal::OptimalRow;
 use prm::PrmRow;
 use spaces::SpaceRow;
 use star::{EqualTimeRow, STAR_ITERATIONS, StarRow};
@@ -40,11 +42,17 @@ pub fn planner_names() -> Vec<&'static str> {
 }
 
 /// The registry's planners this section measures: its single-query planners, RRT*, PRM* (its
-/// own rows and the box worlds') and PRM (the time limits' rows).
+/// own rows and the box worlds'), PRM (the time limits' rows) and the optimizing planners at
+/// equal time.
 pub fn measured() -> impl Iterator<Item = trailmark::solve::PlannerName> {
     use trailmark::solve::PlannerName;
     let named = [star::NAME, prm::NAME].into_iter().filter_map(PlannerName::from_name);
-    SingleQuery::ALL.iter().map(|p| p.planner()).chain(named).chain([PlannerName::Prm])
+    SingleQuery::ALL
+        .iter()
+        .map(|p| p.planner())
+        .chain(named)
+        .chain([PlannerName::Prm])
+        .chain(optimal::MEASURED)
 }
 
 /// The sampling section's results.
@@ -60,6 +68,8 @@ pub struct SamplingReport {
     pub spaces: Vec<SpaceRow>,
     /// RRT* of trailmark and OMPL with equal time (with `--with-ompl`).
     pub equal_time: Vec<EqualTimeRow>,
+    /// The optimizing planners at equal time.
+    pub optimal: Vec<OptimalRow>,
     /// How far past a time limit each planner returns.
     pub limits: Vec<LimitRow>,
     /// Rⁿ among random boxes.
@@ -84,6 +94,7 @@ impl SamplingReport {
             .sum::<usize>()
             + self.star.iter().map(|r| r.invalid).sum::<usize>()
             + self.equal_time.iter().map(|r| r.invalid).sum::<usize>()
+            + self.optimal.iter().map(|r| r.invalid).sum::<usize>()
             + self.spaces.iter().map(|r| r.stats.invalid).sum::<usize>()
             + self.boxes.iter().map(|r| r.invalid).sum::<usize>()
             + self
@@ -95,8 +106,12 @@ impl SamplingReport {
 }
 
 /// The section's goals against OMPL for the report's goals table (unmeasured without it).
-pub fn goals(report: Option<&SamplingReport>) -> [GoalRow; 2] {
-    [connect::goal(report.map_or(&[], |r| &r.connect)), star::goal(report.map_or(&[], |r| &r.equal_time))]
+pub fn goals(report: Option<&SamplingReport>) -> [GoalRow; 3] {
+    [
+        connect::goal(report.map_or(&[], |r| &r.connect)),
+        star::goal(report.map_or(&[], |r| &r.equal_time)),
+        optimal::goal(report.map_or(&[], |r| &r.optimal)),
+    ]
 }
 
 /// How much the section runs: seeded queries per world, RRT* runs per world, the time of each
@@ -154,6 +169,7 @@ pub fn bench(
     let mut connect = Vec::new();
     let mut star = Vec::new();
     let mut equal_times = Vec::new();
+    let mut optimal = Vec::new();
     let mut logs = Vec::new();
     let mut progress = SectionProgress::new("sampling", worlds.len());
     for w in &worlds {
@@ -181,6 +197,8 @@ pub fn bench(
         progress.note(format!("{}: RRT*, {star_runs} runs of {STAR_ITERATIONS}", w.name));
         let (a, b, best) = star::star_query(w, &qs)?;
         star.push(star::bench_star(w, a, b, best, star_runs, seed, &mut planners)?);
+        progress.note(format!("{}: the optimizing planners, {star_runs} runs of 0.1 s each", w.name));
+        optimal.extend(optimal::bench_optimal(w, (a, b, best), star_runs, seed, &mut planners)?);
         if let Some(driver) = ompl {
             let equal_time = size.equal_time;
             progress.note(format!(
@@ -217,6 +235,9 @@ pub fn bench(
     if !connect.is_empty() {
         figures.extend(connect::figures(&connect)?);
     }
+    if !optimal.is_empty() {
+        figures.push(("sampling-optimal.svg", optimal::svg(&optimal)?));
+    }
     if !equal_times.is_empty() {
         match star::cost_time_svg(&equal_times) {
             Ok(svg) => figures.push(("sampling-cost-time.svg", svg)),
@@ -229,6 +250,7 @@ pub fn bench(
         prm,
         spaces,
         equal_time: equal_times,
+        optimal,
         limits,
         boxes,
         ompl_version: ompl.map(|d| d.version.clone()),
@@ -287,6 +309,7 @@ pub fn markdown(report: &SamplingReport) -> String {
     if !report.equal_time.is_empty() {
         s.push_str(&star::equal_time_markdown(&report.equal_time, report.ompl_version.as_deref()));
     }
+    s.push_str(&optimal::markdown(&report.optimal));
     s.push_str(&boxes::markdown(&report.boxes));
     s.push_str(&limits::markdown(&report.limits));
     s

@@ -23,6 +23,8 @@ pub const NAME: &str = trailmark::solve::PlannerName::RrtStar.name();
 pub const STAR_ITERATIONS: u64 = 20_000;
 /// The goal for RRT*'s median cost after its iterations, over the optimum.
 const STAR_GOAL: f64 = 1.05;
+/// The goal's line in RRT*'s plots.
+const STAR_LINE: (f64, &str) = (STAR_GOAL, "goal: 5% above the optimum");
 /// Where RRT*'s best cost is read for the convergence plot.
 const CHECKPOINTS: [u64; 8] = [250, 500, 1_000, 2_000, 5_000, 10_000, 15_000, 20_000];
 
@@ -95,7 +97,7 @@ fn star_run(
 }
 
 /// The best cost at `t` seconds of a run whose improvements are `(seconds, cost)`.
-fn cost_at(improvements: &[(f64, f64)], t: f64) -> f64 {
+pub(super) fn cost_at(improvements: &[(f64, f64)], t: f64) -> f64 {
     improvements.iter().take_while(|i| i.0 <= t).last().map_or(f64::INFINITY, |i| i.1)
 }
 
@@ -256,15 +258,22 @@ pub fn goal(rows: &[EqualTimeRow]) -> GoalRow {
 }
 
 /// A line of a plot: its legend, colour, whether dashed, and points.
-struct CostLine {
-    label: String,
-    colour: RGBColor,
-    dashed: bool,
-    points: Vec<(f64, f64)>,
+pub(super) struct CostLine {
+    pub(super) label: String,
+    pub(super) colour: RGBColor,
+    pub(super) dashed: bool,
+    pub(super) points: Vec<(f64, f64)>,
 }
 
-/// Cost over the optimum against a log-scaled x axis, one line each, with the 5% goal.
-fn lines_svg(caption: &str, x_desc: &str, x: (f64, f64), lines: &[CostLine]) -> Result<String, String> {
+/// Cost over the optimum against a log-scaled x axis, one line each, with the goal's line
+/// (its ratio and legend).
+pub(super) fn lines_svg(
+    caption: &str,
+    x_desc: &str,
+    x: (f64, f64),
+    goal: (f64, &str),
+    lines: &[CostLine],
+) -> Result<String, String> {
     let e = |e: &dyn std::fmt::Display| e.to_string();
     let top = lines
         .iter()
@@ -284,12 +293,12 @@ fn lines_svg(caption: &str, x_desc: &str, x: (f64, f64), lines: &[CostLine]) -> 
             .build_cartesian_2d((x.0..x.1).log_scale(), 0.99..top)
             .map_err(|x| e(&x))?;
         chart.configure_mesh().x_desc(x_desc).y_desc("cost / optimum").draw().map_err(|x| e(&x))?;
-        let goal = RGBColor(120, 120, 120);
+        let grey = RGBColor(120, 120, 120);
         chart
-            .draw_series(LineSeries::new([(x.0, STAR_GOAL), (x.1, STAR_GOAL)], goal.stroke_width(1)))
+            .draw_series(LineSeries::new([(x.0, goal.0), (x.1, goal.0)], grey.stroke_width(1)))
             .map_err(|x| e(&x))?
-            .label("goal: 5% above the optimum")
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], goal.stroke_width(1)));
+            .label(goal.1)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], grey.stroke_width(1)));
         for line in lines {
             let points: Vec<(f64, f64)> =
                 line.points.iter().filter(|c| c.1.is_finite()).map(|&(x, c)| (x, c.min(top))).collect();
@@ -332,7 +341,7 @@ pub fn convergence_svg(rows: &[StarRow]) -> Result<String, String> {
         })
         .collect();
     let x = (CHECKPOINTS[0] as f64, CHECKPOINTS[CHECKPOINTS.len() - 1] as f64);
-    lines_svg("RRT*: median path cost over the optimum, by iterations", "iterations", x, &lines)
+    lines_svg("RRT*: median path cost over the optimum, by iterations", "iterations", x, STAR_LINE, &lines)
 }
 
 /// Median best cost over the optimum against time, trailmark solid and OMPL dashed.
@@ -358,6 +367,7 @@ pub fn cost_time_svg(rows: &[EqualTimeRow]) -> Result<String, String> {
         "RRT*: median best cost over the optimum by time, trailmark (solid) and OMPL (dashed)",
         "seconds",
         (0.002, end),
+        STAR_LINE,
         &lines,
     )
 }

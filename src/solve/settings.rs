@@ -125,17 +125,21 @@ impl HybridSpec {
     }
 }
 
-/// The settings of a sampling planner (RRT, RRT-Connect, RRT*). Each has a default.
+/// The settings of a sampling planner (RRT, RRT-Connect, RRT*, Informed RRT*, BIT*, PRM, PRM*).
+/// Each has a default.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SamplingSpec {
-    /// The longest motion added at once (default 0.2 x the space's extent).
+    /// The tree planners: the longest motion added at once (default 0.2 x the space's extent);
+    /// refused by BIT* and the roadmaps.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub range: Option<f64>,
-    /// RRT and RRT*: the probability of steering toward the goal (default 0.05).
+    /// RRT, RRT* and Informed RRT*: the probability of steering toward the goal (default 0.05);
+    /// refused by BIT* and the roadmaps.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub goal_bias: Option<f64>,
-    /// Stop after this many iterations (default 10,000 unless `time_limit_s` is given).
+    /// Stop after this many iterations, samples drawn (default 10,000 unless `time_limit_s` is
+    /// given).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub max_iterations: Option<u64>,
     /// Stop after this many seconds (default: none).

@@ -26,10 +26,14 @@
 //! # Ok::<(), trailmark_core::GridError>(())
 //! ```
 
+use std::sync::OnceLock;
+
 use trailmark_core::cost::{Cost, SQRT_2};
 use trailmark_core::graph::{EdgeChange, Graph, IndexedGraph, Predecessors, Successors};
 pub use trailmark_core::grid::CornerCutting;
 use trailmark_core::grid::{Cell, Connectivity, Grid, GridError, GridHeuristic, is_cell_cost};
+
+use crate::squares::open_squares;
 
 /// One of the eight moves: its offset in the padded array is `dy * stride + dx`.
 #[derive(Clone, Copy)]
@@ -72,6 +76,9 @@ pub struct GridGraph {
     pub(crate) costs: Option<Vec<Cost>>,
     /// The smallest passable cell cost (1 when there is none), which scales heuristics.
     min_cost: Cost,
+    /// The padded cells' distances to the nearest edge cell (`squares.rs`), made at the first
+    /// line drawn and forgotten when a cost changes.
+    squares: OnceLock<Vec<u16>>,
 }
 
 impl GridGraph {
@@ -103,6 +110,7 @@ impl GridGraph {
             offsets,
             costs,
             min_cost: grid.min_cost().unwrap_or(1.0),
+            squares: OnceLock::new(),
         };
         graph.update_moves(0..graph.open.len());
         graph
@@ -113,6 +121,11 @@ impl GridGraph {
         self.corner_cutting = rule;
         self.update_moves(0..self.open.len());
         self
+    }
+
+    /// The padded cells' distances to the nearest edge cell, made once.
+    pub(crate) fn squares(&self) -> &[u16] {
+        self.squares.get_or_init(|| open_squares(&self.open, self.costs.as_deref(), self.stride))
     }
 
     /// Recomputes the move masks of the padded cells in `range`.
@@ -204,6 +217,7 @@ impl GridGraph {
             costs[i] = cost;
         }
         self.open[i] = cost.is_finite();
+        self.squares = OnceLock::new();
         // The moves that start, end or cut a corner at this cell start within one cell of it.
         for row in [i - self.stride, i, i + self.stride] {
             self.update_moves(row - 1..row + 2);

@@ -49,6 +49,7 @@ pub mod grid;
 #[doc(hidden)]
 pub mod roadmap;
 mod sight;
+mod squares;
 #[cfg(feature = "roadmaps")]
 #[doc(hidden)]
 pub mod trapezoid;

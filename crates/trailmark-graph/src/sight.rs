@@ -25,7 +25,7 @@
 //! # Ok::<(), trailmark_core::GridError>(())
 //! ```
 
-use trailmark_core::cost::Cost;
+use trailmark_core::cost::{Cost, euclidean};
 use trailmark_core::graph::{Graph, Lines};
 use trailmark_core::grid::Cell;
 
@@ -36,14 +36,13 @@ impl GridGraph {
     /// when it is blocked (or either cell is not a node).
     pub fn line_cost(&self, from: Cell, to: Cell) -> Option<Cost> {
         let mut total = 0.0;
-        self.walk_line(from, to, |fraction, cost, _| total += fraction * cost)?;
-        let (dx, dy) = (f64::from(from.x.abs_diff(to.x)), f64::from(from.y.abs_diff(to.y)));
-        Some(total * dx.hypot(dy))
+        self.walk_line(from, to, true, |fraction, cost, _| total += fraction * cost)?;
+        Some(total * euclidean(from.x.abs_diff(to.x), from.y.abs_diff(to.y)))
     }
 
     /// Whether the straight line from the centre of `from` to the centre of `to` may be drawn.
     pub fn line_of_sight(&self, from: Cell, to: Cell) -> bool {
-        self.walk_line(from, to, |_, _, _| ()).is_some()
+        self.walk_line(from, to, true, |_, _, _| ()).is_some()
     }
 
     /// The cells the line from `from` to `to` crosses, in order, each with the fraction of the
@@ -51,7 +50,7 @@ impl GridGraph {
     pub fn line_cells(&self, from: Cell, to: Cell) -> Option<Vec<(Cell, f64)>> {
         let mut cells = Vec::new();
         let stride = self.stride;
-        self.walk_line(from, to, |fraction, _, i| {
+        self.walk_line(from, to, false, |fraction, _, i| {
             // Padded index to cell: the border is one cell wide.
             cells.push((Cell::new((i % stride - 1) as u32, (i / stride - 1) as u32), fraction));
         })?;
@@ -107,8 +106,16 @@ impl GridGraph {
 
     /// Walks the line from the centre of `from` to the centre of `to`, calling `visit(fraction,
     /// cost, padded index)` for each crossed cell with the fraction of the line in it; `None` as
-    /// soon as the line is blocked.
-    fn walk_line(&self, from: Cell, to: Cell, mut visit: impl FnMut(f64, Cost, usize)) -> Option<()> {
+    /// soon as the line is blocked. With `skip`, a stretch of the line inside a square of open
+    /// cells of one cost (`squares.rs`) is visited once, at the index where it starts: the sum
+    /// of fractions times costs is the same (up to rounding), the cells are not listed.
+    fn walk_line(
+        &self,
+        from: Cell,
+        to: Cell,
+        skip: bool,
+        mut visit: impl FnMut(f64, Cost, usize),
+    ) -> Option<()> {
         if !self.contains(from) || !self.contains(to) {
             return None;
         }
@@ -117,6 +124,7 @@ impl GridGraph {
             visit(1.0, self.costs.as_ref().map_or(1.0, |c| c[self.index(from)]), self.index(from));
             return Some(());
         }
+        let squares = skip.then(|| self.squares());
         let stride = self.stride as isize;
         let step_x: isize = if to.x >= from.x { 1 } else { -1 };
         let step_y: isize = if to.y >= from.y { stride } else { -stride };
@@ -127,6 +135,16 @@ impl GridGraph {
         let (mut kx, mut ky) = (0u64, 0u64);
         let mut t_prev = 0.0;
         while kx < adx || ky < ady {
+            if let Some(squares) = squares
+                && let Some((nkx, nky)) = across_square(squares[i as usize], (kx, ky), (adx, ady))
+            {
+                let t = crossing_time(nkx, adx).max(crossing_time(nky, ady));
+                visit(t - t_prev, cost_at(i), i as usize);
+                t_prev = t;
+                i += (nkx - kx) as isize * step_x + (nky - ky) as isize * step_y;
+                (kx, ky) = (nkx, nky);
+                continue;
+            }
             let x_first = ky == ady || (kx < adx && (2 * kx + 1) * ady < (2 * ky + 1) * adx);
             let y_first = kx == adx || (ky < ady && (2 * ky + 1) * adx < (2 * kx + 1) * ady);
             let t = if x_first {
@@ -166,6 +184,44 @@ impl GridGraph {
     }
 }
 
+/// The time, as a fraction of the line, of the last of the first `k` crossings of grid lines
+/// of one direction (of `a` in all): 0 before the first.
+#[inline]
+fn crossing_time(k: u64, a: u64) -> f64 {
+    if k == 0 { 0.0 } else { (2 * k - 1) as f64 / (2 * a) as f64 }
+}
+
+/// How many crossings of the other direction (of `other` in all) come strictly before
+/// crossing `k` of this one (of `this` in all, `k < this`).
+#[inline]
+fn before(k: u64, this: u64, other: u64) -> u64 {
+    let at = (2 * k + 1) * other;
+    if at <= this { 0 } else { ((at - this - 1) / (2 * this) + 1).min(other) }
+}
+
+/// Where the line, having made `(kx, ky)` of its `(adx, ady)` crossings and standing in a cell
+/// `reach` from the nearest edge cell, leaves the square of radius `reach` around that cell:
+/// the crossings made just before it leaves, `None` for a cell on the edge. Every cell of that
+/// square is open at the cell's cost: those within `reach - 1` are not edge cells, and each
+/// cell at `reach` is a neighbour of one of them, which is open at the cost of all its
+/// neighbours.
+#[inline]
+fn across_square(reach: u16, (kx, ky): (u64, u64), (adx, ady): (u64, u64)) -> Option<(u64, u64)> {
+    if reach == 0 {
+        return None;
+    }
+    let r = u64::from(reach);
+    let (xe, ye) = ((kx + r).min(adx), (ky + r).min(ady));
+    Some(if xe == adx && ye == ady {
+        (adx, ady)
+    } else if ye == ady || (xe < adx && (2 * xe + 1) * ady <= (2 * ye + 1) * adx) {
+        // Out across a vertical grid line first (or through a corner with a horizontal one).
+        (xe, before(xe, adx, ady))
+    } else {
+        (before(ye, ady, adx), ye)
+    })
+}
+
 /// The grid's lines for any-angle searches: [`GridGraph::line_cost`], bounded below by the
 /// line's length times the cheapest cell cost.
 impl Lines<Cell> for GridGraph {
@@ -176,7 +232,77 @@ impl Lines<Cell> for GridGraph {
 
     #[inline]
     fn line_lower_bound(&self, from: Cell, to: Cell) -> Cost {
-        let (dx, dy) = (f64::from(from.x.abs_diff(to.x)), f64::from(from.y.abs_diff(to.y)));
-        dx.hypot(dy) * self.min_cost()
+        euclidean(from.x.abs_diff(to.x), from.y.abs_diff(to.y)) * self.min_cost()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+    use trailmark_core::grid::{Cell, Connectivity, Grid};
+
+    use crate::grid::{CornerCutting, GridGraph};
+
+    /// Grids of rooms: wide open areas of one cost (where lines skip), walls, and patches of a
+    /// dearer cost, with two cells to join.
+    fn world() -> impl Strategy<Value = (Grid, Cell, Cell, CornerCutting)> {
+        (8u32..60, 8u32..60)
+            .prop_flat_map(|(w, h)| {
+                let rects = proptest::collection::vec((0..w, 0..h, 1u32..12, 1u32..12, 0u8..3), 0..8);
+                let rule = prop_oneof![
+                    Just(CornerCutting::Forbidden),
+                    Just(CornerCutting::Allowed),
+                    Just(CornerCutting::Squeeze)
+                ];
+                (Just((w, h)), rects, 0..w, 0..h, 0..w, 0..h, rule)
+            })
+            .prop_map(|((w, h), rects, ax, ay, bx, by, rule)| {
+                let mut grid = Grid::new(w as usize, h as usize).unwrap();
+                for (x, y, rw, rh, kind) in rects {
+                    for cy in y..(y + rh).min(h) {
+                        for cx in x..(x + rw).min(w) {
+                            let cost = [f64::INFINITY, 2.5, 1.0][kind as usize];
+                            grid.set_cost(Cell::new(cx, cy), cost).unwrap();
+                        }
+                    }
+                }
+                for end in [Cell::new(ax, ay), Cell::new(bx, by)] {
+                    grid.set_cost(end, 1.0).unwrap();
+                }
+                (grid, Cell::new(ax, ay), Cell::new(bx, by), rule)
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(400))]
+
+        /// A line crossing squares in one step is blocked exactly when the cell-by-cell walk
+        /// is, and costs what the cells it lists cost, to rounding.
+        #[test]
+        fn skipping_squares_changes_nothing((grid, a, b, rule) in world()) {
+            let graph = GridGraph::new(&grid, Connectivity::Eight).with_corner_cutting(rule);
+            let cells = graph.line_cells(a, b);
+            prop_assert_eq!(graph.line_of_sight(a, b), cells.is_some());
+            let length = f64::from(a.x.abs_diff(b.x)).hypot(f64::from(a.y.abs_diff(b.y)));
+            let listed = cells.map(|c| length * c.iter().map(|&(cell, f)| f * grid.cost(cell).unwrap()).sum::<f64>());
+            match (graph.line_cost(a, b), listed) {
+                (Some(x), Some(y)) => prop_assert!((x - y).abs() <= 1e-12 * y.max(1.0), "{} against {}", x, y),
+                (x, y) => prop_assert_eq!(x, y),
+            }
+        }
+    }
+
+    /// After a cost changes, lines see it: the squares are made again.
+    #[test]
+    fn a_changed_cost_is_seen() {
+        let grid = Grid::new(40, 40).unwrap();
+        let mut graph = GridGraph::new(&grid, Connectivity::Eight);
+        let (a, b) = (Cell::new(0, 0), Cell::new(39, 39));
+        assert!(graph.line_of_sight(a, b));
+        graph.set_cost(Cell::new(20, 20), f64::INFINITY).unwrap();
+        assert!(!graph.line_of_sight(a, b));
+        graph.set_cost(Cell::new(20, 20), 3.0).unwrap();
+        let expected = 39.0 * 2f64.sqrt() * (38.0 + 3.0) / 39.0;
+        assert!((graph.line_cost(a, b).unwrap() - expected).abs() < 1e-9);
     }
 }

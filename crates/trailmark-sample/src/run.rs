@@ -119,3 +119,28 @@ impl Run<'_> {
         Plan { solution: Solution::None, stop, history: self.history, stats: self.stats }
     }
 }
+
+/// What a run built: its nearest-neighbour structures and per-state lists, kept by the planner
+/// after the run (OMPL's planners keep their data until `clear` too). Freeing a large tree
+/// returns its pages to the system, which takes long enough (about 0.3 ms for 28,000 states)
+/// to make a run return well past its time limit; the planner frees it when it is cleared or
+/// before the next run starts its clock. The tree planners and BIT* keep theirs here.
+#[derive(Debug, Clone)]
+pub(crate) struct Spent<N> {
+    pub(crate) nearest: Vec<N>,
+    pub(crate) ids: Vec<Vec<u32>>,
+    pub(crate) costs: Vec<Vec<f64>>,
+}
+
+impl<N> Default for Spent<N> {
+    fn default() -> Self {
+        Spent { nearest: Vec::new(), ids: Vec::new(), costs: Vec::new() }
+    }
+}
+
+impl<N> Spent<N> {
+    /// Frees what the last run built.
+    pub(crate) fn release(&mut self) {
+        *self = Spent::default();
+    }
+}

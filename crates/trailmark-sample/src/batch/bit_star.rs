@@ -43,13 +43,13 @@ use std::collections::{BinaryHeap, HashSet};
 
 use trailmark_core::termination::{Stop, Termination, Watch};
 
-use super::graph::{BatchGraph, NO_PARENT, Spent};
+use super::graph::{BatchGraph, NO_PARENT};
 use crate::informed::{Informed, PRUNE_THRESHOLD};
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{Plan, PlanError};
 use crate::planner::Planner;
 use crate::problem::{Problem, admit};
-use crate::run::{Run, check_empty};
+use crate::run::{Run, Spent, check_empty};
 use crate::sampler::{StateSampler, Uniform};
 use crate::space::StateSpace;
 use crate::validity::Validity;
@@ -107,22 +107,30 @@ pub struct BitStar<N, Q = Uniform> {
     /// The seed of the ChaCha8 generator each run starts from.
     pub seed: u64,
     /// What the last run built, freed before the next run's clock starts (as the tree planners).
-    spent: Option<Spent<N>>,
+    spent: Spent<N>,
 }
 
 impl<N> BitStar<N> {
     /// BIT\* with its states in (clones of) `nearest`, which must be empty, uniform samples
     /// before the first solution, the default options and seed 0.
     pub fn new(nearest: N) -> Self {
-        BitStar { nearest, sampler: Uniform, options: BitOptions::default(), seed: 0, spent: None }
+        BitStar {
+            nearest,
+            sampler: Uniform,
+            options: BitOptions::default(),
+            seed: 0,
+            spent: Spent::default(),
+        }
     }
 }
 
 impl<N, Q> BitStar<N, Q> {
-    /// The same planner drawing its samples from `sampler` (refused by rejection once solved).
+    /// The same planner drawing its samples from `sampler` before its first solution; after it,
+    /// where the informed set cannot be drawn from directly, states of `sampler` outside it are
+    /// refused.
     pub fn with_sampler<R>(self, sampler: R) -> BitStar<N, R> {
         let BitStar { nearest, options, seed, .. } = self;
-        BitStar { nearest, sampler, options, seed, spent: None }
+        BitStar { nearest, sampler, options, seed, spent: Spent::default() }
     }
 
     /// The same planner with these options.
@@ -185,7 +193,7 @@ where
     }
 
     fn clear(&mut self) {
-        self.spent = None;
+        self.spent.release();
     }
 
     fn optimizes(&self) -> bool {
@@ -197,13 +205,13 @@ where
         problem: &Problem<'_, S, V>,
         termination: &Termination,
     ) -> Result<Plan<S::State>, PlanError> {
-        self.spent = None;
+        self.spent.release();
         check_empty(&self.nearest)?;
         self.options.check()?;
         let watch = Watch::start(termination);
         let run = Run::checked(problem, watch, problem.space.extent(), self.seed)?;
         let (graph, plan) = Search::new(self, problem, run).search();
-        self.spent = Some(graph.into_spent());
+        self.spent = graph.into_spent();
         Ok(plan)
     }
 }
@@ -222,6 +230,8 @@ struct Search<'r, S: StateSpace, V, N, Q> {
     /// The neighbours of a state in this batch.
     k: usize,
     goal_samples: usize,
+    /// The vertices a rewiring lowered (kept to reuse its memory).
+    lowered: Vec<u32>,
 }
 
 impl<'r, S, V, N, Q> Search<'r, S, V, N, Q>
@@ -243,6 +253,7 @@ where
             invalid: HashSet::new(),
             k: 1,
             goal_samples: 0,
+            lowered: Vec::new(),
         }
     }
 
@@ -276,7 +287,10 @@ where
                 }
                 let best = self.best_cost();
                 if best < (1.0 - PRUNE_THRESHOLD) * pruned_at {
-                    self.graph.prune(space, best);
+                    if let Some(stop) = self.run.watch.interrupted() {
+                        break stop;
+                    }
+                    self.graph.prune(space, &*self.problem.goal, best);
                     self.invalid.clear();
                     pruned_at = best;
                 }
@@ -332,7 +346,7 @@ where
         let n = self.graph.len();
         let d = space.dimension().max(1) as f64;
         let k_rgg = self.planner.options.rewire_factor * std::f64::consts::E * (1.0 + 1.0 / d);
-        self.k = ((k_rgg * (n.max(2) as f64).ln()).ceil() as usize).max(1);
+        self.k = ((k_rgg * (n.max(2) as f64).ln()).ceil() as usize).clamp(1, n.max(1));
         // A vertex whose cost fell since its edges were queued is expanded again; the others
         // meet only the new samples, each of which finds its nearest vertices.
         for v in 0..n {
@@ -341,6 +355,12 @@ where
             }
         }
         for x in first_new..n as u32 {
+            // A batch may be large: its queries answer to the clock too.
+            if (x - first_new) % 64 == 63
+                && let Some(stop) = self.run.watch.interrupted()
+            {
+                return Err(stop);
+            }
             self.queue_to_sample(x, best);
         }
         Ok(limit)
@@ -420,7 +440,8 @@ where
         let d = space.distance(from, to);
         let through = self.graph.cost[vi] + d;
         if through + self.graph.go[xi] >= best {
-            // No edge left can improve the solution (keys only fall as costs do): the batch is over.
+            // The least key cannot improve the solution (every vertex whose cost fell was queued
+            // again at its new key), nor can any after it: the batch is over.
             self.edges.clear();
             self.vertices.clear();
             return None;
@@ -437,11 +458,17 @@ where
             return None;
         }
         if self.graph.in_tree[xi] {
-            self.graph.rewire(x, v, through);
+            // Every descendant's cost fell with it: their edges are queued again at their keys.
+            let mut lowered = std::mem::take(&mut self.lowered);
+            self.graph.rewire(x, v, through, &mut lowered);
+            for &u in &lowered {
+                self.queue_vertex(u);
+            }
+            self.lowered = lowered;
         } else {
             self.graph.join(space, goal, x, v, through);
+            self.queue_vertex(x);
         }
-        self.queue_vertex(x);
         self.improved()
     }
 

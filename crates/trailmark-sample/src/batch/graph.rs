@@ -5,9 +5,10 @@
 //! many of the other kind crowd around it (one structure for both had left samples among many
 //! unjoined ones without a vertex in reach, and the solution stalled).
 
-use crate::informed::Informed;
+use crate::informed::{Informed, PRUNE_SLACK};
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::problem::Goal;
+use crate::run::Spent;
 use crate::space::StateSpace;
 
 /// The parent of a root, and of a sample not in the tree.
@@ -28,16 +29,6 @@ impl<N> Kind<N> {
     fn new(nearest: N) -> Self {
         Kind { nearest, ids: Vec::new(), gone: 0 }
     }
-}
-
-/// What a run of BIT* built, kept by the planner until its next run or `clear`.
-#[derive(Debug, Clone)]
-#[expect(dead_code, reason = "held only to be freed after the run")]
-pub(crate) struct Spent<N> {
-    nearest: [N; 2],
-    lists: Vec<Vec<u32>>,
-    costs: Vec<Vec<f64>>,
-    children: Vec<Vec<u32>>,
 }
 
 /// Samples and the tree among them.
@@ -145,11 +136,12 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone> BatchGraph<S, N> {
     /// two structures and the per-state lists (freeing large ones takes long enough to matter
     /// to a time limit, as for the tree planners).
     pub(crate) fn into_spent(self) -> Spent<N> {
+        let mut ids = vec![self.parent, self.vertices.ids, self.samples.ids];
+        ids.extend(self.children);
         Spent {
-            nearest: [self.vertices.nearest, self.samples.nearest],
-            lists: vec![self.parent, self.vertices.ids, self.samples.ids],
+            nearest: vec![self.vertices.nearest, self.samples.nearest],
+            ids,
             costs: vec![self.cost, self.expanded_at, self.come, self.go],
-            children: self.children,
         }
     }
 
@@ -197,8 +189,8 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone> BatchGraph<S, N> {
     }
 
     /// Makes `parent` the parent of vertex `x` at the lower `cost`, and passes the saving down
-    /// to its descendants.
-    pub(crate) fn rewire(&mut self, x: u32, parent: u32, cost: f64) {
+    /// to its descendants; `x` and they, whose costs fell, are left in `lowered`.
+    pub(crate) fn rewire(&mut self, x: u32, parent: u32, cost: f64, lowered: &mut Vec<u32>) {
         let old = self.parent[x as usize];
         if old != NO_PARENT {
             self.children[old as usize].retain(|&c| c != x);
@@ -206,10 +198,13 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone> BatchGraph<S, N> {
         self.children[parent as usize].push(x);
         self.parent[x as usize] = parent;
         let delta = cost - self.cost[x as usize];
-        let mut stack = vec![x];
-        while let Some(u) = stack.pop() {
+        lowered.clear();
+        lowered.push(x);
+        let mut next = 0;
+        while let Some(&u) = lowered.get(next) {
             self.cost[u as usize] += delta;
-            stack.extend_from_slice(&self.children[u as usize]);
+            lowered.extend_from_slice(&self.children[u as usize]);
+            next += 1;
         }
     }
 
@@ -228,13 +223,18 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone> BatchGraph<S, N> {
     }
 
     /// Drops the samples and vertices through which no solution cheaper than `best` can pass
-    /// (`ĝ + ĥ` above it), keeping the roots and every ancestor of a vertex kept, and renumbers
-    /// the rest in their order; both structures are rebuilt.
-    pub(crate) fn prune(&mut self, space: &S, best: f64) {
+    /// (`ĝ + ĥ` above it by more than rounding), keeping the roots, the best solution's vertex
+    /// and every ancestor of a vertex kept, and renumbers the rest in their order; both
+    /// structures are rebuilt.
+    pub(crate) fn prune(&mut self, space: &S, goal: &dyn Goal<S>, best: f64) {
         let n = self.len();
+        let bound = best * (1.0 + PRUNE_SLACK);
         let mut keep: Vec<bool> = (0..n)
-            .map(|i| (self.in_tree[i] && self.parent[i] == NO_PARENT) || self.come[i] + self.go[i] <= best)
+            .map(|i| (self.in_tree[i] && self.parent[i] == NO_PARENT) || self.come[i] + self.go[i] <= bound)
             .collect();
+        if let Some((b, _)) = self.best() {
+            keep[b as usize] = true;
+        }
         for i in 0..n {
             if keep[i] && self.in_tree[i] {
                 let mut up = self.parent[i];
@@ -271,8 +271,11 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone> BatchGraph<S, N> {
             samples.ids.push(id as u32);
         }
         let at_goal = self.at_goal.iter().filter(|&&g| keep[g as usize]).map(|&g| moved(g)).collect();
-        // Only an approximate answer reads it, and a pruned graph holds a solution.
-        let closest = (if keep[self.closest.0 as usize] { moved(self.closest.0) } else { 0 }, self.closest.1);
+        let closest = vertices
+            .ids
+            .iter()
+            .map(|&v| (v, goal.distance(space, &states[v as usize])))
+            .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
         let empty = self.empty.clone();
         *self = BatchGraph {
             states,

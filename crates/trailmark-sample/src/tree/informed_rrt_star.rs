@@ -34,7 +34,7 @@
 //! ```
 
 use super::planner::{Grow, Grown, Job, TreePlanner};
-use super::rrt_star::grow_star;
+use super::star::grow_star;
 use crate::nearest::NearestNeighbors;
 use crate::sampler::{StateSampler, Uniform};
 use crate::space::StateSpace;
@@ -101,14 +101,14 @@ mod tests {
         let (a, b) = (nalgebra::SVector::from([0.1; 4]), nalgebra::SVector::from([0.9, 0.8, 0.9, 0.7]));
         let problem = Problem::with_goal(&space, &validity, a, GoalState::within(b, 0.05));
         let nearest = KdNearest::<Rn<4>, 4>::new(&space).unwrap();
-        let plan = InformedRrtStar::new(nearest)
-            .with_seed(2)
-            .solve(&problem, &Termination::iterations(3000))
-            .unwrap();
+        let limit = Termination::iterations(3000);
+        let plan = InformedRrtStar::new(nearest.clone()).with_seed(2).solve(&problem, &limit).unwrap();
         let straight = (b - a).norm() - 0.05;
         let cost = plan.cost().expect("solved");
         assert!(cost >= straight - 1e-9 && cost < 1.025 * straight, "{cost} against {straight}");
         assert!((plan.path().unwrap().last().unwrap() - b).norm() <= 0.05 + 1e-12);
+        let star = RrtStar::new(nearest).with_seed(2).solve(&problem, &limit).unwrap().cost().unwrap();
+        assert!(star > 1.03 * straight, "RRT*: {star}");
     }
 
     /// A dock along the east wall: a region with a bound on the cost left but no state to
@@ -131,10 +131,10 @@ mod tests {
         }
     }
 
-    /// A goal region draws by rejection: only states whose distance from the start plus the
-    /// region's bound is below the best cost, and the plan approaches the straight run east.
+    /// A goal region (no state to focus on: states are drawn and refused, as `informed.rs`'s test
+    /// holds) still converges: within 1% of the straight run east.
     #[test]
-    fn draws_by_rejection_for_a_region() {
+    fn converges_to_a_region() {
         let bounds = Bounds::new(0.0, 0.0, 10.0, 10.0).unwrap();
         let checker = PolygonWorld::new(bounds, vec![], 0.0).unwrap().checker();
         let space = R2::new(bounds);

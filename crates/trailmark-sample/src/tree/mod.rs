@@ -1,4 +1,5 @@
-//! The tree planners: RRT, RRT-Connect, RRT* and Informed RRT*, each in its file (how it grows its trees), and
+//! The tree planners: RRT, RRT-Connect, RRT* and Informed RRT*, each in its file (how it grows its
+//! trees; `star.rs` the run RRT* and Informed RRT* share), and
 //! what they share: the tree of valid motions they grow toward targets at most a range at a
 //! time (here), their settings (`options.rs`), and the planner every one of them is
 //! (`planner.rs`: `TreePlanner`, its builders and its `Planner` impl).
@@ -9,6 +10,7 @@ pub mod planner;
 pub mod rrt;
 pub mod rrt_connect;
 pub mod rrt_star;
+pub(crate) mod star;
 
 use crate::nearest::{Direction, NearestNeighbors, measure};
 use crate::space::StateSpace;

@@ -9,7 +9,7 @@ use crate::nearest::NearestNeighbors;
 use crate::plan::{Plan, PlanError};
 use crate::planner::Planner;
 use crate::problem::{Goal, Problem};
-use crate::run::{Run, check_empty};
+use crate::run::{Run, Spent, check_empty};
 use crate::sampler::{StateSampler, Uniform};
 use crate::space::StateSpace;
 use crate::validity::Validity;
@@ -129,30 +129,5 @@ where
         let run = Run::checked(problem, watch, range, self.seed)?;
         let (space, validity, goal) = (problem.space, problem.validity, &*problem.goal);
         A::grow(Job { planner: self, problem, space, validity, goal, run })
-    }
-}
-
-/// What a run grew: its trees, kept by the planner after the run (OMPL's planners keep their
-/// data until `clear` too). Freeing a large tree returns its pages to the system, which takes
-/// long enough (about 0.3 ms for 28,000 states) to make a run return well past its time limit;
-/// the planner frees it when it is cleared or before the next run starts its clock.
-#[derive(Debug, Clone)]
-pub(crate) struct Spent<N> {
-    pub(crate) nearest: Vec<N>,
-    pub(crate) ids: Vec<Vec<u32>>,
-    pub(crate) costs: Vec<f64>,
-    pub(crate) lists: Vec<Vec<u32>>,
-}
-
-impl<N> Default for Spent<N> {
-    fn default() -> Self {
-        Spent { nearest: Vec::new(), ids: Vec::new(), costs: Vec::new(), lists: Vec::new() }
-    }
-}
-
-impl<N> Spent<N> {
-    /// Frees what the last run grew.
-    pub(crate) fn release(&mut self) {
-        *self = Spent::default();
     }
 }

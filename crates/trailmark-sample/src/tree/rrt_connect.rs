@@ -32,12 +32,13 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::planner::{Grow, Grown, Job, Spent, TreePlanner};
+use super::planner::{Grow, Grown, Job, TreePlanner};
 use super::{Extension, Tree};
 use crate::nearest::{Direction, NearestNeighbors};
 use crate::plan::{PlanError, Rejection};
 use crate::problem::{Problem, admit};
 use crate::run::Run;
+use crate::run::Spent;
 use crate::sampler::StateSampler;
 use crate::sampler::Uniform;
 use crate::space::StateSpace;

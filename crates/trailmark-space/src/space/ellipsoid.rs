@@ -54,7 +54,9 @@ pub(crate) fn measure(dimension: usize, focal: f64, cost: f64) -> f64 {
 /// The semi-major axis (half the cost) and the semi-minor ones.
 fn semi_axes(focal: f64, cost: f64) -> (f64, f64) {
     let major = 0.5 * cost.max(focal);
-    (major, 0.5 * (cost * cost - focal * focal).max(0.0).sqrt())
+    // (c - f)(c + f) rather than c² - f²: no overflow for large coordinates, no cancellation
+    // as the cost nears the focal distance.
+    (major, 0.5 * ((cost - focal).max(0.0) * (cost + focal)).sqrt())
 }
 
 /// The volume of the unit ball in `dimension` dimensions: V(n) = 2π/n V(n - 2), V(0) = 1, V(1) = 2.

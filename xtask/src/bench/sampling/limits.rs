@@ -14,7 +14,8 @@ use trailmark::core::termination::Termination;
 use trailmark::core::world::CollisionChecker;
 use trailmark::sample::benchmark::benchmark;
 use trailmark::sample::{
-    Bridge, KdNearest, Planner, Prm, Problem, R2, Rn, Rrt, RrtConnect, RrtStar, Sampled, StateSpace, Validity,
+    BitStar, Bridge, InformedRrtStar, KdNearest, Planner, Prm, Problem, R2, Rn, Rrt, RrtConnect, RrtStar,
+    Sampled, StateSpace, Validity,
 };
 
 use crate::bench::stats::upper_median;
@@ -103,6 +104,8 @@ pub fn bench_limits(seed: u64) -> Result<Vec<LimitRow>, String> {
         Box::new(RrtConnect::new(kd.clone())),
         Box::new(RrtConnect::new(kd.clone()).with_sampler(bridge)),
         Box::new(RrtStar::new(kd.clone())),
+        Box::new(InformedRrtStar::new(kd.clone())),
+        Box::new(BitStar::new(kd.clone())),
         Box::new(Prm::new(kd.clone())),
         Box::new(Prm::star(kd)),
     ];
@@ -120,6 +123,8 @@ pub fn bench_limits(seed: u64) -> Result<Vec<LimitRow>, String> {
             Box::new(Rrt::new(kd.clone())),
             Box::new(RrtConnect::new(kd.clone())),
             Box::new(RrtStar::new(kd.clone())),
+            Box::new(InformedRrtStar::new(kd.clone())),
+            Box::new(BitStar::new(kd.clone())),
             Box::new(Prm::new(kd.clone())),
             Box::new(Prm::star(kd.clone())),
         ]

@@ -38,14 +38,28 @@ proptest! {
 /// curve, on its last arc, measured 6.333 to the end (a near-full loop) instead of 0.0499, the
 /// rest of the arc: the two right-turn circles coincide to 1e-14, and the straight piece's
 /// direction between them, which rounding decides, put a full turn into RSR.
+///
+/// And the second, found by the property above: the pose 0.05 before the end of this curve, 19.5
+/// radii from the origin, measured 6.333 to the end, its two right-turn circles 3e-14 apart in a
+/// direction rounding chose (the solver's rounding allowance had not counted the poses' distance
+/// from the origin, whose own rounding the frame between two close poses passes on).
 #[test]
 fn pieces_of_a_dubins_curve_add_up_to_it() {
     let dubins = Dubins::new(Bounds::new(0.0, 0.0, 20.0, 20.0).unwrap(), 1.0).unwrap();
-    let a = pose(0.2719940372087154, 16.272373998146577, -0.018812472045116005);
-    let b = pose(9.561902456278117, 4.627374238340356, 2.6393592039599465);
-    let fine = interpolate(&dubins, &[a, b], 0.05).unwrap();
-    let (whole, pieces) = (dubins.distance(&a, &b), length(&dubins, &fine));
-    assert!((pieces - whole).abs() <= 1e-6 * whole, "{pieces} against {whole}");
+    for (a, b) in [
+        (
+            pose(0.2719940372087154, 16.272373998146577, -0.018812472045116005),
+            pose(9.561902456278117, 4.627374238340356, 2.6393592039599465),
+        ),
+        (
+            pose(14.14682283297408, 0.0, -1.220656473521356),
+            pose(7.2864672737841305, 19.540452857434374, 1.6358920603404101),
+        ),
+    ] {
+        let fine = interpolate(&dubins, &[a, b], 0.05).unwrap();
+        let (whole, pieces) = (dubins.distance(&a, &b), length(&dubins, &fine));
+        assert!((pieces - whole).abs() <= 1e-6 * whole, "{pieces} against {whole}");
+    }
 }
 
 #[test]

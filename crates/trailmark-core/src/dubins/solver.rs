@@ -27,6 +27,12 @@ struct Normalised {
     sab: f64,
     /// `(β - α) mod 2π`.
     turns: f64,
+    /// The scale of the rounding of the frame's coordinates, in turning radii: `2 + d` and the
+    /// poses' largest coordinate. Positions far from the origin carry absolute errors of their
+    /// own size times ε, which the frame turned onto the line between two close poses passes
+    /// on to every coordinate (at 20 radii from the origin, poses 0.05 radius apart on one arc
+    /// came out with their two circles 3e-14 apart in a direction rounding chose).
+    scale: f64,
 }
 
 impl Normalised {
@@ -42,7 +48,10 @@ impl Normalised {
         let (cb, sb) = (c1 * cphi + s1 * sphi, s1 * cphi - c1 * sphi);
         // β - α does not depend on the line: it is the goal's heading less the start's.
         let (cab, sab) = (c0 * c1 + s0 * s1, s1 * c0 - c1 * s0);
-        Ok(Normalised { d: dist / radius, sa, ca, sb, cb, cab, sab, turns: mod_tau(sab.atan2(cab)) })
+        let (p0, p1) = (start.translation.vector, goal.translation.vector);
+        let far = p0.x.abs().max(p0.y.abs()).max(p1.x.abs()).max(p1.y.abs()) / radius;
+        let d = dist / radius;
+        Ok(Normalised { d, sa, ca, sb, cb, cab, sab, turns: mod_tau(sab.atan2(cab)), scale: 2.0 + d + far })
     }
 
     /// `(θ - α) mod 2π` for the direction `θ` of the vector `(x, y)`.
@@ -80,7 +89,7 @@ impl Normalised {
                 // p times the uncertainty. Once the coordinates' error reaches p (the two
                 // circles are one, as for two poses on one arc), the direction is not known at
                 // all: any t may be the true one.
-                let ratio = 1e-14 * (2.0 + d) / p;
+                let ratio = 1e-14 * self.scale / p;
                 let noise = if ratio >= 1.0 { std::f64::consts::PI } else { ratio.asin() };
                 if t > whole && (t - whole <= noise || TAU - t <= noise) {
                     t = if t - whole <= TAU - t { whole } else { 0.0 };
@@ -101,7 +110,7 @@ impl Normalised {
                 };
                 // θ moves with p, which rounding blurs most when it is near 0 (the circles
                 // touch): a turn that uncertainty leaves just below 2π is a turn of 0.
-                let noise = self.p_noise(p) + 1e-14 * (1.0 + d);
+                let noise = self.p_noise(p) + 1e-14 * self.scale;
                 let t = if TAU - t <= noise { 0.0 } else { t };
                 let q = mod_tau(t + shift);
                 if TAU - q <= noise { Some([mod_tau(-shift), p, 0.0]) } else { Some([t, p, q]) }
@@ -120,12 +129,13 @@ impl Normalised {
     }
 
     /// A bound on the rounding error of the square of a straight piece's normalised length
-    /// (some tens of units in the last place of `(2 + d)²`: the terms cancel down from there). A square that far below 0 is taken as 0:
+    /// (some tens of units in the last place of the scale's square: the terms cancel down from
+    /// there). A square that far below 0 is taken as 0:
     /// poses on one arc, or on two touching circles, come out on either side of it, and
     /// rejecting them would send the query to a word a full turn longer.
     #[inline]
     fn p2_noise(&self) -> f64 {
-        1e-14 * (2.0 + self.d) * (2.0 + self.d)
+        1e-14 * self.scale * self.scale
     }
 
     /// The rounding error of a straight piece's normalised length `p`, from its square's.

@@ -29,7 +29,9 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 EXPECTED = (trailmark.TrailmarkError, TypeError, ValueError, OverflowError)
 GRID_PLANNERS = ["astar", "dijkstra", "bfs", "dfs", "jps", "jps_plus", "theta_star", "weighted_astar",
                  "lpa_star", "dstar_lite", "ara_star", "ad_star", "rrt", "hybrid_astar", "nonsense"]
-SAMPLING_PLANNERS = ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star", "astar", "nonsense"]
+# The sampling planners, then two names that are not (every input must plan or be refused).
+SAMPLING = ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"]
+SAMPLING_PLANNERS = SAMPLING + ["astar", "nonsense"]
 REPLANNERS = ["dstar_lite", "lpa_star", "mpgaa_star", "adaptive_astar", "ad_star", "astar", "bfs"]
 _ARM = []
 
@@ -90,7 +92,7 @@ def settings(fdp, planner):
                 value = {"name": ["uniform", "bridge", "gaussian", "x"][fdp.ConsumeIntInRange(0, 3)],
                          "std_dev": number(fdp)}
             out[name] = value
-    elif planner in ("rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"):
+    elif planner in SAMPLING:
         if fdp.ConsumeBool():
             out["simplify"] = fdp.ConsumeBool()
         if (planner.startswith("rrt") or planner == "informed_rrt_star") and fdp.ConsumeBool():
@@ -105,7 +107,7 @@ def settings(fdp, planner):
     elif planner == "hybrid_astar":
         out["turning_radius"] = 0.2 + 2.0 * fdp.ConsumeProbability()
     # Bounded work: an iteration limit on every sampling planner, an expansion limit on Hybrid A*.
-    if planner in SAMPLING_PLANNERS[:5]:
+    if planner in SAMPLING:
         out.setdefault("max_iterations", 300)
     elif planner == "hybrid_astar":
         out.setdefault("max_expansions", 2000)
@@ -293,7 +295,8 @@ def fuzz_document(fdp):
     world = [{"grid": {"rows": ["...", ".@.", "..."]}}, {"boxes": {"bounds": [[0, 1], [0, 1]]}},
              {"polygons": {"bounds": [0, 0, 10, 10], "obstacles": [[[4, 0], [6, 0], [6, 8], [4, 8]]]}},
              {"grid": {"map": "no-such.map"}}, number(fdp)][fdp.ConsumeIntInRange(0, 4)]
-    name = (GRID_PLANNERS + SAMPLING_PLANNERS)[fdp.ConsumeIntInRange(0, 21)]
+    names = GRID_PLANNERS + SAMPLING_PLANNERS
+    name = names[fdp.ConsumeIntInRange(0, len(names) - 1)]
     planner = {"name": name, **settings(fdp, name)}
     document = {"world": world, "start": list(point(fdp, 2)), "goal": list(point(fdp, 2)), "planner": planner,
                 "seed": number(fdp)}

@@ -135,7 +135,10 @@ impl Normalised {
     /// rejecting them would send the query to a word a full turn longer.
     #[inline]
     fn p2_noise(&self) -> f64 {
-        1e-14 * self.scale * self.scale
+        // The square's terms are of size (2 + d)²; an input error of δ radii moves it by about
+        // (2 + d) δ, so the poses' distance from the origin enters once, not squared (squared,
+        // it had let words whose circles overlap join poses 1e8 radii out).
+        1e-14 * (2.0 + self.d) * self.scale
     }
 
     /// The rounding error of a straight piece's normalised length `p`, from its square's.
@@ -261,7 +264,9 @@ impl Normalised {
         };
         // A straight piece so short (or a square rounded below 0) that its direction is uncertain beyond the margin below:
         // let the full evaluation decide.
-        if p2 <= 1e-10 * (1.0 + self.d) * (1.0 + self.d) {
+        // (Below this square the full evaluation may snap the turn by more than CLOSE: the two
+        // must agree on whether a word takes a full turn.)
+        if p2 <= 1e-10 * self.scale * self.scale {
             return None;
         }
         let p2 = p2.max(0.0);

@@ -232,3 +232,41 @@ proptest! {
         prop_assert!((ends[2].1.coords - path.end().translation.vector).norm() <= tol);
     }
 }
+
+/// Far from the origin: exact poses (one position, a quarter turn apart) are joined as at the
+/// origin, not by a word whose circles overlap; poses on one short arc, computed along
+/// it, by that arc, not a full turn later; and the two ways of measuring agree.
+#[test]
+fn far_from_the_origin_arcs_stay_arcs() {
+    for far in [20.0, 1e4, 1e8] {
+        let a = pose(far, 0.0, 0.0);
+        let b = pose(far, 0.0, PI / 2.0);
+        let path = DubinsPath::shortest(&a, &b, 1.0).unwrap();
+        assert!(close(&path.end(), &b, 1e-9 * far), "{far}: ends at {:?}", path.end());
+        // The same query at the origin: paths do not depend on where they are.
+        let home = DubinsPath::shortest(&pose(0.0, 0.0, 0.0), &pose(0.0, 0.0, PI / 2.0), 1.0).unwrap();
+        assert!(
+            (path.length() - home.length()).abs() < 1e-6,
+            "{far}: {} against {}",
+            path.length(),
+            home.length()
+        );
+        for (i, &arc) in [0.05, 0.3, 1e-3].iter().enumerate() {
+            for word in [DubinsWord::Lsl, DubinsWord::Rsr] {
+                let start = pose(far + 0.37 * i as f64, far * 0.5, 1.3 * i as f64 + 0.2);
+                let end = DubinsPath {
+                    start: Start::of(&start),
+                    turning_radius: 1.0,
+                    word,
+                    params: [arc, 0.0, 0.0],
+                }
+                .end();
+                let path = DubinsPath::shortest(&start, &end, 1.0).unwrap();
+                let length = DubinsPath::shortest_length(&start, &end, 1.0).unwrap();
+                assert!((path.length() - arc).abs() < 1e-6, "{far} {word} {arc}: {}", path.length());
+                assert!((length - path.length()).abs() < 1e-9, "{far} {word} {arc}: {length}");
+                assert!(close(&path.end(), &end, 1e-7 * (1.0 + far * 1e-6)), "{far} {word} {arc}");
+            }
+        }
+    }
+}

@@ -121,6 +121,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     write("core-dubins.svg", dubins_words()?)?;
     write("core-reeds-shepp.svg", reeds_shepp_parking()?)?;
     roadmaps()?;
+    write("graph-lazy-visibility.svg", lazy_visibility()?)?;
     bridge_samples()?;
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     ros_map(&root.join("examples/maps/office.yaml"), "map-office.svg", [-4.2, -2.2], [4.3, 2.3])?;
@@ -381,6 +382,59 @@ fn bridge_samples() -> Result<(), Box<dyn std::error::Error>> {
         .title("Bridge test (std_dev 2): 600 samples, and RRT-Connect through six doors with it")
         .to_svg();
     Ok(write("sample-bridge.svg", svg)?)
+}
+
+/// One query among 144 unit squares by the lazy visibility graph: the edges its last round
+/// swept, and the path.
+fn lazy_visibility() -> Result<String, Box<dyn std::error::Error>> {
+    use trailmark::core::geometry::Point;
+    use trailmark::core::svg::WorldSvg;
+    use trailmark::core::world::{Bounds, PolygonWorld};
+    use trailmark::graph::{LazyVisibilityGraph, Roadmap};
+
+    let k = 12;
+    let side = (2 * k + 1) as f64;
+    let square = |x: f64, y: f64| {
+        vec![Point::new(x, y), Point::new(x + 1.0, y), Point::new(x + 1.0, y + 1.0), Point::new(x, y + 1.0)]
+    };
+    let obstacles = (0..k * k).map(|i| square((2 * (i % k) + 1) as f64, (2 * (i / k) + 1) as f64)).collect();
+    let world = PolygonWorld::new(Bounds::new(0.0, 0.0, side, side)?, obstacles, 0.0)?;
+    let graph = LazyVisibilityGraph::new(world.free_space());
+    let (start, goal) = (Point::new(0.0, 0.0), Point::new(side, 0.3 * side));
+    let mut bound = LazyVisibilityGraph::first_bound(start, goal);
+    let (bounded, path) = loop {
+        let bounded = graph.within(start, goal, bound)?;
+        let q = bounded.query();
+        let path = astar(&q, q.start(), q.goal(), q.heuristic())?.path;
+        match bounded.next_bound(path.as_ref().map(|p| p.cost)) {
+            Some(next) => bound = next,
+            None => {
+                let path = q.positions(&path.ok_or("no lazy visibility path")?.nodes);
+                drop(q);
+                break (bounded, path);
+            }
+        }
+    };
+    println!(
+        "lazy visibility: {} nodes, {} swept, {} edges, bound {:.3}",
+        graph.node_count(),
+        bounded.swept(),
+        bounded.count_edges(),
+        bounded.bound()
+    );
+    let title = format!(
+        "Lazy visibility graph: {} of {} corners swept, the edges they found, the shortest path",
+        bounded.swept(),
+        graph.node_count()
+    );
+    let svg = WorldSvg::new(&world)
+        .free_space(graph.space())
+        .edges(bounded.edge_ends())
+        .path(&path)
+        .start(start)
+        .goal(goal)
+        .title(title);
+    Ok(svg.to_svg())
 }
 
 /// The four roadmap builders on one generated world (24 convex obstacles, robot radius 0.5)

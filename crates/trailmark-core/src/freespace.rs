@@ -237,6 +237,22 @@ impl FreeSpace {
         self.bvh.intersect_aabb(&query).map(|i| i as usize).collect::<Vec<_>>().into_iter()
     }
 
+    /// Indices of the edges found by descending the boundary's bounding-volume tree through
+    /// every box `(min, max)` that `keep` accepts (a subtree whose box is refused is skipped;
+    /// an edge is returned when its own bounding box is accepted). `keep` must accept every box
+    /// that holds a box it accepts, as a region test does.
+    pub fn edges_where<'a>(
+        &'a self,
+        keep: impl Fn(Point, Point) -> bool + 'a,
+    ) -> impl Iterator<Item = usize> + 'a {
+        self.bvh
+            .leaves(move |node| {
+                let (min, max) = (node.mins(), node.maxs());
+                keep(Point::new(min.x, min.y), Point::new(max.x, max.y))
+            })
+            .map(|i| i as usize)
+    }
+
     /// The edges that pass through `p` (as an endpoint or in their interior).
     pub fn edges_through(&self, p: Point) -> impl Iterator<Item = usize> + '_ {
         self.edges_near(p, p).filter(move |&e| {

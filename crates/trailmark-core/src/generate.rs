@@ -1,5 +1,5 @@
 //! Seeded generators: grids of random obstacles, mazes and rooms, in the styles of the MovingAI
-//! `random`, `mazes` and `rooms` sets; polygon worlds of random convex obstacles, a bug trap,
+//! `random`, `mazes` and `rooms` sets, and a lattice of unit blocks; polygon worlds of random convex obstacles, a bug trap,
 //! and walls with narrow doors. The same arguments give the same world on every machine.
 //!
 //! Every size and count is checked before anything is allocated for it: grids against
@@ -107,6 +107,18 @@ pub fn random(width: usize, height: usize, obstacle_fraction: f64, seed: u64) ->
     let costs =
         (0..cells).map(|_| if rng.random_bool(obstacle_fraction) { f64::INFINITY } else { 1.0 }).collect();
     Ok(Grid::from_costs(width, height, costs)?)
+}
+
+/// A square grid of side `2k + 1` with a blocked cell at every cell whose column and row are both
+/// odd: `k²` unit blocks, each alone, with one-cell corridors between them. Any-angle paths
+/// there touch a block's corner at almost every step (`k = 50`: 2,500 blocks, 10,000 corners).
+pub fn lattice(k: usize) -> Result<Grid, GenerateError> {
+    // A side that saturates is refused as too large below.
+    let side = k.saturating_mul(2).saturating_add(1);
+    let cells = Grid::cell_count(side, side)?;
+    let costs =
+        (0..cells).map(|i| if (i % side) % 2 == 1 && (i / side) % 2 == 1 { f64::INFINITY } else { 1.0 });
+    Ok(Grid::from_costs(side, side, costs.collect())?)
 }
 
 /// A perfect maze (one route between any two places) with corridors `corridor` cells wide and
@@ -452,6 +464,14 @@ mod tests {
                 assert_eq!(reachable(&r, Cell::new(0, 0)), r.passable_count(), "rooms {w}x{h} seed {seed}");
             }
         }
+    }
+
+    #[test]
+    fn a_lattice_is_its_rows() {
+        let rows = [".....", ".@.@.", ".....", ".@.@.", "....."];
+        assert_eq!(lattice(2).unwrap(), Grid::from_rows(&rows).unwrap());
+        assert_eq!(lattice(50).unwrap().passable_count(), 101 * 101 - 2500);
+        assert!(lattice(usize::MAX).is_err());
     }
 
     #[test]

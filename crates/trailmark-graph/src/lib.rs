@@ -66,4 +66,6 @@ pub use roadmap::{Roadmap, RoadmapQuery};
 #[cfg(feature = "roadmaps")]
 pub use trapezoid::{Portal, Side, Trapezoid, TrapezoidError, TrapezoidQuery, Trapezoids};
 #[cfg(feature = "roadmaps")]
-pub use visibility::{Edges, VisibilityError, VisibilityGraph, VisibilityQuery};
+pub use visibility::{
+    BoundedVisibility, Edges, LazyVisibilityGraph, VisibilityError, VisibilityGraph, VisibilityQuery,
+};

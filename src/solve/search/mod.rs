@@ -8,3 +8,4 @@ pub(super) mod grid;
 pub(super) mod polygons;
 pub(super) mod roadmap;
 pub(super) mod ros_map;
+mod visibility;

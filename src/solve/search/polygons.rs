@@ -7,13 +7,14 @@ use trailmark_core::geometry::Point;
 use trailmark_core::grid::GridHeuristic;
 use trailmark_core::svg::WorldSvg;
 use trailmark_core::world::PolygonWorld;
+use trailmark_graph::VisibilityError;
 use trailmark_graph::trapezoid::TrapezoidError;
-use trailmark_graph::visibility::{Edges, VisibilityError};
-use trailmark_graph::{Roadmap, Trapezoids, VisibilityGraph};
+use trailmark_graph::{LazyVisibilityGraph, Roadmap, Trapezoids};
 use trailmark_sample::PolygonPrm;
 use trailmark_sample::space::{DubinsCurves, ReedsSheppCurves};
 
 use super::roadmap::{grow, prm_options, search_roadmap};
+use super::visibility::search_visibility;
 use crate::solve::error::{DocumentError, SolveError};
 use crate::solve::problem::{GraphKind, ProblemSpec};
 use crate::solve::result::{SolveResult, Waypoint, same_length};
@@ -69,15 +70,15 @@ pub(in crate::solve) fn solve_polygons(
     let clock = Instant::now();
     let (result, svg) = match kind {
         GraphKind::Visibility => {
-            let graph = VisibilityGraph::with_edges(world.free_space(), Edges::Tangent);
+            let graph = LazyVisibilityGraph::new(world.free_space());
             let built = clock.elapsed();
-            let query = graph.query(start, goal).map_err(|e| match e {
+            let blocked = |e: VisibilityError| match e {
                 VisibilityError::StartBlocked { .. } => refused("start", start, e.into()),
                 VisibilityError::GoalBlocked { .. } => refused("goal", goal, e.into()),
-            })?;
-            let result = search_roadmap(problem, &query, built, clock.elapsed().saturating_sub(built))?;
-            let svg = WorldSvg::new(world).free_space(graph.space()).edges(graph.edge_ends());
-            (result, svg.title("Visibility graph (tangent edges) and the shortest path"))
+            };
+            let (result, edges) = search_visibility(problem, &graph, (start, goal), built, blocked)?;
+            let svg = WorldSvg::new(world).free_space(graph.space()).edges(edges);
+            (result, svg.title("Visibility graph (the tangent edges the search swept) and the shortest path"))
         }
         GraphKind::Trapezoid => {
             let space = world.free_space();

@@ -19,6 +19,7 @@ mod arms;
 mod cars;
 mod contingency;
 mod grid;
+mod lattice;
 mod navigation;
 mod ompl;
 mod ompl_arm;
@@ -183,6 +184,7 @@ impl BenchReport {
         goals.extend(navigation::goals(&self.navigation_ratios));
         goals.extend(navigation::best_goals(&self.replanner_ratios));
         goals.push(rosmaps::goal(&self.rosmaps));
+        goals.push(lattice::goal(self.roadmaps.as_ref().map_or(&[][..], |r| &r.lattice)));
         goals.extend(sampling::goals(self.sampling.as_ref()));
         goals.extend(arms::goals(self.arms.as_ref()));
         goals
@@ -192,6 +194,7 @@ impl BenchReport {
     fn errors(&self) -> usize {
         self.results.iter().filter(|r| !r.known_flaw).map(|r| r.cost_errors).sum::<usize>()
             + self.roadmaps.iter().flat_map(|r| &r.rows).map(|r| r.cost_errors).sum::<usize>()
+            + self.roadmaps.iter().flat_map(|r| &r.lattice).filter(|r| r.cost_error).count()
             + self.sampling.as_ref().map_or(0, |s| s.errors())
             + self.cars.as_ref().map_or(0, |c| c.errors())
             + self.contingency.iter().filter(|r| r.error).count()

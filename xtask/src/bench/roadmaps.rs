@@ -23,6 +23,7 @@ use trailmark::graph::{RoadmapQuery, Trapezoids};
 use trailmark::prelude::*;
 use trailmark::sample::{Connection, PolygonPrm, PrmOptions, PrmSampler};
 
+use crate::bench::lattice::{self, LatticeRow, bench_lattices};
 use crate::bench::progress::SectionProgress;
 use crate::bench::report::table;
 use crate::bench::stats::{fitted_exponent, median};
@@ -84,6 +85,8 @@ pub struct RoadmapRow {
 pub struct RoadmapReport {
     /// One row per world.
     pub rows: Vec<RoadmapRow>,
+    /// One visibility query among thousands of squares, lazy beside full.
+    pub lattice: Vec<LatticeRow>,
     /// The fitted exponent k of `time ~ vertices^k`, full visibility graph on one thread.
     pub visibility_exponent: f64,
     /// Dubins shortest paths per second on one core.
@@ -129,6 +132,7 @@ pub fn bench_roadmaps(suite: Suite, seed: u64, runs: u32) -> Result<RoadmapRepor
     Ok(RoadmapReport {
         visibility_exponent: fitted_exponent(&samples),
         rows,
+        lattice: bench_lattices(suite, runs)?,
         dubins_paths_per_s,
         dubins_lengths_per_s,
         reeds_shepp_paths_per_s,
@@ -287,6 +291,7 @@ pub fn markdown(report: &RoadmapReport) -> String {
             )
         },
     ));
+    out.push_str(&lattice::markdown(&report.lattice));
     out.push_str(&format!(
         "\nVisibility-graph build time grows like n^{:.2} in the number of boundary vertices n (one thread; \
          Lee's sweep is O(n² log n)).\n\n",

@@ -7,8 +7,8 @@
 //! shortest path in this graph is the Euclidean shortest path in the free space.
 //!
 //! Construction is Lee's rotational sweep: around each node, the other vertices are sorted by
-//! angle and a ray sweeps them once while a balanced tree keeps the obstacle edges it crosses,
-//! ordered by distance; a vertex is visible when the nearest of them is farther away. That is
+//! angle and a ray sweeps them once while an ordered status keeps the obstacle edges it crosses,
+//! nearest first; a vertex is visible when the nearest of them is farther away. That is
 //! O(n log n) per node, O(n² log n) in all, and a query's start and goal cost one sweep each.
 //! Every test is an exact orientation predicate, so collinear vertices (grid maps are full of
 //! them) and obstacles touching at a point are decided without tolerance.
@@ -31,15 +31,19 @@
 
 use thiserror::Error;
 use trailmark_core::cost::Cost;
-use trailmark_core::freespace::{Corner, FreeSpace, Location};
+use trailmark_core::freespace::{Corner, FreeSpace};
 use trailmark_core::geometry::Point;
-use trailmark_core::predicates::orient;
 
 use crate::roadmap::{Roadmap, RoadmapQuery};
 
+mod lazy;
+mod nodes;
+mod scope;
 mod sweep;
 
-use sweep::{Incidence, Ray, Sighting, Sweep, Wedge};
+pub use lazy::{BoundedVisibility, LazyVisibilityGraph};
+use nodes::VisibilityNodes;
+use sweep::Sweep;
 
 /// Which edges a [`VisibilityGraph`] keeps.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -74,29 +78,14 @@ pub enum VisibilityError {
     },
 }
 
-/// A node of a visibility graph: a convex obstacle corner.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Node {
-    at: Point,
-    position: u32,
-    corner: Corner,
-}
-
 /// The visibility graph of a [`FreeSpace`]. Node `i` is a convex obstacle corner, at
 /// [`VisibilityGraph::position`]; edges are undirected, with their Euclidean length as cost.
 #[derive(Clone, Debug)]
 pub struct VisibilityGraph {
-    space: FreeSpace,
-    nodes: Vec<Node>,
-    /// Nodes at each position: `nodes_at[node_start[p]..node_start[p + 1]]`.
-    node_start: Vec<u32>,
-    nodes_at: Vec<u32>,
-    /// The boundary edges at each position.
-    incident: Incidence,
+    nodes: VisibilityNodes,
     offsets: Vec<u32>,
     targets: Vec<u32>,
     costs: Vec<Cost>,
-    edges: Edges,
 }
 
 impl VisibilityGraph {
@@ -115,35 +104,15 @@ impl VisibilityGraph {
     /// shared among `threads` threads (`0`: as many as the machine has cores). The graph does
     /// not depend on the number of threads.
     pub fn with_options(space: FreeSpace, edges: Edges, threads: usize) -> Self {
-        let positions = space.positions();
-        let mut nodes = Vec::new();
-        let mut node_start = Vec::with_capacity(positions.len() + 1);
-        let mut nodes_at = Vec::new();
-        node_start.push(0);
-        for (p, &at) in positions.iter().enumerate() {
-            for &corner in space.corners(p) {
-                if corner.is_convex_obstacle(at) {
-                    nodes_at.push(nodes.len() as u32);
-                    nodes.push(Node { at, position: p as u32, corner });
-                }
-            }
-            node_start.push(nodes_at.len() as u32);
-        }
-        let incident = Incidence::of(&space);
         let mut graph = VisibilityGraph {
-            space,
-            nodes,
-            node_start,
-            nodes_at,
-            incident,
+            nodes: VisibilityNodes::of(space, edges),
             offsets: Vec::new(),
             targets: Vec::new(),
             costs: Vec::new(),
-            edges,
         };
         let threads =
             if threads == 0 { std::thread::available_parallelism().map_or(1, |n| n.get()) } else { threads };
-        graph.connect(threads.min(graph.nodes.len()).max(1));
+        graph.connect(threads.min(graph.nodes.nodes.len()).max(1));
         graph
     }
 
@@ -161,7 +130,7 @@ impl VisibilityGraph {
         };
         pairs.sort_unstable();
         pairs.dedup();
-        let n = self.nodes.len();
+        let n = self.nodes.nodes.len();
         let mut degree = vec![0u32; n + 1];
         for &(a, b) in &pairs {
             degree[a as usize + 1] += 1;
@@ -174,7 +143,7 @@ impl VisibilityGraph {
         let mut targets = vec![0u32; pairs.len() * 2];
         let mut costs = vec![0.0; pairs.len() * 2];
         for &(a, b) in &pairs {
-            let cost = (self.nodes[a as usize].at - self.nodes[b as usize].at).norm();
+            let cost = (self.position(a) - self.position(b)).norm();
             for (from, to) in [(a, b), (b, a)] {
                 let slot = fill[from as usize] as usize;
                 targets[slot] = to;
@@ -191,69 +160,30 @@ impl VisibilityGraph {
     fn pairs_from(&self, first: usize, step: usize) -> Vec<(u32, u32)> {
         let mut pairs = Vec::new();
         let mut sweep = Sweep::default();
-        for (v, node) in self.nodes.iter().enumerate().skip(first).step_by(step) {
-            let depart = |q: Point| node.corner.admits(node.at, q);
-            let (next, prev) = (node.corner.next, node.corner.prev);
-            let free_wedge = Wedge { from: Ray::toward(next), to: Some(Ray::toward(prev)) };
-            let wedges = match self.edges {
-                // The free wedge of the corner.
-                Edges::All => [Some(free_wedge), None],
-                // Its two tangent parts: along each boundary edge, up to where the line through
-                // the node starts to cut into the corner.
-                Edges::Tangent => [
-                    Some(Wedge { from: Ray::toward(next), to: Some(Ray::away_from(prev)) }),
-                    Some(Wedge { from: Ray::away_from(next), to: Some(Ray::toward(prev)) }),
-                ],
-            };
-            for wedge in wedges.into_iter().flatten() {
-                sweep.run(
-                    &self.space,
-                    &self.incident,
-                    node.at,
-                    Some(node.position as usize),
-                    wedge,
-                    &depart,
-                    None,
-                    |target| {
-                        let Sighting::Position(w) = target else { return };
-                        for &u in self.nodes_at(w) {
-                            if (u as usize) > v && self.joins(node, &self.nodes[u as usize]) {
-                                pairs.push((v as u32, u));
-                            }
-                        }
-                    },
-                );
-            }
+        for v in (first..self.nodes.nodes.len()).step_by(step) {
+            self.nodes.for_each_seen(&mut sweep, v as u32, None, |u| {
+                if u as usize > v {
+                    pairs.push((v as u32, u));
+                }
+            });
         }
         pairs
     }
 
-    /// Whether an edge between two mutually visible nodes is kept: the segment leaves each
-    /// node within its free wedge, and (for tangent edges) grazes each corner.
-    fn joins(&self, a: &Node, b: &Node) -> bool {
-        a.corner.admits(a.at, b.at)
-            && b.corner.admits(b.at, a.at)
-            && (self.edges == Edges::All || (tangent(a, b.at) && tangent(b, a.at)))
-    }
-
     /// Where node `node` is and the boundary corner it stands for.
     pub(crate) fn corner(&self, node: u32) -> (Point, Corner) {
-        let n = &self.nodes[node as usize];
+        let n = &self.nodes.nodes[node as usize];
         (n.at, n.corner)
-    }
-
-    fn nodes_at(&self, position: usize) -> &[u32] {
-        &self.nodes_at[self.node_start[position] as usize..self.node_start[position + 1] as usize]
     }
 
     /// The free space the graph was built on.
     pub fn space(&self) -> &FreeSpace {
-        &self.space
+        &self.nodes.space
     }
 
     /// The number of nodes (convex obstacle corners).
     pub fn node_count(&self) -> usize {
-        self.nodes.len()
+        self.nodes.nodes.len()
     }
 
     /// The number of undirected edges.
@@ -263,7 +193,7 @@ impl VisibilityGraph {
 
     /// Which edges this graph keeps.
     pub fn edges(&self) -> Edges {
-        self.edges
+        self.nodes.edges
     }
 
     /// The position of node `node`.
@@ -273,12 +203,12 @@ impl VisibilityGraph {
     /// If `node` is not below [`node_count`](Self::node_count): node ids are indices, as a
     /// slice's. [`get_position`](Self::get_position) is the checked form.
     pub fn position(&self, node: u32) -> Point {
-        self.nodes[node as usize].at
+        self.nodes.nodes[node as usize].at
     }
 
     /// The position of node `node`, `None` if the graph has no such node.
     pub fn get_position(&self, node: u32) -> Option<Point> {
-        self.nodes.get(node as usize).map(|n| n.at)
+        self.nodes.nodes.get(node as usize).map(|n| n.at)
     }
 
     /// The neighbours of `node` with the edge costs.
@@ -295,59 +225,11 @@ impl VisibilityGraph {
     /// joined to every node they see and to each other when they see each other. One sweep
     /// each: O(n log n) for n boundary vertices.
     pub fn query(&self, start: Point, goal: Point) -> Result<VisibilityQuery<'_>, VisibilityError> {
-        let start_location = self.space.locate(start);
-        if start_location == Location::Blocked {
-            return Err(VisibilityError::StartBlocked { x: start.x, y: start.y });
-        }
-        let goal_location = self.space.locate(goal);
-        if goal_location == Location::Blocked {
-            return Err(VisibilityError::GoalBlocked { x: goal.x, y: goal.y });
-        }
-        let n = self.nodes.len();
-        let mut sweep = Sweep::default();
-        let mut links = [vec![Cost::INFINITY; n], vec![Cost::INFINITY; n]];
-        let mut direct = if start == goal { Some(0.0) } else { None };
-        // Whether the goal may be entered from the start's direction (always, in open space).
-        let goal_admits_start = self.space.departure(goal)(start);
-        for (end, (at, location)) in [(start, start_location), (goal, goal_location)].into_iter().enumerate()
-        {
-            let position = if location == Location::Boundary { self.space.position_at(at) } else { None };
-            let depart = self.space.departure(at);
-            let other = if end == 0 && direct.is_none() { Some(goal) } else { None };
-            let goal_position = other.and_then(|g| self.space.position_at(g));
-            let extra = other.filter(|_| goal_position.is_none());
-            let row = &mut links[end];
-            sweep.run(&self.space, &self.incident, at, position, Wedge::full(at), &depart, extra, |target| {
-                let w = match target {
-                    Sighting::Extra => {
-                        if goal_admits_start {
-                            direct = Some((goal - at).norm());
-                        }
-                        return;
-                    }
-                    Sighting::Position(w) => w,
-                };
-                if goal_position == Some(w) && goal_admits_start {
-                    direct = Some((goal - at).norm());
-                }
-                for &u in self.nodes_at(w) {
-                    let node = &self.nodes[u as usize];
-                    if node.corner.admits(node.at, at) && (self.edges == Edges::All || tangent(node, at)) {
-                        row[u as usize] = (node.at - at).norm();
-                    }
-                }
-            });
-        }
-        let [from_start, from_goal] = links;
-        Ok(RoadmapQuery::new(self, (start, goal), from_start, from_goal, direct)
+        let links = self.nodes.links(&mut Sweep::default(), (start, goal), None, |_| true)?;
+        let [from_start, to_goal] = links.rows;
+        Ok(RoadmapQuery::new(self, (start, goal), from_start, to_goal, links.direct)
             .expect("a link per roadmap node"))
     }
-}
-
-/// Whether the segment from node `a` toward `q` grazes its corner: both neighbouring boundary
-/// vertices on the same closed side of the line.
-fn tangent(a: &Node, q: Point) -> bool {
-    orient(a.at, q, a.corner.prev) * orient(a.at, q, a.corner.next) >= 0.0
 }
 
 /// A visibility graph with a start and a goal: the graph to search for one query.
@@ -361,11 +243,11 @@ impl Roadmap for VisibilityGraph {
     const DIRECTED: bool = false;
 
     fn node_count(&self) -> usize {
-        self.nodes.len()
+        self.nodes.nodes.len()
     }
 
     fn position(&self, node: u32) -> Point {
-        self.nodes[node as usize].at
+        self.nodes.nodes[node as usize].at
     }
 
     fn lower_bound(&self, a: Point, b: Point) -> Cost {

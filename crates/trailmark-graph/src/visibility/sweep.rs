@@ -7,6 +7,8 @@ use trailmark_core::freespace::FreeSpace;
 use trailmark_core::geometry::Point;
 use trailmark_core::predicates::{orient, wedge_holds};
 
+use super::scope::Scope;
+
 /// The boundary edges at each position of a free space, in compressed rows.
 #[derive(Clone, Debug)]
 pub(super) struct Incidence {
@@ -228,14 +230,23 @@ impl Wedge {
         Wedge { from: Ray::toward(Point::new(centre.x + 1.0, centre.y)), to: None }
     }
 
-    /// Whether the direction toward `p` lies in the wedge. Exact.
-    pub(super) fn contains(&self, centre: Point, p: Point) -> bool {
-        let Some(to) = self.to else { return true };
+    /// The test of whether the direction toward a point lies in the wedge around `centre`,
+    /// with what does not depend on the point computed once. Exact.
+    pub(super) fn around(&self, centre: Point) -> impl Fn(Point) -> bool {
         let from = self.from;
-        // The orientation of `to` relative to `from`, with the rays' signs.
-        let turn = -from.sign() * to.side(centre, from.through);
-        let aligned = || from.sign() * to.sign() * (from.through - centre).dot(&(to.through - centre)) > 0.0;
-        wedge_holds(turn, aligned, from.side(centre, p), to.side(centre, p))
+        // The orientation of `to` relative to `from`, with the rays' signs, and whether the two
+        // rays point the same way (for a turn of zero).
+        let shape = self.to.map(|to| {
+            let turn = -from.sign() * to.side(centre, from.through);
+            let aligned = from.sign() * to.sign() * (from.through - centre).dot(&(to.through - centre)) > 0.0;
+            (to, turn, aligned)
+        });
+        move |p| match shape {
+            None => true,
+            Some((to, turn, aligned)) => {
+                wedge_holds(turn, || aligned, from.side(centre, p), to.side(centre, p))
+            }
+        }
     }
 }
 
@@ -244,17 +255,19 @@ impl Sweep {
     /// position (and the `extra` point, if any) in the wedge that the open segment from `centre`
     /// reaches through free space, leaving `centre` in a direction that `depart` accepts.
     /// Whether the segment may *end* there is the caller's test. `skip` is the position at
-    /// `centre`, if it is a vertex.
+    /// `centre`, if it is a vertex. With a `scope`, only its edges and their ends are looked at:
+    /// what is found is what the full sweep finds wherever the scope holds every edge that could
+    /// block (the caller refuses what lies elsewhere).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn run(
         &mut self,
         space: &FreeSpace,
         incidence: &Incidence,
-        centre: Point,
-        skip: Option<usize>,
+        (centre, skip): (Point, Option<usize>),
         wedge: Wedge,
         depart: &dyn Fn(Point) -> bool,
         extra: Option<Point>,
+        scope: Option<&Scope>,
         mut found: impl FnMut(Sighting),
     ) {
         let positions = space.positions();
@@ -275,12 +288,15 @@ impl Sweep {
         // near-ties that rounding got wrong.
         let origin = sweep_key(centre, wedge.from.approximate_point(centre)).0;
         self.keyed.clear();
-        let candidates = (0..positions.len() as u32)
+        let all = 0..if scope.is_some() { 0 } else { positions.len() as u32 };
+        let candidates = all
+            .chain(scope.map_or(&[][..], |s| s.positions()).iter().copied())
             .filter(|&i| Some(i as usize) != skip)
             .chain(extra.filter(|&x| x != centre).map(|_| extra_id));
+        let in_wedge = wedge.around(centre);
         for id in candidates {
             let p = point(id);
-            if wedge.contains(centre, p) {
+            if in_wedge(p) {
                 let (angle, distance) = sweep_key(centre, p);
                 let relative = if angle < origin { angle + 4.0 - origin } else { angle - origin };
                 self.keyed.push(((relative, distance), id));
@@ -308,7 +324,9 @@ impl Sweep {
         self.status.clear();
         let first = wedge.from;
         let on_ray = |p: Point| first.holds(centre, p);
-        for e in 0..space.edges().len() {
+        let all = 0..if scope.is_some() { 0 } else { space.edges().len() as u32 };
+        for e in all.chain(scope.map_or(&[][..], |s| s.edges()).iter().copied()) {
+            let e = e as usize;
             if ignored(e) {
                 continue;
             }
@@ -337,7 +355,7 @@ impl Sweep {
             // Edges ending on this ray leave the tree.
             let vacancy = update_status(
                 &mut self.status,
-                (space, incidence),
+                (space, incidence, scope),
                 centre,
                 &self.events[group.clone()],
                 &self.ignored,
@@ -369,7 +387,7 @@ impl Sweep {
             // Edges starting on this ray enter the tree.
             update_status(
                 &mut self.status,
-                (space, incidence),
+                (space, incidence, scope),
                 centre,
                 &self.events[group],
                 &self.ignored,
@@ -381,15 +399,15 @@ impl Sweep {
 
 /// Removes from the status the edges that end at the vertices `group` (on the current ray)
 /// and lie clockwise of it (`entering` is `None`), or inserts those that start there and lie
-/// counter-clockwise (`entering` holds what the removal returned). Edges in `ignored`, and the
-/// extra point, are passed over.
+/// counter-clockwise (`entering` holds what the removal returned). Edges in `ignored` or out of
+/// the scope, and the extra point, are passed over.
 ///
 /// The removal returns where its edge was when the group is one vertex with exactly one edge
 /// ending there: the usual case of a ray passing a vertex of a boundary chain, whose one
 /// entering edge then takes that place without a search.
 fn update_status(
     status: &mut Status,
-    (space, incidence): (&FreeSpace, &Incidence),
+    (space, incidence, scope): (&FreeSpace, &Incidence, Option<&Scope>),
     centre: Point,
     group: &[u32],
     ignored: &[u32],
@@ -400,7 +418,8 @@ fn update_status(
     let (mut count, mut vacancy, mut entered) = (0, None, None);
     for &id in group.iter().filter(|&&id| (id as usize) < positions.len()) {
         let w = positions[id as usize];
-        for &e in incidence.at(id as usize).iter().filter(|e| !ignored.contains(e)) {
+        let looked_at = |e: &&u32| !ignored.contains(e) && scope.is_none_or(|s| s.holds(**e));
+        for &e in incidence.at(id as usize).iter().filter(looked_at) {
             let (a, b) = space.edge_points(e as usize);
             let other = if a == w { b } else { a };
             let side = orient(centre, w, other);

@@ -85,15 +85,17 @@ fn check_bounded(
     }
     // In-edges: u -> w is an in-edge of w exactly when it is an out-edge of u.
     let roadmap = lazy.roadmap();
-    for w in 0..roadmap.node_count() as u32 {
-        let mut into = Vec::new();
-        roadmap.for_each_in(w, |u, c| into.push((u, c)));
-        for (u, c) in into {
-            let mut out = Vec::new();
-            roadmap.for_each_out(u, |x, d| out.push((x, d)));
-            assert!(out.contains(&(w, c)), "{u} -> {w} is an in-edge but not an out-edge");
-        }
+    let mut outs = BTreeSet::new();
+    let mut ins = BTreeSet::new();
+    for v in 0..roadmap.node_count() as u32 {
+        roadmap.for_each_out(v, |w, c| {
+            outs.insert((v, w, c.to_bits()));
+        });
+        roadmap.for_each_in(v, |u, c| {
+            ins.insert((u, v, c.to_bits()));
+        });
     }
+    assert_eq!(outs, ins, "in-edges and out-edges differ (bound {bound})");
 }
 
 /// A grid world's free cell corners (the GPPC query points) and centres.
@@ -199,11 +201,14 @@ fn bounds_below_the_line_or_not_a_number_keep_no_edge() {
     let space = lattice(3);
     let lazy = LazyVisibilityGraph::new(space);
     let (start, goal) = (Point::new(0.5, 0.5), Point::new(6.5, 0.5));
-    for bound in [5.9, f64::NAN, -1.0] {
+    for bound in [5.9, f64::NAN, -1.0, f64::NEG_INFINITY] {
         let bounded = lazy.within(start, goal, bound).unwrap();
         let q = bounded.query();
         assert_eq!(astar(&q, q.start(), q.goal(), q.heuristic()).unwrap().cost(), None);
-        assert_eq!(bounded.count_edges(), 0);
+        for v in 0..q.node_bound() as u32 {
+            q.for_each_successor(v, |u, _| panic!("an edge {v} -> {u} at bound {bound}"));
+            q.for_each_predecessor(v, |u, _| panic!("an edge {u} -> {v} at bound {bound}"));
+        }
         assert!(bounded.next_bound(None).is_some(), "a next round after {bound}");
     }
     // The straight line along the free row is found at the first bound.
@@ -211,6 +216,22 @@ fn bounds_below_the_line_or_not_a_number_keep_no_edge() {
     let q = bounded.query();
     assert_eq!(astar(&q, q.start(), q.goal(), q.heuristic()).unwrap().cost(), Some(6.0));
     assert_eq!(bounded.next_bound(Some(6.0)), None);
+}
+
+#[test]
+fn rounds_end_even_when_every_path_found_is_longer_than_its_bound() {
+    // A search that is not least-cost may keep returning a path just above each bound.
+    let lazy = LazyVisibilityGraph::new(lattice(3));
+    let (start, goal) = (Point::new(0.5, 0.5), Point::new(6.5, 6.5));
+    let mut bound = LazyVisibilityGraph::first_bound(start, goal);
+    let mut rounds = 1;
+    while let Some(next) = lazy.within(start, goal, bound).unwrap().next_bound(Some(bound * 1.0001)) {
+        assert!(next > bound);
+        bound = next;
+        rounds += 1;
+        assert!(rounds <= 11, "round {rounds} at bound {bound}");
+    }
+    assert_eq!(bound, f64::INFINITY, "the last round is unbounded");
 }
 
 #[test]

@@ -173,6 +173,7 @@ pub struct GraphStats {
     /// Nodes of the roadmap (start and goal not counted).
     pub nodes: usize,
     /// Edges of the roadmap (start and goal links not counted); an undirected edge counts once.
+    /// The visibility graph of a polygon world is found lazily: the edges its last round swept.
     pub edges: usize,
     /// Seconds to build the roadmap.
     pub build_time_s: f64,

@@ -5,7 +5,7 @@ use std::fmt::Debug;
 use thiserror::Error;
 use trailmark_core::graph::Graph;
 
-use crate::limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_NODES, MAX_WEIGHT};
+use crate::limits::{MAX_EPSILON, MAX_ITERATIONS, MAX_NODES, MAX_PAIRS, MAX_WEIGHT};
 
 /// Why a search could not run. An unreachable goal is not an error: the search then returns a
 /// result without a path.
@@ -37,8 +37,11 @@ pub enum SearchError<N: Debug> {
         /// The cost given.
         cost: f64,
     },
-    /// An incremental planner (LPA*, D* Lite) met an edge of cost 0: they need positive costs.
-    #[error("the edge {from:?} -> {to:?} has cost 0; LPA* and D* Lite need positive edge costs")]
+    /// An incremental planner (LPA*, D* Lite, the all-pairs table) met an edge of cost 0: they
+    /// need positive costs.
+    #[error(
+        "the edge {from:?} -> {to:?} has cost 0; LPA*, D* Lite and the all-pairs table need positive edge costs"
+    )]
     ZeroCostEdge {
         /// The tail of the edge.
         from: N,
@@ -119,6 +122,15 @@ pub enum SearchError<N: Debug> {
         /// The grid's height.
         height: u32,
     },
+    /// A table of shortest distances (`AllPairs`) would hold more than
+    /// [`MAX_PAIRS`] distances.
+    #[error("{sources} sources x {nodes} nodes is more distances than a table holds (at most {max})", max = MAX_PAIRS)]
+    TooManyPairs {
+        /// The sources asked for.
+        sources: usize,
+        /// The nodes of the graph.
+        nodes: usize,
+    },
 }
 
 impl<N: Debug> SearchError<N> {
@@ -144,6 +156,7 @@ impl<N: Debug> SearchError<N> {
             SearchError::CostOverflow { node } => SearchError::CostOverflow { node: f(node) },
             SearchError::TooManyNodes(n) => SearchError::TooManyNodes(n),
             SearchError::TableTooLarge { width, height } => SearchError::TableTooLarge { width, height },
+            SearchError::TooManyPairs { sources, nodes } => SearchError::TooManyPairs { sources, nodes },
             SearchError::NonUniformCost { cell, cost, expected } => {
                 SearchError::NonUniformCost { cell: f(cell), cost, expected }
             }

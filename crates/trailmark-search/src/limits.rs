@@ -23,3 +23,7 @@ pub const MAX_ITERATIONS: usize = 10_000;
 /// reasons (an inflation is a heuristic weight). An inflation that large makes the first
 /// iteration a greedy search; a larger one only brings `ε h` toward overflow.
 pub const MAX_EPSILON: f64 = MAX_WEIGHT;
+
+/// The most distances an `AllPairs` table holds (sources x nodes): 2^27, a
+/// gibibyte of `f64`s.
+pub const MAX_PAIRS: usize = 1 << 27;

@@ -8,13 +8,19 @@ use trailmark_graph::{LazyVisibilityGraph, Roadmap, VisibilityError};
 
 use super::roadmap::search_roadmap;
 use crate::solve::error::SolveError;
+use crate::solve::planner::PlannerSpec;
 use crate::solve::problem::ProblemSpec;
 use crate::solve::result::{ResultStats, SolveResult, Status};
 
 /// Searches `graph` from `start` to `goal` with the problem's planner, one round per bound until
 /// a round's path is within its bound (or the unbounded round ends); `blocked` turns a refused
 /// end into the document's error. Returns the last round's result, its counters summed over
-/// the rounds, and the edges the rounds swept (for the picture).
+/// the rounds, and the edges the last round swept (for the picture).
+///
+/// Only the least-cost searches run in rounds: a bound keeps every path no longer than itself,
+/// so their answer within it is the full graph's. The others (breadth- and depth-first, weighted
+/// A*, the anytime planners with their limits) search the unbounded lazy graph once: the same
+/// graph as the full one, with their limits applying once.
 pub(super) fn search_visibility(
     problem: &ProblemSpec,
     graph: &LazyVisibilityGraph,
@@ -22,7 +28,16 @@ pub(super) fn search_visibility(
     built: Duration,
     blocked: impl Fn(VisibilityError) -> SolveError,
 ) -> Result<(SolveResult, Vec<(Point, Point)>), SolveError> {
-    let mut bound = LazyVisibilityGraph::first_bound(start, goal);
+    let least_cost = matches!(
+        problem.planner,
+        PlannerSpec::Dijkstra {}
+            | PlannerSpec::AStar { .. }
+            | PlannerSpec::LpaStar { .. }
+            | PlannerSpec::DStarLite { .. }
+            | PlannerSpec::AdaptiveAStar { .. }
+            | PlannerSpec::MpgaaStar { .. }
+    );
+    let mut bound = if least_cost { LazyVisibilityGraph::first_bound(start, goal) } else { f64::INFINITY };
     let mut earlier = ResultStats::default();
     let mut joined = Duration::ZERO;
     loop {

@@ -14,6 +14,7 @@
 //! reference costs, the contingency section's checks) runs beside them on a thread of its own,
 //! and [`times`] records both for the report's time line.
 
+mod all_pairs;
 mod anytime;
 mod arms;
 mod cars;
@@ -39,6 +40,7 @@ use std::process::ExitCode;
 
 use serde::Serialize;
 
+use all_pairs::AllPairsRow;
 use anytime::{AnytimePart, AnytimeRow};
 use arms::ArmReport;
 use cars::CarReport;
@@ -87,7 +89,7 @@ pub struct Args {
         long,
         value_enum,
         value_delimiter = ',',
-        default_value = "grid,navigation,anytime,roadmaps,sampling,cars,contingency,rosmaps,arms"
+        default_value = "grid,navigation,all-pairs,anytime,roadmaps,sampling,cars,contingency,rosmaps,arms"
     )]
     sections: Vec<Section>,
     /// Also run OMPL's planners on the sampling, car and arm sections' problems (needs
@@ -105,6 +107,9 @@ pub enum Section {
     Grid,
     /// Replanning in unknown terrain: A*, LPA*, D* Lite, AD*.
     Navigation,
+    /// Shortest distances between every pair of nodes kept right as edges change, beside
+    /// recomputing them.
+    AllPairs,
     /// ARA* and AD*: time to the first solution, cost over time.
     Anytime,
     /// Visibility graphs, trapezoidal decompositions, PRM* and Dubins curves on polygon worlds.
@@ -140,6 +145,7 @@ struct BenchReport {
     navigation_own: Vec<NavRow>,
     navigation_ratios: Vec<NavRatio>,
     replanner_ratios: Vec<ReplannerRatio>,
+    all_pairs: Vec<AllPairsRow>,
     anytime: Vec<AnytimeRow>,
     #[serde(skip_serializing_if = "Option::is_none")]
     roadmaps: Option<RoadmapReport>,
@@ -199,6 +205,7 @@ impl BenchReport {
             + self.cars.as_ref().map_or(0, |c| c.errors())
             + self.contingency.iter().filter(|r| r.error).count()
             + self.rosmaps.iter().map(|r| r.cost_errors).sum::<usize>()
+            + self.all_pairs.iter().map(|r| r.errors).sum::<usize>()
             + self.arms.as_ref().map_or(0, |a| a.errors())
     }
 
@@ -233,6 +240,7 @@ impl BenchReport {
             &self.navigation_ratios,
             &self.replanner_ratios,
         ));
+        out.push_str(&all_pairs::markdown(&self.all_pairs));
         out.push_str(&anytime::markdown(&self.anytime));
         out.push_str("\n## Maps\n\n| map | source | size | passable | queries |\n|---|---|---|---:|---:|\n");
         for m in &self.maps {
@@ -301,6 +309,7 @@ struct Parts {
     results: Vec<GridRow>,
     navigation: Vec<NavRow>,
     navigation_own: Vec<NavRow>,
+    all_pairs: Vec<AllPairsRow>,
     anytime: Option<AnytimePart>,
     roadmaps: Option<RoadmapReport>,
     sampling: Option<SamplingReport>,
@@ -355,6 +364,10 @@ fn run_parts<'scope>(
             navigation::bench_navigation(&cases, args.runs)
         })?;
     }
+    let mut all_pairs = Vec::new();
+    if wants(Section::AllPairs) && args.only.is_empty() {
+        all_pairs = times.section("all-pairs", || all_pairs::bench(args.suite, args.seed))?;
+    }
     let anytime = wants(Section::Anytime)
         .then(|| times.section("anytime", || anytime::bench(&maps, args.suite, args.runs)));
     let contingency = match contingency {
@@ -399,6 +412,7 @@ fn run_parts<'scope>(
         results,
         navigation,
         navigation_own,
+        all_pairs,
         anytime,
         roadmaps,
         sampling,
@@ -456,6 +470,7 @@ fn run_sections(args: &Args) -> Result<ExitCode, String> {
         replanner_ratios: navigation::replanner_ratios(&parts.navigation),
         navigation: parts.navigation,
         navigation_own: parts.navigation_own,
+        all_pairs: parts.all_pairs,
         anytime: parts.anytime.as_mut().map_or(Vec::new(), |a| std::mem::take(&mut a.rows)),
         roadmaps: parts.roadmaps,
         sampling: parts.sampling,

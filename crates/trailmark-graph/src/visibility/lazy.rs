@@ -121,16 +121,19 @@ impl LazyVisibilityGraph {
         let bounded = bound.is_finite();
         let reach = slack(bound);
         if bounded {
-            cache.scope.ellipse(&self.nodes.space, (start, goal), bound);
+            cache.scope.ellipse(&self.nodes.space, (start, goal), reach);
         }
         let scope = bounded.then_some(&cache.scope);
         let keep = |p: Point| (p - start).norm() + (goal - p).norm() <= reach;
-        let mut links = self.nodes.links(&mut cache.sweep, (start, goal), scope, keep)?;
-        if line > reach || bound.is_nan() {
-            // No path is that short: no edge at all.
-            links.rows.iter_mut().for_each(|row| row.fill(Cost::INFINITY));
-            links.direct = None;
-        }
+        let links = if line <= reach {
+            self.nodes.links(&mut cache.sweep, (start, goal), scope, keep)?
+        } else {
+            // No path is that short (or the bound is no number): no edge at all, once the ends
+            // are known to be free.
+            self.nodes.check_ends(start, goal)?;
+            let n = self.node_count();
+            Links { rows: [vec![Cost::INFINITY; n], vec![Cost::INFINITY; n]], direct: None }
+        };
         Ok(BoundedVisibility { graph: self, start, goal, bound, links, cache: RefCell::new(cache) })
     }
 }
@@ -209,16 +212,20 @@ impl<'g> BoundedVisibility<'g> {
     /// full graph's shortest when the search is optimal; or the bound was already infinite, so
     /// the answer is the full graph's), else the next round's bound. That is the length found,
     /// when a path was (the shortest is no longer, so an optimal search of that round ends), but
-    /// at most the straight line times 1 + 1/16, 1.5, 5, then infinity: a search that finds no
-    /// path, or paths longer than the shortest, still ends after five rounds.
+    /// at most the next of the straight line times 1 + 1/16, 1.5, 5, then infinity; after a
+    /// round bounded by a length found, that next step: a search that finds no path, or paths
+    /// longer than the shortest, still ends within ten rounds.
     pub fn next_bound(&self, found: Option<Cost>) -> Option<Cost> {
         if self.bound == Cost::INFINITY || found.is_some_and(|c| self.certifies(c)) {
             return None;
         }
         let line = (self.goal - self.start).norm();
-        let grown =
-            ROUNDS.iter().map(|r| line + line * r).find(|&b| b > self.bound).unwrap_or(Cost::INFINITY);
-        Some(found.map_or(grown, |c| c.min(grown)))
+        let mut steps = ROUNDS.iter().map(|r| line + line * r);
+        let grown = steps.clone().find(|&b| b > self.bound).unwrap_or(Cost::INFINITY);
+        // A bound that is no step of the sequence was a length found: after it, the next step,
+        // so that a search returning ever longer paths meets every step in turn.
+        let stepped = steps.any(|b| b == self.bound);
+        Some(found.filter(|_| stepped).map_or(grown, |c| c.min(grown)))
     }
 
     /// The number of nodes whose edges (out or in) have been swept.
@@ -251,7 +258,7 @@ impl<'g> BoundedVisibility<'g> {
         let scoped = self.bound.is_finite();
         if before + after <= reach {
             if scoped {
-                cache.scope.ellipse(&nodes.space, foci, self.bound - if into { after } else { before });
+                cache.scope.ellipse(&nodes.space, foci, reach - if into { after } else { before });
             }
             let scope = scoped.then_some(&cache.scope);
             nodes.for_each_seen(&mut cache.sweep, node, scope, |u| {

@@ -113,6 +113,23 @@ impl VisibilityNodes {
             && (self.edges == Edges::All || (tangent(a, b.at) && tangent(b, a.at)))
     }
 
+    /// Where the start and the goal lie; an error where one is blocked (or not finite).
+    pub(super) fn check_ends(
+        &self,
+        start: Point,
+        goal: Point,
+    ) -> Result<(Location, Location), VisibilityError> {
+        let start_location = self.space.locate(start);
+        if start_location == Location::Blocked {
+            return Err(VisibilityError::StartBlocked { x: start.x, y: start.y });
+        }
+        let goal_location = self.space.locate(goal);
+        if goal_location == Location::Blocked {
+            return Err(VisibilityError::GoalBlocked { x: goal.x, y: goal.y });
+        }
+        Ok((start_location, goal_location))
+    }
+
     /// The links of a query from `start` to `goal`: each end joined to every node it sees
     /// (where the node keeps the edge) and for which `keep(node)` holds, and to each other. One
     /// sweep each, looking only at `scope`'s edges when one is given (the caller's `keep` then
@@ -124,14 +141,7 @@ impl VisibilityNodes {
         scope: Option<&Scope>,
         keep: impl Fn(Point) -> bool,
     ) -> Result<Links, VisibilityError> {
-        let start_location = self.space.locate(start);
-        if start_location == Location::Blocked {
-            return Err(VisibilityError::StartBlocked { x: start.x, y: start.y });
-        }
-        let goal_location = self.space.locate(goal);
-        if goal_location == Location::Blocked {
-            return Err(VisibilityError::GoalBlocked { x: goal.x, y: goal.y });
-        }
+        let (start_location, goal_location) = self.check_ends(start, goal)?;
         let n = self.nodes.len();
         let mut rows = [vec![Cost::INFINITY; n], vec![Cost::INFINITY; n]];
         let mut direct = if start == goal { Some(0.0) } else { None };

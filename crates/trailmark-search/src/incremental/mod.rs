@@ -27,6 +27,7 @@ use trailmark_core::cost::Cost;
 pub use trailmark_core::graph::EdgeChange;
 
 pub(crate) mod adaptive_astar;
+pub(crate) mod all_pairs;
 pub(crate) mod dstar_lite;
 pub(crate) mod engine;
 pub(crate) mod lifelong;

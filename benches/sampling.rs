@@ -1,5 +1,6 @@
 //! The inner loops of the sampling planners, seeded: nearest-neighbour queries (the k-d tree
-//! against brute force, in R² and Dubins) and collision checks on a world of 60 random convex
+//! against brute force, in R² and Dubins), a connect phase's queries and insertions (states
+//! scattered, or in order along a line) and collision checks on a world of 60 random convex
 //! hexagons in a 40 x 40 square, robot radius 0.25 (states, segments, Dubins curves, Bézier
 //! curves). Run: `cargo bench --bench sampling`. `cargo xtask bench --sections sampling`
 //! measures the planners themselves.
@@ -77,6 +78,43 @@ fn nearest(c: &mut Criterion) {
     group.finish();
 }
 
+/// A connect phase's nearest-neighbour work: from a tree of 1,000 scattered states, 10,000 more,
+/// each asked for its nearest before it is stored; the states scattered, or in order along a
+/// line in steps of 1e-4 of the extent (diagonal, or along an axis), as RRT-Connect's connect
+/// phase adds them.
+fn growth(c: &mut Criterion) {
+    let mut group = c.benchmark_group("growth");
+    const STEPS: usize = 10_000;
+    group.throughput(Throughput::Elements(STEPS as u64));
+    group.sample_size(10);
+    let bounds = generate::convex_obstacles(40.0, 1, 6, 0.0, 1).expect("valid").bounds();
+    let r2 = R2::new(bounds);
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let base = filled(&r2, KdNearest::<R2, 2>::new(&r2).expect("R2 has positions"), 1_000, &mut rng);
+    let step = 40.0 * 1e-4;
+    let scattered: Vec<Point> = (0..STEPS).map(|_| r2.sample(&mut rng)).collect();
+    let diagonal: Vec<Point> =
+        (0..STEPS).map(|i| Point::new(2.0, 2.0) + Vector::new(1.0, 1.0).normalize() * (step * i as f64)).collect();
+    let axis: Vec<Point> = (0..STEPS).map(|i| Point::new(0.5 + step * i as f64, 20.0)).collect();
+    for (name, states) in [("r2_scattered", &scattered), ("r2_collinear_diagonal", &diagonal), ("r2_collinear_axis", &axis)] {
+        group.bench_with_input(BenchmarkId::new(name, STEPS), states, |b, states| {
+            b.iter_batched(
+                || base.clone(),
+                |mut kd| {
+                    let mut sum = 0u32;
+                    for q in states {
+                        sum = sum.wrapping_add(kd.nearest(&r2, q, Direction::ToQuery).map_or(0, |x| x.0));
+                        kd.insert(&r2, *q);
+                    }
+                    sum
+                },
+                criterion::BatchSize::LargeInput,
+            )
+        });
+    }
+    group.finish();
+}
+
 fn collision(c: &mut Criterion) {
     let mut group = c.benchmark_group("collision");
     group.throughput(Throughput::Elements(BATCH as u64));
@@ -130,5 +168,5 @@ fn collision(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, nearest, collision);
+criterion_group!(benches, nearest, growth, collision);
 criterion_main!(benches);

@@ -93,10 +93,13 @@ fn growth(c: &mut Criterion) {
     let base = filled(&r2, KdNearest::<R2, 2>::new(&r2).expect("R2 has positions"), 1_000, &mut rng);
     let step = 40.0 * 1e-4;
     let scattered: Vec<Point> = (0..STEPS).map(|_| r2.sample(&mut rng)).collect();
-    let diagonal: Vec<Point> =
-        (0..STEPS).map(|i| Point::new(2.0, 2.0) + Vector::new(1.0, 1.0).normalize() * (step * i as f64)).collect();
+    let diagonal: Vec<Point> = (0..STEPS)
+        .map(|i| Point::new(2.0, 2.0) + Vector::new(1.0, 1.0).normalize() * (step * i as f64))
+        .collect();
     let axis: Vec<Point> = (0..STEPS).map(|i| Point::new(0.5 + step * i as f64, 20.0)).collect();
-    for (name, states) in [("r2_scattered", &scattered), ("r2_collinear_diagonal", &diagonal), ("r2_collinear_axis", &axis)] {
+    for (name, states) in
+        [("r2_scattered", &scattered), ("r2_collinear_diagonal", &diagonal), ("r2_collinear_axis", &axis)]
+    {
         group.bench_with_input(BenchmarkId::new(name, STEPS), states, |b, states| {
             b.iter_batched(
                 || base.clone(),

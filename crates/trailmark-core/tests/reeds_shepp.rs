@@ -199,3 +199,40 @@ fn bad_input_is_a_typed_error() {
         assert!(serde_json::from_value::<ReedsSheppPath>(bad).is_err(), "{field}: {value} accepted");
     }
 }
+
+/// The pose reached from `start` by one arc of `length` radii (radius 1), turning `left` or
+/// right, driven forward or in reverse.
+fn along_arc(start: &Pose, length: f64, left: bool, forward: bool) -> Pose {
+    let (x, y, h) = (start.translation.x, start.translation.y, start.rotation.angle());
+    let side = if left { 1.0 } else { -1.0 };
+    let s = if forward { length } else { -length };
+    // The circle's centre is one radius to the side; the heading turns by s on it.
+    let (cx, cy) = (x - side * h.sin(), y + side * h.cos());
+    let h2 = h + side * s;
+    Pose::new(Vector::new(cx + side * h2.sin(), cy - side * h2.cos()), h2)
+}
+
+#[test]
+fn a_short_arc_far_from_the_origin_is_that_arc() {
+    // Two poses on one short arc: the solver's differences of nearly equal coordinates are then
+    // rounding noise, and the arc must still be found (not a longer word).
+    for far in [0.0, 20.0, 1e4, 1e7] {
+        for (i, &arc) in [1e-3, 0.05, 0.3].iter().enumerate() {
+            for (left, forward) in [(true, true), (false, true), (true, false), (false, false)] {
+                let start = Pose::new(Vector::new(far + 0.37 * i as f64, far * 0.5), 1.3 * i as f64 + 0.2);
+                let end = along_arc(&start, arc, left, forward);
+                let length = ReedsSheppPath::shortest_length(&start, &end, 1.0).unwrap();
+                let path = ReedsSheppPath::shortest(&start, &end, 1.0).unwrap();
+                assert!(
+                    (length - arc).abs() < 1e-6,
+                    "{far} {arc} left {left} forward {forward}: {length} ({path})"
+                );
+                assert!(
+                    (path.length() - length).abs() < 1e-9,
+                    "{far} {arc}: {} against {length}",
+                    path.length()
+                );
+            }
+        }
+    }
+}

@@ -2,5 +2,6 @@
 //! a polygon world that changes, built on the same [`Prm`](prm::Prm).
 
 mod graph;
+mod lazy;
 pub mod polygon;
 pub mod prm;

@@ -99,8 +99,12 @@ pub struct Prm<S: StateSpace, N, Q = Uniform> {
     /// Every motion tried, in order, in a roadmap whose world changes; empty otherwise.
     pub(super) tried: Vec<Candidate>,
     keeps_blocked: bool,
-    edge_count: usize,
-    components: UnionFind,
+    /// Lazy PRM: motions are checked only on a path a search found ([`super::lazy`]).
+    pub(super) lazy: bool,
+    /// The motions a lazy roadmap has checked and found free.
+    pub(super) verified: std::collections::HashSet<(u32, u32)>,
+    pub(super) edge_count: usize,
+    pub(super) components: UnionFind,
     pub(super) checks: u64,
     _space: PhantomData<fn() -> S>,
 }
@@ -133,6 +137,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     pub fn with_sampler<R>(self, sampler: R) -> Prm<S, N, R> {
         let mut prm =
             Prm::empty(self.empty, self.nearest, sampler, self.connection, self.optimizing, self.seed);
+        prm.lazy = self.lazy;
         prm.reset();
         prm
     }
@@ -151,6 +156,8 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
             into: Vec::new(),
             tried: Vec::new(),
             keeps_blocked: false,
+            lazy: false,
+            verified: Default::default(),
             edge_count: 0,
             components: UnionFind::default(),
             checks: 0,
@@ -274,6 +281,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         self.out.clear();
         self.into.clear();
         self.tried.clear();
+        self.verified.clear();
         self.edge_count = 0;
         self.components = UnionFind::default();
         self.checks = 0;
@@ -322,11 +330,16 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     /// Adds the admitted `state` as a milestone joined to its neighbours (motion checks stop
     /// when `watch` is interrupted); its id, or the id of the milestone already there.
     fn add<V: Validity<S>>(&mut self, space: &S, validity: &V, state: S::State, watch: &Watch<'_>) -> u32 {
-        let motion =
-            |from: &S::State, to: &S::State, d: f64| validity.motion_is_valid(space, from, to).then_some(d);
+        let (lazy, checks) = (self.lazy, self.checks);
+        let motion = |from: &S::State, to: &S::State, d: f64| {
+            (lazy || validity.motion_is_valid(space, from, to)).then_some(d)
+        };
         let (id, _) = self
             .add_checked(space, state, usize::MAX, motion, || watch.interrupted().is_some())
             .expect("no limit");
+        if lazy {
+            self.checks = checks; // no motion was checked
+        }
         id
     }
 
@@ -456,14 +469,19 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     }
 
     /// Searches the roadmap; keeps the path found in `best` if it is cheaper.
-    fn improve(
+    fn improve<V: Validity<S>>(
         &mut self,
-        space: &S,
+        (space, validity): (&S, &V),
         (starts, goals): (&[u32], &[u32]),
         best: &mut Option<(Vec<u32>, f64)>,
         run: &mut Run<'_>,
     ) {
-        if let Some(found) = self.search(space, starts, goals)
+        let found = if self.lazy {
+            self.search_checked(space, validity, (starts, goals), || run.watch.interrupted().is_some())
+        } else {
+            self.search(space, starts, goals)
+        };
+        if let Some(found) = found
             && best.as_ref().is_none_or(|b| found.1 < b.1)
         {
             run.improved(found.1);
@@ -473,7 +491,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
 
     /// The cheapest path from a start to a goal milestone through the roadmap, as milestone
     /// ids and cost.
-    fn search(&mut self, space: &S, starts: &[u32], goals: &[u32]) -> Option<(Vec<u32>, f64)> {
+    pub(super) fn search(&mut self, space: &S, starts: &[u32], goals: &[u32]) -> Option<(Vec<u32>, f64)> {
         let mut best: Option<(Vec<u32>, f64)> = None;
         let mut search = Search::new();
         for &g in goals {
@@ -503,7 +521,12 @@ where
     Q: StateSampler<S>,
 {
     fn name(&self) -> &str {
-        if self.optimizing { "PRM*" } else { "PRM" }
+        match (self.lazy, self.optimizing) {
+            (false, false) => "PRM",
+            (false, true) => "PRM*",
+            (true, false) => "Lazy PRM",
+            (true, true) => "Lazy PRM*",
+        }
     }
 
     fn solve(
@@ -565,13 +588,14 @@ where
             }
             // Search when a start and a goal share a component, and for PRM* again each time
             // the roadmap has grown by a tenth.
-            let joined = self.components.set_count() != searched_components && self.connects(&starts, &goals);
+            let changed = self.lazy || self.components.set_count() != searched_components;
+            let joined = changed && self.connects(&starts, &goals);
             let grown = self.node_count() as f64 >= searched_at as f64 * (1.0 + SEARCH_GROWTH);
-            let due = if best.is_none() { joined && (S::SYMMETRIC || grown) } else { grown };
+            let due = if best.is_none() { joined && (S::SYMMETRIC && !self.lazy || grown) } else { grown };
             if due && !goals.is_empty() && run.watch.interrupted().is_none() {
                 searched_at = self.node_count();
-                searched_components = self.components.set_count();
-                self.improve(space, (&starts, &goals), &mut best, &mut run);
+                self.improve((space, validity), (&starts, &goals), &mut best, &mut run);
+                searched_components = self.components.set_count(); // a lazy search may split some
             }
             if best.is_some() && !self.optimizing {
                 break Stop::Solved;
@@ -596,7 +620,7 @@ where
         // limit or the caller's word (a search of a large roadmap takes milliseconds).
         let timed = matches!(stop, Stop::TimeLimit | Stop::Caller);
         if self.optimizing && !timed && !goals.is_empty() && searched_at < self.node_count() {
-            self.improve(space, (&starts, &goals), &mut best, &mut run);
+            self.improve((space, validity), (&starts, &goals), &mut best, &mut run);
         }
         self.rng = Some(rng);
         run.stats.collision_checks += self.checks;

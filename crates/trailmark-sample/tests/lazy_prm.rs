@@ -104,3 +104,21 @@ fn a_lazy_dubins_roadmap_follows_free_curves() {
         assert!(checker.dubins_is_free(&space.path(&m[0], &m[1])));
     }
 }
+
+#[test]
+fn a_walled_off_goal_gives_no_solution_and_splits_the_roadmap() {
+    let (world, _) = trailmark_core::generate::walled_goal(0.2).unwrap();
+    let checker = world.checker();
+    let space = R2::new(world.bounds());
+    let problem = Problem::new(&space, &checker, Point::new(2.0, 2.0), Point::new(15.0, 15.0));
+    for mut prm in [
+        Prm::lazy(KdNearest::<R2, 2>::new(&space).unwrap()),
+        Prm::lazy_star(KdNearest::<R2, 2>::new(&space).unwrap()),
+    ] {
+        let plan = prm.solve(&problem, &Termination::iterations(600)).unwrap();
+        assert_eq!(plan.solution, trailmark_sample::Solution::None);
+        // The motions through the wall were dropped as the searches met them: the goal's side
+        // is a component of its own again.
+        assert!(prm.component_count() >= 2, "{} components", prm.component_count());
+    }
+}

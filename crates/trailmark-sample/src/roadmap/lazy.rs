@@ -1,7 +1,8 @@
 //! Lazy PRM and Lazy PRM* (Bohlin and Kavraki 2000): the roadmap joins milestones without
 //! checking the motions; a query searches it, checks the motions of the path it found (each
-//! motion once, remembered), drops the first blocked one and searches again, until a path is
-//! free or none is left. The roadmap's build is then sampling and nearest neighbours alone, and
+//! motion once, remembered), drops the blocked ones and searches again, until a path is free or
+//! none is left. A symmetric space's motion is checked in one direction for both, as the eager
+//! roadmap does. The roadmap's build is then sampling and nearest neighbours alone, and
 //! only the motions queries lead to are ever checked; it stays for the next query, with what
 //! the last one learnt.
 //!
@@ -59,9 +60,11 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     }
 
     /// The cheapest path from a start to a goal milestone whose every motion is free: a search,
-    /// then the found path's unchecked motions checked in order; the first blocked one is
-    /// dropped from the roadmap and the search runs again, until a path is free, none is left,
-    /// or `interrupted`.
+    /// then every unchecked motion of the path checked; the blocked ones are dropped from the
+    /// roadmap and the search runs again, until a path is free, none is left, or `interrupted`
+    /// (between searches; each search drops a motion, so the loop ends without it too). The
+    /// components are recomputed once, at the end: stale ones only join too much, and the
+    /// search uses them only to skip pairs that cannot connect.
     pub(super) fn search_checked<V: Validity<S>>(
         &mut self,
         space: &S,
@@ -69,28 +72,37 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         (starts, goals): (&[u32], &[u32]),
         interrupted: impl Fn() -> bool,
     ) -> Option<(Vec<u32>, f64)> {
-        loop {
-            let found = self.search(space, starts, goals)?;
-            let blocked = found.0.windows(2).map(|pair| (pair[0], pair[1])).find(|&(a, b)| {
-                let key = self.motion_key(a, b);
+        let mut dropped = false;
+        let found = loop {
+            let Some(found) = self.search(space, starts, goals) else { break None };
+            let mut blocked = Vec::new();
+            for pair in found.0.windows(2) {
+                let key = self.motion_key(pair[0], pair[1]);
                 if self.verified.contains(&key) {
-                    return false;
+                    continue;
                 }
                 self.checks += 1;
-                let free = validity.motion_is_valid(space, self.state(a), self.state(b));
-                if free {
+                if validity.motion_is_valid(space, self.state(pair[0]), self.state(pair[1])) {
                     self.verified.insert(key);
+                } else {
+                    blocked.push((pair[0], pair[1]));
                 }
-                !free
-            });
-            match blocked {
-                None => return Some(found),
-                Some((a, b)) => self.drop_motion(a, b),
             }
+            if blocked.is_empty() {
+                break Some(found);
+            }
+            for (a, b) in blocked {
+                self.drop_motion(a, b);
+            }
+            dropped = true;
             if interrupted() {
-                return None;
+                break None;
             }
+        };
+        if dropped {
+            self.recompute_components();
         }
+        found
     }
 
     /// The key of the motion `a -> b` in `verified`: its two ends in order where the space is
@@ -99,17 +111,24 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         if S::SYMMETRIC { (a.min(b), a.max(b)) } else { (a, b) }
     }
 
-    /// Removes the blocked motion `a -> b` (both ways in a symmetric space) and recomputes the
-    /// components from the motions left.
+    /// Removes the blocked motion `a -> b` (both ways in a symmetric space).
     fn drop_motion(&mut self, a: u32, b: u32) {
-        let remove = |list: &mut Vec<(u32, Cost)>, other: u32| list.retain(|&(v, _)| v != other);
-        remove(&mut self.out[a as usize], b);
+        let remove = |list: &mut Vec<(u32, Cost)>, other: u32| {
+            let before = list.len();
+            list.retain(|&(v, _)| v != other);
+            before - list.len()
+        };
+        let removed = remove(&mut self.out[a as usize], b);
         if S::SYMMETRIC {
             remove(&mut self.out[b as usize], a);
         } else {
             remove(&mut self.into[b as usize], a);
         }
-        self.edge_count -= 1;
+        self.edge_count -= removed;
+    }
+
+    /// The components again, from the motions left.
+    fn recompute_components(&mut self) {
         let mut components = UnionFind::new(self.out.len());
         for (v, list) in self.out.iter().enumerate() {
             for &(w, _) in list {

@@ -17,8 +17,8 @@
 //! A run that stops before a start and a goal connect returns [`Solution::None`](crate::Solution::None), as OMPL's PRM
 //! does.
 //!
-//! The roadmap is a graph of the core traits (nodes are milestone ids, edges cost their
-//! motion's distance), so any search of `trailmark-search` runs on it.
+//! The roadmap is a graph of the core traits (milestone ids; edges cost their motion's distance,
+//! a lazy roadmap's unchecked ones included), so any search of `trailmark-search` runs on it.
 //!
 //! ```
 //! use trailmark_core::geometry::Point;
@@ -185,12 +185,12 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
         self.nearest.len()
     }
 
-    /// The edges (each undirected edge once).
+    /// The edges (each undirected edge once; a lazy roadmap's unchecked ones too).
     pub fn edge_count(&self) -> usize {
         self.edge_count
     }
 
-    /// The connected components (ignoring direction).
+    /// The connected components (ignoring direction; a lazy roadmap's count unchecked motions).
     pub fn component_count(&self) -> usize {
         self.components.set_count()
     }
@@ -205,7 +205,7 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     }
 
     /// The edges out of milestone `id`, with their costs (a planner's roadmap keeps free
-    /// motions only).
+    /// motions only; a lazy one, also those not checked yet).
     pub fn edges_from(&self, id: u32) -> &[(u32, Cost)] {
         &self.out[id as usize]
     }
@@ -521,12 +521,7 @@ where
     Q: StateSampler<S>,
 {
     fn name(&self) -> &str {
-        match (self.lazy, self.optimizing) {
-            (false, false) => "PRM",
-            (false, true) => "PRM*",
-            (true, false) => "Lazy PRM",
-            (true, true) => "Lazy PRM*",
-        }
+        ["PRM", "PRM*", "Lazy PRM", "Lazy PRM*"][2 * usize::from(self.lazy) + usize::from(self.optimizing)]
     }
 
     fn solve(
@@ -619,7 +614,8 @@ where
         // A last search, so that what PRM* grew since its last one counts; not past a time
         // limit or the caller's word (a search of a large roadmap takes milliseconds).
         let timed = matches!(stop, Stop::TimeLimit | Stop::Caller);
-        if self.optimizing && !timed && !goals.is_empty() && searched_at < self.node_count() {
+        let last = self.optimizing || self.lazy && best.is_none(); // Lazy PRM: a path may be there
+        if last && !timed && !goals.is_empty() && searched_at < self.node_count() {
             self.improve((space, validity), (&starts, &goals), &mut best, &mut run);
         }
         self.rng = Some(rng);

@@ -228,33 +228,40 @@ fn roadmap_rows<const N: usize>(
     let (lazy_build_ms, lazy_answers) = build_and_ask(Prm::lazy_star(kd).with_seed(seed))?;
     let build = format!("PRM* build ({ROADMAP_SIZE} milestones)");
     let query = "PRM* query (on that roadmap)".to_string();
+    let total = format!("PRM* build + {} queries (total)", ends.len());
+    // A row of one timed figure: no cost.
+    let figure = |library: &str, planner: String, ms: f64| BoxRow {
+        world: name.into(),
+        library: library.into(),
+        planner,
+        runs: 1,
+        solved: 1,
+        median_ms: ms,
+        median_cost_ratio: f64::NAN,
+        invalid: 0,
+    };
+    let sum = |answers: &[(Option<Vec<<Rn<N> as StateSpace>::State>>, f64)]| {
+        answers.iter().map(|a| a.1).sum::<f64>()
+    };
     let mut rows = vec![
-        BoxRow {
-            world: name.into(),
-            library: "trailmark".into(),
-            planner: build.clone(),
-            runs: 1,
-            solved: 1,
-            median_ms: build_ms,
-            median_cost_ratio: f64::NAN,
-            invalid: 0,
-        },
+        figure("trailmark", build.clone(), build_ms),
         row((name, "trailmark", query.clone()), &answers, world, ends),
-        BoxRow {
-            world: name.into(),
-            library: "trailmark".into(),
-            planner: format!("Lazy PRM* build ({ROADMAP_SIZE} milestones, no motion checked)"),
-            runs: 1,
-            solved: 1,
-            median_ms: lazy_build_ms,
-            median_cost_ratio: f64::NAN,
-            invalid: 0,
-        },
+        figure("trailmark", total.clone(), build_ms + sum(&answers)),
+        figure(
+            "trailmark",
+            format!("Lazy PRM* build ({ROADMAP_SIZE} milestones, no motion checked)"),
+            lazy_build_ms,
+        ),
         row(
             (name, "trailmark", "Lazy PRM* query (checks its path's motions)".into()),
             &lazy_answers,
             world,
             ends,
+        ),
+        figure(
+            "trailmark",
+            format!("Lazy PRM* build + {} queries (total)", ends.len()),
+            lazy_build_ms + sum(&lazy_answers),
         ),
     ];
     if let Some(driver) = ompl {
@@ -266,17 +273,10 @@ fn roadmap_rows<const N: usize>(
                 built.milestones
             )));
         }
-        rows.push(BoxRow {
-            world: name.into(),
-            library: "OMPL".into(),
-            planner: build,
-            runs: 1,
-            solved: 1,
-            median_ms: built.time_s * 1e3,
-            median_cost_ratio: f64::NAN,
-            invalid: 0,
-        });
-        rows.push(row((name, "OMPL", query), &paths_and_times::<N>(&runs), world, ends));
+        let theirs = paths_and_times::<N>(&runs);
+        rows.push(figure("OMPL", build, built.time_s * 1e3));
+        rows.push(row((name, "OMPL", query), &theirs, world, ends));
+        rows.push(figure("OMPL", total, built.time_s * 1e3 + sum(&theirs)));
     }
     Ok(rows)
 }

@@ -14,6 +14,7 @@ use trailmark::core::curve::CubicHermite;
 use trailmark::core::dubins::DubinsPath;
 use trailmark::core::generate;
 use trailmark::core::geometry::{Point, Vector};
+use trailmark::sample::nearest::KdTree;
 use trailmark::sample::{BruteForce, Direction, Dubins, KdNearest, NearestNeighbors, R2, StateSpace};
 
 /// Queries per measured batch.
@@ -81,7 +82,9 @@ fn nearest(c: &mut Criterion) {
 /// A connect phase's nearest-neighbour work: from a tree of 1,000 scattered states, 10,000 more,
 /// each asked for its nearest before it is stored; the states scattered, or in order along a
 /// line in steps of 1e-4 of the extent (diagonal, or along an axis), as RRT-Connect's connect
-/// phase adds them.
+/// phase adds them. `kd_nearest` is the structure the planners use (`KdNearest`: the k-d tree
+/// beneath, states at equal positions grouped, the nearest by the space's distance); `kd_tree`
+/// that k-d tree alone, and `kiddo` kiddo's growing k-d tree, on the same positions.
 fn growth(c: &mut Criterion) {
     let mut group = c.benchmark_group("growth");
     const STEPS: usize = 10_000;
@@ -90,7 +93,15 @@ fn growth(c: &mut Criterion) {
     let bounds = generate::convex_obstacles(40.0, 1, 6, 0.0, 1).expect("valid").bounds();
     let r2 = R2::new(bounds);
     let mut rng = ChaCha8Rng::seed_from_u64(7);
-    let base = filled(&r2, KdNearest::<R2, 2>::new(&r2).expect("R2 has positions"), 1_000, &mut rng);
+    let first: Vec<Point> = (0..1_000).map(|_| r2.sample(&mut rng)).collect();
+    let mut base = KdNearest::<R2, 2>::new(&r2).expect("R2 has positions");
+    let mut tree = KdTree::<2>::new();
+    let mut peer = kiddo::KdTree::<f64, 2>::new();
+    for (i, p) in first.iter().enumerate() {
+        base.insert(&r2, *p);
+        tree.insert([p.x, p.y], i as u32);
+        peer.add(&[p.x, p.y], i as u64);
+    }
     let step = 40.0 * 1e-4;
     let scattered: Vec<Point> = (0..STEPS).map(|_| r2.sample(&mut rng)).collect();
     let diagonal: Vec<Point> = (0..STEPS)
@@ -98,9 +109,9 @@ fn growth(c: &mut Criterion) {
         .collect();
     let axis: Vec<Point> = (0..STEPS).map(|i| Point::new(0.5 + step * i as f64, 20.0)).collect();
     for (name, states) in
-        [("r2_scattered", &scattered), ("r2_collinear_diagonal", &diagonal), ("r2_collinear_axis", &axis)]
+        [("scattered", &scattered), ("collinear_diagonal", &diagonal), ("collinear_axis", &axis)]
     {
-        group.bench_with_input(BenchmarkId::new(name, STEPS), states, |b, states| {
+        group.bench_with_input(BenchmarkId::new(format!("kd_nearest_{name}"), STEPS), states, |b, states| {
             b.iter_batched(
                 || base.clone(),
                 |mut kd| {
@@ -108,6 +119,34 @@ fn growth(c: &mut Criterion) {
                     for q in states {
                         sum = sum.wrapping_add(kd.nearest(&r2, q, Direction::ToQuery).map_or(0, |x| x.0));
                         kd.insert(&r2, *q);
+                    }
+                    sum
+                },
+                criterion::BatchSize::LargeInput,
+            )
+        });
+        group.bench_with_input(BenchmarkId::new(format!("kd_tree_{name}"), STEPS), states, |b, states| {
+            b.iter_batched(
+                || tree.clone(),
+                |mut kd| {
+                    let mut sum = 0u32;
+                    for (i, q) in states.iter().enumerate() {
+                        sum = sum.wrapping_add(kd.nearest_one(&[q.x, q.y]).map_or(0, |x| x.0));
+                        kd.insert([q.x, q.y], (1_000 + i) as u32);
+                    }
+                    sum
+                },
+                criterion::BatchSize::LargeInput,
+            )
+        });
+        group.bench_with_input(BenchmarkId::new(format!("kiddo_{name}"), STEPS), states, |b, states| {
+            b.iter_batched(
+                || peer.clone(),
+                |mut kd| {
+                    let mut sum = 0u64;
+                    for (i, q) in states.iter().enumerate() {
+                        sum = sum.wrapping_add(kd.nearest_one::<kiddo::SquaredEuclidean>(&[q.x, q.y]).item);
+                        kd.add(&[q.x, q.y], (1_000 + i) as u64);
                     }
                     sum
                 },

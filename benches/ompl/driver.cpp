@@ -29,6 +29,12 @@
 // planners: rrt_connect, rrt_star, informed_rrt_star, bit_star and prm_star (through solve(),
 // each run its own roadmap, under the time limit; or, given a roadmap_size, multi-query as below).
 //
+// Nearest neighbours alone instead: {"nearest": {"dimension": n, "points": [x0, y0, x1, ...],
+// "base": b, "runs": r}}. OMPL's default structure for a tree planner in a metric space
+// (NearestNeighborsGNATNoThreadSafety, default settings) is given the first `base` points,
+// then each further point is asked for its nearest and added, as a connect phase does; prints
+// {"nearest": {"time_s": the fastest run's time of that loop, "checksum": sum of the answers}}.
+//
 // `prm_star` is multi-query: one roadmap of `roadmap_size` milestones is grown first (printed as
 // "build": {"time_s", "milestones", "edges", "collision_checks"}), then each query joins its
 // start and goal to it as PRM::solve does (addMilestone, which keeps them in the roadmap) and
@@ -39,6 +45,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -58,6 +65,7 @@
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/datastructures/NearestNeighborsGNATNoThreadSafety.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/config.h>
@@ -328,6 +336,47 @@ int run_prm(const json &input, const ob::SpaceInformationPtr &si, const ob::Stat
 
 }  // namespace
 
+// The connect-phase loop of the header's "nearest" input on OMPL's GNAT.
+static int run_nearest(const json &spec) {
+    const std::size_t n = spec.at("dimension").get<std::size_t>();
+    const std::vector<double> points = spec.at("points").get<std::vector<double>>();
+    const std::size_t base = spec.at("base").get<std::size_t>();
+    const int runs = spec.value("runs", 3);
+    if (n == 0 || points.size() % n != 0 || base > points.size() / n) {
+        std::cerr << "bad nearest input\n";
+        return 2;
+    }
+    const std::size_t count = points.size() / n;
+    double best = 1e300;
+    unsigned long long checksum = 0;
+    for (int run = 0; run < runs; ++run) {
+        ompl::NearestNeighborsGNATNoThreadSafety<std::size_t> gnat;
+        gnat.setDistanceFunction([&points, n](const std::size_t &a, const std::size_t &b) {
+            double sum = 0.0;
+            for (std::size_t k = 0; k < n; ++k) {
+                double d = points[a * n + k] - points[b * n + k];
+                sum += d * d;
+            }
+            return std::sqrt(sum);
+        });
+        for (std::size_t i = 0; i < base; ++i) {
+            gnat.add(i);
+        }
+        checksum = 0;
+        auto start = std::chrono::steady_clock::now();
+        for (std::size_t i = base; i < count; ++i) {
+            checksum += gnat.nearest(i);
+            gnat.add(i);
+        }
+        std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+        best = std::min(best, took.count());
+    }
+    json out;
+    out["nearest"] = {{"time_s", best}, {"checksum", checksum}};
+    std::cout << out.dump() << "\n";
+    return 0;
+}
+
 int main(int argc, char **argv) {
     if (argc != 2) {
         std::cerr << "usage: " << argv[0] << " INPUT.json\n";
@@ -347,6 +396,9 @@ int main(int argc, char **argv) {
     }
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     ompl::RNG::setSeed(input.value("seed", 1UL));
+    if (input.contains("nearest")) {
+        return run_nearest(input.at("nearest"));
+    }
 
     TmChecker *checker = nullptr;
     Boxes boxes;

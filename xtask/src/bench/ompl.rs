@@ -229,12 +229,42 @@ impl OmplDriver {
         Ok((build, out.runs))
     }
 
-    fn output(&self, input: &OmplInput<'_>) -> Result<OmplOutput, String> {
+    /// OMPL's GNAT given the first `base` of `points` (`dimension` numbers each), then asked
+    /// for each further one's nearest before storing it: the fastest of `runs` runs, seconds,
+    /// and the sum of the answers (indices).
+    pub fn nearest(
+        &self,
+        dimension: usize,
+        points: &[f64],
+        base: usize,
+        runs: usize,
+    ) -> Result<(f64, u64), String> {
+        #[derive(Deserialize)]
+        struct Answer {
+            time_s: f64,
+            checksum: u64,
+        }
+        #[derive(Deserialize)]
+        struct Output {
+            nearest: Answer,
+        }
+        let input = serde_json::json!({"nearest": {"dimension": dimension, "points": points, "base": base, "runs": runs}});
+        let out: Output = serde_json::from_str(&self.call(&input.to_string())?)
+            .map_err(|e| format!("the OMPL driver's output: {e}"))?;
+        Ok((out.nearest.time_s, out.nearest.checksum))
+    }
+
+    /// Runs the driver on the input `text`; its output.
+    fn call(&self, text: &str) -> Result<String, String> {
         let file = self.program.with_file_name(format!("input-{}.json", std::process::id()));
-        let text = serde_json::to_string(input).map_err(|e| e.to_string())?;
         std::fs::write(&file, text).map_err(|e| format!("cannot write {}: {e}", file.display()))?;
         let out = run_tool(Command::new(&self.program).arg(&file), "the OMPL driver");
         let _ = std::fs::remove_file(&file);
-        serde_json::from_str(&out?).map_err(|e| format!("the OMPL driver's output: {e}"))
+        out
+    }
+
+    fn output(&self, input: &OmplInput<'_>) -> Result<OmplOutput, String> {
+        let text = serde_json::to_string(input).map_err(|e| e.to_string())?;
+        serde_json::from_str(&self.call(&text)?).map_err(|e| format!("the OMPL driver's output: {e}"))
     }
 }

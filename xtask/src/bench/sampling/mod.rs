@@ -9,6 +9,7 @@
 mod boxes;
 mod connect;
 mod limits;
+mod nearest;
 mod optimal;
 mod prm;
 mod spaces;
@@ -29,16 +30,21 @@ use crate::bench::suite::Suite;
 use boxes::BoxRow;
 use connect::{CONNECT_ITERATIONS, ConnectRow, SingleQuery};
 use limits::LimitRow;
+use nearest::NearestRow;
 use optimal::OptimalRow;
 use prm::PrmRow;
 use spaces::SpaceRow;
 use star::{EqualTimeRow, STAR_ITERATIONS, StarRow};
 use world::{DOOR, ROBOT_RADIUS, SIZE, SamplingWorld, worlds};
 
-/// The names `--only` can give the section: its single-query planners, RRT*, PRM*, and `boxes`
-/// for the Rⁿ box worlds.
+/// The names `--only` can give the section: its single-query planners, RRT*, PRM*, `boxes` for
+/// the Rⁿ box worlds, and `nearest` for nearest neighbours alone.
 pub fn planner_names() -> Vec<&'static str> {
-    SingleQuery::ALL.iter().map(|p| p.name()).chain([star::NAME, prm::NAME, boxes::NAME]).collect()
+    SingleQuery::ALL
+        .iter()
+        .map(|p| p.name())
+        .chain([star::NAME, prm::NAME, boxes::NAME, nearest::NAME])
+        .collect()
 }
 
 /// The registry's planners this section measures: its single-query planners, RRT*, PRM* (its
@@ -74,6 +80,8 @@ pub struct SamplingReport {
     pub limits: Vec<LimitRow>,
     /// Rⁿ among random boxes.
     pub boxes: Vec<BoxRow>,
+    /// Nearest neighbours in a connect phase's order.
+    pub nearest: Vec<NearestRow>,
     /// The OMPL version measured (with `--with-ompl`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ompl_version: Option<String>,
@@ -106,9 +114,10 @@ impl SamplingReport {
 }
 
 /// The section's goals against OMPL for the report's goals table (unmeasured without it).
-pub fn goals(report: Option<&SamplingReport>) -> [GoalRow; 3] {
+pub fn goals(report: Option<&SamplingReport>) -> [GoalRow; 4] {
     [
         connect::goal(report.map_or(&[], |r| &r.connect)),
+        nearest::goal(report.map_or(&[], |r| &r.nearest)),
         star::goal(report.map_or(&[], |r| &r.equal_time)),
         optimal::goal(report.map_or(&[], |r| &r.optimal)),
     ]
@@ -123,6 +132,8 @@ struct Sizes {
     prm_samples: usize,
     space_queries: usize,
     box_queries: usize,
+    /// Whether the nearest-neighbour peers also run 100,000 states along a line (seconds each).
+    peers_on_long_lines: bool,
 }
 
 impl Sizes {
@@ -135,6 +146,7 @@ impl Sizes {
                 prm_samples: 2000,
                 space_queries: 100,
                 box_queries: 50,
+                peers_on_long_lines: false,
             },
             Suite::Full => Sizes {
                 queries: 1000,
@@ -143,6 +155,7 @@ impl Sizes {
                 prm_samples: 5000,
                 space_queries: 500,
                 box_queries: 200,
+                peers_on_long_lines: true,
             },
         }
     }
@@ -228,6 +241,12 @@ pub fn bench(
     } else {
         Vec::new()
     };
+    let nearest = if wanted(nearest::NAME) {
+        progress.note("nearest neighbours in a connect phase's order");
+        nearest::bench_nearest(seed, ompl, size.peers_on_long_lines)?
+    } else {
+        Vec::new()
+    };
     let mut figures = Vec::new();
     if !star.is_empty() {
         figures.push(("sampling-convergence.svg", star::convergence_svg(&star)?));
@@ -253,6 +272,7 @@ pub fn bench(
         optimal,
         limits,
         boxes,
+        nearest,
         ompl_version: ompl.map(|d| d.version.clone()),
         figures,
         logs,
@@ -311,6 +331,7 @@ pub fn markdown(report: &SamplingReport) -> String {
     }
     s.push_str(&optimal::markdown(&report.optimal));
     s.push_str(&boxes::markdown(&report.boxes));
+    s.push_str(&nearest::markdown(&report.nearest));
     s.push_str(&limits::markdown(&report.limits));
     s
 }

@@ -338,11 +338,20 @@ int run_prm(const json &input, const ob::SpaceInformationPtr &si, const ob::Stat
 
 // The connect-phase loop of the header's "nearest" input on OMPL's GNAT.
 static int run_nearest(const json &spec) {
-    const std::size_t n = spec.at("dimension").get<std::size_t>();
-    const std::vector<double> points = spec.at("points").get<std::vector<double>>();
-    const std::size_t base = spec.at("base").get<std::size_t>();
-    const int runs = spec.value("runs", 3);
-    if (n == 0 || points.size() % n != 0 || base > points.size() / n) {
+    std::size_t n = 0, base = 0;
+    std::vector<double> points;
+    int runs = 3;
+    try {
+        n = spec.at("dimension").get<std::size_t>();
+        points = spec.at("points").get<std::vector<double>>();
+        base = spec.at("base").get<std::size_t>();
+        runs = spec.value("runs", 3);
+    } catch (const std::exception &e) {
+        std::cerr << "bad nearest input: " << e.what() << "\n";
+        return 2;
+    }
+    // At least one point stored before the first question (GNAT's nearest needs one).
+    if (n == 0 || points.size() % n != 0 || base == 0 || base > points.size() / n || runs < 1) {
         std::cerr << "bad nearest input\n";
         return 2;
     }

@@ -107,6 +107,58 @@ proptest! {
     }
 }
 
+/// Points in order (rising along a slanted line, falling along it, or rising with every fifth
+/// point scattered), enough for the tree to rebuild subtrees many times over.
+fn ordered(order: u8, n: usize, seed: u64) -> Vec<[f64; 2]> {
+    let mut state = seed | 1;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    (0..n)
+        .map(|i| {
+            let t = i as f64 * 0.01;
+            match order {
+                0 => [t, 0.3 * t + next() * 1e-3],
+                1 => [-t, 0.3 * t + next() * 1e-3],
+                _ if i % 5 == 0 => [next() * n as f64 * 0.01, next() * 10.0],
+                _ => [t, 0.3 * t],
+            }
+        })
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(12))]
+
+    #[test]
+    fn answers_hold_through_rebuilds(
+        order in 0u8..3,
+        n in 1_000usize..4_000,
+        seed in any::<u64>(),
+        raw in prop::collection::vec(prop::array::uniform::<_, 2>(-0.2f64..1.2), 1..6),
+        k in 1usize..40,
+        radius in 0.0f64..0.5,
+    ) {
+        let points = ordered(order, n, seed);
+        let extent = n as f64 * 0.01;
+        let queries: Vec<[f64; 2]> = raw.iter().map(|q| [q[0] * extent * if order == 1 { -1.0 } else { 1.0 }, q[1] * 0.3 * extent]).collect();
+        agree(&points, &queries, k, radius)?;
+    }
+}
+
+#[test]
+fn points_beside_many_equal_ones_are_found() {
+    // 2,000 equal points, then points coming ever closer to them: each parted off beside them.
+    let mut points = vec![[5.0, 5.0]; 2_000];
+    points.extend((0..1_000).map(|i| [6.0 - f64::from(i) * 1e-3, 5.0]));
+    points.extend((0..100).map(|i| [5.0, 4.0 + f64::from(i) * 1e-3]));
+    let queries = [[5.0, 5.0], [5.5, 5.0], [5.0004, 5.0], [5.0, 4.05], [0.0, 0.0]];
+    agree(&points, &queries, 2_050, 0.01).expect("the same answers as measuring every point");
+}
+
 #[test]
 fn points_that_are_not_finite_are_kept_and_never_nearer_than_a_number() {
     let mut points: Vec<[f64; 2]> = (0..100).map(|i| [f64::from(i), 1.0]).collect();

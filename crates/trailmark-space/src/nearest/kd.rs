@@ -49,6 +49,18 @@ impl<S: StateSpace, const D: usize> KdNearest<S, D> {
         })
     }
 
+    /// Every state measured, nearest first (ties by id): where positions cannot order them.
+    fn measure_all(&self, space: &S, query: &S::State, direction: Direction) -> Vec<(u32, f64)> {
+        let mut all: Vec<(u32, f64)> = self
+            .states
+            .iter()
+            .enumerate()
+            .map(|(id, s)| (id as u32, measure(space, s, query, direction)))
+            .collect();
+        all.sort_unstable_by(by_distance);
+        all
+    }
+
     /// The nearest of all states, each measured: for a few states, quicker than the tree.
     fn scan(&self, space: &S, query: &S::State, direction: Direction) -> Option<(u32, f64)> {
         let measured =
@@ -116,10 +128,15 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
             }
             best.sort_unstable_by(by_distance);
             best.truncate(k);
-            // Fewer than asked: every group at a comparable distance was returned (a query with
-            // a NaN coordinate has none).
-            if candidates.len() < asked || candidates.len() == self.head.len() {
+            if candidates.len() == self.head.len() {
                 return best;
+            }
+            // Fewer than asked: the others are at no comparable distance by position (a NaN
+            // coordinate): the space's distance decides, measured for every state.
+            if candidates.len() < asked {
+                let mut all = self.measure_all(space, query, direction);
+                all.truncate(k);
+                return all;
             }
             // Every group not returned is at least this far by the lower bound.
             let bound = candidates.last().map_or(0.0, |c| c.1.sqrt());
@@ -161,14 +178,21 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
             consider(&mut best, group);
         }
         let reach = best.map_or(f64::NAN, |b: (u32, f64)| b.1);
+        if reach.is_nan() {
+            // No comparable distance among them: every state measured.
+            return self.scan(space, query, direction);
+        }
         // Every other position is farther than `bound` allows, so by the space's distance too.
         if reach * reach * (1.0 + 1e-12) < bound {
             return best;
         }
-        // The space's distance is longer than the straight line (a car's turns): every position
-        // within the best true distance found (widened by a rounding allowance, as in `within`).
+        // The space's distance is longer than the straight line (a car's turns): every other
+        // position within the best true distance found (widened by a rounding allowance, as in
+        // `within`).
         for (group, _) in self.tree.within(&at, reach * reach * (1.0 + 1e-9)) {
-            consider(&mut best, group);
+            if !close.iter().any(|&(measured, _)| measured == group) {
+                consider(&mut best, group);
+            }
         }
         best
     }

@@ -16,10 +16,13 @@ trait Gather {
 }
 
 /// Whether a cell whose squared distance is `rd` may hold a point within `bound`: also when
-/// `rd` is NaN (distances too large for `f64`), so that such a cell is searched, not lost.
+/// `rd` is NaN (distances too large for `f64`), so that such a cell is searched, not lost. The
+/// cell's distance is summed in another order than a point's (and one coordinate's term taken
+/// out and put back), so it may exceed the distance of a point on the cell's corner by a few
+/// units in the last place: `bound` is widened by that much.
 #[inline(always)]
-fn within_reach(rd: f64, bound: f64) -> bool {
-    rd <= bound || rd.is_nan()
+fn within_reach<const D: usize>(rd: f64, bound: f64) -> bool {
+    rd <= bound * (1.0 + 4.0 * (D + 1) as f64 * f64::EPSILON) || rd.is_nan()
 }
 
 /// The nearest point so far of [`KdTree::nearest_one`] (none while the distance is infinite).
@@ -158,7 +161,7 @@ impl<const D: usize> KdTree<D> {
         self.search_in(near, query, offsets, rd, gather);
         let old = offsets[dim];
         let far_rd = rd - old * old + diff * diff;
-        if within_reach(far_rd, gather.bound()) {
+        if within_reach::<D>(far_rd, gather.bound()) {
             offsets[dim] = diff;
             self.search_in(far, query, offsets, far_rd, gather);
             offsets[dim] = old;
@@ -174,11 +177,12 @@ impl<const D: usize> KdTree<D> {
     }
 
     /// The nearest points: every point whose squared distance is at most the nearest's times
-    /// `slack` (at least 1), in no order, and that bound; every other point is farther than it.
-    /// Empty (and an infinite bound) if no point is at a finite distance. One search, where
-    /// [`nearest_one`](Self::nearest_one) and then [`within`](Self::within) would be two.
+    /// `slack` (finite and at least 1; any other is taken as 1), in no order, and that bound;
+    /// every other point is farther than it. Empty (and an infinite bound) if no point is at a
+    /// finite distance. One search, where [`nearest_one`](Self::nearest_one) and then
+    /// [`within`](Self::within) would be two.
     pub fn nearest_within(&self, query: &[f64; D], slack: f64) -> (Vec<(u32, f64)>, f64) {
-        let slack = if slack >= 1.0 { slack } else { 1.0 };
+        let slack = if slack >= 1.0 && slack.is_finite() { slack } else { 1.0 };
         let mut close = Close { found: Vec::new(), best: f64::INFINITY, slack };
         self.search(query, &mut close);
         if close.best == f64::INFINITY {

@@ -6,9 +6,9 @@
 //! only for points that arrive scattered: states that arrive in order along a line (a tree
 //! planner's connect phase) always fill the last leaf, and the tree grows a chain, one level per
 //! half bucket. So the tree is also a scapegoat tree (Galperin and Rivest): when a point lands
-//! deeper than `3 log2(n / 16) + 2` levels, the lowest ancestor whose subtree is too deep for
+//! deeper than `3 ⌈log2(n / 16)⌉ + 2` levels, the lowest ancestor whose subtree is too deep for
 //! its size is rebuilt balanced. Depth stays logarithmic in the number of points whatever their
-//! order, and each point is rebuilt a logarithmic number of times, amortized. A leaf whose
+//! order, and each distinct point is rebuilt about a logarithmic number of times, amortized. A leaf whose
 //! newest point lies beyond all its others splits that point off alone, so that points in order
 //! leave full leaves behind them (and the chain grows half as fast).
 //!
@@ -135,26 +135,50 @@ impl<const D: usize> KdTree<D> {
             node.size = node.size.saturating_add(1);
             link = if point[node.dim as usize] >= node.split { node.above } else { node.below };
         }
-        let leaf = &mut self.leaves[(link & !LEAF) as usize];
-        // A leaf already over a bucket holds points all equal (it could not split): another
-        // equal one cannot part them either.
-        if leaf.len() > BUCKET && leaf.points().next().is_some_and(|(p, _)| p == point) {
-            leaf.push(point, item);
-            return;
-        }
-        leaf.push(point, item);
-        if leaf.len() <= BUCKET {
-            return;
-        }
-        let entries: Vec<Entry<D>> = leaf.points().collect();
-        self.release(link);
-        let built = self.build(entries, self.path.len(), Some(point));
+        let leaf = &self.leaves[(link & !LEAF) as usize];
+        // A leaf already over a bucket holds points all equal (it could not split): an equal
+        // one joins them; another is split off alone beside them, nothing moved (moving them
+        // for every such point would cost their number each time).
+        let equal = if leaf.len() > BUCKET { leaf.points().next().map(|(p, _)| p) } else { None };
+        let built = match equal {
+            Some(equal) if equal == point => {
+                self.leaves[(link & !LEAF) as usize].push(point, item);
+                return;
+            }
+            Some(equal) => self.beside(link, equal, point, item),
+            None => {
+                let leaf = &mut self.leaves[(link & !LEAF) as usize];
+                leaf.push(point, item);
+                if leaf.len() <= BUCKET {
+                    return;
+                }
+                let entries: Vec<Entry<D>> = leaf.points().collect();
+                self.release(link);
+                self.build(entries, self.path.len(), Some(point))
+            }
+        };
         self.relink(self.path.last().copied(), link, built);
         // The new points' leaves are one level deeper than the leaf was.
         let depth = self.path.len() + 1;
         if depth > allowed_depth(self.len - self.loose.len()) {
             self.rebuild_scapegoat(depth);
         }
+    }
+
+    /// A node parting `point` (with `item`, in a leaf of its own) from the leaf `equal_leaf` of
+    /// points all at `equal`, in a coordinate where they differ.
+    fn beside(&mut self, equal_leaf: u32, equal: [f64; D], point: [f64; D], item: u32) -> u32 {
+        let dim = (0..D).find(|&d| point[d] != equal[d]).expect("the point differs from the equal ones");
+        let alone = self.new_leaf();
+        self.leaves[(alone & !LEAF) as usize].push(point, item);
+        let size = u32::try_from(self.leaves[(equal_leaf & !LEAF) as usize].len() + 1).unwrap_or(u32::MAX);
+        // Below a split lie the points under it: the lower of the two goes below.
+        let node = if point[dim] > equal[dim] {
+            Node { split: point[dim], dim: dim as u32, size, below: equal_leaf, above: alone }
+        } else {
+            Node { split: equal[dim], dim: dim as u32, size, below: alone, above: equal_leaf }
+        };
+        self.new_node(node)
     }
 
     /// Points the link to `was` (from `parent`, or the root's) to `link`.
@@ -233,7 +257,10 @@ impl<const D: usize> KdTree<D> {
         let below = self.build_in(lower, depth + 1, None);
         let above = self.build_in(upper, depth + 1, None);
         let size = u32::try_from(lower.len() + upper.len()).unwrap_or(u32::MAX);
-        let node = Node { split, dim: dim as u32, size, below, above };
+        self.new_node(Node { split, dim: dim as u32, size, below, above })
+    }
+
+    fn new_node(&mut self, node: Node) -> u32 {
         match self.free_nodes.pop() {
             Some(free) => {
                 self.nodes[free as usize] = node;

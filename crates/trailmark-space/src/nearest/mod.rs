@@ -8,8 +8,8 @@
 //!
 //! [`KdNearest`] keeps the states' positions in a k-d tree ([`KdTree`], which stays shallow
 //! whatever order the states arrive in) and is exact for every space
-//! whose distance is at least the straight-line distance of the positions (all four spaces of
-//! this crate): candidates come from the tree in order of that lower bound, and the search
+//! whose distance is at least the straight-line distance of the positions (every space of this
+//! crate): candidates come from the tree in order of that lower bound, and the search
 //! stops once the bound exceeds the k-th best true distance. [`BruteForce`] measures every
 //! state, the reference the tests compare with.
 //!

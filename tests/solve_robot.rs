@@ -103,7 +103,17 @@ fn robot_worlds_plan_free_paths_with_either_checker_and_every_sampling_planner()
         "arm",
         vec![0.0; 4],
     );
-    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
+    for planner in [
+        "rrt",
+        "rrt_connect",
+        "rrt_star",
+        "informed_rrt_star",
+        "bit_star",
+        "prm",
+        "prm_star",
+        "lazy_prm",
+        "lazy_prm_star",
+    ] {
         for checker in ["batch", "scalar"] {
             for simplify in [false, true] {
                 let json = format!(

@@ -1,5 +1,5 @@
 //! Sampling planners through problem documents: `rrt`, `rrt_connect`, `rrt_star`,
-//! `informed_rrt_star`, `bit_star`, `prm` and `prm_star` in R² and
+//! `informed_rrt_star`, `bit_star`, `prm`, `prm_star`, `lazy_prm` and `lazy_prm_star` in R² and
 //! Dubins over a polygon world, and in Rⁿ over a box world (robot arms: `solve_robot.rs`).
 //! Paths start and end where asked, every leg is re-checked (exactly and every 1e-3 against
 //! plain distances), no path beats the visibility graph's optimum, the same seed gives the same document (timings aside), smoothed
@@ -13,6 +13,19 @@ use trailmark::core::world::PolygonWorld;
 use trailmark::sample::{PlanError, SamplerError};
 use trailmark::solve::{DocumentError, SolveError, solve, solve_and_draw};
 use trailmark::solve::{ProblemSpec, Status, WorldSpec};
+
+/// Every sampling planner of the registry, by its document name.
+const SAMPLING: [&str; 9] = [
+    "rrt",
+    "rrt_connect",
+    "rrt_star",
+    "informed_rrt_star",
+    "bit_star",
+    "prm",
+    "prm_star",
+    "lazy_prm",
+    "lazy_prm_star",
+];
 
 #[path = "support/results.rs"]
 mod results;
@@ -54,7 +67,7 @@ fn sampled_clear(world: &PolygonWorld, a: Point, b: Point) -> bool {
 #[test]
 fn r2_planners_give_valid_paths_no_shorter_than_the_optimum() {
     let best = optimum("[1, 1]", "[9, 1]");
-    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
+    for planner in SAMPLING {
         for simplify in [false, true] {
             for seed in 0..4 {
                 let problem = document(&format!(
@@ -91,7 +104,7 @@ fn r2_planners_give_valid_paths_no_shorter_than_the_optimum() {
 
 #[test]
 fn the_same_seed_gives_the_same_document() {
-    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
+    for planner in SAMPLING {
         let run = |seed: u64| {
             let problem = document(&format!(
                 r#""seed": {seed}, "start": [1, 1], "goal": [9, 1],
@@ -112,7 +125,7 @@ fn samplers_give_valid_reproducible_paths() {
         r#"{"name": "bridge", "std_dev": 0.5, "share": 1.0, "attempts": 10}"#,
         r#"{"name": "gaussian", "std_dev": 0.5, "share": 0.25}"#,
     ];
-    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
+    for planner in SAMPLING {
         let mut checks = Vec::new();
         for sampler in samplers {
             let problem = document(&format!(
@@ -456,7 +469,7 @@ fn box_document(rest: &str) -> ProblemSpec {
 
 #[test]
 fn box_worlds_in_rn_for_every_sampling_planner() {
-    for planner in ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"] {
+    for planner in SAMPLING {
         let problem = box_document(&format!(
             r#""space": "rn", "seed": 2, "start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1],
                "planner": {{"name": "{planner}", "max_iterations": 3000, "simplify": true}}"#

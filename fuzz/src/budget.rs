@@ -133,7 +133,9 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
         | PlannerSpec::InformedRrtStar(spec)
         | PlannerSpec::BitStar(spec)
         | PlannerSpec::Prm(spec)
-        | PlannerSpec::PrmStar(spec) => {
+        | PlannerSpec::PrmStar(spec)
+        | PlannerSpec::LazyPrm(spec)
+        | PlannerSpec::LazyPrmStar(spec) => {
             let iterations_ok = match spec.max_iterations {
                 Some(n) => n <= MAX_SAMPLING_ITERATIONS,
                 None => {
@@ -159,6 +161,7 @@ pub fn problem_is_quick(problem: &ProblemSpec) -> bool {
                         | PlannerSpec::InformedRrtStar(_)
                         | PlannerSpec::BitStar(_)
                         | PlannerSpec::PrmStar(_)
+                        | PlannerSpec::LazyPrmStar(_)
                 )
                 && !(spec.max_iterations.is_some_and(|n| n <= MAX_SAMPLING_ITERATIONS / 3)
                     || time_ok(spec.time_limit_s))

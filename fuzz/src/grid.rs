@@ -337,7 +337,9 @@ pub fn check_result(problem: &ProblemSpec, world: &GridSpec, result: &SolveResul
         | PlannerSpec::InformedRrtStar(_)
         | PlannerSpec::BitStar(_)
         | PlannerSpec::Prm(_)
-        | PlannerSpec::PrmStar(_) => {
+        | PlannerSpec::PrmStar(_)
+        | PlannerSpec::LazyPrm(_)
+        | PlannerSpec::LazyPrmStar(_) => {
             panic!("a sampling planner solved a grid problem")
         }
         PlannerSpec::HybridAStar(_) => unreachable!("checked by car::check_result"),

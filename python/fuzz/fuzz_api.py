@@ -30,7 +30,7 @@ EXPECTED = (trailmark.TrailmarkError, TypeError, ValueError, OverflowError)
 GRID_PLANNERS = ["astar", "dijkstra", "bfs", "dfs", "jps", "jps_plus", "theta_star", "weighted_astar",
                  "lpa_star", "dstar_lite", "ara_star", "ad_star", "rrt", "hybrid_astar", "nonsense"]
 # The sampling planners, then two names that are not (every input must plan or be refused).
-SAMPLING = ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"]
+SAMPLING = ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star", "lazy_prm", "lazy_prm_star"]
 SAMPLING_PLANNERS = SAMPLING + ["astar", "nonsense"]
 REPLANNERS = ["dstar_lite", "lpa_star", "mpgaa_star", "adaptive_astar", "ad_star", "astar", "bfs"]
 _ARM = []

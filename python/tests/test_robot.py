@@ -60,7 +60,7 @@ def test_the_batch_and_scalar_checkers_agree_state_by_state():
     assert batch.is_valid(np.empty((0, 4))).shape == (0,)
 
 
-@pytest.mark.parametrize("planner", ["rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"])
+@pytest.mark.parametrize("planner", ["rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star", "lazy_prm", "lazy_prm_star"])
 def test_plans_equal_the_documents_and_are_free(planner):
     world = arm()
     plan = world.plan(START, GOAL, planner, seed=3, max_iterations=1500)

@@ -37,7 +37,7 @@ def path_is_free(path, resolution=1e-3):
     return True
 
 
-@pytest.mark.parametrize("planner", ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star"])
+@pytest.mark.parametrize("planner", ["rrt", "rrt_connect", "rrt_star", "informed_rrt_star", "bit_star", "prm", "prm_star", "lazy_prm", "lazy_prm_star"])
 @pytest.mark.parametrize("batch", [False, True])
 def test_plans_around_a_wall_the_world_does_not_know(planner, batch):
     check = grown_wall if batch else grown_wall_one

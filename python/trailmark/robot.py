@@ -101,7 +101,7 @@ class RobotWorld:
         **settings: Any,
     ) -> Plan:
         """Plans from ``start`` to ``goal`` (a value per group joint) with a sampling planner
-        (``rrt``, ``rrt_connect``, ``rrt_star``, ``informed_rrt_star``, ``bit_star``, ``prm``, ``prm_star``) and its settings as a
+        (``rrt``, ``rrt_connect``, ``rrt_star``, ``informed_rrt_star``, ``bit_star``, ``prm``, ``prm_star``, ``lazy_prm``, ``lazy_prm_star``) and its settings as a
         problem document gives them (``max_iterations``, ``time_limit_s``, ``range``,
         ``simplify``, ...); the path as ``(n, d)`` joint values. Ctrl-C stops the planner."""
         spec = _args.planner(planner, settings)

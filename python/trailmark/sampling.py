@@ -26,7 +26,7 @@ def plan_in_box(
     **settings: Any,
 ) -> Plan:
     """Plans from ``start`` to ``goal`` with a sampling planner (``rrt``, ``rrt_connect``,
-    ``rrt_star``, ``informed_rrt_star``, ``bit_star``, ``prm``, ``prm_star``) in the box ``bounds`` (one ``(low, high)`` per axis, 1
+    ``rrt_star``, ``informed_rrt_star``, ``bit_star``, ``prm``, ``prm_star``, ``lazy_prm``, ``lazy_prm_star``) in the box ``bounds`` (one ``(low, high)`` per axis, 1
     to 8 axes), around the axis-aligned boxes ``obstacles`` (each ``(low_corner,
     high_corner)``) and, when given, only through states that ``is_valid`` accepts.
 

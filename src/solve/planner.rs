@@ -131,6 +131,15 @@ pub enum PlannerSpec {
     /// PRM*: PRM with PRM*'s number of neighbours, growing and searching again until its limit.
     #[serde(rename = "prm_star")]
     PrmStar(SamplingSpec),
+    /// Lazy PRM: PRM's roadmap with no motion checked as it grows; a found path's motions are
+    /// checked, the blocked ones dropped and the search repeated. It takes no `range` or
+    /// `goal_bias`; `max_iterations` counts samples.
+    #[serde(rename = "lazy_prm")]
+    LazyPrm(SamplingSpec),
+    /// Lazy PRM*: Lazy PRM with PRM*'s number of neighbours, growing and searching again until
+    /// its limit.
+    #[serde(rename = "lazy_prm_star")]
+    LazyPrmStar(SamplingSpec),
     /// Hybrid A* for a car-like robot on a ROS map: poses `[x, y, heading]`, forward and
     /// reverse arcs, the footprint checked at every pose.
     #[serde(rename = "hybrid_astar")]
@@ -147,7 +156,9 @@ impl PlannerSpec {
             | PlannerSpec::InformedRrtStar(spec)
             | PlannerSpec::BitStar(spec)
             | PlannerSpec::Prm(spec)
-            | PlannerSpec::PrmStar(spec) => Some(spec),
+            | PlannerSpec::PrmStar(spec)
+            | PlannerSpec::LazyPrm(spec)
+            | PlannerSpec::LazyPrmStar(spec) => Some(spec),
             PlannerSpec::Bfs {}
             | PlannerSpec::Dfs {}
             | PlannerSpec::Dijkstra {}
@@ -190,6 +201,8 @@ impl PlannerSpec {
             PlannerSpec::BitStar(_) => PlannerName::BitStar,
             PlannerSpec::Prm(_) => PlannerName::Prm,
             PlannerSpec::PrmStar(_) => PlannerName::PrmStar,
+            PlannerSpec::LazyPrm(_) => PlannerName::LazyPrm,
+            PlannerSpec::LazyPrmStar(_) => PlannerName::LazyPrmStar,
             PlannerSpec::HybridAStar(_) => PlannerName::HybridAStar,
         }
     }
@@ -227,6 +240,8 @@ impl PlannerSpec {
             | PlannerSpec::BitStar(_)
             | PlannerSpec::Prm(_)
             | PlannerSpec::PrmStar(_)
+            | PlannerSpec::LazyPrm(_)
+            | PlannerSpec::LazyPrmStar(_)
             | PlannerSpec::HybridAStar(_) => (None, false),
             PlannerSpec::WeightedAStar { heuristic, .. } => (*heuristic, false),
             // Lines may be shorter than any path of the grid: only the straight line is a
@@ -257,7 +272,12 @@ impl PlannerSpec {
             return Err(DocumentError::TooManyIterations(n));
         }
         // A roadmap or a batch of samples neither steers by a range nor aims at the goal.
-        if let PlannerSpec::Prm(spec) | PlannerSpec::PrmStar(spec) | PlannerSpec::BitStar(spec) = self {
+        if let PlannerSpec::Prm(spec)
+        | PlannerSpec::PrmStar(spec)
+        | PlannerSpec::LazyPrm(spec)
+        | PlannerSpec::LazyPrmStar(spec)
+        | PlannerSpec::BitStar(spec) = self
+        {
             let given = [("range", spec.range.is_some()), ("goal_bias", spec.goal_bias.is_some())];
             if let Some(&(field, _)) = given.iter().find(|(_, given)| *given) {
                 return Err(DocumentError::NotForPlanner { field, planner: self.name() });
@@ -347,6 +367,8 @@ impl PlannerSpec {
             | PlannerSpec::BitStar(_)
             | PlannerSpec::Prm(_)
             | PlannerSpec::PrmStar(_)
+            | PlannerSpec::LazyPrm(_)
+            | PlannerSpec::LazyPrmStar(_)
             | PlannerSpec::HybridAStar(_) => {
                 return Err(DocumentError::NotAGraphSearch { planner: self.name() }.into());
             }
@@ -395,6 +417,8 @@ impl PlannerSpec {
             | PlannerSpec::BitStar(_)
             | PlannerSpec::Prm(_)
             | PlannerSpec::PrmStar(_)
+            | PlannerSpec::LazyPrm(_)
+            | PlannerSpec::LazyPrmStar(_)
             | PlannerSpec::HybridAStar(_) => return None,
         };
         Some(match found {
@@ -434,6 +458,10 @@ impl PlannerSpec {
             PlannerSpec::BitStar(_) => Box::new(BitStar::new(nearest).with_sampler(sampler).with_seed(seed)),
             PlannerSpec::Prm(_) => Box::new(Prm::new(nearest).with_sampler(sampler).with_seed(seed)),
             PlannerSpec::PrmStar(_) => Box::new(Prm::star(nearest).with_sampler(sampler).with_seed(seed)),
+            PlannerSpec::LazyPrm(_) => Box::new(Prm::lazy(nearest).with_sampler(sampler).with_seed(seed)),
+            PlannerSpec::LazyPrmStar(_) => {
+                Box::new(Prm::lazy_star(nearest).with_sampler(sampler).with_seed(seed))
+            }
             // The graph searches, for which `sampling()` is `None`.
             _ => return None,
         })

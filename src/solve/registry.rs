@@ -111,6 +111,10 @@ registry! {
     Prm => "prm", Sampling, replans: false;
     /// PRM*.
     PrmStar => "prm_star", Sampling, replans: false;
+    /// Lazy PRM.
+    LazyPrm => "lazy_prm", Sampling, replans: false;
+    /// Lazy PRM*.
+    LazyPrmStar => "lazy_prm_star", Sampling, replans: false;
     /// Hybrid A*.
     HybridAStar => "hybrid_astar", Car, replans: false;
 }

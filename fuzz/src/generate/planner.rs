@@ -63,14 +63,27 @@ pub(super) fn planner_spec(u: &mut Unstructured, planner: PlannerName, grid: boo
         | PlannerName::InformedRrtStar
         | PlannerName::BitStar
         | PlannerName::Prm
-        | PlannerName::PrmStar => {
+        | PlannerName::PrmStar
+        | PlannerName::LazyPrm
+        | PlannerName::LazyPrmStar => {
             // The roadmaps and BIT* refuse a range and a goal bias: given now and then, to reach the error.
-            let roadmap = matches!(planner, PlannerName::Prm | PlannerName::PrmStar | PlannerName::BitStar);
+            let roadmap = matches!(
+                planner,
+                PlannerName::Prm
+                    | PlannerName::PrmStar
+                    | PlannerName::LazyPrm
+                    | PlannerName::LazyPrmStar
+                    | PlannerName::BitStar
+            );
             let p = if roadmap { 8 } else { 128 };
             insert(&mut spec, "range", maybe(u, p, |u| float(u, 0.0, 4.0).map(num))?);
             insert(&mut spec, "goal_bias", maybe(u, p, |u| float(u, 0.0, 1.0).map(num))?);
             let iterations = match planner {
-                PlannerName::RrtStar | PlannerName::InformedRrtStar | PlannerName::BitStar | PlannerName::PrmStar => 600,
+                PlannerName::RrtStar
+                | PlannerName::InformedRrtStar
+                | PlannerName::BitStar
+                | PlannerName::PrmStar
+                | PlannerName::LazyPrmStar => 600,
                 _ => 2000,
             };
             spec.insert("max_iterations".into(), json!(u.int_in_range(0..=iterations)?));

@@ -107,7 +107,9 @@ pub fn bench_limits(seed: u64) -> Result<Vec<LimitRow>, String> {
         Box::new(InformedRrtStar::new(kd.clone())),
         Box::new(BitStar::new(kd.clone())),
         Box::new(Prm::new(kd.clone())),
-        Box::new(Prm::star(kd)),
+        Box::new(Prm::star(kd.clone())),
+        Box::new(Prm::lazy(kd.clone())),
+        Box::new(Prm::lazy_star(kd)),
     ];
     let mut plane = measure("R2, goal walled off", &problem, planners, seed);
     // The bridge RRT-Connect is named apart from the uniform one.
@@ -127,6 +129,8 @@ pub fn bench_limits(seed: u64) -> Result<Vec<LimitRow>, String> {
             Box::new(BitStar::new(kd.clone())),
             Box::new(Prm::new(kd.clone())),
             Box::new(Prm::star(kd.clone())),
+            Box::new(Prm::lazy(kd.clone())),
+            Box::new(Prm::lazy_star(kd.clone())),
         ]
     };
     let (start, goal) = (Joints::from([-1.0; 6]), Joints::from([1.0; 6]));

@@ -48,8 +48,8 @@ pub fn planner_names() -> Vec<&'static str> {
 }
 
 /// The registry's planners this section measures: its single-query planners, RRT*, PRM* (its
-/// own rows and the box worlds'), PRM (the time limits' rows) and the optimizing planners at
-/// equal time.
+/// own rows and the box worlds'), PRM, Lazy PRM and Lazy PRM* (the time limits' rows; Lazy
+/// PRM* also the box worlds') and the optimizing planners at equal time.
 pub fn measured() -> impl Iterator<Item = trailmark::solve::PlannerName> {
     use trailmark::solve::PlannerName;
     let named = [star::NAME, prm::NAME].into_iter().filter_map(PlannerName::from_name);
@@ -57,7 +57,7 @@ pub fn measured() -> impl Iterator<Item = trailmark::solve::PlannerName> {
         .iter()
         .map(|p| p.planner())
         .chain(named)
-        .chain([PlannerName::Prm])
+        .chain([PlannerName::Prm, PlannerName::LazyPrm, PlannerName::LazyPrmStar])
         .chain(optimal::MEASURED)
 }
 

@@ -12,20 +12,12 @@ use trailmark::core::reeds_shepp::ReedsSheppPath;
 use trailmark::core::world::PolygonWorld;
 use trailmark::sample::{PlanError, SamplerError};
 use trailmark::solve::{DocumentError, SolveError, solve, solve_and_draw};
-use trailmark::solve::{ProblemSpec, Status, WorldSpec};
+use trailmark::solve::{Family, PlannerName, ProblemSpec, Status, WorldSpec};
 
 /// Every sampling planner of the registry, by its document name.
-const SAMPLING: [&str; 9] = [
-    "rrt",
-    "rrt_connect",
-    "rrt_star",
-    "informed_rrt_star",
-    "bit_star",
-    "prm",
-    "prm_star",
-    "lazy_prm",
-    "lazy_prm_star",
-];
+fn sampling_planners() -> Vec<&'static str> {
+    PlannerName::ALL.iter().filter(|p| p.family() == Family::Sampling).map(|p| p.name()).collect()
+}
 
 #[path = "support/results.rs"]
 mod results;
@@ -67,7 +59,7 @@ fn sampled_clear(world: &PolygonWorld, a: Point, b: Point) -> bool {
 #[test]
 fn r2_planners_give_valid_paths_no_shorter_than_the_optimum() {
     let best = optimum("[1, 1]", "[9, 1]");
-    for planner in SAMPLING {
+    for planner in sampling_planners() {
         for simplify in [false, true] {
             for seed in 0..4 {
                 let problem = document(&format!(
@@ -104,7 +96,7 @@ fn r2_planners_give_valid_paths_no_shorter_than_the_optimum() {
 
 #[test]
 fn the_same_seed_gives_the_same_document() {
-    for planner in SAMPLING {
+    for planner in sampling_planners() {
         let run = |seed: u64| {
             let problem = document(&format!(
                 r#""seed": {seed}, "start": [1, 1], "goal": [9, 1],
@@ -125,7 +117,7 @@ fn samplers_give_valid_reproducible_paths() {
         r#"{"name": "bridge", "std_dev": 0.5, "share": 1.0, "attempts": 10}"#,
         r#"{"name": "gaussian", "std_dev": 0.5, "share": 0.25}"#,
     ];
-    for planner in SAMPLING {
+    for planner in sampling_planners() {
         let mut checks = Vec::new();
         for sampler in samplers {
             let problem = document(&format!(
@@ -162,6 +154,9 @@ fn car_paths_chain_shortest_curves_of_the_turning_radius() {
             // A roadmap joins each state to its nearest without a range.
             ("prm", r#""max_iterations": 2000"#),
             ("prm_star", r#""max_iterations": 1000"#),
+            // Dubins is asymmetric: a lazy roadmap keys and drops each direction apart.
+            ("lazy_prm", r#""max_iterations": 2000"#),
+            ("lazy_prm_star", r#""max_iterations": 1000"#),
         ];
         for (planner, settings) in settings {
             let problem = document(&format!(
@@ -352,6 +347,12 @@ fn bad_sampling_documents_give_typed_errors() {
         (format!(r#"{ends}, "planner": {{"name": "prm_star", "goal_bias": 0.1}}"#), |e| {
             matches!(e, SolveError::Document(DocumentError::NotForPlanner { field: "goal_bias", planner: "prm_star" }))
         }),
+        (format!(r#"{ends}, "planner": {{"name": "lazy_prm", "range": 1}}"#), |e| {
+            matches!(e, SolveError::Document(DocumentError::NotForPlanner { field: "range", planner: "lazy_prm" }))
+        }),
+        (format!(r#"{ends}, "planner": {{"name": "lazy_prm_star", "goal_bias": 0.1}}"#), |e| {
+            matches!(e, SolveError::Document(DocumentError::NotForPlanner { field: "goal_bias", planner: "lazy_prm_star" }))
+        }),
         (format!(r#"{ends}, "planner": {{"name": "prm_star", "time_limit_s": -1}}"#), |e| {
             matches!(e, SolveError::Document(DocumentError::TimeLimit(_)))
         }),
@@ -469,7 +470,7 @@ fn box_document(rest: &str) -> ProblemSpec {
 
 #[test]
 fn box_worlds_in_rn_for_every_sampling_planner() {
-    for planner in SAMPLING {
+    for planner in sampling_planners() {
         let problem = box_document(&format!(
             r#""space": "rn", "seed": 2, "start": [0.1, 0.5, 0.1], "goal": [0.9, 0.5, 0.1],
                "planner": {{"name": "{planner}", "max_iterations": 3000, "simplify": true}}"#

@@ -36,7 +36,8 @@ def plan_in_box(
     vectorized. Motions are checked every ``resolution`` of the box's diagonal (OMPL's longest
     valid segment fraction). ``settings`` are the planner's settings of a problem document:
     ``range``, ``goal_bias``, ``max_iterations``, ``time_limit_s``, ``simplify``, ``sampler``
-    (the roadmaps, PRM and PRM*, take neither ``range`` nor ``goal_bias``).
+    (the roadmaps PRM, PRM*, Lazy PRM and Lazy PRM*, and BIT*, take neither ``range`` nor
+    ``goal_bias``).
     An exception raised by ``is_valid`` (Ctrl-C too) stops the planner and is raised again here.
 
     >>> import numpy as np, trailmark

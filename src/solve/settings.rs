@@ -125,7 +125,8 @@ impl HybridSpec {
     }
 }
 
-/// The settings of a sampling planner (RRT, RRT-Connect, RRT*, Informed RRT*, BIT*, PRM, PRM*).
+/// The settings of a sampling planner (RRT, RRT-Connect, RRT*, Informed RRT*, BIT*, PRM, PRM*,
+/// Lazy PRM, Lazy PRM*).
 /// Each has a default.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

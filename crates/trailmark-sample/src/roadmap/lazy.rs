@@ -63,8 +63,8 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
     /// then every unchecked motion of the path checked; the blocked ones are dropped from the
     /// roadmap and the search runs again, until a path is free, none is left, or `interrupted`
     /// (between searches; each search drops a motion, so the loop ends without it too). The
-    /// components are recomputed once, at the end: stale ones only join too much, and the
-    /// search uses them only to skip pairs that cannot connect.
+    /// components are recomputed once, at the end (not past the limit): stale ones only join
+    /// too much, and the search uses them only to skip pairs that cannot connect.
     pub(super) fn search_checked<V: Validity<S>>(
         &mut self,
         space: &S,
@@ -96,7 +96,9 @@ impl<S: StateSpace, N: NearestNeighbors<S> + Clone, Q> Prm<S, N, Q> {
             }
             dropped = true;
             if interrupted() {
-                break None;
+                // Past the limit: the components stay as they were (they only join too much,
+                // and the next query that drops a motion recomputes them).
+                return None;
             }
         };
         if dropped {

@@ -6,7 +6,7 @@ use std::collections::HashSet;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use super::{Direction, KdTree, NearestNeighbors, by_distance, measure};
+use super::{Direction, KdTree, NearestNeighbors, by_distance, measure, measure_all};
 use crate::space::{SpaceError, StateSpace};
 
 /// A k-d tree ([`KdTree`]) over the states' `D`-dimensional positions
@@ -47,18 +47,6 @@ impl<S: StateSpace, const D: usize> KdNearest<S, D> {
             next: Vec::new(),
             group_of: foldhash::HashMap::default(),
         })
-    }
-
-    /// Every state measured, nearest first (ties by id): where positions cannot order them.
-    fn measure_all(&self, space: &S, query: &S::State, direction: Direction) -> Vec<(u32, f64)> {
-        let mut all: Vec<(u32, f64)> = self
-            .states
-            .iter()
-            .enumerate()
-            .map(|(id, s)| (id as u32, measure(space, s, query, direction)))
-            .collect();
-        all.sort_unstable_by(by_distance);
-        all
     }
 
     /// The nearest of all states, each measured: for a few states, quicker than the tree.
@@ -134,7 +122,7 @@ impl<S: StateSpace, const D: usize> NearestNeighbors<S> for KdNearest<S, D> {
             // Fewer than asked: the others are at no comparable distance by position (a NaN
             // coordinate): the space's distance decides, measured for every state.
             if candidates.len() < asked {
-                let mut all = self.measure_all(space, query, direction);
+                let mut all = measure_all(space, &self.states, query, direction);
                 all.truncate(k);
                 return all;
             }

@@ -110,15 +110,21 @@ impl<S: StateSpace> BruteForce<S> {
     }
 
     fn all(&self, space: &S, query: &S::State, direction: Direction) -> Vec<(u32, f64)> {
-        let mut all: Vec<(u32, f64)> = self
-            .states
-            .iter()
-            .enumerate()
-            .map(|(i, s)| (i as u32, measure(space, s, query, direction)))
-            .collect();
-        all.sort_unstable_by(by_distance);
-        all
+        measure_all(space, &self.states, query, direction)
     }
+}
+
+/// Every state of `states` (numbered by position) measured, nearest first (ties by id).
+pub(super) fn measure_all<S: StateSpace>(
+    space: &S,
+    states: &[S::State],
+    query: &S::State,
+    direction: Direction,
+) -> Vec<(u32, f64)> {
+    let mut all: Vec<(u32, f64)> =
+        states.iter().enumerate().map(|(i, s)| (i as u32, measure(space, s, query, direction))).collect();
+    all.sort_unstable_by(by_distance);
+    all
 }
 
 impl<S: StateSpace> NearestNeighbors<S> for BruteForce<S> {

@@ -1,6 +1,6 @@
-// The arm peer of the benchmark harness: OMPL's RRTConnect planning a robot arm's group in joint
+// The arm peer of the benchmark harness: OMPL's RRTConnect (or InformedRRTstar, BITstar) planning a robot arm's group in joint
 // space, states checked by FCL on the robot's spheres and the scene's primitives, the same model
-// trailmark's ArmChecker checks (xtask/src/bench/ompl_arm.rs writes the input from trailmark's
+// trailmark's ArmChecker checks (xtask/src/bench/ompl_arm/mod.rs writes the input from trailmark's
 // Robot, SphereModel and Scene). xtask compiles it with
 // `c++ -std=c++17 $(pkg-config --cflags ompl fcl eigen3 nlohmann_json) ... -lompl -lfcl -lccd`.
 //
@@ -23,8 +23,13 @@
 //                  "position": [x, y, z], "orientation": [qx, qy, qz, qw] (world frame) and
 //                  "allowed_frames": [f, ...] (frames allowed to touch it)]
 //   "queries":   [{"start": [...], "goal": [...]}, ...]
+//   "planner": "rrt_connect" (the default) | "informed_rrt_star" | "bit_star" | "prm_star": the
+//                optimizing planners minimise the path's length (PathLengthOptimizationObjective,
+//                no cost threshold) and run until the time limit; "prm_star" only builds a
+//                roadmap of "roadmap_size" milestones (or until the time limit) per run, with
+//                the run's "time_s" the build's, "vertices" and "edges" the roadmap's and no path,
 //   "runs": runs per query, "seed": OMPL's global seed (set once), "time_limit_s": per run,
-//   "range": RRTConnect's range (0: OMPL's default), "resolution": the longest segment a motion
+//   "range": the tree planners' range (0: OMPL's default; BITstar has none), "resolution": the longest segment a motion
 //   is checked without a state in between, in joint-space units (OMPL's longest valid segment;
 //   given to OMPL as a fraction of the space's extent), "simplify": whether to simplify.
 //   "states":    optional, [[q...], ...]: states only to check, answered in "valid".
@@ -76,10 +81,14 @@
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/StateValidityChecker.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/config.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/SimpleSetup.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
@@ -316,12 +325,30 @@ json run(const json &input) {
     setup.setStateValidityChecker(std::make_shared<Validity>(si, &world));
     double resolution = input.at("resolution").get<double>();
     space->setLongestValidSegmentFraction(resolution / space->getMaximumExtent());
-    auto planner = std::make_shared<og::RRTConnect>(si);
-    double range = input.value("range", 0.0);
-    if (range > 0.0) {
-        planner->setRange(range);
+    const std::string name = input.value("planner", std::string("rrt_connect"));
+    const double range = input.value("range", 0.0);
+    if (name == "rrt_connect") {
+        auto planner = std::make_shared<og::RRTConnect>(si);
+        if (range > 0.0) {
+            planner->setRange(range);
+        }
+        setup.setPlanner(planner);
+    } else if (name == "informed_rrt_star") {
+        auto planner = std::make_shared<og::InformedRRTstar>(si);
+        if (range > 0.0) {
+            planner->setRange(range);
+        }
+        setup.setPlanner(planner);
+    } else if (name == "bit_star") {
+        setup.setPlanner(std::make_shared<og::BITstar>(si));
+    } else if (name == "prm_star") {
+        setup.setPlanner(std::make_shared<og::PRMstar>(si));
+    } else {
+        throw std::runtime_error("unknown planner " + name);
     }
-    setup.setPlanner(planner);
+    if (name != "rrt_connect") {
+        setup.setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+    }
     setup.setup();
 
     json out;
@@ -331,6 +358,7 @@ json run(const json &input) {
     const double limit = input.at("time_limit_s").get<double>();
     const unsigned runs = input.value("runs", 1u);
     const bool simplify = input.value("simplify", false);
+    const unsigned long roadmap_size = input.value("roadmap_size", 0UL);
     const auto &queries = input.at("queries");
     for (size_t k = 0; k < queries.size(); ++k) {
         auto start = queries[k].at("start").get<std::vector<double>>();
@@ -347,6 +375,28 @@ json run(const json &input) {
             setup.clear();
             setup.setStartAndGoalStates(a, b);
             world.checks = 0;
+            if (name == "prm_star") {
+                // The roadmap alone: PRMstar's solve would go on growing it until the time limit
+                // (its objective is never satisfied), so only the build is timed.
+                setup.setup();
+                auto prm = setup.getPlanner()->as<og::PRMstar>();
+                auto clock = std::chrono::steady_clock::now();
+                prm->growRoadmap(ob::plannerOrTerminationCondition(
+                    ob::PlannerTerminationCondition(
+                        [prm, roadmap_size] { return prm->milestoneCount() >= roadmap_size; }),
+                    ob::timedPlannerTerminationCondition(limit)));
+                json row;
+                row["query"] = k;
+                row["run"] = r;
+                row["time_s"] = seconds_since(clock);
+                row["checks"] = world.checks;
+                row["vertices"] = prm->milestoneCount();
+                row["edges"] = prm->edgeCount();
+                row["status"] = "none";
+                row["path"] = json::array();
+                out["runs"].push_back(row);
+                continue;
+            }
             auto clock = std::chrono::steady_clock::now();
             ob::PlannerStatus status = setup.solve(limit);
             double time = seconds_since(clock);

@@ -11,11 +11,15 @@ use std::time::{Duration, Instant};
 use serde_json::json;
 use trailmark::core::termination::Termination;
 use trailmark::robot::cover::{cover, spherize};
+use trailmark::robot::nalgebra::SVector;
 use trailmark::robot::request::Request;
 use trailmark::robot::scene::Scene;
 use trailmark::robot::srdf::Srdf;
 use trailmark::robot::{ArmChecker, BatchChecker, DEFAULT_STEP, ExactChecker, Robot, RobotError};
-use trailmark::sample::{Joints, KdNearest, Planner, Problem, RrtConnect, RrtOptions, paths, simplify};
+use trailmark::sample::{
+    BitStar, InformedRrtStar, Joints, KdNearest, Plan, PlanError, Planner, Prm, Problem, RrtConnect,
+    RrtOptions, paths, simplify,
+};
 
 /// The arguments of `verify mbm`.
 #[derive(Debug, Clone, clap::Args)]
@@ -70,13 +74,26 @@ pub struct Args {
     pub spherize: bool,
 }
 
-/// A planner `verify mbm` runs.
+/// A planner `verify mbm` and the harness run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum ArmPlanner {
-    /// RRT-Connect.
+    /// RRT-Connect: stops at its first path.
     #[value(name = "rrt_connect")]
     RrtConnect,
+    /// Informed RRT*: improves its path until the time limit.
+    #[value(name = "informed_rrt_star")]
+    InformedRrtStar,
+    /// BIT*: improves its path until the time limit.
+    #[value(name = "bit_star")]
+    BitStar,
+    /// PRM*: a roadmap of [`ROADMAP_SIZE`] milestones (its build timed, within the time limit),
+    /// then the query on it.
+    #[value(name = "prm_star")]
+    PrmStar,
 }
+
+/// The milestones of [`ArmPlanner::PrmStar`]'s roadmap.
+pub const ROADMAP_SIZE: usize = 500;
 
 /// The collision checker planned with.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -88,6 +105,7 @@ pub enum CheckerKind {
 }
 
 /// One problem: its name (`<folder>/<requestNNNN>`), scene and request.
+#[derive(Debug, Clone)]
 pub struct MbmProblem {
     pub name: String,
     pub scene: PathBuf,
@@ -174,13 +192,15 @@ impl Arm {
 /// How `verify mbm` and the harness plan a problem.
 #[derive(Debug, Clone, Copy)]
 pub struct Settings {
+    /// The planner.
+    pub planner: ArmPlanner,
     /// The checker planned with.
     pub checker: CheckerKind,
     /// The time limit of a problem.
     pub limit: Duration,
     /// The planner's seed.
     pub seed: u64,
-    /// RRT-Connect's range (`None`: the planner's default).
+    /// The tree planners' range (`None`: the planner's default, a fifth of the space's extent).
     pub range: Option<f64>,
     /// Whether to simplify the path.
     pub simplify: bool,
@@ -311,10 +331,51 @@ fn plan<const N: usize, const D: usize>(
         value: e.to_string(),
     })?;
     let options = RrtOptions { range: settings.range, ..RrtOptions::default() };
-    let mut planner = RrtConnect::new(nearest).with_seed(settings.seed).with_options(options);
+    let limit = Termination::time(settings.limit);
+    let mut planner: Box<dyn Planner<_, _>> = match settings.planner {
+        ArmPlanner::RrtConnect => {
+            Box::new(RrtConnect::new(nearest).with_seed(settings.seed).with_options(options))
+        }
+        ArmPlanner::InformedRrtStar => {
+            Box::new(InformedRrtStar::new(nearest).with_seed(settings.seed).with_options(options))
+        }
+        ArmPlanner::BitStar => Box::new(BitStar::new(nearest).with_seed(settings.seed)),
+        ArmPlanner::PrmStar => {
+            // The roadmap's build is what is timed; the query on it checks that it holds a path.
+            let mut prm = Prm::star(nearest).with_seed(settings.seed);
+            let clock = Instant::now();
+            let grown = prm.grow(&space, &validity, ROADMAP_SIZE, &limit);
+            let outcome =
+                Outcome { time: clock.elapsed(), states: tested(), ..Outcome::failed(String::new()) };
+            match grown {
+                Ok(growth) if growth.stop.is_none() => {}
+                Ok(_) => return Ok(Outcome { status: "stopped", ..outcome }),
+                Err(e) => return Ok(Outcome { status: "no_path", failure: Some(e.to_string()), ..outcome }),
+            }
+            let result = prm.solve(&problem, &Termination::iterations(0));
+            // A whole roadmap without a path between the ends is built, not stopped.
+            let outcome = finish(result, outcome, &space, &validity, settings)?;
+            return Ok(if outcome.status == "stopped" {
+                Outcome { status: "built", ..outcome }
+            } else {
+                outcome
+            });
+        }
+    };
     let clock = Instant::now();
-    let result = planner.solve(&problem, &Termination::time(settings.limit));
-    let mut outcome = Outcome { time: clock.elapsed(), states: tested(), ..Outcome::failed(String::new()) };
+    let result = planner.solve(&problem, &limit);
+    let outcome = Outcome { time: clock.elapsed(), states: tested(), ..Outcome::failed(String::new()) };
+    finish(result, outcome, &space, &validity, settings)
+}
+
+/// The outcome of a plan: its path (simplified when asked), or why there is none.
+fn finish<const N: usize>(
+    result: Result<Plan<SVector<f64, N>>, PlanError>,
+    mut outcome: Outcome,
+    space: &Joints<N>,
+    validity: &dyn trailmark::sample::Validity<Joints<N>>,
+    settings: Settings,
+) -> Result<Outcome, RobotError> {
     let plan = match result {
         Ok(plan) => plan,
         Err(e) => return Ok(Outcome { status: "no_path", failure: Some(e.to_string()), ..outcome }),
@@ -326,14 +387,14 @@ fn plan<const N: usize, const D: usize>(
     let mut path = planned.to_vec();
     if settings.simplify {
         let clock = Instant::now();
-        path = simplify(&space, &validity, planned, SHORTCUT_ATTEMPTS, SMOOTHING_PASSES, settings.seed);
+        path = simplify(space, &validity, planned, SHORTCUT_ATTEMPTS, SMOOTHING_PASSES, settings.seed);
         outcome.simplify_time = clock.elapsed();
     }
     Ok(Outcome {
         status: "solved",
         failure: None,
-        planned_length: paths::length(&space, planned),
-        length: paths::length(&space, &path),
+        planned_length: paths::length(space, planned),
+        length: paths::length(space, &path),
         path: path.iter().map(|q| q.as_slice().to_vec()).collect(),
         ..outcome
     })
@@ -442,6 +503,7 @@ pub fn run(args: &Args) -> ExitCode {
         }
     }
     let settings = Settings {
+        planner: args.planner,
         checker: args.checker,
         limit: Duration::from_secs_f64(args.time_limit),
         seed: args.seed,

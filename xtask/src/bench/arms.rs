@@ -9,12 +9,14 @@ use std::time::Duration;
 
 use serde::Serialize;
 
-use crate::bench::ompl_arm::{ArmWorld, OmplArmDriver, OmplArmSettings};
+use crate::bench::arms_optimal::{self, ArmRoadmapRow, OptimalArmRow};
+use crate::bench::ompl_arm::OmplArmDriver;
+use crate::bench::ompl_arm::problem::{self, PeerRun};
 use crate::bench::progress::SectionProgress;
 use crate::bench::report::{GoalRow, table};
 use crate::bench::stats::{median, quantile, sorted};
 use crate::bench::suite::Suite;
-use crate::mbm::{self, Arm, CheckerKind, MbmProblem, Outcome, Prepared, Settings};
+use crate::mbm::{self, Arm, ArmPlanner, CheckerKind, MbmProblem, Outcome, Settings};
 
 /// Each problem's time limit, in both libraries.
 const LIMIT: Duration = Duration::from_secs(1);
@@ -69,6 +71,10 @@ pub struct ArmSetRow {
 pub struct ArmReport {
     pub rows: Vec<ArmRow>,
     sets: Vec<ArmSetRow>,
+    /// The optimizing planners beside OMPL's (with `--with-ompl`).
+    optimal: Vec<OptimalArmRow>,
+    /// PRM*'s roadmaps beside OMPL's (with `--with-ompl`).
+    roadmaps: Vec<ArmRoadmapRow>,
     /// Why the section did not run, when it did not.
     skipped: Option<String>,
     /// The versions of OMPL and FCL, when they ran.
@@ -78,7 +84,10 @@ pub struct ArmReport {
 impl ArmReport {
     /// trailmark's paths that failed the independent check.
     pub fn errors(&self) -> usize {
-        self.rows.iter().filter(|r| r.planner.starts_with("trailmark")).map(|r| r.check_failures).sum()
+        let tree: usize =
+            self.rows.iter().filter(|r| r.planner.starts_with("trailmark")).map(|r| r.check_failures).sum();
+        let optimal: usize = self.optimal.iter().filter(|r| r.is_trailmark()).map(|r| r.check_failures).sum();
+        tree + optimal + self.roadmaps.first().map_or(0, |r| r.check_failures)
     }
 }
 
@@ -109,15 +118,25 @@ pub fn bench(suite: Suite, seed: u64, driver: Option<&OmplArmDriver>) -> Result<
         return Ok(ArmReport { skipped: Some(why), ..ArmReport::default() });
     }
     let arm = Arm::read(&urdf, &srdf).map_err(|e| e.to_string())?;
-    let problems = chosen(suite, mbm::problems(&dir.join("problems"))?);
+    let all = mbm::problems(&dir.join("problems"))?;
+    let optimal_problems = arms_optimal::chosen(suite, &all);
+    let problems = chosen(suite, all);
     let runs = if driver.is_some() { 4 } else { 2 };
-    let mut progress = SectionProgress::new("arms", runs * problems.len());
+    let optimal_runs = if driver.is_some() { arms_optimal::runs(optimal_problems.len()) } else { 0 };
+    let mut progress = SectionProgress::new("arms", runs * problems.len() + optimal_runs);
     let mut rows = Vec::new();
     let mut batch_outcomes = Vec::new();
     for (checker, name) in
         [(CheckerKind::Batch, "trailmark batch"), (CheckerKind::Scalar, "trailmark scalar")]
     {
-        let settings = Settings { checker, limit: LIMIT, seed, range: Some(1.0), simplify: true };
+        let settings = Settings {
+            planner: ArmPlanner::RrtConnect,
+            checker,
+            limit: LIMIT,
+            seed,
+            range: Some(1.0),
+            simplify: true,
+        };
         let outcomes: Vec<Outcome> = problems
             .iter()
             .map(|p| {
@@ -136,12 +155,26 @@ pub fn bench(suite: Suite, seed: u64, driver: Option<&OmplArmDriver>) -> Result<
                 .iter()
                 .map(|p| {
                     progress.step(format!("{name}: {}", p.name));
-                    ompl(driver, &arm, p, seed, resolution)
+                    let run = PeerRun {
+                        planner: "rrt_connect",
+                        limit: LIMIT,
+                        resolution,
+                        simplify: true,
+                        seed,
+                        roadmap_size: 0,
+                    };
+                    problem::solve(driver, &arm, p, run)
                 })
                 .collect();
             rows.push(row(name, &outcomes));
         }
     }
+    let optimal = driver
+        .map(|d| arms_optimal::bench(&arm, &optimal_problems, seed, d, &mut progress))
+        .unwrap_or_default();
+    let roadmaps = driver
+        .map(|d| arms_optimal::roadmaps(&arm, &optimal_problems, seed, d, &mut progress))
+        .unwrap_or_default();
     let set_of = |p: &MbmProblem| p.name.split('/').next().unwrap_or_default().to_string();
     let mut names: Vec<String> = problems.iter().map(set_of).collect();
     names.dedup();
@@ -169,58 +202,7 @@ pub fn bench(suite: Suite, seed: u64, driver: Option<&OmplArmDriver>) -> Result<
         })
         .collect();
     let peer = driver.map(|d| format!("OMPL {}, FCL {}", d.ompl_version, d.fcl_version));
-    Ok(ArmReport { rows, sets, skipped: None, peer })
-}
-
-/// OMPL's RRTConnect with FCL on `problem`, as MoveIt plans (its default motion resolution,
-/// unless `resolution` says another), with a range of 1 and a limit of 1 s like trailmark's
-/// runs; the simplified path checked again by the `f64` checker.
-fn ompl(
-    driver: &OmplArmDriver,
-    arm: &Arm,
-    problem: &MbmProblem,
-    seed: u64,
-    resolution: Option<f64>,
-) -> Outcome {
-    let prepared = match Prepared::new(arm, problem) {
-        Ok(p) => p,
-        Err(e) => return Outcome::failed(e.to_string()),
-    };
-    let group = prepared.scalar.group();
-    let world = ArmWorld {
-        robot: &arm.robot,
-        srdf: &arm.srdf,
-        group: &group.name,
-        scene: &prepared.scene,
-        template: &prepared.template,
-    };
-    let moveit = OmplArmSettings::moveit(group);
-    let resolution = resolution.unwrap_or(moveit.resolution);
-    let settings =
-        OmplArmSettings { seed, time_limit_s: LIMIT.as_secs_f64(), simplify: true, resolution, ..moveit };
-    let run = match driver.plan(&world, &prepared.start, &prepared.goal, settings) {
-        Ok(runs) => match runs.into_iter().next() {
-            Some(run) => run,
-            None => return Outcome::failed("the driver returned no run".into()),
-        },
-        Err(e) => return Outcome::failed(e),
-    };
-    let exact = run.exact();
-    let path = if run.simplified.is_empty() { run.path.clone() } else { run.simplified.clone() };
-    Outcome {
-        status: if exact { "solved" } else { "stopped" },
-        time: Duration::from_secs_f64(run.time_s),
-        simplify_time: Duration::from_secs_f64(run.simplify_time_s.unwrap_or(0.0)),
-        planned_length: run.length.unwrap_or(0.0),
-        length: run.simplified_length.or(run.length).unwrap_or(0.0),
-        failure: exact
-            .then(|| mbm::check_path(&prepared.reference, &path, &prepared.start, &prepared.goal))
-            .flatten(),
-        path,
-        checks: run.checks,
-        states: run.checks,
-        joints: group.names.clone(),
-    }
+    Ok(ArmReport { rows, sets, optimal, roadmaps, skipped: None, peer })
 }
 
 /// Whether the problem was solved and its path passed the independent check.
@@ -270,7 +252,7 @@ pub fn goals(report: Option<&ArmReport>) -> Vec<GoalRow> {
             speedups.push((other.planner.clone(), other.timed_median_us / b.timed_median_us));
         }
     }
-    vec![
+    let mut goals = vec![
         GoalRow {
             goal: "A Panda MotionBenchMaker problem planned in at most 100 µs (median; 100 µs / median)",
             figures,
@@ -285,7 +267,12 @@ pub fn goals(report: Option<&ArmReport>) -> Vec<GoalRow> {
             unit: "x",
             missing: "run with --with-ompl (libompl-dev, libfcl-dev)",
         },
-    ]
+    ];
+    goals.extend(arms_optimal::goals(
+        report.map_or(&[][..], |r| &r.optimal[..]),
+        report.map_or(&[][..], |r| &r.roadmaps[..]),
+    ));
+    goals
 }
 
 /// The section of the report.
@@ -342,5 +329,6 @@ pub fn markdown(report: &ArmReport) -> String {
             )
         },
     ));
+    out.push_str(&arms_optimal::markdown(&report.optimal, &report.roadmaps));
     out
 }

@@ -17,6 +17,7 @@
 mod all_pairs;
 mod anytime;
 mod arms;
+mod arms_optimal;
 mod cars;
 mod contingency;
 mod grid;

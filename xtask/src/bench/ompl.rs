@@ -172,6 +172,11 @@ pub(super) fn compile(
     let cflags = pkg_config(&[&["--cflags"], packages].concat())?;
     let libs = pkg_config(&[&["--libs-only-l"], libraries].concat())?;
     let compiler = std::env::var("CXX").unwrap_or_else(|_| "c++".into());
+    // Written aside, then renamed into place: two builds at once (tests run in parallel) never
+    // leave a half-written program for the other to run.
+    static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let build = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let aside = program.with_extension(format!("{}-{build}.part", std::process::id()));
     let mut command = Command::new(&compiler);
     command
         .args(["-O2", "-DNDEBUG"])
@@ -179,11 +184,16 @@ pub(super) fn compile(
         .arg("-std=c++17")
         .arg(source)
         .arg("-o")
-        .arg(program)
+        .arg(&aside)
         .args(objects)
         .args(libs.split_whitespace())
         .args(["-ldl", "-lm"]);
-    run_tool(&mut command, &format!("the C++ compiler ({compiler})")).map(|_| ())
+    let built = run_tool(&mut command, &format!("the C++ compiler ({compiler})")).map(|_| ());
+    let placed = built.and_then(|()| std::fs::rename(&aside, program).map_err(|e| e.to_string()));
+    if placed.is_err() {
+        let _ = std::fs::remove_file(&aside);
+    }
+    placed
 }
 
 impl OmplDriver {

@@ -174,6 +174,13 @@ pub trait Lines<N> {
     /// The cost of the straight line from `from` to `to`, `None` when it is blocked.
     fn line_cost(&self, from: N, to: N) -> Option<Cost>;
 
+    /// [`Lines::line_cost`] for a caller that will only use a line costing at most `budget`:
+    /// a graph may stop pricing the line, and answer `None`, once it knows the line costs more.
+    #[inline]
+    fn line_cost_within(&self, from: N, to: N, _budget: Cost) -> Option<Cost> {
+        self.line_cost(from, to)
+    }
+
     /// A lower bound on [`Lines::line_cost`] of any clear line from `from` to `to` (0 unless a
     /// graph knows better, e.g. the length times the cheapest cost): an any-angle search
     /// that knows it can put off checking a line until it must.

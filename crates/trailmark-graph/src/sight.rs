@@ -35,14 +35,26 @@ impl GridGraph {
     /// The cost of the straight line from the centre of `from` to the centre of `to`, or `None`
     /// when it is blocked (or either cell is not a node).
     pub fn line_cost(&self, from: Cell, to: Cell) -> Option<Cost> {
+        self.line_cost_within(from, to, f64::INFINITY)
+    }
+
+    /// [`GridGraph::line_cost`], or `None` as soon as the cells crossed so far cost more than
+    /// `budget` (a line the caller would not use: the walk stops there).
+    pub fn line_cost_within(&self, from: Cell, to: Cell, budget: Cost) -> Option<Cost> {
+        let length = euclidean(from.x.abs_diff(to.x), from.y.abs_diff(to.y));
+        // The walk sums fractions of the line: the budget in those units.
+        let limit = if length > 0.0 { budget / length } else { f64::INFINITY };
         let mut total = 0.0;
-        self.walk_line(from, to, true, |fraction, cost, _| total += fraction * cost)?;
-        Some(total * euclidean(from.x.abs_diff(to.x), from.y.abs_diff(to.y)))
+        self.walk_line(from, to, true, |fraction, cost, _| {
+            total += fraction * cost;
+            total <= limit
+        })?;
+        Some(total * length)
     }
 
     /// Whether the straight line from the centre of `from` to the centre of `to` may be drawn.
     pub fn line_of_sight(&self, from: Cell, to: Cell) -> bool {
-        self.walk_line(from, to, true, |_, _, _| ()).is_some()
+        self.walk_line(from, to, true, |_, _, _| true).is_some()
     }
 
     /// The cells the line from `from` to `to` crosses, in order, each with the fraction of the
@@ -53,6 +65,7 @@ impl GridGraph {
         self.walk_line(from, to, false, |fraction, _, i| {
             // Padded index to cell: the border is one cell wide.
             cells.push((Cell::new((i % stride - 1) as u32, (i / stride - 1) as u32), fraction));
+            true
         })?;
         Some(cells)
     }
@@ -106,23 +119,24 @@ impl GridGraph {
 
     /// Walks the line from the centre of `from` to the centre of `to`, calling `visit(fraction,
     /// cost, padded index)` for each crossed cell with the fraction of the line in it; `None` as
-    /// soon as the line is blocked. With `skip`, a stretch of the line inside a square of open
-    /// cells of one cost (`squares.rs`) is visited once, at the index where it starts: the sum
-    /// of fractions times costs is the same (up to rounding), the cells are not listed.
+    /// soon as the line is blocked or `visit` answers `false`. With `skip`, a stretch of the
+    /// line inside a square of open cells of one cost (`squares.rs`) is visited once, at the
+    /// index where it starts: the sum of fractions times costs is the same (up to rounding), the
+    /// cells are not listed.
     fn walk_line(
         &self,
         from: Cell,
         to: Cell,
         skip: bool,
-        mut visit: impl FnMut(f64, Cost, usize),
+        mut visit: impl FnMut(f64, Cost, usize) -> bool,
     ) -> Option<()> {
         if !self.contains(from) || !self.contains(to) {
             return None;
         }
         let (adx, ady) = (u64::from(from.x.abs_diff(to.x)), u64::from(from.y.abs_diff(to.y)));
         if adx == 0 && ady == 0 {
-            visit(1.0, self.costs.as_ref().map_or(1.0, |c| c[self.index(from)]), self.index(from));
-            return Some(());
+            let cost = self.costs.as_ref().map_or(1.0, |c| c[self.index(from)]);
+            return visit(1.0, cost, self.index(from)).then_some(());
         }
         let squares = skip.then(|| self.squares());
         let stride = self.stride as isize;
@@ -139,7 +153,9 @@ impl GridGraph {
                 && let Some((nkx, nky)) = across_square(squares[i as usize], (kx, ky), (adx, ady))
             {
                 let t = crossing_time(nkx, adx).max(crossing_time(nky, ady));
-                visit(t - t_prev, cost_at(i), i as usize);
+                if !visit(t - t_prev, cost_at(i), i as usize) {
+                    return None;
+                }
                 t_prev = t;
                 i += (nkx - kx) as isize * step_x + (nky - ky) as isize * step_y;
                 (kx, ky) = (nkx, nky);
@@ -152,7 +168,9 @@ impl GridGraph {
             } else {
                 (2 * ky + 1) as f64 / (2 * ady) as f64
             };
-            visit(t - t_prev, cost_at(i), i as usize);
+            if !visit(t - t_prev, cost_at(i), i as usize) {
+                return None;
+            }
             t_prev = t;
             if x_first {
                 i += step_x;
@@ -179,8 +197,7 @@ impl GridGraph {
                 return None;
             }
         }
-        visit(1.0 - t_prev, cost_at(i), i as usize);
-        Some(())
+        visit(1.0 - t_prev, cost_at(i), i as usize).then_some(())
     }
 }
 
@@ -228,6 +245,11 @@ impl Lines<Cell> for GridGraph {
     #[inline]
     fn line_cost(&self, from: Cell, to: Cell) -> Option<Cost> {
         GridGraph::line_cost(self, from, to)
+    }
+
+    #[inline]
+    fn line_cost_within(&self, from: Cell, to: Cell, budget: Cost) -> Option<Cost> {
+        GridGraph::line_cost_within(self, from, to, budget)
     }
 
     /// The line runs at least half a cell inside each end cell (from the centre to its side), and
@@ -303,6 +325,19 @@ mod tests {
             match (graph.line_cost(a, b), listed) {
                 (Some(x), Some(y)) => prop_assert!((x - y).abs() <= 1e-12 * y.max(1.0), "{} against {}", x, y),
                 (x, y) => prop_assert_eq!(x, y),
+            }
+        }
+
+        /// Pricing within a budget gives the full price, or `None` only for a line dearer than
+        /// the budget.
+        #[test]
+        fn a_budget_only_stops_dearer_lines((grid, a, b, rule) in world(), share in 0.0..1.5f64) {
+            let graph = GridGraph::new(&grid, Connectivity::Eight).with_corner_cutting(rule);
+            let full = graph.line_cost(a, b);
+            let budget = share * full.unwrap_or(10.0);
+            match graph.line_cost_within(a, b, budget) {
+                Some(c) => prop_assert_eq!(Some(c), full),
+                None => prop_assert!(full.is_none_or(|c| c > budget), "{:?} within {}", full, budget),
             }
         }
     }

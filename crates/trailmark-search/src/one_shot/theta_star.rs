@@ -22,7 +22,7 @@ use crate::index::NodeIndex;
 use crate::one_shot::SearchResult;
 use crate::one_shot::edges::EdgeCheck;
 use crate::one_shot::key::FKey;
-use crate::one_shot::workspace::{Search, ensure};
+use crate::one_shot::workspace::{Search, Way, ensure};
 use crate::stats::SearchStats;
 
 /// Theta* from `start` to `goal`: an any-angle path whose corners are nodes of `graph`, each
@@ -91,7 +91,8 @@ impl<I> Search<I> {
         let (s, t, open, closed) = (query.start, query.goal, query.open, query.closed);
         let mut exact = std::mem::take(&mut self.any_angle);
         exact.resize(self.nodes.len());
-        exact.set(s, 0.0, s, true);
+        exact.start(s);
+        exact.ways[s].g = 0.0;
         let mut stats = SearchStats::default();
         let mut heuristics = HeuristicCheck::new();
         let mut overflow = None;
@@ -109,20 +110,23 @@ impl<I> Search<I> {
                 exact.verified[u] = true;
                 let p = self.nodes.parent[u] as usize;
                 let (pn, un) = (self.index.node(graph, p), self.index.node(graph, u));
-                let (mut g, mut from) = (exact.g[u], exact.parent[u] as usize);
-                if let Some(c) = checks.accept(pn, un, lines.line_cost(pn, un))
+                let way = exact.ways[u];
+                let (mut g, mut from) = (way.g, way.parent as usize);
+                // A line dearer than the way known is of no use: its pricing may stop there.
+                let budget = g - self.nodes.g[p];
+                if let Some(c) = checks.accept(pn, un, lines.line_cost_within(pn, un, budget))
                     && self.nodes.g[p] + c <= g
                 {
                     (g, from) = (self.nodes.g[p] + c, p);
                 }
-                exact.set(u, g, from, true);
+                exact.ways[u] = Way { g, parent: from as u32, priced: p as u32 };
                 self.nodes.g[u] = g;
                 self.nodes.parent[u] = from as u32;
                 checks.check()?;
                 // Expand it now if its key still holds, else queue it at its exact key (its
                 // heuristic was finite and accepted when it was queued).
                 let exact_key = FKey::new(g + heuristic(un), g);
-                if exact_key > key {
+                if exact_key > key && self.heap.peek().is_some_and(|(_, top)| top < exact_key) {
                     self.heap.push(u, exact_key);
                     continue;
                 }
@@ -151,16 +155,18 @@ impl<I> Search<I> {
                 }
                 let seen = st >= open;
                 if !seen {
-                    exact.set(v, f64::INFINITY, v, true);
+                    exact.start(v);
                 }
                 let g1 = gu + cost;
-                if g1 < exact.g[v] {
-                    exact.g[v] = g1;
-                    exact.parent[v] = u as u32;
+                let way = &mut exact.ways[v];
+                if g1 < way.g {
+                    (way.g, way.parent) = (g1, u as u32);
                 }
                 // The best candidate: the exact one, or the parent's line at its lower bound.
-                let (mut gv, mut from, mut verified) = (exact.g[v], exact.parent[v] as usize, true);
-                if let Some((pu, gp, pnode)) = parent {
+                let (mut gv, mut from, mut verified) = (way.g, way.parent as usize, true);
+                if let Some((pu, gp, pnode)) = parent
+                    && way.priced != pu as u32
+                {
                     let lazy = gp + lines.line_lower_bound(pnode, next).max(0.0);
                     if lazy <= gv {
                         (gv, from, verified) = (lazy, pu, false);

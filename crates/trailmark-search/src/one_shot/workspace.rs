@@ -89,37 +89,46 @@ impl Nodes {
 /// been priced. Valid where the workspace's stamp says the node was reached by this query.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct AnyAngle {
-    pub(crate) g: Vec<Cost>,
-    pub(crate) parent: Vec<u32>,
+    /// One record per slot: the fields are read together for every successor.
+    pub(crate) ways: Vec<Way>,
     pub(crate) verified: Vec<bool>,
+}
+
+/// The best exact way known to a node.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Way {
+    pub(crate) g: Cost,
+    pub(crate) parent: u32,
+    /// The last parent whose line to the node was priced: offering that line again would only
+    /// repeat the pricing (parents are closed, so their cost no longer changes).
+    pub(crate) priced: u32,
 }
 
 impl AnyAngle {
     pub(crate) fn resize(&mut self, len: usize) {
-        if self.g.len() < len {
-            self.g.resize(len, f64::INFINITY);
-            self.parent.resize(len, 0);
+        if self.ways.len() < len {
+            self.ways.resize(len, Way { g: f64::INFINITY, parent: 0, priced: 0 });
             self.verified.resize(len, true);
         }
     }
 
     #[inline]
     pub(crate) fn ensure(&mut self, slot: usize) {
-        if slot >= self.g.len() {
+        if slot >= self.ways.len() {
             self.resize((slot + 1).next_power_of_two());
         }
     }
 
+    /// Starts `slot` for a new query: no way known, no line priced.
     #[inline]
-    pub(crate) fn set(&mut self, slot: usize, g: Cost, parent: usize, verified: bool) {
+    pub(crate) fn start(&mut self, slot: usize) {
         self.ensure(slot);
-        self.g[slot] = g;
-        self.parent[slot] = parent as u32;
-        self.verified[slot] = verified;
+        self.ways[slot] = Way { g: f64::INFINITY, parent: slot as u32, priced: slot as u32 };
+        self.verified[slot] = true;
     }
 
     pub(crate) fn memory_bytes(&self) -> usize {
-        self.g.capacity() * 8 + self.parent.capacity() * 4 + self.verified.capacity()
+        self.ways.capacity() * std::mem::size_of::<Way>() + self.verified.capacity()
     }
 }
 

@@ -1,7 +1,8 @@
 //! Theta* on random grids with costs: every segment of its paths is checked by dense sampling
 //! (every point of the segment lies in a passable cell), its cost is the sum of its lines'
 //! costs, it finds a path exactly when Dijkstra does, and its paths are never cheaper than the
-//! straight line allows nor costlier than the grid path. Shortcut grid paths likewise.
+//! straight line allows nor costlier than the grid path, with the Euclidean heuristic or the
+//! octile one. Shortcut grid paths likewise.
 
 use proptest::prelude::*;
 use trailmark_core::{Cell, Connectivity, Grid, GridHeuristic};
@@ -51,9 +52,12 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
 
     #[test]
-    fn paths_are_clear_and_priced_by_their_lines((grid, start, goal) in world()) {
+    fn paths_are_clear_and_priced_by_their_lines((grid, start, goal) in world(), octile in any::<bool>()) {
         let graph = GridGraph::new(&grid, Connectivity::Eight);
-        let h = graph.heuristic(GridHeuristic::Euclidean, goal);
+        // The octile heuristic overestimates lines but is consistent along the graph's edges:
+        // enough for a path never dearer than the grid's.
+        let kind = if octile { GridHeuristic::Octile } else { GridHeuristic::Euclidean };
+        let h = graph.heuristic(kind, goal);
         let found = theta_star(&graph, start, goal, h, &graph).unwrap();
         let reference = dijkstra(&graph, start, goal).unwrap();
         prop_assert_eq!(found.path.is_some(), reference.path.is_some());

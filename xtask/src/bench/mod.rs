@@ -190,7 +190,7 @@ impl BenchReport {
         let mut goals = grid::goals(&self.ratios, &self.results);
         goals.extend(navigation::goals(&self.navigation_ratios));
         goals.extend(navigation::best_goals(&self.replanner_ratios));
-        goals.push(rosmaps::goal(&self.rosmaps));
+        goals.extend(rosmaps::goals(&self.rosmaps));
         goals.push(lattice::goal(self.roadmaps.as_ref().map_or(&[][..], |r| &r.lattice)));
         goals.extend(sampling::goals(self.sampling.as_ref()));
         goals.extend(arms::goals(self.arms.as_ref()));

@@ -26,9 +26,15 @@ use crate::one_shot::workspace::{Search, Way, ensure};
 use crate::stats::SearchStats;
 
 /// Theta* from `start` to `goal`: an any-angle path whose corners are nodes of `graph`, each
-/// segment a straight line that `lines` accepts or an edge. `heuristic` must be admissible for
-/// straight lines (on a grid: the Euclidean distance, not the octile one). The path's cost is the
-/// sum of its segments' costs.
+/// segment a straight line that `lines` accepts or an edge. The path's cost is the sum of its
+/// segments' costs.
+///
+/// The heuristic: one admissible for straight lines (on a grid, the Euclidean distance) guides
+/// the search toward the straightest paths. One that is only consistent along the graph's edges
+/// (the octile distance) overestimates some lines, yet the path still never costs more than the
+/// graph's least-cost path (nodes on that path are still expanded at no more than their grid
+/// cost), and it expands far fewer nodes where costs vary: on the ROS costmaps of
+/// docs/ros-maps.md, 1.5-6x faster for paths 0.1-0.5% dearer.
 ///
 /// Lines are checked when a node is taken from the open list, not when it is generated (the
 /// order of work of Lazy Theta*, Nash, Koenig and Tovey, AAAI 2010): a node reached through its

@@ -17,7 +17,6 @@
 mod all_pairs;
 mod anytime;
 mod arms;
-mod arms_optimal;
 mod cars;
 mod contingency;
 mod grid;

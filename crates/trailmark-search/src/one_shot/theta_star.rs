@@ -34,7 +34,7 @@ use crate::stats::SearchStats;
 /// (the octile distance) overestimates some lines, yet the path still never costs more than the
 /// graph's least-cost path (nodes on that path are still expanded at no more than their grid
 /// cost), and it expands far fewer nodes where costs vary: on the ROS costmaps of
-/// docs/ros-maps.md, 1.5-6x faster for paths 0.1-0.5% dearer.
+/// docs/ros-maps.md, 1.2-5.5x faster for paths 0.1-0.5% dearer.
 ///
 /// Lines are checked when a node is taken from the open list, not when it is generated (the
 /// order of work of Lazy Theta*, Nash, Koenig and Tovey, AAAI 2010): a node reached through its

@@ -1,4 +1,5 @@
-//! The arm peer of the harness: OMPL's RRTConnect with FCL collision checking on a robot arm's
+//! The arm peer of the harness: OMPL's RRTConnect (or InformedRRTstar, BITstar, PRMstar's
+//! roadmap) with FCL collision checking on a robot arm's
 //! problems (MotionBenchMaker's, for the Panda). `benches/ompl/arm_driver.cpp` is built against
 //! the system's OMPL, FCL, Eigen and nlohmann-json (found with pkg-config) and given the same
 //! model trailmark's [`ArmChecker`](trailmark::robot::ArmChecker) checks: the robot's spheres
@@ -210,7 +211,7 @@ pub struct ArmOutput {
     pub valid: Vec<bool>,
 }
 
-/// One run of RRTConnect.
+/// One run of the driver's planner.
 #[derive(Debug, Clone, Deserialize, Serialize)]
 pub struct OmplArmRun {
     /// The index of the query.
@@ -223,7 +224,7 @@ pub struct OmplArmRun {
     pub time_s: f64,
     /// State validity checks while solving (motions count as the states they were checked at).
     pub checks: u64,
-    /// The vertices of the planner's trees.
+    /// The vertices of the planner's trees (PRMstar's milestones).
     pub vertices: u64,
     /// The path's length in joint space (`None` without a path).
     #[serde(default)]

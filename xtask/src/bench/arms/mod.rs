@@ -4,12 +4,13 @@
 //! RRTConnect with FCL on the same spheres and primitives when `--with-ompl` builds it.
 //! The quick suite plans four problems a set, the full one all 700.
 
+mod optimal;
+
 use std::path::PathBuf;
 use std::time::Duration;
 
 use serde::Serialize;
 
-use crate::bench::arms_optimal::{self, ArmRoadmapRow, OptimalArmRow};
 use crate::bench::ompl_arm::OmplArmDriver;
 use crate::bench::ompl_arm::problem::{self, PeerRun};
 use crate::bench::progress::SectionProgress;
@@ -17,6 +18,7 @@ use crate::bench::report::{GoalRow, table};
 use crate::bench::stats::{median, quantile, sorted};
 use crate::bench::suite::Suite;
 use crate::mbm::{self, Arm, ArmPlanner, CheckerKind, MbmProblem, Outcome, Settings};
+use optimal::{ArmRoadmapRow, OptimalArmRow};
 
 /// Each problem's time limit, in both libraries.
 const LIMIT: Duration = Duration::from_secs(1);
@@ -119,10 +121,10 @@ pub fn bench(suite: Suite, seed: u64, driver: Option<&OmplArmDriver>) -> Result<
     }
     let arm = Arm::read(&urdf, &srdf).map_err(|e| e.to_string())?;
     let all = mbm::problems(&dir.join("problems"))?;
-    let optimal_problems = arms_optimal::chosen(suite, &all);
+    let optimal_problems = optimal::chosen(suite, &all);
     let problems = chosen(suite, all);
     let runs = if driver.is_some() { 4 } else { 2 };
-    let optimal_runs = if driver.is_some() { arms_optimal::runs(optimal_problems.len()) } else { 0 };
+    let optimal_runs = if driver.is_some() { optimal::runs(optimal_problems.len()) } else { 0 };
     let mut progress = SectionProgress::new("arms", runs * problems.len() + optimal_runs);
     let mut rows = Vec::new();
     let mut batch_outcomes = Vec::new();
@@ -169,11 +171,10 @@ pub fn bench(suite: Suite, seed: u64, driver: Option<&OmplArmDriver>) -> Result<
             rows.push(row(name, &outcomes));
         }
     }
-    let optimal = driver
-        .map(|d| arms_optimal::bench(&arm, &optimal_problems, seed, d, &mut progress))
-        .unwrap_or_default();
+    let optimal =
+        driver.map(|d| optimal::bench(&arm, &optimal_problems, seed, d, &mut progress)).unwrap_or_default();
     let roadmaps = driver
-        .map(|d| arms_optimal::roadmaps(&arm, &optimal_problems, seed, d, &mut progress))
+        .map(|d| optimal::roadmaps(&arm, &optimal_problems, seed, d, &mut progress))
         .unwrap_or_default();
     let set_of = |p: &MbmProblem| p.name.split('/').next().unwrap_or_default().to_string();
     let mut names: Vec<String> = problems.iter().map(set_of).collect();
@@ -268,7 +269,7 @@ pub fn goals(report: Option<&ArmReport>) -> Vec<GoalRow> {
             missing: "run with --with-ompl (libompl-dev, libfcl-dev)",
         },
     ];
-    goals.extend(arms_optimal::goals(
+    goals.extend(optimal::goals(
         report.map_or(&[][..], |r| &r.optimal[..]),
         report.map_or(&[][..], |r| &r.roadmaps[..]),
     ));
@@ -329,6 +330,6 @@ pub fn markdown(report: &ArmReport) -> String {
             )
         },
     ));
-    out.push_str(&arms_optimal::markdown(&report.optimal, &report.roadmaps));
+    out.push_str(&optimal::markdown(&report.optimal, &report.roadmaps));
     out
 }

@@ -20,7 +20,7 @@ use crate::mbm::{self, Arm, ArmPlanner, CheckerKind, MbmProblem, Outcome, ROADMA
 /// Each run's time, in both libraries.
 pub const LIMIT: Duration = Duration::from_secs(1);
 
-/// The planners compared: trailmark's, the driver's name, OMPL's label.
+/// The planners compared: trailmark's, the driver's name, trailmark's label, OMPL's label.
 const PLANNERS: [(ArmPlanner, &str, &str, &str); 2] = [
     (ArmPlanner::InformedRrtStar, "informed_rrt_star", "Informed RRT*", "InformedRRTstar"),
     (ArmPlanner::BitStar, "bit_star", "BIT*", "BITstar"),
@@ -38,7 +38,7 @@ pub struct OptimalArmRow {
     solved: usize,
     /// Paths returned that failed the independent check.
     pub check_failures: usize,
-    /// Median joint-space length over the problems solved, radians.
+    /// Median joint-space length over the problems both libraries solved, radians.
     median_length: f64,
     /// trailmark's rows: the median over the problems of OMPL's length over trailmark's (a
     /// problem one library did not solve at an infinite length; those neither solved left
@@ -201,21 +201,34 @@ pub fn bench(
             .map(|(b, a)| b / a)
             .collect();
         let ratio = (!ratios.is_empty()).then(|| median(&sorted(ratios)));
-        rows.push(row(label, "trailmark batch", &ours, ratio));
-        rows.push(row(peer_label, "OMPL + FCL", &theirs, None));
+        // Lengths compared over the same problems: those both solved.
+        let both: Vec<(f64, f64)> = ours
+            .iter()
+            .zip(&theirs)
+            .map(|(a, b)| (reached(a), reached(b)))
+            .filter(|(a, b)| a.is_finite() && b.is_finite())
+            .collect();
+        let (mine, peer): (Vec<f64>, Vec<f64>) = both.into_iter().unzip();
+        rows.push(row(label, "trailmark batch", &ours, mine, ratio));
+        rows.push(row(peer_label, "OMPL + FCL", &theirs, peer, None));
     }
     rows
 }
 
-fn row(planner: &str, library: &str, outcomes: &[Outcome], ratio: Option<f64>) -> OptimalArmRow {
-    let lengths: Vec<f64> = outcomes.iter().map(reached).filter(|l| l.is_finite()).collect();
+fn row(
+    planner: &str,
+    library: &str,
+    outcomes: &[Outcome],
+    common: Vec<f64>,
+    ratio: Option<f64>,
+) -> OptimalArmRow {
     OptimalArmRow {
         planner: planner.to_string(),
         library: library.to_string(),
         problems: outcomes.len(),
-        solved: lengths.len(),
+        solved: outcomes.iter().filter(|o| reached(o).is_finite()).count(),
         check_failures: outcomes.iter().filter(|o| o.status == "solved" && o.failure.is_some()).count(),
-        median_length: if lengths.is_empty() { f64::NAN } else { median(&sorted(lengths)) },
+        median_length: if common.is_empty() { f64::NAN } else { median(&sorted(common)) },
         ratio,
     }
 }
@@ -265,13 +278,13 @@ pub fn markdown(rows: &[OptimalArmRow], roadmaps: &[ArmRoadmapRow]) -> String {
     let mut out = format!(
         "\nThe optimizing planners, each run for {} s on the same problems (spread over the sets), paths not \
          simplified, trailmark with the batch checker, OMPL with FCL (motions checked at MoveIt's resolution), both at \
-         their default range (a fifth of the extent) and batch size (100); lengths in radians over the problems \
-         solved. OMPL / trailmark is the median over the problems of OMPL's length over trailmark's (a problem not \
+         their default range (a fifth of the extent) and batch size (100); median lengths in radians over the \
+         problems both solved. OMPL / trailmark is the median over the problems of OMPL's length over trailmark's (a problem not \
          solved at an infinite length).\n\n",
         LIMIT.as_secs_f64()
     );
     out.push_str(&table(
-        "| planner | library | problems | solved | check failures | median length (rad) | OMPL / trailmark |",
+        "| planner | library | problems | solved | check failures | median length, both solved (rad) | OMPL / trailmark |",
         "|---|---|---:|---:|---:|---:|---:|",
         rows,
         |r| {

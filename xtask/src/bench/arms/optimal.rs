@@ -63,7 +63,7 @@ pub fn chosen(suite: Suite, all: &[MbmProblem]) -> Vec<MbmProblem> {
     all.iter().step_by(every).cloned().collect()
 }
 
-/// How many runs [`bench`] makes: two libraries, each planner and PRM*, each problem.
+/// How many runs [`bench()`] makes: two libraries, each planner and PRM*, each problem.
 pub fn runs(problems: usize) -> usize {
     2 * (PLANNERS.len() + 1) * problems
 }

@@ -97,6 +97,56 @@ fn build_ms(o: &Outcome) -> f64 {
     if built(o) { o.time.as_secs_f64() * 1e3 } else { BUILD_LIMIT.as_secs_f64() * 1e3 }
 }
 
+/// What [`run_both`] runs: trailmark's planner and OMPL's, their labels, the limit of each
+/// run and PRMstar's milestones (0 for the others).
+struct Both {
+    planner: ArmPlanner,
+    peer: &'static str,
+    label: &'static str,
+    peer_label: &'static str,
+    limit: Duration,
+    roadmap_size: usize,
+}
+
+/// trailmark's runs (batch checker, no simplification) and then OMPL's, problem by problem.
+fn run_both(
+    (arm, problems, seed, driver): (&Arm, &[MbmProblem], u64, &OmplArmDriver),
+    progress: &mut SectionProgress,
+    both: Both,
+) -> (Vec<Outcome>, Vec<Outcome>) {
+    let settings = Settings {
+        planner: both.planner,
+        checker: CheckerKind::Batch,
+        limit: both.limit,
+        seed,
+        range: None,
+        simplify: false,
+    };
+    let ours = problems
+        .iter()
+        .map(|p| {
+            progress.step(format!("{}: {}", both.label, p.name));
+            mbm::solve(arm, p, settings)
+        })
+        .collect();
+    let theirs = problems
+        .iter()
+        .map(|p| {
+            progress.step(format!("OMPL {}: {}", both.peer_label, p.name));
+            let run = PeerRun {
+                planner: both.peer,
+                limit: both.limit,
+                resolution: None,
+                simplify: false,
+                seed,
+                roadmap_size: both.roadmap_size,
+            };
+            problem::solve(driver, arm, p, run)
+        })
+        .collect();
+    (ours, theirs)
+}
+
 /// PRM*'s roadmaps in both libraries, problem by problem.
 pub fn roadmaps(
     arm: &Arm,
@@ -105,36 +155,18 @@ pub fn roadmaps(
     driver: &OmplArmDriver,
     progress: &mut SectionProgress,
 ) -> Vec<ArmRoadmapRow> {
-    let settings = Settings {
-        planner: ArmPlanner::PrmStar,
-        checker: CheckerKind::Batch,
-        limit: BUILD_LIMIT,
-        seed,
-        range: None,
-        simplify: false,
-    };
-    let ours: Vec<Outcome> = problems
-        .iter()
-        .map(|p| {
-            progress.step(format!("PRM* roadmap: {}", p.name));
-            mbm::solve(arm, p, settings)
-        })
-        .collect();
-    let theirs: Vec<Outcome> = problems
-        .iter()
-        .map(|p| {
-            progress.step(format!("OMPL PRMstar roadmap: {}", p.name));
-            let run = PeerRun {
-                planner: "prm_star",
-                limit: BUILD_LIMIT,
-                resolution: None,
-                simplify: false,
-                seed,
-                roadmap_size: ROADMAP_SIZE,
-            };
-            problem::solve(driver, arm, p, run)
-        })
-        .collect();
+    let (ours, theirs) = run_both(
+        (arm, problems, seed, driver),
+        progress,
+        Both {
+            planner: ArmPlanner::PrmStar,
+            peer: "prm_star",
+            label: "PRM* roadmap",
+            peer_label: "PRMstar roadmap",
+            limit: BUILD_LIMIT,
+            roadmap_size: ROADMAP_SIZE,
+        },
+    );
     let speedups = sorted(ours.iter().zip(&theirs).map(|(a, b)| build_ms(b) / build_ms(a)).collect());
     let row = |library: &str, outcomes: &[Outcome], speedup: Option<f64>| ArmRoadmapRow {
         library: library.to_string(),
@@ -163,36 +195,11 @@ pub fn bench(
 ) -> Vec<OptimalArmRow> {
     let mut rows = Vec::new();
     for (planner, name, label, peer_label) in PLANNERS {
-        let settings = Settings {
-            planner,
-            checker: CheckerKind::Batch,
-            limit: LIMIT,
-            seed,
-            range: None,
-            simplify: false,
-        };
-        let ours: Vec<Outcome> = problems
-            .iter()
-            .map(|p| {
-                progress.step(format!("{label}: {}", p.name));
-                mbm::solve(arm, p, settings)
-            })
-            .collect();
-        let theirs: Vec<Outcome> = problems
-            .iter()
-            .map(|p| {
-                progress.step(format!("OMPL {peer_label}: {}", p.name));
-                let run = PeerRun {
-                    planner: name,
-                    limit: LIMIT,
-                    resolution: None,
-                    simplify: false,
-                    seed,
-                    roadmap_size: 0,
-                };
-                problem::solve(driver, arm, p, run)
-            })
-            .collect();
+        let (ours, theirs) = run_both(
+            (arm, problems, seed, driver),
+            progress,
+            Both { planner, peer: name, label, peer_label, limit: LIMIT, roadmap_size: 0 },
+        );
         let ratios: Vec<f64> = ours
             .iter()
             .zip(&theirs)
